@@ -1,0 +1,72 @@
+"""The one error hierarchy of veronte4x.
+
+Every error the library raises on purpose derives from :class:`Veronte4xError`.
+:class:`DecodeError` and :class:`EncodeError` also derive from :class:`ValueError`, so
+code written for the standard library's conventions keeps working.
+"""
+
+from __future__ import annotations
+
+
+class Veronte4xError(Exception):
+    """Base class of every error raised by veronte4x."""
+
+
+class DecodeError(Veronte4xError, ValueError):
+    """Bytes that do not form a valid message.
+
+    Attributes:
+        message_type: Name of the message type being decoded, or ``None`` when the
+            frame could not even be attributed to a type.
+        reason: What was wrong, in words.
+        data: The offending bytes, exactly as received.
+        field: The field that was out of range or inconsistent, if one was.
+    """
+
+    def __init__(
+        self,
+        message_type: str | None,
+        reason: str,
+        data: bytes,
+        field: str | None = None,
+    ) -> None:
+        self.message_type = message_type
+        self.reason = reason
+        self.data = bytes(data)
+        self.field = field
+        where = message_type or "frame"
+        if field is not None:
+            where = f"{where}.{field}"
+        super().__init__(f"{where}: {reason} (data: {self.data.hex(' ') or 'empty'})")
+
+
+class UnknownCommandError(DecodeError):
+    """A Veronte frame whose command byte is reserved or unknown.
+
+    Attributes:
+        command: The command byte (byte 0) of the frame.
+    """
+
+    def __init__(self, command: int, data: bytes, reason: str = "") -> None:
+        self.command = command
+        super().__init__(
+            None, reason or f"command byte {command} is reserved or unknown", data, "command"
+        )
+
+
+class EncodeError(Veronte4xError, ValueError):
+    """A message whose fields cannot be encoded.
+
+    Attributes:
+        message_type: Name of the message type being encoded.
+        field: The offending field.
+        value: The offending value.
+        allowed: The allowed range or kind, in words.
+    """
+
+    def __init__(self, message_type: str, field: str, value: object, allowed: str) -> None:
+        self.message_type = message_type
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        super().__init__(f"{message_type}.{field} = {value!r}: expected {allowed}")
