@@ -4,7 +4,13 @@ from __future__ import annotations
 
 from importlib.metadata import PackageNotFoundError, version
 
-from veronte4x.errors import DecodeError, EncodeError, UnknownCommandError, Veronte4xError
+from veronte4x.errors import (
+    DecodeError,
+    EncodeError,
+    LayoutError,
+    UnknownCommandError,
+    Veronte4xError,
+)
 
 try:
     __version__ = version("veronte4x")
@@ -14,6 +20,7 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree
 __all__ = [
     "DecodeError",
     "EncodeError",
+    "LayoutError",
     "UnknownCommandError",
     "Veronte4xError",
     "__version__",

@@ -70,3 +70,7 @@ class EncodeError(Veronte4xError, ValueError):
         self.value = value
         self.allowed = allowed
         super().__init__(f"{message_type}.{field} = {value!r}: expected {allowed}")
+
+
+class LayoutError(Veronte4xError, ValueError):
+    """A layout declaration that cannot describe a Veronte frame (too long, misplaced bytes)."""

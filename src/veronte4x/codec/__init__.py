@@ -1,7 +1,28 @@
-"""Encode and decode the Veronte 4x CAN messages (seed manual, chapter "CAN Bus protocol")."""
+"""Encode and decode the Veronte 4x CAN messages (seed manual, chapter "CAN Bus protocol").
+
+Example:
+    >>> from veronte4x import codec
+    >>> codec.decode(b"\\x00\\xff\\x01", sender=codec.Sender.AUTOPILOT)
+    Ready(ready=True)
+    >>> codec.encode(codec.Ready(ready=True))
+    b'\\x00\\xff\\x01'
+"""
 
 from __future__ import annotations
 
+from veronte4x.codec.core import Codec
+from veronte4x.codec.declared import DeclaredMessage, Layout
+from veronte4x.codec.fields import (
+    ByteOrder,
+    Field,
+    Kind,
+    Linear,
+    constant,
+    float32,
+    signed,
+    skip,
+    unsigned,
+)
 from veronte4x.codec.messages import (
     ArbitrationVariable,
     JetiBecTelemetry1,
@@ -24,22 +45,54 @@ from veronte4x.codec.messages import (
     VersionRequest,
     VersionResponse,
 )
-from veronte4x.errors import DecodeError, EncodeError, UnknownCommandError, Veronte4xError
+from veronte4x.codec.pwm import PWM_MAX, PwmPacking, from_microseconds, to_microseconds
+from veronte4x.errors import (
+    DecodeError,
+    EncodeError,
+    LayoutError,
+    UnknownCommandError,
+    Veronte4xError,
+)
+
+DEFAULT_CODEC = Codec()
+"""The codec behind `decode` and `encode`: default PWM packing, no declared layouts."""
+
+
+def decode(data: bytes, *, sender: Sender, allow_excess: bool = False) -> Message:
+    """Decode one frame's data bytes with the default codec; see `Codec.decode`."""
+    return DEFAULT_CODEC.decode(data, sender=sender, allow_excess=allow_excess)
+
+
+def encode(message: Message) -> bytes:
+    """Encode one message with the default codec; see `Codec.encode`."""
+    return DEFAULT_CODEC.encode(message)
+
 
 __all__ = [
+    "DEFAULT_CODEC",
+    "PWM_MAX",
     "ArbitrationVariable",
+    "ByteOrder",
+    "Codec",
+    "DeclaredMessage",
     "DecodeError",
     "EncodeError",
+    "Field",
     "JetiBecTelemetry1",
     "JetiBecTelemetry2",
     "JetiEscTelemetry",
     "JetiTemperature",
+    "Kind",
+    "Layout",
+    "LayoutError",
+    "Linear",
     "MaintenanceCommand",
     "McuCommand",
     "McuTelemetry1",
     "McuTelemetry2",
     "Message",
     "OpaqueMessage",
+    "PwmPacking",
     "PwmSet",
     "Ready",
     "Score",
@@ -51,4 +104,13 @@ __all__ = [
     "Veronte4xError",
     "VersionRequest",
     "VersionResponse",
+    "constant",
+    "decode",
+    "encode",
+    "float32",
+    "from_microseconds",
+    "signed",
+    "skip",
+    "to_microseconds",
+    "unsigned",
 ]

@@ -1,0 +1,375 @@
+"""Compile a frame layout into one decode and one encode function.
+
+A layout (`FrameLayout`) is data: the message class and its ordered fields. `compile_layout`
+turns it, once, into two plain Python functions specialised for that layout (constant
+folding, precomputed shifts and masks, positional construction of the dataclass), the way
+dataclasses and attrs generate their methods. The generated source can be read with
+`FrameLayout.source`, and the same layout data renders the docs tables.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import struct
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+from veronte4x.codec.fields import ByteOrder, Field, Kind
+from veronte4x.codec.float32 import bits_from_float, float_from_bits
+from veronte4x.codec.messages import Message
+from veronte4x.errors import DecodeError, EncodeError, LayoutError
+
+Decoder = Callable[[bytes, bool], Message]
+Encoder = Callable[[Message], bytes]
+
+MAX_FRAME_BYTES = 8
+"""Classic CAN: byte 0 is the message type, up to 7 data bytes follow (seed 000, chapter 3)."""
+
+
+@dataclass(frozen=True)
+class Placed:
+    """A field with its position in the frame integer.
+
+    Attributes:
+        field: The field.
+        start: Bits before the field, counted in layout order.
+        shift: Right shift that brings the field to bit 0 of the frame integer.
+    """
+
+    field: Field
+    start: int
+    shift: int
+
+
+@dataclass(frozen=True)
+class FrameLayout:
+    """A frame layout: a message class, its ordered fields and where the layout comes from.
+
+    Attributes:
+        message: The dataclass the layout decodes to.
+        fields: The fields in wire order; a BYTES field may only come last.
+        byte_order: How the frame's bytes form the integer the fields are cut from.
+        implied: Attributes the layout fixes without sending them (name, value).
+        source: Where the layout comes from (seed section or notes).
+        title: Short name for docs and errors, defaults to the class name.
+    """
+
+    message: type[Message]
+    fields: tuple[Field, ...]
+    byte_order: ByteOrder = ByteOrder.LITTLE
+    implied: tuple[tuple[str, Any], ...] = ()
+    source: str = ""
+    title: str = ""
+
+    @property
+    def name(self) -> str:
+        """The message type's name as errors show it."""
+        return self.message.__name__
+
+    @cached_property
+    def tail(self) -> Field | None:
+        """The trailing BYTES field, if the layout ends with one."""
+        last = self.fields[-1] if self.fields else None
+        return last if last is not None and last.kind is Kind.BYTES else None
+
+    @cached_property
+    def fixed_bits(self) -> int:
+        """Bits before the trailing bytes (or in the whole layout)."""
+        return sum(f.bits for f in self.fields if f.kind is not Kind.BYTES)
+
+    @cached_property
+    def fixed_size(self) -> int:
+        """Bytes before the trailing bytes (or of the whole frame)."""
+        return -(-self.fixed_bits // 8)
+
+    @cached_property
+    def placed(self) -> tuple[Placed, ...]:
+        """Every fixed field with its start and shift in the frame integer."""
+        out: list[Placed] = []
+        start = 0
+        total = self.fixed_size * 8
+        for f in self.fields:
+            if f.kind is Kind.BYTES:
+                break
+            shift = start if self.byte_order is ByteOrder.LITTLE else total - start - f.bits
+            out.append(Placed(f, start, shift))
+            start += f.bits
+        return tuple(out)
+
+    def check(self) -> None:
+        """Raise `LayoutError` if the layout cannot describe a Veronte frame."""
+        for position, f in enumerate(self.fields):
+            if f.bits <= 0:
+                raise LayoutError(f"{self.name}: field {f.label} has {f.bits} bits")
+            if f.kind is Kind.BYTES and (position != len(self.fields) - 1 or self.fixed_bits % 8):
+                raise LayoutError(f"{self.name}: raw bytes must come last, byte-aligned")
+            if f.kind is Kind.FLOAT32 and f.bits != 32:
+                raise LayoutError(f"{self.name}: float32 field {f.label} must have 32 bits")
+            if f.kind is Kind.CONSTANT and not 0 <= f.value < 1 << f.bits:
+                raise LayoutError(f"{self.name}: constant {f.value} does not fit {f.bits} bits")
+            if f.scale is not None and f.scale.encoded_min == f.scale.encoded_max:
+                raise LayoutError(f"{self.name}: field {f.label} has an empty compression")
+        if self.fixed_size > MAX_FRAME_BYTES:
+            raise LayoutError(
+                f"{self.name}: {self.fixed_bits} bits do not fit a {MAX_FRAME_BYTES}-byte frame"
+            )
+        if self.tail is not None and self.fixed_size + self.tail.bits // 8 > MAX_FRAME_BYTES:
+            raise LayoutError(f"{self.name}: raw bytes overflow a {MAX_FRAME_BYTES}-byte frame")
+
+    @cached_property
+    def source_code(self) -> tuple[str, str]:
+        """The generated Python source of the decode and encode functions."""
+        return _decode_source(self), _encode_source(self)
+
+    @cached_property
+    def functions(self) -> tuple[Decoder, Encoder]:
+        """The compiled (decode, encode) pair."""
+        self.check()
+        namespace = _namespace(self)
+        decode_src, encode_src = self.source_code
+        exec(compile(decode_src, f"<decode {self.name}>", "exec"), namespace)
+        exec(compile(encode_src, f"<encode {self.name}>", "exec"), namespace)
+        return namespace["decode"], namespace["encode"]
+
+    def decode(self, data: bytes, allow_excess: bool = False) -> Message:
+        """Decode one frame with this layout; see `veronte4x.codec.Codec.decode`."""
+        return self.functions[0](data, allow_excess)
+
+    def encode(self, message: Message) -> bytes:
+        """Encode one message with this layout; see `veronte4x.codec.Codec.encode`."""
+        return self.functions[1](message)
+
+
+_F32 = {ByteOrder.LITTLE: struct.Struct("<f"), ByteOrder.BIG: struct.Struct(">f")}
+
+
+def _namespace(layout: FrameLayout) -> dict[str, Any]:
+    name = layout.name
+
+    def decode_error(reason: str, data: bytes, label: str | None = None) -> DecodeError:
+        return DecodeError(name, reason, data, label)
+
+    def encode_error(label: str, value: object, allowed: str) -> EncodeError:
+        return EncodeError(name, label, value, allowed)
+
+    namespace: dict[str, Any] = {
+        "_cls": layout.message,
+        "_derr": decode_error,
+        "_eerr": encode_error,
+        "_from_bytes": int.from_bytes,
+        "_f32": _F32[layout.byte_order].unpack_from,
+        "_float_from_bits": float_from_bits,
+        "_bits_from_float": bits_from_float,
+        "_bytes": bytes,
+        "_len": len,
+        "_isinstance": isinstance,
+        "_int": int,
+        "_number": (int, float),
+        "_bool": bool,
+        "_tuple": tuple,
+        "_round": round,
+        "_raw": (bytes, bytearray),
+        "_OverflowError": OverflowError,
+        "_ValueError": ValueError,
+    }
+    for attr, value in layout.implied:
+        namespace[f"_implied_{attr}"] = value
+    return namespace
+
+
+def _arguments(layout: FrameLayout) -> list[str]:
+    """The positional constructor arguments, in the dataclass's field order."""
+    by_attr: dict[str, list[tuple[int | None, str]]] = {}
+    for number, f in enumerate(layout.fields):
+        if f.attr is not None:
+            by_attr.setdefault(f.attr, []).append((f.index, f"f{number}"))
+    implied = {attr for attr, _ in layout.implied}
+    args = []
+    for dc_field in dataclasses.fields(layout.message):
+        attr = dc_field.name
+        if attr in implied:
+            args.append(f"_implied_{attr}")
+        elif attr in by_attr:
+            parts = by_attr[attr]
+            if parts[0][0] is None:
+                args.append(parts[0][1])
+            else:
+                args.append(
+                    "(" + ", ".join(v for _, v in sorted(parts, key=lambda p: p[0] or 0)) + ",)"
+                )
+        else:
+            raise LayoutError(f"{layout.name}: the layout does not fill field {attr!r}")
+    return args
+
+
+def _decode_source(layout: FrameLayout) -> str:
+    size = layout.fixed_size
+    order = layout.byte_order.value
+    lines = ["def decode(data, excess):", "    n = _len(data)"]
+    if layout.tail is None:
+        lines += [
+            f"    if n != {size}:",
+            f"        if n < {size} or not excess:",
+            f"            raise _derr('{{}} bytes; the layout has {size}'.format(n), data)",
+            f"        data = data[:{size}]",
+        ]
+    else:
+        most = size + layout.tail.bits // 8
+        lines += [
+            f"    if n < {size} or n > {most}:",
+            f"        raise _derr('{{}} bytes; the layout has {size} to {most}'.format(n), data)",
+        ]
+    lines.append(f"    w = _from_bytes(data[:{size}], '{order}')")
+    for number, p in enumerate(layout.placed):
+        lines += _decode_field(layout, number, p)
+    if layout.tail is not None:
+        lines.append(f"    f{len(layout.fields) - 1} = _bytes(data[{size}:])")
+    lines.append("    return _cls(" + ", ".join(_arguments(layout)) + ")")
+    return "\n".join(lines) + "\n"
+
+
+def _decode_field(layout: FrameLayout, number: int, p: Placed) -> list[str]:
+    f = p.field
+    mask = (1 << f.bits) - 1
+    raw = f"(w >> {p.shift}) & {mask:#x}" if p.shift else f"w & {mask:#x}"
+    var = f"f{number}"
+    label = f.label
+    if f.kind is Kind.PADDING:
+        return []
+    if f.kind is Kind.CONSTANT:
+        return [
+            f"    if {raw} != {f.value}:",
+            f"        raise _derr('expected {f.value:#x}, got {{:#x}}'.format({raw}), data, "
+            f"'{label}')",
+        ]
+    if f.kind is Kind.BOOL:
+        return [f"    {var} = ({raw}) == 1"]
+    if f.kind is Kind.FLOAT32:
+        if p.shift % 8 == 0:
+            offset = p.start // 8
+            return [
+                f"    {var} = _f32(data, {offset})[0]",
+                f"    if {var} != {var}:",
+                f"        {var} = _float_from_bits({raw})",
+            ]
+        return [f"    {var} = _float_from_bits({raw})"]
+    lines = [f"    {var} = {raw}"]
+    if f.kind is Kind.SIGNED:
+        sign = 1 << (f.bits - 1)
+        lines.append(f"    {var} -= ({var} & {sign:#x}) << 1")
+    if f.maximum is not None:
+        lines += [
+            f"    if {var} > {f.maximum}:",
+            f"        raise _derr('{{}} out of range 0..{f.maximum}'.format({var}), data, "
+            f"'{label}')",
+        ]
+    if f.scale is not None:
+        lines.append(f"    {var} = {var} * {f.scale.factor!r} + {f.scale.offset!r}")
+    return lines
+
+
+def _encode_source(layout: FrameLayout) -> str:
+    const = 0
+    lines = ["def encode(m):"]
+    for attr, value in layout.implied:
+        lines += [
+            f"    if m.{attr} != _implied_{attr}:",
+            f"        raise _eerr('{attr}', m.{attr}, {_implied_text(value)!r})",
+        ]
+    seen_tuples: set[str] = set()
+    body: list[str] = []
+    for p in layout.placed:
+        f = p.field
+        if f.kind is Kind.CONSTANT:
+            const |= f.value << p.shift
+        elif f.kind is not Kind.PADDING:
+            body += _encode_field(f, p.shift, seen_tuples, layout)
+    lines.append(f"    w = {const:#x}")
+    lines += body
+    order = layout.byte_order.value
+    result = f"w.to_bytes({layout.fixed_size}, '{order}')"
+    if layout.tail is not None:
+        most = layout.tail.bits // 8
+        lines += [
+            f"    v = m.{layout.tail.attr}",
+            f"    if not _isinstance(v, _raw) or _len(v) > {most}:",
+            f"        raise _eerr('{layout.tail.attr}', v, 'bytes of length 0..{most}')",
+        ]
+        result += " + _bytes(v)"
+    lines.append(f"    return {result}")
+    return "\n".join(lines) + "\n"
+
+
+def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayout) -> list[str]:
+    lines: list[str] = []
+    assert f.attr is not None
+    if f.index is None:
+        lines.append(f"    v = m.{f.attr}")
+    else:
+        count = sum(1 for g in layout.fields if g.attr == f.attr)
+        if f.attr not in seen_tuples:
+            seen_tuples.add(f.attr)
+            lines += [
+                f"    t_{f.attr} = m.{f.attr}",
+                f"    if not _isinstance(t_{f.attr}, _tuple) or _len(t_{f.attr}) != {count}:",
+                f"        raise _eerr('{f.attr}', t_{f.attr}, 'a tuple of {count} values')",
+            ]
+        lines.append(f"    v = t_{f.attr}[{f.index}]")
+    label = f.label
+    place = f" << {shift}" if shift else ""
+    if f.kind is Kind.BOOL:
+        return [
+            *lines,
+            "    if v is not True and v is not False:",
+            f"        raise _eerr('{label}', v, 'a bool')",
+            f"    w |= v{place}",
+        ]
+    if f.kind is Kind.FLOAT32:
+        return [
+            *lines,
+            "    if not _isinstance(v, _number) or _isinstance(v, _bool):",
+            f"        raise _eerr('{label}', v, 'a float')",
+            "    try:",
+            "        v = _bits_from_float(v)",
+            "    except _OverflowError:",
+            f"        raise _eerr('{label}', v, 'a float within the float32 range') from None",
+            f"    w |= v{place}",
+        ]
+    if f.kind is Kind.SIGNED:
+        low, high = -(1 << (f.bits - 1)), (1 << (f.bits - 1)) - 1
+    else:
+        low, high = 0, (1 << f.bits) - 1
+    if f.maximum is not None:
+        high = f.maximum
+    mask = (1 << f.bits) - 1
+    if f.scale is None:
+        lines += [
+            "    if not _isinstance(v, _int) or _isinstance(v, _bool) "
+            f"or not {low} <= v <= {high}:",
+            f"        raise _eerr('{label}', v, 'an int in {low}..{high}')",
+        ]
+    else:
+        s = f.scale
+        lo_value, hi_value = sorted((low * s.factor + s.offset, high * s.factor + s.offset))
+        allowed = f"a number in {lo_value!r}..{hi_value!r} (wire {low}..{high})"
+        lines += [
+            "    if not _isinstance(v, _number) or _isinstance(v, _bool):",
+            f"        raise _eerr('{label}', v, {allowed!r})",
+            "    try:",
+            f"        r = _round((v - {s.offset!r}) / {s.factor!r})",
+            "    except (_OverflowError, _ValueError):",
+            f"        raise _eerr('{label}', v, {allowed!r}) from None",
+            f"    if not {low} <= r <= {high}:",
+            f"        raise _eerr('{label}', v, {allowed!r})",
+            "    v = r",
+        ]
+    if f.kind is Kind.SIGNED:
+        lines.append(f"    v &= {mask:#x}")
+    lines.append(f"    w |= v{place}")
+    return lines
+
+
+def _implied_text(value: object) -> str:
+    return "None (this form does not carry the field)" if value is None else f"{value!r}"

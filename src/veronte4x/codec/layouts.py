@@ -1,0 +1,207 @@
+"""The built-in Veronte 4x layouts, written once as data.
+
+Sources: the seed manual (seeds/000, 4x Software Manual 6.12, chapter 3 "CAN Bus
+protocol": message-type table, sections 3.1.1-3.1.4) and notes/veronte-protocol.md (byte
+order little-endian, bit 0 = least significant bit, PWM encoding, version request). The
+codec compiles these layouts into its decode and encode functions, and the docs render
+their tables from them.
+"""
+
+from __future__ import annotations
+
+from veronte4x.codec import messages as m
+from veronte4x.codec.compiler import FrameLayout
+from veronte4x.codec.fields import ByteOrder, Field, Kind, constant, float32
+from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
+
+SEED_TABLE = "seed 000, chapter 3, message-type table"
+AUTOPILOTS = ("AP1", "AP2", "AP3", "external AP")
+
+_ARBITRATION = constant(0x00, 8, "message type t_arbitration", "command")
+_FF_HEADER = constant(0xFF, 8, "0xFF header", "header")
+
+
+def _flag(attr: str, description: str, index: int | None = None) -> Field:
+    return Field(Kind.BOOL, 1, attr, index, description=description)
+
+
+_STATUS_BYTES_0_3 = (
+    _ARBITRATION,
+    _FF_HEADER,
+    Field(
+        Kind.UNSIGNED,
+        7,
+        "selected",
+        maximum=3,
+        description="selected AP: 0 = AP1, 1 = AP2, 2 = AP3, 3 = external AP",
+    ),
+    _flag("arbitrating", "arbitration OFF/ON"),
+    *(_flag("alive", f"{ap} alive", i) for i, ap in enumerate(AUTOPILOTS)),
+    *(_flag("ready", f"{ap} ready", i) for i, ap in enumerate(AUTOPILOTS)),
+)
+
+STATUS_FLAGS: tuple[tuple[str, str], ...] = (
+    ("cbit_ok", "CBIT: system error; fails if any item of byte 4 fails"),
+    ("pbit_ok", "PBIT: system boot OK"),
+    ("pdi_ok", "PDI OK: fails on an error in the configuration files"),
+    ("memory_ok", "memory allocation OK"),
+    ("can_a_ok", "CAN A OK"),
+    ("can_b_ok", "CAN B OK"),
+    ("cio_low_ok", "CIO low task OK"),
+    ("cio_high_ok", "CIO high task OK"),
+    ("power_ok", "power OK: all power indicators are OK"),
+    ("bus_a_voltage_ok", "A bus voltage OK"),
+    ("bus_b_voltage_ok", "B bus voltage OK"),
+    ("arbiter_voltage_ok", "arbiter voltage OK"),
+    ("ap1_voltage_ok", "AP1 voltage OK"),
+    ("ap2_voltage_ok", "AP2 voltage OK"),
+    ("ap3_voltage_ok", "AP3 voltage OK"),
+    ("normal_mode", "arbiter mode: 1 = Normal, 0 = Maintenance"),
+)
+"""The flags of Status bytes 4 and 5, bit 0 first (seed 000, section 3.1.1)."""
+
+STATUS_4X = FrameLayout(
+    m.Status,
+    (*_STATUS_BYTES_0_3, *(_flag(attr, text) for attr, text in STATUS_FLAGS)),
+    source="seed 000, section 3.1.1 Status Message (6 bytes, Autopilot 4x)",
+    title="Status (4x, 6 bytes)",
+)
+
+STATUS_CEX = FrameLayout(
+    m.Status,
+    _STATUS_BYTES_0_3,
+    implied=tuple((attr, None) for attr, _ in STATUS_FLAGS),
+    source="notes/veronte-protocol.md: the CEX arbiter sends only bytes 0-3 of the Status",
+    title="Status (CEX, 4 bytes)",
+)
+
+SCORE = FrameLayout(
+    m.Score,
+    (
+        _ARBITRATION,
+        Field(
+            Kind.UNSIGNED,
+            8,
+            "autopilot",
+            maximum=3,
+            description="autopilot: 0 = AP1, 1 = AP2, 2 = AP3, 3 = external AP",
+        ),
+        float32("score", "arbitration score, single-precision float; lower is better"),
+    ),
+    source="seed 000, section 3.1.2 Score Message",
+)
+
+READY = FrameLayout(
+    m.Ready,
+    (
+        _ARBITRATION,
+        _FF_HEADER,
+        _flag("ready", "Ready (1) / Not Ready (0)"),
+        constant(0, 7, "unused bits of byte 2, zero", "reserved"),
+    ),
+    source="seed 000, section 3.1.3 Ready Message; notes: Embention's 1x template sends 00 FF 01",
+)
+
+ARBITRATION_VARIABLE = FrameLayout(
+    m.ArbitrationVariable,
+    (
+        _ARBITRATION,
+        Field(Kind.UNSIGNED, 8, "number", maximum=31, description="arbitration variable number"),
+        float32("value", "arbitration variable value, single-precision float"),
+    ),
+    source="seed 000, section 3.1.4 Arbitration Message (numbers 0..31: at most 32 variables)",
+)
+
+VERSION_REQUEST = FrameLayout(
+    m.VersionRequest,
+    (constant(0x01, 8, "message type t_version", "command"),),
+    source=f"{SEED_TABLE}; notes: the request is the single byte 01",
+)
+
+VERSION_RESPONSE = FrameLayout(
+    m.VersionResponse,
+    (
+        constant(0x01, 8, "message type t_version", "command"),
+        Field(Kind.UNSIGNED, 8, "application_code", description="application code (9 = CEXv2)"),
+        Field(Kind.BYTES, 48, "rest", description="version and the rest, layout not public"),
+    ),
+    source=f"{SEED_TABLE}; notes: byte 1 application code, the rest not public",
+)
+
+
+def _pwm(first_channel: int, packing: PwmPacking) -> FrameLayout:
+    command = PWM_COMMANDS[first_channel]
+    values = tuple(
+        Field(Kind.UNSIGNED, 12, "values", i, description=f"channel {first_channel + i}, 0..4095")
+        for i in range(4)
+    )
+    order = ByteOrder.LITTLE if packing is PwmPacking.LSB_FIRST else ByteOrder.BIG
+    return FrameLayout(
+        m.PwmSet,
+        (
+            constant(
+                command, 8, f"message type (PWMs {first_channel} to {first_channel + 3})", "command"
+            ),
+            *values,
+        ),
+        byte_order=order,
+        implied=(("first_channel", first_channel),),
+        source=f"{SEED_TABLE}; notes: four 12-bit values, packing {packing.value} (open point)",
+        title=f"PwmSet (cmd {command}, {packing.value})",
+    )
+
+
+PWM_SET: dict[PwmPacking, dict[int, FrameLayout]] = {
+    packing: {first: _pwm(first, packing) for first in PWM_COMMANDS} for packing in PwmPacking
+}
+"""PWM set layouts by packing, then by first channel."""
+
+OPAQUE_CLASSES: tuple[type[m.OpaqueMessage], ...] = (
+    m.ScorpionEscTelemetry,
+    m.JetiEscTelemetry,
+    m.JetiBecTelemetry1,
+    m.JetiBecTelemetry2,
+    m.JetiTemperature,
+    m.McuCommand,
+    m.MaintenanceCommand,
+    m.StickSelection,
+    m.McuTelemetry1,
+    m.McuTelemetry2,
+)
+
+
+def _opaque(cls: type[m.OpaqueMessage]) -> FrameLayout:
+    assert cls.COMMAND is not None
+    return FrameLayout(
+        cls,
+        (
+            constant(cls.COMMAND, 8, "message type", "command"),
+            Field(
+                Kind.BYTES, 56, "payload", description="payload, layout not public: kept exactly"
+            ),
+        ),
+        source=f"{SEED_TABLE}; notes: no public source gives this payload's layout",
+    )
+
+
+OPAQUE: dict[int, FrameLayout] = {
+    cls.COMMAND: _opaque(cls) for cls in OPAQUE_CLASSES if cls.COMMAND is not None
+}
+"""Layouts of the commands whose payload is kept as raw bytes, by command byte."""
+
+RESERVED_COMMANDS = frozenset({4, 14, 15})
+"""Reserved in the seed's message-type table."""
+
+BUILT_IN: tuple[FrameLayout, ...] = (
+    STATUS_4X,
+    STATUS_CEX,
+    SCORE,
+    READY,
+    ARBITRATION_VARIABLE,
+    VERSION_REQUEST,
+    VERSION_RESPONSE,
+    *PWM_SET[PwmPacking.LSB_FIRST].values(),
+    *PWM_SET[PwmPacking.MSB_FIRST].values(),
+    *OPAQUE.values(),
+)
+"""Every built-in layout, in the order the docs list them."""

@@ -1,0 +1,60 @@
+"""PWM set frames: the open packing order, and the value/microsecond helpers.
+
+The seed's CAN table gives commands 2, 3, 11, 12, 13 (t_pwm_0_3_set .. t_pwm_16_19_set);
+Embention's manuals give four 12-bit normalised values 0..4095 per frame
+(notes/veronte-protocol.md, "Message types"). The order in which the four fields are packed
+is not public, hence `PwmPacking`. The microsecond mapping lives in the receiving device
+(template default 900..2100 us), so it is a helper, not part of the wire format.
+"""
+
+from __future__ import annotations
+
+import enum
+
+from veronte4x.errors import EncodeError
+
+PWM_MAX = 4095
+"""The largest normalised PWM value: "12 bits all with ones"."""
+
+DEFAULT_MIN_US = 900.0
+DEFAULT_MAX_US = 2100.0
+
+PWM_COMMANDS: dict[int, int] = {0: 2, 4: 3, 8: 11, 12: 12, 16: 13}
+"""First channel to command byte (seed 000, CAN message-type table)."""
+
+
+class PwmPacking(enum.Enum):
+    """How the four 12-bit values fill bytes 1-6 of a PWM set frame (an open point).
+
+    Attributes:
+        LSB_FIRST: Default. Bytes 1-6 read as a little-endian 48-bit word; the first
+            channel takes bits 0-11, the next bits 12-23, and so on.
+        MSB_FIRST: Bytes 1-6 read as a big-endian 48-bit word; the first channel takes
+            the 12 most significant bits (byte 1 and the high nibble of byte 2).
+    """
+
+    LSB_FIRST = "lsb_first"
+    MSB_FIRST = "msb_first"
+
+
+def to_microseconds(
+    value: int, min_us: float = DEFAULT_MIN_US, max_us: float = DEFAULT_MAX_US
+) -> float:
+    """Convert a normalised PWM value (0..4095) to a pulse width in microseconds."""
+    if not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= PWM_MAX:
+        raise EncodeError("PwmSet", "values", value, f"an int in 0..{PWM_MAX}")
+    return min_us + (max_us - min_us) * value / PWM_MAX
+
+
+def from_microseconds(
+    pulse_us: float, min_us: float = DEFAULT_MIN_US, max_us: float = DEFAULT_MAX_US
+) -> int:
+    """Convert a pulse width in microseconds to the nearest normalised PWM value.
+
+    Raises:
+        EncodeError: The pulse lies outside min_us..max_us.
+    """
+    low, high = sorted((min_us, max_us))
+    if not low <= pulse_us <= high:
+        raise EncodeError("PwmSet", "values", pulse_us, f"a pulse in {low}..{high} us")
+    return round((pulse_us - min_us) / (max_us - min_us) * PWM_MAX)
