@@ -6,6 +6,9 @@ The seed is OCR text; every entry here has its typos fixed, and an entry whose r
 departs from what the seed printed says so in ``Variable.correction`` (PDI errors keep the
 printed row in ``PdiError.seed_text``).
 
+``BIT_VARIABLES``, ``REAL_VARIABLES`` and ``INTEGER_VARIABLES`` (also ``VARIABLES[kind]``)
+and ``PDI_ERRORS`` are tuples in the manual's order; a row may cover an id range.
+
 Example:
     >>> from veronte4x import variables
     >>> variables.by_id(variables.Kind.BIT, 803).name

@@ -15,7 +15,7 @@ class Kind(str, Enum):
     Attributes:
         BIT: Bit variables (seed 000 section 2.2.1).
         RVAR: Real variables, 32-bit float (section 2.2.2).
-        UVAR: Integer variables, 16-bit unsigned (section 2.2.3).
+        UVAR: Integer variables, 16-bit (section 2.2.3).
     """
 
     BIT = "bit"
