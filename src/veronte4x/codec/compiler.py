@@ -55,6 +55,7 @@ class FrameLayout:
         implied: Attributes the layout fixes without sending them (name, value).
         source: Where the layout comes from (seed section or notes).
         title: Short name for docs and errors, defaults to the class name.
+        implied_text: What an encoding error says is allowed for an implied attribute.
     """
 
     message: type[Message]
@@ -63,6 +64,7 @@ class FrameLayout:
     implied: tuple[tuple[str, Any], ...] = ()
     source: str = ""
     title: str = ""
+    implied_text: str = ""
 
     @property
     def name(self) -> str:
@@ -181,6 +183,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         "_len": len,
         "_isinstance": isinstance,
         "_int": int,
+        "_float": float,
         "_number": (int, float),
         "_bool": bool,
         "_tuple": tuple,
@@ -338,9 +341,10 @@ def _encode_source(layout: FrameLayout) -> str:
     const = 0
     lines = ["def encode(m):"]
     for attr, value in layout.implied:
+        test = f"m.{attr} is not None" if value is None else f"m.{attr} != _implied_{attr}"
         lines += [
-            f"    if m.{attr} != _implied_{attr}:",
-            f"        raise _eerr('{attr}', m.{attr}, {_implied_text(value)!r})",
+            f"    if {test}:",
+            f"        raise _eerr('{attr}', m.{attr}, {layout.implied_text or repr(value)!r})",
         ]
     seen_tuples: set[str] = set()
     body: list[str] = []
@@ -393,7 +397,8 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
     if f.kind is Kind.FLOAT32:
         return [
             *lines,
-            "    if not _isinstance(v, _number) or _isinstance(v, _bool):",
+            "    if v.__class__ is not _float and (not _isinstance(v, _number) "
+            "or _isinstance(v, _bool)):",
             f"        raise _eerr('{label}', v, 'a float')",
             "    try:",
             "        v = _from_bytes(_pack_f32(v), 'little') if v == v else _bits_from_float(v)",
@@ -410,8 +415,8 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
     mask = (1 << f.bits) - 1
     if f.scale is None:
         lines += [
-            "    if not _isinstance(v, _int) or _isinstance(v, _bool) "
-            f"or not {low} <= v <= {high}:",
+            "    if (v.__class__ is not _int and (not _isinstance(v, _int) "
+            f"or _isinstance(v, _bool))) or not {low} <= v <= {high}:",
             f"        raise _eerr('{label}', v, 'an int in {low}..{high}')",
         ]
     else:
@@ -433,7 +438,3 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
         lines.append(f"    v &= {mask:#x}")
     lines.append(f"    w |= v{place}")
     return lines
-
-
-def _implied_text(value: object) -> str:
-    return "None (this form does not carry the field)" if value is None else f"{value!r}"

@@ -18,7 +18,6 @@ from veronte4x.codec.messages import Message, PwmSet, Sender, Status
 from veronte4x.codec.pwm import PwmPacking
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, UnknownCommandError
 
-_STATUS_FLAG_NAMES = tuple(attr for attr, _ in layouts.STATUS_FLAGS)
 _ARBITER = Sender.ARBITER
 _AUTOPILOT = Sender.AUTOPILOT
 
@@ -67,10 +66,7 @@ class Codec:
 
         def encode_status(message: Message) -> bytes:
             assert isinstance(message, Status)
-            flags = [getattr(message, attr) for attr in _STATUS_FLAG_NAMES]
-            if flags.count(None) == len(flags):
-                return encode_cex(message)
-            return encode_4x(message)
+            return (encode_4x if message.cbit_ok is not None else encode_cex)(message)
 
         def decode_version(data: bytes, excess: bool) -> Message:
             return request(data, excess) if len(data) == 1 else response(data, excess)
