@@ -194,6 +194,9 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     }
     for attr, value in layout.implied:
         namespace[f"_implied_{attr}"] = value
+    plan = _struct_plan(layout)
+    if plan is not None:
+        namespace["_unpack"] = struct.Struct(plan[0]).unpack_from
     for dc_field in dataclasses.fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
     return namespace
@@ -247,15 +250,22 @@ def _decode_source(layout: FrameLayout) -> str:
             f"        raise _derr('{{}} bytes; the layout has {size} to {most}'.format(n), data)",
         ]
     body: list[str] = []
+    plan = _struct_plan(layout)
+    if plan is not None:
+        # Every field lies within one byte or is an aligned float32: one unpack reads them all.
+        fmt, names = plan
+        lines.append(f"    {', '.join(names)}, = _unpack(data)  # struct {fmt!r}")
     flag_bytes = _flag_bytes(layout)
     for index, numbers in flag_bytes.items():
-        body.append("    " + ", ".join(f"f{n}" for n in numbers) + f" = _BITS[data[{index}]]")
+        byte = f"b{index}" if plan is not None else f"data[{index}]"
+        body.append("    " + ", ".join(f"f{n}" for n in numbers) + f" = _BITS[{byte}]")
     grouped = {n for numbers in flag_bytes.values() for n in numbers}
     needs_word = False
     for number, p in enumerate(layout.placed):
         if number not in grouped:
-            body += _decode_field(layout, number, p)
+            body += _decode_field(layout, number, p, plan is not None)
             needs_word |= _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING
+    needs_word &= plan is None
     if needs_word:
         lines.append(f"    w = _from_bytes(data[:{size}], '{layout.byte_order.value}')")
     lines += body
@@ -286,20 +296,42 @@ def _flag_bytes(layout: FrameLayout) -> dict[int, list[int]]:
     return {index: [bits[b] for b in range(8)] for index, bits in by_byte.items() if len(bits) == 8}
 
 
-def _raw(layout: FrameLayout, p: Placed) -> str:
+def _struct_plan(layout: FrameLayout) -> tuple[str, list[str]] | None:
+    """A struct format and its target names when every field is within a byte or an
+    aligned float32; None otherwise. Bytes unpack to ``b<index>``, floats to ``f<field>``."""
+    floats: dict[int, int] = {}
+    for number, p in enumerate(layout.placed):
+        if p.field.kind is Kind.FLOAT32 and p.shift % 8 == 0:
+            floats[p.start // 8] = number
+        elif _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING:
+            return None
+    order = "<" if layout.byte_order is ByteOrder.LITTLE else ">"
+    fmt, names, index = order, [], 0
+    while index < layout.fixed_size:
+        if index in floats:
+            fmt, index = fmt + "f", index + 4
+            names.append(f"f{floats[index - 4]}")
+        else:
+            fmt, index = fmt + "B", index + 1
+            names.append(f"b{index - 1}")
+    return fmt, names
+
+
+def _raw(layout: FrameLayout, p: Placed, unpacked: bool = False) -> str:
     """The expression that extracts a field's wire bits, from one byte when it fits in one."""
     mask = (1 << p.field.bits) - 1
     index = _byte_index(layout, p)
     if index is not None:
         shift = p.shift % 8
-        source = f"(data[{index}] >> {shift})" if shift else f"data[{index}]"
+        byte = f"b{index}" if unpacked else f"data[{index}]"
+        source = f"({byte} >> {shift})" if shift else byte
         return source if p.field.bits + shift == 8 else f"{source} & {mask:#x}"
     return f"(w >> {p.shift}) & {mask:#x}" if p.shift else f"w & {mask:#x}"
 
 
-def _decode_field(layout: FrameLayout, number: int, p: Placed) -> list[str]:
+def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -> list[str]:
     f = p.field
-    raw = _raw(layout, p)
+    raw = _raw(layout, p, unpacked)
     var = f"f{number}"
     label = f.label
     if f.kind is Kind.PADDING:
@@ -316,7 +348,7 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed) -> list[str]:
         if p.shift % 8 == 0:
             offset = p.start // 8
             return [
-                f"    {var} = _f32(data, {offset})[0]",
+                *([] if unpacked else [f"    {var} = _f32(data, {offset})[0]"]),
                 f"    if {var} != {var}:",
                 f"        {var} = _float_from_bits(_from_bytes(data[{offset}:{offset + 4}], "
                 f"'{layout.byte_order.value}'))",
