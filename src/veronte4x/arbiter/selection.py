@@ -129,8 +129,8 @@ def _method_choice(
     if not offered < limit:
         return None
     reason = (
-        f"{autopilot_name(candidate)} {_fmt(offered)} < {_fmt(current)} x "
-        f"(1 - {config.hysteresis:g}) ({autopilot_name(selected)})"
+        f"{autopilot_name(candidate)} {_fmt(offered)} < {autopilot_name(selected)} "
+        f"{_fmt(current)} x (1 - {config.hysteresis:g})"
     )
     if method is Method.CHANGE_IF_WORST:
         reason = f"{autopilot_name(selected)} has the worst score; {reason}"
