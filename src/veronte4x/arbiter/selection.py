@@ -115,15 +115,13 @@ def _method_choice(
         chosen = next_alive(selected, alive, config.participants)
         reason = f"round robin: {autopilot_name(chosen)} after {autopilot_name(selected)}"
         return Choice(chosen, reason, forced=False)
-    if selected not in scores:
-        return None
+    if any(ap not in scores for ap in alive):
+        return None  # an alive autopilot without a score yet cannot be ranked
     candidate = best(scores, alive, config.preferred)
     if candidate is None or candidate == selected:
         return None
     current, offered = scores[selected], scores[candidate]
-    if method is Method.CHANGE_IF_WORST and any(
-        scores[ap] > current for ap in alive if ap in scores
-    ):
+    if method is Method.CHANGE_IF_WORST and any(scores[ap] > current for ap in alive):
         return None
     limit = current * (1.0 - config.hysteresis)
     if not offered < limit:
