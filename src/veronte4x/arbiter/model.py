@@ -174,8 +174,9 @@ class Arbiter:
         status_due = self._status is not None and self._status.take(timestamp)
         if status_due and (self._phase is Phase.MAINTENANCE or self.config.send_status):
             frames.append((arbiter_id, codec.encode(self.status_message())))
+        score_due = self._score is not None and self._score.take(timestamp)
         normal = self._phase in (Phase.NORMAL, Phase.ARBITRATING)
-        if normal and self._score is not None and self._score.take(timestamp):
+        if score_due and normal and self.config.send_score:
             for autopilot, score in sorted(self._scores.items()):
                 message = codec.Score(autopilot, _within_float32(score))
                 frames.append((arbiter_id, codec.encode(message)))
