@@ -96,3 +96,29 @@ class Rig:
             time = self.time
             sent += [(time, can_id, data) for can_id, data in self.step()]
         return sent
+
+
+# What the real arbiter sent in `failure_capture`, written by hand from seed 000 section
+# 3.1.1: byte 2 = selected | arbitrating << 7, byte 3 = alive bits 0-3 | ready bits 4-7.
+STATUS_AP2_ALL_ALIVE = bytes.fromhex("00ff8177ffff")
+STATUS_AP3_AP2_DEAD = bytes.fromhex("00ff8275ffff")
+
+
+def failure_capture(
+    fail_at: float = 1.55, end: float = 3.0, status_after: bytes = STATUS_AP3_AP2_DEAD
+) -> list[tuple[float, int, bytes]]:
+    """Three autopilots sending the seed example every 0.05 s on IDs 8, 9, 10; AP2 falls
+    silent from ``fail_at``; the arbiter's Status every 0.25 s on ID 255."""
+    capture = []
+    for tick in range(round(end / 0.05) + 1):
+        time = round(tick * 0.05, 9)
+        for autopilot, can_id in enumerate((8, 9, 10)):
+            if autopilot == 1 and time >= fail_at:
+                continue
+            capture.append((time, can_id, READY))
+            for number, value in enumerate(SEED_VALUES[autopilot]):
+                capture.append((time, can_id, variable(number, value)))
+        if tick % 5 == 0:
+            status = STATUS_AP2_ALL_ALIVE if time < fail_at + 0.1 else status_after
+            capture.append((time, 255, status))
+    return capture
