@@ -86,6 +86,9 @@ class Arbiter:
         self._selected = config.preferred if fixed is None else fixed
         self._last_switch: float | None = None
         self._retry_at: float | None = None
+        # No timed event falls due before this time (a lower bound: receipts only push
+        # deadlines later); anything that brings one earlier lowers it.
+        self._quiet_until = -math.inf
         self._status: Periodic | None = None
         self._score: Periodic | None = None
         self._decisions: list[Decision] = []
@@ -154,7 +157,7 @@ class Arbiter:
             self._record(timestamp, DecisionKind.MODE, None, "boot: Idle, checking the system")
             if self._checks.all_ok:
                 self._checks_pass(timestamp)
-        while self._run_next_timer(timestamp):
+        while timestamp >= self._quiet_until and self._run_next_timer(timestamp):
             pass
         self._time = timestamp
 
@@ -255,6 +258,7 @@ class Arbiter:
             self._status = Periodic(time, self.config.status_period)
         self._phase = phase
         self._retry_at = None
+        self._quiet_until = -math.inf
         self._record(time, DecisionKind.MODE, None, f"{phase.value}: {why}")
         return True
 
@@ -375,6 +379,7 @@ class Arbiter:
             allowed = reference + self.config.holding_time
             if time < allowed:
                 self._retry_at = allowed
+                self._quiet_until = min(self._quiet_until, allowed)
                 return
         self._switch(choice, time)
 
@@ -416,9 +421,11 @@ class Arbiter:
             if self._retry_at is not None:
                 due.append((self._retry_at, 2, -1, ""))
         if not due:
+            self._quiet_until = math.inf
             return False
         time, kind, autopilot, cause = min(due)
         if time > now:
+            self._quiet_until = time
             return False
         if kind == 0:
             failing = ", ".join(self._checks.failing())

@@ -9,7 +9,8 @@ the number of Alive autopilots is 2 or less, relative arbitration variables are 
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping, Sequence
+import math
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from veronte4x.arbiter.config import MaxErrorMode, VariableConfig
@@ -43,6 +44,49 @@ class Contribution:
     enabled: bool
 
 
+_Row = tuple[int, int, float, "float | None", float, float, bool]
+
+
+def _rows(
+    values: Mapping[int, Sequence[float]],
+    variables: Sequence[VariableConfig],
+    mean_of: Collection[int] | None,
+    relative: bool | None,
+    max_error_mode: MaxErrorMode,
+) -> Iterator[_Row]:
+    """The fields of every `Contribution`, as plain tuples."""
+    for autopilot, row in values.items():
+        if len(row) != len(variables):
+            raise InputError(
+                f"values[{autopilot}]", len(row), f"{len(variables)} values, one per variable"
+            )
+    pool = list(values) if mean_of is None else list(mean_of)
+    for autopilot in pool:
+        if autopilot not in values:
+            raise InputError("mean_of", autopilot, "autopilots that have values")
+    if relative is None:
+        relative = len(pool) >= MIN_AUTOPILOTS_FOR_RELATIVE
+    clamp = max_error_mode is MaxErrorMode.CLAMP
+    # Per variable: mean (None for absolute ones), weight, max error, enabled.
+    # Weighting first and taking the deviation of the weighted values, as the seed words
+    # it, equals weighting the deviation: |w*v - mean(w*v)| = |w| * |v - mean(v)|.
+    plan: list[tuple[float | None, float, float, bool]] = []
+    for number, variable in enumerate(variables):
+        limit = variable.max_error if clamp else math.inf
+        if variable.absolute:
+            plan.append((None, variable.weight, limit, True))
+        elif pool:
+            total = sum(values[autopilot][number] for autopilot in pool)
+            plan.append((total / len(pool), abs(variable.weight), limit, relative))
+        else:
+            plan.append((None, abs(variable.weight), limit, False))
+    for autopilot, row in values.items():
+        for number, (value, (mean, weight, limit, on)) in enumerate(zip(row, plan, strict=True)):
+            error = (value if on else 0.0) if mean is None else abs(value - mean)
+            error = min(error, limit)
+            yield autopilot, number, value, mean, error, error * weight if on else 0.0, on
+
+
 def explain_scores(
     values: Mapping[int, Sequence[float]],
     variables: Sequence[VariableConfig],
@@ -66,50 +110,8 @@ def explain_scores(
         InputError: an autopilot has not one value per variable, or ``mean_of`` names an
             autopilot without values.
     """
-    for autopilot, row in values.items():
-        if len(row) != len(variables):
-            raise InputError(
-                f"values[{autopilot}]", len(row), f"{len(variables)} values, one per variable"
-            )
-    pool = list(values) if mean_of is None else list(mean_of)
-    for autopilot in pool:
-        if autopilot not in values:
-            raise InputError("mean_of", autopilot, "autopilots that have values")
-    if relative is None:
-        relative = len(pool) >= MIN_AUTOPILOTS_FOR_RELATIVE
-    clamp = max_error_mode is MaxErrorMode.CLAMP
-    means: list[float | None] = []
-    for number, variable in enumerate(variables):
-        if variable.absolute or not pool:
-            means.append(None)
-        else:
-            means.append(sum(values[autopilot][number] for autopilot in pool) / len(pool))
-    rows = []
-    for autopilot, row in values.items():
-        for number, (variable, value) in enumerate(zip(variables, row, strict=True)):
-            mean = means[number]
-            # Weighting first and taking the deviation of the weighted values, as the seed
-            # words it, equals weighting the deviation: |w*v - mean(w*v)| = |w| * |v - mean(v)|.
-            if variable.absolute:
-                error, weight = value, variable.weight
-            else:
-                error = 0.0 if mean is None else abs(value - mean)
-                weight = abs(variable.weight)
-            if clamp:
-                error = min(error, variable.max_error)
-            enabled = variable.absolute or (relative and mean is not None)
-            rows.append(
-                Contribution(
-                    autopilot=autopilot,
-                    number=number,
-                    value=value,
-                    mean=mean,
-                    error=error,
-                    contribution=error * weight if enabled else 0.0,
-                    enabled=enabled,
-                )
-            )
-    return rows
+    rows = _rows(values, variables, mean_of, relative, max_error_mode)
+    return [Contribution(*row) for row in rows]
 
 
 def compute_scores(
@@ -128,8 +130,6 @@ def compute_scores(
     to 0.058, 0.026, 0.054).
     """
     scores = dict.fromkeys(values, 0.0)
-    for row in explain_scores(
-        values, variables, mean_of=mean_of, relative=relative, max_error_mode=max_error_mode
-    ):
-        scores[row.autopilot] += row.contribution
+    for row in _rows(values, variables, mean_of, relative, max_error_mode):
+        scores[row[0]] += row[5]
     return scores
