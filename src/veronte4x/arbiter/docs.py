@@ -10,8 +10,10 @@ import dataclasses
 import enum
 from collections.abc import Collection
 
+from veronte4x import codec
 from veronte4x.arbiter.config import ArbiterConfig, VariableConfig, autopilot_name
 from veronte4x.arbiter.machine import AUTOPILOT_TRANSITIONS, TRANSITIONS
+from veronte4x.arbiter.replay import replay
 from veronte4x.arbiter.scores import compute_scores, explain_scores
 
 #: The seed's arbitration example (seed 003, "Arbitration Example"): roll and pitch
@@ -88,3 +90,40 @@ def config_defaults() -> str:
         shown = default.name if isinstance(default, enum.Enum) else repr(default)
         lines.append(f"| `{item.name}` | `{shown}` |")
     return "\n".join(lines)
+
+
+def _example_status(selected: int, alive: tuple[bool, bool, bool, bool]) -> bytes:
+    everything_ok = dict.fromkeys(
+        (item.name for item in dataclasses.fields(codec.Status)[4:]), True
+    )
+    ready = (True, True, True, False)
+    return codec.encode(codec.Status(selected, True, alive, ready, **everything_ok))
+
+
+def example_capture() -> list[tuple[float, int, bytes]]:
+    """A made-up capture for the replay how-to: the seed example's three autopilots send
+    every 0.05 s; AP2 falls silent from 1.55 s; the recorded arbiter reports the switch
+    one Status late (at 2.0 s instead of 1.75 s)."""
+    frames: list[tuple[float, int, bytes]] = []
+    before = _example_status(1, (True, True, True, False))
+    after = _example_status(2, (True, False, True, False))
+    ready = codec.encode(codec.Ready(True))
+    for tick in range(61):
+        time = round(tick * 0.05, 9)
+        for autopilot, can_id in enumerate((8, 9, 10)):
+            if autopilot == 1 and time >= 1.55:
+                continue
+            frames.append((time, can_id, ready))
+            for number, value in enumerate(SEED_EXAMPLE_VALUES[autopilot]):
+                message = codec.ArbitrationVariable(number, value)
+                frames.append((time, can_id, codec.encode(message)))
+        if tick % 5 == 0:
+            frames.append((time, 255, before if time < 2.0 else after))
+    return frames
+
+
+def replay_example() -> str:
+    """The timeline `replay` gives for `example_capture`, as a text block."""
+    config = ArbiterConfig(variables=SEED_EXAMPLE_VARIABLES)
+    result = replay(example_capture(), config)
+    return f"```text\n{result.timeline()}\n```"
