@@ -182,3 +182,18 @@ def test_variable_numbers_beyond_the_configuration_are_ignored() -> None:
         arb.receive(can_id, variable(2, 1.0), 0.0)
         arb.receive(can_id, variable(7, 1.0), 0.0)
     assert arb.state.scores == {0: 0.01, 1: 0.01, 2: 0.01}
+
+
+def test_maintenance_freezes_alive_and_dead() -> None:
+    rig = started()
+    rig.mute(0)
+    rig.run_until(1.5)
+    assert rig.arb.state.selected == 2  # AP1 died: relative variables out, AP3 best
+    rig.arb.command_maintenance(1.52)
+    rig.not_ready.add(1)
+    rig.mute(2)
+    rig.arb.set_fts(1.52, 1, False)
+    rig.run_until(3.0)
+    assert rig.arb.state.alive == (False, True, True, False)
+    assert rig.arb.state.selected == 2
+    assert rig.arb.state.ready == (True, False, True, False)

@@ -181,3 +181,24 @@ def test_external_autopilot_ignored_when_disabled() -> None:
     assert rig.arb.state.selected == 1
     assert set(rig.arb.state.scores) == {0, 1, 2}
     assert rig.arb.state.ready == (True, True, True, False)
+
+
+def test_a_nan_score_ranks_worst() -> None:
+    config = ArbiterConfig(variables=ONE_ABSOLUTE)
+    nan = float("nan")
+    assert best({0: nan, 1: 0.5, 2: 0.7}, [0, 1, 2], preferred=0) == 1
+    choice = choose(config, 0, [0, 1, 2], {0: nan, 1: 0.5, 2: 0.7})
+    assert choice is not None and choice.autopilot == 1
+    assert choose(config, 1, [0, 1, 2], {0: nan, 1: 0.5, 2: 0.7}) is None
+    rig = absolute_rig([0.5, nan, 0.7])
+    rig.run_until(0.5)
+    assert rig.arb.state.selected == 0
+
+
+def test_hysteresis_with_negative_scores_is_relative_to_their_size() -> None:
+    config = ArbiterConfig(variables=ONE_ABSOLUTE, hysteresis=0.5)
+    assert choose(config, 0, [0, 1, 2], {0: -1.0, 1: -1.4, 2: 0.0}) is None
+    choice = choose(config, 0, [0, 1, 2], {0: -1.0, 1: -1.6, 2: 0.0})
+    assert choice is not None and choice.autopilot == 1
+    draw = ArbiterConfig(variables=ONE_ABSOLUTE, preferred=1)
+    assert choose(draw, 0, [0, 1, 2], {0: -1.0, 1: -1.0, 2: 0.0}) is None

@@ -46,7 +46,7 @@ def configs(draw: st.DrawFn) -> ArbiterConfig:
 
 
 def steps(count: int) -> st.SearchStrategy[list[Step]]:
-    value = st.floats(-1e3, 1e3, width=32)
+    value = st.floats(-1e3, 1e3, width=32) | st.sampled_from([float("nan"), float("inf")])
     step = st.builds(
         Step,
         gap=st.sampled_from([0.0, 0.02, 0.05, 0.08, 0.15]),

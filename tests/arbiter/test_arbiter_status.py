@@ -136,6 +136,8 @@ def test_timestamps_must_not_go_backwards() -> None:
     arb.poll(2.0)
     with pytest.raises(InputError, match=r"timestamp = 1\.0: expected >= the previous one, 2\.0"):
         arb.receive(8, READY, 1.0)
+    with pytest.raises(InputError, match="a finite number of seconds"):
+        arb.advance(float("nan"))
     with pytest.raises(InputError, match="autopilot = 4"):
         arb.set_fts(3.0, 4, False)
 

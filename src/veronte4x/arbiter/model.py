@@ -150,6 +150,8 @@ class Arbiter:
         Raises:
             InputError: ``timestamp`` is earlier than the previous one.
         """
+        if not math.isfinite(timestamp):
+            raise InputError("timestamp", timestamp, "a finite number of seconds")
         if self._time is not None and timestamp < self._time:
             raise InputError("timestamp", timestamp, f">= the previous one, {self._time}")
         if self._boot is None:
@@ -295,7 +297,8 @@ class Arbiter:
         return True
 
     def _kill(self, autopilot: int, event: AutopilotEvent, time: float, cause: str) -> None:
-        if self._move(autopilot, event):
+        # Deaths belong to arbitration; Maintenance freezes alive and dead as they were.
+        if self._phase is Phase.ARBITRATING and self._move(autopilot, event):
             why = f"{autopilot_name(autopilot)} dead: {cause}"
             self._record(time, DecisionKind.DEAD, autopilot, why)
             self._update_scores()

@@ -10,6 +10,7 @@ the score.", "If all autopilots are Dead, the Preferred autopilot will be select
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
@@ -37,13 +38,29 @@ def _fmt(score: float) -> str:
     return f"{score:.3g}"
 
 
+def rank(score: float) -> float:
+    """A score as it ranks: NaN (from a NaN variable) ranks as the worst."""
+    return math.inf if math.isnan(score) else score
+
+
+def beats(offered: float, current: float, hysteresis: float) -> bool:
+    """Whether ``offered`` is lower than ``current`` by more than ``hysteresis x |current|``.
+
+    For the seed's non-negative scores this is ``offered < current x (1 - hysteresis)``.
+    """
+    offered, current = rank(offered), rank(current)
+    if math.isinf(current):
+        return offered < current
+    return offered < current - hysteresis * abs(current)
+
+
 def best(scores: Mapping[int, float], candidates: Sequence[int], preferred: int) -> int | None:
     """The candidate with the lowest score; the preferred one wins a draw, then the lowest
     number. ``None`` when no candidate has a score."""
     scored = [ap for ap in candidates if ap in scores]
     if not scored:
         return None
-    return min(scored, key=lambda ap: (scores[ap], ap != preferred, ap))
+    return min(scored, key=lambda ap: (rank(scores[ap]), ap != preferred, ap))
 
 
 def next_alive(selected: int, alive: Sequence[int], order: Sequence[int]) -> int:
@@ -121,10 +138,9 @@ def _method_choice(
     if candidate is None or candidate == selected:
         return None
     current, offered = scores[selected], scores[candidate]
-    if method is Method.CHANGE_IF_WORST and any(scores[ap] > current for ap in alive):
+    if method is Method.CHANGE_IF_WORST and any(rank(scores[ap]) > rank(current) for ap in alive):
         return None
-    limit = current * (1.0 - config.hysteresis)
-    if not offered < limit:
+    if not beats(offered, current, config.hysteresis):
         return None
     reason = (
         f"{autopilot_name(candidate)} {_fmt(offered)} < {autopilot_name(selected)} "
