@@ -6,7 +6,15 @@ from __future__ import annotations
 import pytest
 from arbiter_support import SEED_VARIABLES, Rig
 
-from veronte4x.arbiter import ArbiterConfig, DecisionKind, Failover, Method, VariableConfig
+from veronte4x.arbiter import (
+    ArbiterConfig,
+    DecisionKind,
+    Failover,
+    MaxErrorMode,
+    Method,
+    RelativeMean,
+    VariableConfig,
+)
 from veronte4x.arbiter.selection import best, choose
 
 ONE_ABSOLUTE = (VariableConfig(weight=1.0, absolute=True),)
@@ -65,6 +73,14 @@ def test_holding_time_delays_a_switch_to_when_it_ends() -> None:
     assert switches(rig) == [
         (0.0, 1, "AP1 -> AP2: AP2 0.2 < AP1 0.5 x (1 - 0)"),
         (2.02, 2, "AP2 -> AP3: AP3 0.1 < AP2 0.2 x (1 - 0)"),
+    ]
+    held = [d for d in rig.arb.decisions if d.kind is DecisionKind.HOLD]
+    assert [(d.time, d.autopilot, d.reason) for d in held] == [
+        (
+            0.55,
+            2,
+            "AP2 -> AP3 held until 2.020 s (holding time): AP3 0.1 < AP2 0.2 x (1 - 0)",
+        )
     ]
 
 
@@ -202,3 +218,27 @@ def test_hysteresis_with_negative_scores_is_relative_to_their_size() -> None:
     assert choice is not None and choice.autopilot == 1
     draw = ArbiterConfig(variables=ONE_ABSOLUTE, preferred=1)
     assert choose(draw, 0, [0, 1, 2], {0: -1.0, 1: -1.0, 2: 0.0}) is None
+
+
+def test_relative_mean_and_max_error_options_reach_the_model() -> None:
+    variables = (VariableConfig(weight=1.0, max_error=0.5),)
+    values = {0: [10.0], 1: [1.0], 2: [2.0], 3: [3.0]}
+    scores = {}
+    for mean in (RelativeMean.ALIVE, RelativeMean.REPORTING):
+        for clamp in (MaxErrorMode.IGNORE, MaxErrorMode.CLAMP):
+            config = ArbiterConfig(
+                variables=variables,
+                external_enabled=True,
+                relative_mean=mean,
+                max_error_mode=clamp,
+            )
+            rig = Rig(config, values)
+            rig.run_until(0.5)
+            rig.mute(0)
+            rig.run_until(1.0)
+            scores[mean, clamp] = rig.arb.state.scores
+    # AP1 is dead: the mean of the alive ones is 2, of all four 4.
+    assert scores[RelativeMean.ALIVE, MaxErrorMode.IGNORE] == {0: 8.0, 1: 1.0, 2: 0.0, 3: 1.0}
+    assert scores[RelativeMean.REPORTING, MaxErrorMode.IGNORE] == {0: 6.0, 1: 3.0, 2: 2.0, 3: 1.0}
+    assert scores[RelativeMean.ALIVE, MaxErrorMode.CLAMP] == {0: 0.5, 1: 0.5, 2: 0.0, 3: 0.5}
+    assert scores[RelativeMean.REPORTING, MaxErrorMode.CLAMP] == {0: 0.5, 1: 0.5, 2: 0.5, 3: 0.5}

@@ -32,7 +32,7 @@ from veronte4x.arbiter.machine import (
     Phase,
 )
 from veronte4x.arbiter.model import Arbiter
-from veronte4x.arbiter.replay import Disagreement, ReplayResult, replay
+from veronte4x.arbiter.replay import CapturedFrame, Disagreement, FrameError, ReplayResult, replay
 from veronte4x.arbiter.scores import Contribution, compute_scores, explain_scores
 from veronte4x.arbiter.state import ArbiterState, Decision, DecisionKind, Mode, SystemChecks
 
@@ -44,6 +44,7 @@ __all__ = [
     "ArbiterState",
     "AutopilotEvent",
     "AutopilotPhase",
+    "CapturedFrame",
     "ConfigError",
     "Contribution",
     "Decision",
@@ -51,6 +52,7 @@ __all__ = [
     "Disagreement",
     "Event",
     "Failover",
+    "FrameError",
     "InputError",
     "MaxErrorMode",
     "Method",

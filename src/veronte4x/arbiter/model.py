@@ -86,6 +86,7 @@ class Arbiter:
         self._selected = config.preferred if fixed is None else fixed
         self._last_switch: float | None = None
         self._retry_at: float | None = None
+        self._held: int | None = None  # the switch waiting for the holding time to end
         # No timed event falls due before this time (a lower bound: receipts only push
         # deadlines later); anything that brings one earlier lowers it.
         self._quiet_until = -math.inf
@@ -375,16 +376,21 @@ class Arbiter:
             return
         self._retry_at = None
         choice = choose(self.config, self._selected, self._alive(), self._scores)
-        if choice is None:
-            return
+        held = None
         reference = self._holding_reference()
-        if not choice.forced and reference is not None:
+        if choice is not None and not choice.forced and reference is not None:
             allowed = reference + self.config.holding_time
             if time < allowed:
                 self._retry_at = allowed
                 self._quiet_until = min(self._quiet_until, allowed)
-                return
-        self._switch(choice, time)
+                held = choice.autopilot
+                if held != self._held and self.config.method is not Method.ROUND_ROBIN:
+                    move = f"{autopilot_name(self._selected)} -> {autopilot_name(held)}"
+                    why = f"{move} held until {allowed:.3f} s (holding time): {choice.reason}"
+                    self._record(time, DecisionKind.HOLD, held, why)
+        self._held = held
+        if choice is not None and held is None:
+            self._switch(choice, time)
 
     def _switch(self, choice: Choice, time: float) -> None:
         old = autopilot_name(self._selected)

@@ -95,6 +95,7 @@ class DecisionKind(enum.Enum):
     ARBITRATION = "arbitration"
     DEAD = "dead"
     SWITCH = "switch"
+    HOLD = "held"
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,7 +104,8 @@ class Decision:
 
     Attributes:
         time: When it happened, in the timestamps' unit (s).
-        kind: What changed.
+        kind: What changed (``HOLD``: a switch the method asks for waits for the
+            holding time).
         autopilot: The autopilot concerned (the new one for a switch), if any.
         reason: Why, in words: "AP1 dead: arbitration variable 2 missing for 0.1 s".
     """
