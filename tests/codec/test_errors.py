@@ -41,7 +41,8 @@ ARB, AP = Sender.ARBITER, Sender.AUTOPILOT
         (
             "050102030405060708",
             AP,
-            "frame: 9 bytes; a frame has 1 to 8 (data: 05 01 02 03 04 05 06 07 08)",
+            "ScorpionEscTelemetry: 9 bytes; the layout has 1 to 8 "
+            "(data: 05 01 02 03 04 05 06 07 08)",
         ),
     ],
 )

@@ -81,7 +81,13 @@ def test_mixed_none_and_bool_flags_do_not_encode() -> None:
     half = dataclasses.replace(CEX_CLEAR, pdi_ok=True)
     with pytest.raises(codec.EncodeError) as err:
         codec.encode(half)
-    assert str(err.value) == "Status.cbit_ok = None: expected a bool"
+    assert str(err.value) == (
+        "Status.pdi_ok = True: expected None like cbit_ok (the 4-byte CEX form), "
+        "or set every flag (the 6-byte 4x form)"
+    )
+    with pytest.raises(codec.EncodeError) as err:
+        codec.encode(dataclasses.replace(ALL_CLEAR, power_ok=None))
+    assert str(err.value) == "Status.power_ok = None: expected a bool"
 
 
 def test_selected_above_3_is_a_decode_error() -> None:

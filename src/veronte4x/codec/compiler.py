@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import struct
+import types
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -54,6 +55,7 @@ class FrameLayout:
         implied: Attributes the layout fixes without sending them (name, value).
         source: Where the layout comes from (seed section or notes).
         title: Short name for docs and errors, defaults to the class name.
+        implied_text: What an encoding error says is allowed for an implied attribute.
     """
 
     message: type[Message]
@@ -62,6 +64,7 @@ class FrameLayout:
     implied: tuple[tuple[str, Any], ...] = ()
     source: str = ""
     title: str = ""
+    implied_text: str = ""
 
     @property
     def name(self) -> str:
@@ -73,6 +76,15 @@ class FrameLayout:
         """The trailing BYTES field, if the layout ends with one."""
         last = self.fields[-1] if self.fields else None
         return last if last is not None and last.kind is Kind.BYTES else None
+
+    @cached_property
+    def fields_by_attr(self) -> dict[str, Field]:
+        """The first field of each message attribute."""
+        out: dict[str, Field] = {}
+        for f in self.fields:
+            if f.attr is not None:
+                out.setdefault(f.attr, f)
+        return out
 
     @cached_property
     def fixed_bits(self) -> int:
@@ -143,6 +155,8 @@ class FrameLayout:
 
 
 _F32 = {ByteOrder.LITTLE: struct.Struct("<f"), ByteOrder.BIG: struct.Struct(">f")}
+_BITS = tuple(tuple(byte >> bit & 1 == 1 for bit in range(8)) for byte in range(256))
+"""Each byte value's eight bits as booleans, bit 0 first."""
 
 
 def _namespace(layout: FrameLayout) -> dict[str, Any]:
@@ -156,16 +170,20 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
 
     namespace: dict[str, Any] = {
         "_cls": layout.message,
+        "_new": object.__new__,
+        "_BITS": _BITS,
         "_derr": decode_error,
         "_eerr": encode_error,
         "_from_bytes": int.from_bytes,
         "_f32": _F32[layout.byte_order].unpack_from,
         "_float_from_bits": float_from_bits,
         "_bits_from_float": bits_from_float,
+        "_pack_f32": _F32[ByteOrder.LITTLE].pack,
         "_bytes": bytes,
         "_len": len,
         "_isinstance": isinstance,
         "_int": int,
+        "_float": float,
         "_number": (int, float),
         "_bool": bool,
         "_tuple": tuple,
@@ -176,37 +194,44 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     }
     for attr, value in layout.implied:
         namespace[f"_implied_{attr}"] = value
+    for dc_field in dataclasses.fields(layout.message):
+        namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
     return namespace
 
 
-def _arguments(layout: FrameLayout) -> list[str]:
-    """The positional constructor arguments, in the dataclass's field order."""
-    by_attr: dict[str, list[tuple[int | None, str]]] = {}
+def _slot_setter(cls: type[Message], attr: str) -> Callable[[Message, Any], None]:
+    """The slot descriptor's setter: it bypasses the frozen __setattr__, for decoding only."""
+    descriptor = getattr(cls, attr, None)
+    if not isinstance(descriptor, types.MemberDescriptorType):
+        raise LayoutError(f"{cls.__name__}.{attr} is not a slot: declare the class slots=True")
+    return descriptor.__set__
+
+
+def _values(layout: FrameLayout) -> list[tuple[str, str]]:
+    """(attribute, expression) for every dataclass field, in the dataclass's order."""
+    by_attr: dict[str, list[tuple[int, str]]] = {}
     for number, f in enumerate(layout.fields):
         if f.attr is not None:
-            by_attr.setdefault(f.attr, []).append((f.index, f"f{number}"))
+            by_attr.setdefault(f.attr, []).append((f.index or 0, f"f{number}"))
     implied = {attr for attr, _ in layout.implied}
-    args = []
+    values = []
     for dc_field in dataclasses.fields(layout.message):
         attr = dc_field.name
         if attr in implied:
-            args.append(f"_implied_{attr}")
+            values.append((attr, f"_implied_{attr}"))
         elif attr in by_attr:
-            parts = by_attr[attr]
-            if parts[0][0] is None:
-                args.append(parts[0][1])
+            parts = sorted(by_attr[attr])
+            if layout.fields_by_attr[attr].index is None:
+                values.append((attr, parts[0][1]))
             else:
-                args.append(
-                    "(" + ", ".join(v for _, v in sorted(parts, key=lambda p: p[0] or 0)) + ",)"
-                )
+                values.append((attr, "(" + ", ".join(v for _, v in parts) + ",)"))
         else:
             raise LayoutError(f"{layout.name}: the layout does not fill field {attr!r}")
-    return args
+    return values
 
 
 def _decode_source(layout: FrameLayout) -> str:
     size = layout.fixed_size
-    order = layout.byte_order.value
     lines = ["def decode(data, excess):", "    n = _len(data)"]
     if layout.tail is None:
         lines += [
@@ -221,19 +246,60 @@ def _decode_source(layout: FrameLayout) -> str:
             f"    if n < {size} or n > {most}:",
             f"        raise _derr('{{}} bytes; the layout has {size} to {most}'.format(n), data)",
         ]
-    lines.append(f"    w = _from_bytes(data[:{size}], '{order}')")
+    body: list[str] = []
+    flag_bytes = _flag_bytes(layout)
+    for index, numbers in flag_bytes.items():
+        body.append("    " + ", ".join(f"f{n}" for n in numbers) + f" = _BITS[data[{index}]]")
+    grouped = {n for numbers in flag_bytes.values() for n in numbers}
+    needs_word = False
     for number, p in enumerate(layout.placed):
-        lines += _decode_field(layout, number, p)
+        if number not in grouped:
+            body += _decode_field(layout, number, p)
+            needs_word |= _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING
+    if needs_word:
+        lines.append(f"    w = _from_bytes(data[:{size}], '{layout.byte_order.value}')")
+    lines += body
     if layout.tail is not None:
         lines.append(f"    f{len(layout.fields) - 1} = _bytes(data[{size}:])")
-    lines.append("    return _cls(" + ", ".join(_arguments(layout)) + ")")
+    # Fill the slots directly: a frozen dataclass's __init__ costs far more (docs/performance.md).
+    lines.append("    o = _new(_cls)")
+    lines += [f"    _set_{attr}(o, {value})" for attr, value in _values(layout)]
+    lines.append("    return o")
     return "\n".join(lines) + "\n"
+
+
+def _byte_index(layout: FrameLayout, p: Placed) -> int | None:
+    """The index of the one byte that holds a field, or None if it spans several."""
+    low_byte, high_byte = p.shift // 8, (p.shift + p.field.bits - 1) // 8
+    if low_byte != high_byte:
+        return None
+    return low_byte if layout.byte_order is ByteOrder.LITTLE else layout.fixed_size - 1 - low_byte
+
+
+def _flag_bytes(layout: FrameLayout) -> dict[int, list[int]]:
+    """Bytes made of eight one-bit flags: byte index to field numbers, bit 0 first."""
+    by_byte: dict[int, dict[int, int]] = {}
+    for number, p in enumerate(layout.placed):
+        index = _byte_index(layout, p)
+        if p.field.kind is Kind.BOOL and index is not None:
+            by_byte.setdefault(index, {})[p.shift % 8] = number
+    return {index: [bits[b] for b in range(8)] for index, bits in by_byte.items() if len(bits) == 8}
+
+
+def _raw(layout: FrameLayout, p: Placed) -> str:
+    """The expression that extracts a field's wire bits, from one byte when it fits in one."""
+    mask = (1 << p.field.bits) - 1
+    index = _byte_index(layout, p)
+    if index is not None:
+        shift = p.shift % 8
+        source = f"(data[{index}] >> {shift})" if shift else f"data[{index}]"
+        return source if p.field.bits + shift == 8 else f"{source} & {mask:#x}"
+    return f"(w >> {p.shift}) & {mask:#x}" if p.shift else f"w & {mask:#x}"
 
 
 def _decode_field(layout: FrameLayout, number: int, p: Placed) -> list[str]:
     f = p.field
-    mask = (1 << f.bits) - 1
-    raw = f"(w >> {p.shift}) & {mask:#x}" if p.shift else f"w & {mask:#x}"
+    raw = _raw(layout, p)
     var = f"f{number}"
     label = f.label
     if f.kind is Kind.PADDING:
@@ -252,7 +318,8 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed) -> list[str]:
             return [
                 f"    {var} = _f32(data, {offset})[0]",
                 f"    if {var} != {var}:",
-                f"        {var} = _float_from_bits({raw})",
+                f"        {var} = _float_from_bits(_from_bytes(data[{offset}:{offset + 4}], "
+                f"'{layout.byte_order.value}'))",
             ]
         return [f"    {var} = _float_from_bits({raw})"]
     lines = [f"    {var} = {raw}"]
@@ -274,9 +341,10 @@ def _encode_source(layout: FrameLayout) -> str:
     const = 0
     lines = ["def encode(m):"]
     for attr, value in layout.implied:
+        test = f"m.{attr} is not None" if value is None else f"m.{attr} != _implied_{attr}"
         lines += [
-            f"    if m.{attr} != _implied_{attr}:",
-            f"        raise _eerr('{attr}', m.{attr}, {_implied_text(value)!r})",
+            f"    if {test}:",
+            f"        raise _eerr('{attr}', m.{attr}, {layout.implied_text or repr(value)!r})",
         ]
     seen_tuples: set[str] = set()
     body: list[str] = []
@@ -329,10 +397,11 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
     if f.kind is Kind.FLOAT32:
         return [
             *lines,
-            "    if not _isinstance(v, _number) or _isinstance(v, _bool):",
+            "    if v.__class__ is not _float and (not _isinstance(v, _number) "
+            "or _isinstance(v, _bool)):",
             f"        raise _eerr('{label}', v, 'a float')",
             "    try:",
-            "        v = _bits_from_float(v)",
+            "        v = _from_bytes(_pack_f32(v), 'little') if v == v else _bits_from_float(v)",
             "    except _OverflowError:",
             f"        raise _eerr('{label}', v, 'a float within the float32 range') from None",
             f"    w |= v{place}",
@@ -346,8 +415,8 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
     mask = (1 << f.bits) - 1
     if f.scale is None:
         lines += [
-            "    if not _isinstance(v, _int) or _isinstance(v, _bool) "
-            f"or not {low} <= v <= {high}:",
+            "    if (v.__class__ is not _int and (not _isinstance(v, _int) "
+            f"or _isinstance(v, _bool))) or not {low} <= v <= {high}:",
             f"        raise _eerr('{label}', v, 'an int in {low}..{high}')",
         ]
     else:
@@ -369,7 +438,3 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
         lines.append(f"    v &= {mask:#x}")
     lines.append(f"    w |= v{place}")
     return lines
-
-
-def _implied_text(value: object) -> str:
-    return "None (this form does not carry the field)" if value is None else f"{value!r}"

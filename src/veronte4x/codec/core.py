@@ -18,7 +18,8 @@ from veronte4x.codec.messages import Message, PwmSet, Sender, Status
 from veronte4x.codec.pwm import PwmPacking
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, UnknownCommandError
 
-_STATUS_FLAG_NAMES = tuple(attr for attr, _ in layouts.STATUS_FLAGS)
+_ARBITER = Sender.ARBITER
+_AUTOPILOT = Sender.AUTOPILOT
 
 
 class Codec:
@@ -65,10 +66,7 @@ class Codec:
 
         def encode_status(message: Message) -> bytes:
             assert isinstance(message, Status)
-            flags = [getattr(message, attr) for attr in _STATUS_FLAG_NAMES]
-            if flags.count(None) == len(flags):
-                return encode_cex(message)
-            return encode_4x(message)
+            return (encode_4x if message.cbit_ok is not None else encode_cex)(message)
 
         def decode_version(data: bytes, excess: bool) -> Message:
             return request(data, excess) if len(data) == 1 else response(data, excess)
@@ -111,7 +109,8 @@ class Codec:
         """Decode one Veronte frame's data bytes.
 
         Args:
-            data: The frame's data field (byte 0 is the message type), 1..8 bytes.
+            data: The frame's data field (byte 0 is the message type), 1..8 bytes (more
+                only with ``allow_excess``).
             sender: Who sent the frame; it tells Status from Ready and Score from
                 ArbitrationVariable. Frames of other types decode the same for both.
             allow_excess: Ignore bytes past the layout instead of rejecting the frame.
@@ -124,22 +123,21 @@ class Codec:
                 declared for it); the error carries the command byte and the data.
             DecodeError: The frame is empty, too short, too long, or a field is out of range.
         """
-        n = len(data)
-        if not 0 < n <= MAX_FRAME_BYTES:
-            raise DecodeError(None, f"{n} bytes; a frame has 1 to {MAX_FRAME_BYTES}", data)
+        if not data:
+            raise DecodeError(None, f"0 bytes; a frame has 1 to {MAX_FRAME_BYTES}", data)
         command = data[0]
-        if command == 0:
-            if n < 2:
-                raise DecodeError(None, "an arbitration frame has at least 2 bytes", data)
-            if sender is Sender.ARBITER:
-                return (self._status if data[1] == 0xFF else self._score)(data, allow_excess)
-            if sender is Sender.AUTOPILOT:
-                return (self._ready if data[1] == 0xFF else self._variable)(data, allow_excess)
-            raise TypeError(f"sender must be a Sender, not {sender!r}")
-        decode = self._by_command[command]
-        if decode is None:
-            raise UnknownCommandError(command, data)
-        return decode(data, allow_excess)
+        if command:
+            decode = self._by_command[command]
+            if decode is None:
+                raise UnknownCommandError(command, data)
+            return decode(data, allow_excess)
+        if len(data) < 2:
+            raise DecodeError(None, "an arbitration frame has at least 2 bytes", data)
+        if sender is _ARBITER:
+            return (self._status if data[1] == 0xFF else self._score)(data, allow_excess)
+        if sender is _AUTOPILOT:
+            return (self._ready if data[1] == 0xFF else self._variable)(data, allow_excess)
+        raise TypeError(f"sender must be a Sender, not {sender!r}")
 
     def encode(self, message: Message) -> bytes:
         """Encode a message into a frame's data bytes, validating every field.
@@ -149,12 +147,11 @@ class Codec:
                 message type, the field, the value and what is allowed), or the message is
                 not a Veronte message this codec knows.
         """
-        try:
-            encode = self._encoders[type(message)]
-        except KeyError:
+        encode = self._encoders.get(type(message))
+        if encode is None:
             raise EncodeError(
                 type(message).__name__, "message", message, "a veronte4x.codec message"
-            ) from None
+            )
         return encode(message)
 
 

@@ -73,6 +73,7 @@ STATUS_CEX = FrameLayout(
     implied=tuple((attr, None) for attr, _ in STATUS_FLAGS),
     source="notes/veronte-protocol.md: the CEX arbiter sends only bytes 0-3 of the Status",
     title="Status (CEX, 4 bytes)",
+    implied_text="None like cbit_ok (the 4-byte CEX form), or set every flag (the 6-byte 4x form)",
 )
 
 SCORE = FrameLayout(
