@@ -10,6 +10,7 @@ re-encode to the very bytes it came from.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
+from typing import NamedTuple
 
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import MAX_FRAME_BYTES, Decoder, Encoder
@@ -19,6 +20,22 @@ from veronte4x.codec.pwm import PwmPacking
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, UnknownCommandError
 
 _ARBITER = Sender.ARBITER
+
+
+class Dispatch(NamedTuple):
+    """Where a sender's frames go: by command byte, and for command 0 by byte 1.
+
+    Attributes:
+        by_command: Decoder for each command byte 1..255 (index 0 unused), None if unknown.
+        header_ff: Decoder of command 0 frames whose byte 1 is 0xFF (Status or Ready).
+        other: Decoder of the other command 0 frames (Score or ArbitrationVariable).
+    """
+
+    by_command: tuple[Decoder | None, ...]
+    header_ff: Decoder
+    other: Decoder
+
+
 _AUTOPILOT = Sender.AUTOPILOT
 
 
@@ -138,6 +155,16 @@ class Codec:
         if sender is _AUTOPILOT:
             return (self._ready if data[1] == 0xFF else self._variable)(data, allow_excess)
         raise TypeError(f"sender must be a Sender, not {sender!r}")
+
+    def dispatch(self, sender: Sender) -> Dispatch:
+        """The decoders `decode` chooses from for one sender, for loops that inline dispatch.
+
+        Each decoder is called as ``decoder(data, allow_excess)``; a missing one (None) is
+        where `decode` raises `UnknownCommandError`.
+        """
+        if sender is _ARBITER:
+            return Dispatch(tuple(self._by_command), self._status, self._score)
+        return Dispatch(tuple(self._by_command), self._ready, self._variable)
 
     def encode(self, message: Message) -> bytes:
         """Encode a message into a frame's data bytes, validating every field.

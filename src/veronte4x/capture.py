@@ -1,0 +1,109 @@
+"""Captures in notebooks: read a capture into records, count them, tabulate and plot them.
+
+Example:
+    >>> from veronte4x import capture
+    >>> records = list(capture.read("examples/capture.log"))
+    >>> records[2].sender, records[2].message
+    ('AP1', Ready(ready=True))
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING, Any
+
+from veronte4x.busmap import BusMap
+from veronte4x.decoder import CaptureDecoder
+from veronte4x.readers.candump import read_candump
+from veronte4x.readers.open import CANDUMP_SUFFIXES, open_frames
+from veronte4x.records import Record
+from veronte4x.stats import Stats
+
+if TYPE_CHECKING:
+    import pandas
+
+__all__ = ["Record", "Stats", "fields", "read", "stats", "to_dataframe"]
+
+
+def read(path: str, bus_map: BusMap | None = None, channel: str | None = None) -> Iterator[Record]:
+    """Stream the decoded records of a capture file.
+
+    Args:
+        path: candump text (``.log``, ``.txt``, gzipped or not; ``-`` for standard input),
+            or any format python-can reads (needs the ``can`` extra).
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
+    """
+    decoder = CaptureDecoder(bus_map)
+    if path == "-" or path.lower().endswith(CANDUMP_SUFFIXES):
+        if path.endswith(".gz") or path == "-":
+            return decoder.decode(read_candump(path, channel))
+        return _decode_text_file(decoder, path, channel)
+    return decoder.decode(open_frames(path, channel))
+
+
+def _decode_text_file(decoder: CaptureDecoder, path: str, channel: str | None) -> Iterator[Record]:
+    with open(path, encoding="utf-8", errors="replace") as lines:
+        yield from decoder.decode_candump(lines, channel)
+
+
+def stats(records: Iterable[Record]) -> Stats:
+    """Count records per message type, per sender and errors per kind."""
+    counts = Stats()
+    for record in records:
+        counts.add(record)
+    return counts
+
+
+def fields(message: Any) -> dict[str, Any]:
+    """A message's fields as a flat dict: tuples become ``name_0``, ``name_1``, enums values.
+
+    Nested dataclasses (DroneCAN) flatten with dots: ``status.uptime_sec``.
+    """
+    out: dict[str, Any] = {}
+    if dataclasses.is_dataclass(message) and not isinstance(message, type):
+        _flatten(message, "", out)
+    return out
+
+
+def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
+    for field in dataclasses.fields(message):
+        value = getattr(message, field.name)
+        name = prefix + field.name
+        if dataclasses.is_dataclass(value) and not isinstance(value, type):
+            _flatten(value, name + ".", out)
+        elif isinstance(value, tuple):
+            for index, item in enumerate(value):
+                out[f"{name}_{index}"] = item
+        elif isinstance(value, enum.Enum):
+            out[name] = value.value
+        else:
+            out[name] = value
+
+
+def to_dataframe(records: Iterable[Record]) -> pandas.DataFrame:
+    """One row per record, the record's columns then every message field as a column.
+
+    Columns: ``timestamp``, ``channel``, ``can_id``, ``sender``, ``message`` (class name),
+    ``error``, ``detail``, ``data`` (hex), then the fields of `fields`. Needs the ``pandas``
+    extra.
+    """
+    import pandas
+
+    rows = []
+    for record in records:
+        row: dict[str, Any] = {
+            "timestamp": record.timestamp,
+            "channel": record.channel,
+            "can_id": record.can_id,
+            "sender": record.sender,
+            "message": None if record.error else type(record.message).__name__,
+            "error": record.error,
+            "detail": record.detail,
+            "data": record.data.hex(),
+        }
+        row.update(fields(record.message))
+        rows.append(row)
+    return pandas.DataFrame(rows)

@@ -1,0 +1,143 @@
+"""Turn captured frames into records: the bus map routes, the codecs decode.
+
+Sans-IO: frames come in with their timestamps; nothing here opens a file or reads a clock.
+A bad frame becomes a record with its error and raw bytes; the stream never stops on one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+from veronte4x.busmap import BusMap, Role
+from veronte4x.codec import DecodeError, Sender, UnknownCommandError
+from veronte4x.codec.core import Dispatch
+from veronte4x.frames import BadLine, Frame
+from veronte4x.readers.candump import parse_line
+from veronte4x.records import Record
+
+_SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
+_new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
+
+Route = tuple[Role, int | None, Dispatch]
+
+
+class CaptureDecoder:
+    """Decode the frames of a capture into `Record` objects.
+
+    Args:
+        bus_map: CAN IDs of the Veronte roles and the codec choices; defaults to Embention's
+            template IDs.
+    """
+
+    def __init__(self, bus_map: BusMap | None = None) -> None:
+        self.bus_map = bus_map or BusMap()
+        self.codec = self.bus_map.codec()
+        self._routes: dict[int, Route] = {
+            can_id: (role, index, self.codec.dispatch(_SENDERS[role]))
+            for can_id, (role, index) in self.bus_map.veronte_roles.items()
+        }
+
+    def decode(self, items: Iterable[Frame | BadLine]) -> Iterator[Record]:
+        """Yield the records of a stream of frames and bad lines, in order."""
+        routes = self._routes
+        veronte_extended = self.bus_map.extended
+        excess = self.bus_map.allow_excess
+        for item in items:
+            if type(item) is Frame:
+                timestamp, channel, can_id, data, extended, remote, fd, error = item
+                route = routes.get(can_id) if extended == veronte_extended else None
+                if route is not None and not (remote or error or fd):
+                    yield self._veronte(timestamp, channel, can_id, data, route, excess)
+                    continue
+                yield from self.frame_records(item)
+            else:
+                yield self._bad_line(item)  # type: ignore[arg-type]
+
+    def decode_candump(self, lines: Iterable[str], channel: str | None = None) -> Iterator[Record]:
+        """Yield the records of candump text, reading and decoding in one pass.
+
+        Equivalent to ``decode(parse_candump(lines, channel))``, but classic frames of the
+        log form on Veronte IDs, the bulk of a capture, skip the intermediate `Frame`.
+        """
+        routes = self._routes if not self.bus_map.extended else {}
+        excess = self.bus_map.allow_excess
+        fromhex = bytes.fromhex
+        for number, line in enumerate(lines, 1):
+            parts = line.split()
+            if len(parts) == 3:
+                # The fast path of readers.candump.parse_candump, fused with decoding.
+                stamp, interface, body = parts
+                ident, _, text = body.partition("#")
+                if len(ident) == 3 and stamp[0] == "(" and stamp[-1] == ")":
+                    try:
+                        can_id = int(ident, 16)
+                        timestamp = float(stamp[1:-1])
+                        data = fromhex(text)
+                    except ValueError:
+                        pass
+                    else:
+                        route = routes.get(can_id)
+                        if channel is not None and interface != channel:
+                            continue
+                        if route is not None:
+                            yield self._veronte(timestamp, interface, can_id, data, route, excess)
+                            continue
+            if not parts:
+                continue
+            item = parse_line(line, number, parts)
+            if isinstance(item, BadLine):
+                yield self._bad_line(item)
+            elif channel is None or item.channel == channel:
+                yield from self.decode((item,))
+
+    def frame_records(self, frame: Frame) -> Iterator[Record]:
+        """The records of one frame that is not a plain Veronte frame."""
+        role, index = self.bus_map.role(frame.can_id, frame.extended)
+        base = (frame.timestamp, frame.channel, frame.can_id, role, index, None, None)
+        if frame.error:
+            yield Record(*base, "error frame", "error frame", frame.data)
+        elif frame.remote:
+            yield Record(*base, "remote frame", "remote frame", frame.data)
+        elif role is Role.ARBITER or role is Role.AUTOPILOT:
+            yield Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
+        else:
+            kind = "29-bit" if frame.extended else "11-bit"
+            yield Record(
+                *base, "unknown id", f"no role for {kind} CAN ID {frame.can_id:#x}", frame.data
+            )
+
+    def _veronte(
+        self,
+        timestamp: float | None,
+        channel: str,
+        can_id: int,
+        data: bytes,
+        route: Route,
+        excess: bool,
+    ) -> Record:
+        role, index, dispatch = route
+        try:
+            command = data[0] if data else None
+            if command:
+                decode = dispatch.by_command[command]
+            elif command == 0 and len(data) > 1:
+                decode = dispatch.header_ff if data[1] == 0xFF else dispatch.other
+            else:
+                decode = None
+            if decode is None:  # let the codec raise its own error for this frame
+                self.codec.decode(data, sender=_SENDERS[role])
+            message = decode(data, excess)  # type: ignore[misc]
+        except UnknownCommandError as failure:
+            return Record(timestamp, channel, can_id, role, index, None, None,
+                          "unknown command", str(failure), data)  # fmt: skip
+        except DecodeError as failure:
+            return Record(timestamp, channel, can_id, role, index, None, None,
+                          "decode error", str(failure), data)  # fmt: skip
+        return _new(
+            Record, (timestamp, channel, can_id, role, index, None, message, None, "", data, None)
+        )
+
+    @staticmethod
+    def _bad_line(item: BadLine) -> Record:
+        detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
+        return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")

@@ -1,0 +1,45 @@
+"""Read every log format python-can knows (ASC, BLF, TRC, CSV, MF4, .gz) through can.LogReader.
+
+Needs the ``can`` extra (``pip install "veronte4x[can]"``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+from veronte4x.frames import BadLine, Frame
+
+
+def frame_from_message(message: Any) -> Frame:
+    """Turn a ``can.Message`` into a `Frame`."""
+    channel = "" if message.channel is None else str(message.channel)
+    return Frame(
+        message.timestamp,
+        channel,
+        message.arbitration_id,
+        bytes(message.data or b""),
+        message.is_extended_id,
+        message.is_remote_frame,
+        message.is_fd,
+        message.is_error_frame,
+    )
+
+
+def read_with_python_can(path: str, channel: str | None = None) -> Iterator[Frame | BadLine]:
+    """Stream a capture through ``can.LogReader``; a reader failure ends it with a `BadLine`."""
+    import can
+
+    reader = can.LogReader(path)
+    count = 0
+    try:
+        for message in reader:
+            count += 1
+            frame = frame_from_message(message)
+            if channel is None or frame.channel == channel:
+                yield frame
+    except (ValueError, IndexError, KeyError, OSError) as error:
+        # python-can's readers stop at the first line they cannot parse.
+        yield BadLine(count + 1, "", f"python-can stopped reading: {error}")
+    finally:
+        reader.stop()

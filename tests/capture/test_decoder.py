@@ -1,0 +1,89 @@
+"""The capture decoder: routing by bus map, every error kind as a record, both paths equal."""
+
+from pathlib import Path
+
+from veronte4x import codec
+from veronte4x.busmap import BusMap, Role
+from veronte4x.decoder import CaptureDecoder
+from veronte4x.readers import read_candump
+from veronte4x.records import Record
+
+ODD = Path(__file__).with_name("data") / "odd.log"
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
+
+
+def _kinds(records: list[Record]) -> list[tuple[str, str]]:
+    return [(r.sender, r.kind) for r in records]
+
+
+def test_odd_capture_gives_one_record_per_frame_or_bad_line() -> None:
+    records = list(CaptureDecoder().decode(read_candump(str(ODD))))
+    assert _kinds(records) == [
+        ("arbiter", "Status"),
+        ("dronecan", "error: unknown id"),
+        ("unknown", "error: remote frame"),
+        ("unknown", "error: remote frame"),
+        ("unknown", "error: unknown id"),
+        ("dronecan", "error: error frame"),
+        ("AP1", "Ready"),
+        ("unknown", "error: unknown id"),
+        ("arbiter", "Status"),
+        ("AP2", "Ready"),
+        ("unknown", "error: remote frame"),
+        ("dronecan", "error: error frame"),
+        ("AP3", "Ready"),
+        ("unknown", "error: bad line"),
+        ("unknown", "error: bad line"),
+        ("unknown", "error: bad line"),
+        ("unknown", "error: bad line"),
+        ("AP1", "error: unknown command"),
+    ]
+    assert records[6].message == codec.Ready(ready=True)
+    assert records[-1].data == b"\x04\x00"
+    assert records[-1].detail == (
+        "frame.command: command byte 4 is reserved or unknown (data: 04 00)"
+    )
+    assert records[13].detail == "line 14: expected 'interface ID [length] data': 'garbage here'"
+
+
+def test_fused_candump_path_equals_the_two_stage_path() -> None:
+    decoder = CaptureDecoder()
+    for path in (ODD, EXAMPLE):
+        with path.open() as lines:
+            fused = list(decoder.decode_candump(lines))
+        assert fused == list(decoder.decode(read_candump(str(path))))
+
+
+def test_records_carry_role_autopilot_and_raw_bytes() -> None:
+    records = list(CaptureDecoder().decode(read_candump(str(EXAMPLE))))
+    ready = records[2]
+    assert ready == Record(
+        1763737200.01, "can0", 8, Role.AUTOPILOT, 0, None, codec.Ready(ready=True), None, "",
+        b"\x00\xff\x01",
+    )  # fmt: skip
+    assert ready.sender == "AP1"
+    assert records[3].sender == "AP2"
+
+
+def test_bad_veronte_frames_are_records_not_exceptions() -> None:
+    lines = [
+        "(1.0) can0 0FF#00FF05",  # Status of 3 bytes
+        "(2.0) can0 008#",  # empty frame
+        "(3.0) can0 008#00",  # 1-byte arbitration frame
+        "(4.0) can0 009#00FF0100000000",  # padded Ready: rejected unless allow_excess
+    ]
+    strict = list(CaptureDecoder().decode_candump(lines))
+    assert [r.error for r in strict] == ["decode error"] * 4
+    assert strict[1].detail == "frame: 0 bytes; a frame has 1 to 8 (data: empty)"
+    lenient = list(CaptureDecoder(BusMap(allow_excess=True)).decode_candump(lines))
+    assert lenient[3].message == codec.Ready(ready=True)
+
+
+def test_extended_veronte_ids() -> None:
+    bus = BusMap(arbiter_id=0x1ABCDEF0, autopilot_ids=(1, 2, 3, 4), extended=True)
+    records = list(CaptureDecoder(bus).decode_candump(["(1.0) can0 1ABCDEF0#00FF00"]))
+    assert records[0].error is not None  # 3-byte Status: decode error, routed as the arbiter
+    assert records[0].role is Role.ARBITER
+    records = list(CaptureDecoder(bus).decode_candump(["(1.0) can0 00000001#00FF01"]))
+    assert records[0].message == codec.Ready(ready=True)
+    assert records[0].sender == "AP1"
