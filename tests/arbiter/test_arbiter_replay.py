@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import struct
+from pathlib import Path
 
 import pytest
 from arbiter_support import (
@@ -21,6 +22,8 @@ from veronte4x.arbiter import (
     SystemChecks,
     replay,
 )
+from veronte4x.frames import Frame
+from veronte4x.readers import open_frames
 
 CONFIG = ArbiterConfig(variables=SEED_VARIABLES)
 
@@ -110,3 +113,21 @@ def test_replay_compares_the_mode_bit() -> None:
 def test_replay_needs_time_order() -> None:
     with pytest.raises(InputError):
         replay([(1.0, 8, READY), (0.5, 8, READY)], CONFIG)
+
+
+def test_replay_of_a_candump_file_as_in_the_how_to(tmp_path: Path) -> None:
+    log = tmp_path / "flight.log"
+    log.write_text(
+        "".join(
+            f"({time:.6f}) can0 {can_id:03X}#{data.hex().upper()}\n"
+            for time, can_id, data in failure_capture()
+        )
+    )
+    frames = [
+        (f.timestamp, f.can_id, f.data)
+        for f in open_frames(str(log))
+        if isinstance(f, Frame) and f.timestamp is not None and not (f.remote or f.error)
+    ]
+    result = replay(frames, CONFIG)
+    assert result.disagreements == ()
+    assert result.decisions[-1].reason == "AP2 -> AP3: AP2 is dead: AP3 (best score 0.015)"
