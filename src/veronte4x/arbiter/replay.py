@@ -1,0 +1,232 @@
+"""Replay a capture through the model: every decision, and where the real arbiter disagrees.
+
+The autopilots' frames drive an `Arbiter`; the real arbiter's Status and Score frames in
+the capture (on ``config.arbiter_id``) are compared with the model at their timestamps.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from veronte4x import codec
+from veronte4x.arbiter.config import ArbiterConfig, autopilot_name
+from veronte4x.arbiter.machine import Phase
+from veronte4x.arbiter.model import Arbiter
+from veronte4x.arbiter.state import ArbiterState, Decision, SystemChecks
+from veronte4x.errors import DecodeError
+
+#: One captured frame: (timestamp in s, CAN ID, data bytes).
+CapturedFrame = tuple[float, int, bytes]
+Value = bool | int | float | str | None
+
+_FLAG_FIELDS = ("alive", "ready")
+
+
+@dataclass(frozen=True, slots=True)
+class Disagreement:
+    """A run of the real arbiter's frames that disagree with the model on one field.
+
+    Attributes:
+        start: Time of the first disagreeing frame, s.
+        end: Time of the last one of the run, s.
+        field: What disagrees: "mode", "selected", "arbitrating", "alive AP2",
+            "ready AP1", "score AP3".
+        recorded: What the real arbiter sent.
+        modelled: What the model holds.
+        frames: How many frames of the capture the run spans.
+    """
+
+    start: float
+    end: float
+    field: str
+    recorded: Value
+    modelled: Value
+    frames: int
+
+    def __str__(self) -> str:
+        span = f"{self.start:.3f}-{self.end:.3f} s, {self.frames} frame(s)"
+        return (
+            f"{self.start:10.3f} s  DISAGREES   {self.field}: recorded "
+            f"{_show(self.field, self.recorded)}, model {_show(self.field, self.modelled)} ({span})"
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class FrameError:
+    """A captured frame that does not decode.
+
+    Attributes:
+        time: Its timestamp, s.
+        can_id: Its CAN ID.
+        data: Its bytes.
+        error: The decode error's message.
+    """
+
+    time: float
+    can_id: int
+    data: bytes
+    error: str
+
+    def __str__(self) -> str:
+        return f"{self.time:10.3f} s  BAD FRAME   id {self.can_id}: {self.error}"
+
+
+@dataclass(frozen=True, slots=True)
+class ReplayResult:
+    """What a replay found.
+
+    Attributes:
+        decisions: Every decision of the model, in time order.
+        disagreements: Every run of real-arbiter frames disagreeing with the model.
+        errors: Frames that did not decode (they are otherwise skipped).
+        state: The model's state after the last frame.
+    """
+
+    decisions: tuple[Decision, ...]
+    disagreements: tuple[Disagreement, ...]
+    errors: tuple[FrameError, ...]
+    state: ArbiterState
+
+    def timeline(self) -> str:
+        """Decisions, disagreements and bad frames as text, one a line, in time order."""
+        entries: list[tuple[float, int, str]] = [
+            (item.time, 0, str(item)) for item in self.decisions
+        ]
+        entries += [(item.start, 1, str(item)) for item in self.disagreements]
+        entries += [(item.time, 2, str(item)) for item in self.errors]
+        return "\n".join(line for _, _, line in sorted(entries, key=lambda e: (e[0], e[1])))
+
+
+def _show(field: str, value: Value) -> str:
+    if field == "selected" and isinstance(value, int):
+        return autopilot_name(value)
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return str(value)
+
+
+def _same_score(recorded: float, modelled: float, tolerance: float) -> bool:
+    if math.isnan(recorded) or math.isnan(modelled):
+        return math.isnan(recorded) and math.isnan(modelled)
+    if recorded == modelled:
+        return True
+    return abs(recorded - modelled) <= tolerance * max(abs(recorded), abs(modelled))
+
+
+@dataclass(slots=True)
+class _Run:
+    start: float
+    end: float
+    recorded: Value
+    modelled: Value
+    frames: int = 1
+
+
+class _Comparer:
+    """Collects disagreements, merging a field's consecutive identical ones into runs."""
+
+    def __init__(self, tolerance: float) -> None:
+        self.tolerance = tolerance
+        self._open: dict[str, _Run] = {}
+        self._closed: list[Disagreement] = []
+
+    def check(self, time: float, field: str, recorded: Value, modelled: Value) -> None:
+        """Compare one field of one recorded frame with the model."""
+        if isinstance(recorded, float) and isinstance(modelled, float):
+            same = _same_score(recorded, modelled, self.tolerance)
+        else:
+            same = recorded == modelled
+        run = self._open.get(field)
+        if run is not None and (same or (run.recorded, run.modelled) != (recorded, modelled)):
+            self._close(field)
+            run = None
+        if same:
+            return
+        if run is None:
+            self._open[field] = _Run(time, time, recorded, modelled)
+        else:
+            run.end = time
+            run.frames += 1
+
+    def _close(self, field: str) -> None:
+        run = self._open.pop(field)
+        self._closed.append(
+            Disagreement(run.start, run.end, field, run.recorded, run.modelled, run.frames)
+        )
+
+    def finish(self) -> tuple[Disagreement, ...]:
+        """Every disagreement, runs still open included, by start time."""
+        for field in list(self._open):
+            self._close(field)
+        return tuple(sorted(self._closed, key=lambda d: (d.start, d.field)))
+
+
+def _compare_status(compare: _Comparer, time: float, arb: Arbiter, status: codec.Status) -> None:
+    state = arb.state
+    if state.phase is Phase.IDLE:
+        compare.check(time, "mode", "Status sent", "Idle, no Status")
+        return
+    if status.normal_mode is not None:
+        recorded = "Normal" if status.normal_mode else "Maintenance"
+        compare.check(time, "mode", recorded, state.mode.value)
+    compare.check(time, "selected", status.selected, state.selected)
+    compare.check(time, "arbitrating", status.arbitrating, state.arbitrating)
+    for name in _FLAG_FIELDS:
+        recorded_flags, modelled_flags = getattr(status, name), getattr(state, name)
+        for autopilot in range(4):
+            compare.check(
+                time,
+                f"{name} {autopilot_name(autopilot)}",
+                recorded_flags[autopilot],
+                modelled_flags[autopilot],
+            )
+
+
+def replay(
+    frames: Iterable[CapturedFrame],
+    config: ArbiterConfig,
+    *,
+    checks: SystemChecks | None = None,
+    score_tolerance: float = 1e-5,
+) -> ReplayResult:
+    """Run a capture through the model and compare it with the real arbiter's frames.
+
+    Args:
+        frames: (timestamp, CAN ID, data) in time order. Frames from the autopilots drive
+            the model; Status and Score frames on ``config.arbiter_id`` are compared with
+            it; other IDs are skipped.
+        config: The configuration of the arbiter that was captured.
+        checks: The arbiter's system checks at boot (default: all OK).
+        score_tolerance: Relative difference up to which a recorded score equals the
+            model's: the float32 rounding of the arbiter's own arithmetic.
+
+    Returns:
+        The model's decisions, the disagreements, the frames that did not decode, and the
+        final state. The flags of Status bytes 4-5 are not compared: the model takes them
+        as inputs.
+
+    Raises:
+        InputError: A timestamp is earlier than the previous one.
+    """
+    arb = Arbiter(config, checks=checks)
+    compare = _Comparer(score_tolerance)
+    errors: list[FrameError] = []
+    for time, can_id, data in frames:
+        try:
+            if can_id != config.arbiter_id:
+                arb.receive(can_id, data, time)
+                continue
+            arb.advance(time)
+            message = codec.decode(data, sender=codec.Sender.ARBITER)
+        except DecodeError as error:
+            errors.append(FrameError(time, can_id, bytes(data), str(error)))
+            continue
+        if isinstance(message, codec.Status):
+            _compare_status(compare, time, arb, message)
+        elif isinstance(message, codec.Score):
+            scores = arb.state.scores
+            field = f"score {autopilot_name(message.autopilot)}"
+            compare.check(time, field, message.score, scores.get(message.autopilot))
+    return ReplayResult(tuple(arb.decisions), compare.finish(), tuple(errors), arb.state)

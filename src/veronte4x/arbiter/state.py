@@ -1,0 +1,150 @@
+"""What the model holds and reports: system checks, decisions, state snapshots."""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
+
+from veronte4x.arbiter.machine import Phase
+
+Flags4 = tuple[bool, bool, bool, bool]
+
+
+class Mode(enum.Enum):
+    """The arbiter's mode (seed 002): Idle after boot, then Normal or Maintenance."""
+
+    IDLE = "Idle"
+    NORMAL = "Normal"
+    MAINTENANCE = "Maintenance"
+
+
+MODE_OF_PHASE = {
+    Phase.IDLE: Mode.IDLE,
+    Phase.NORMAL: Mode.NORMAL,
+    Phase.ARBITRATING: Mode.NORMAL,
+    Phase.MAINTENANCE: Mode.MAINTENANCE,
+}
+
+
+@dataclass(frozen=True, slots=True)
+class SystemChecks:
+    """The arbiter's own built-in checks: an input of the model, all OK by default.
+
+    They fill bytes 4 and 5 of the Status message (seed 000 section 3.1.1). The boot
+    checks pass when every item is OK (seed 002: "If all checks success, the Arbiter will
+    enter Normal mode"). CBIT and "power OK" are derived, not inputs.
+
+    Attributes:
+        pbit_ok: PBIT, system boot OK.
+        pdi_ok: Configuration files OK.
+        memory_ok: Memory allocation OK.
+        can_a_ok: CAN A OK.
+        can_b_ok: CAN B OK.
+        cio_low_ok: CIO low-priority task OK.
+        cio_high_ok: CIO high-priority task OK.
+        bus_a_voltage_ok: A bus voltage OK.
+        bus_b_voltage_ok: B bus voltage OK.
+        arbiter_voltage_ok: Arbiter voltage OK.
+        ap1_voltage_ok: AP1 voltage OK.
+        ap2_voltage_ok: AP2 voltage OK.
+        ap3_voltage_ok: AP3 voltage OK.
+    """
+
+    pbit_ok: bool = True
+    pdi_ok: bool = True
+    memory_ok: bool = True
+    can_a_ok: bool = True
+    can_b_ok: bool = True
+    cio_low_ok: bool = True
+    cio_high_ok: bool = True
+    bus_a_voltage_ok: bool = True
+    bus_b_voltage_ok: bool = True
+    arbiter_voltage_ok: bool = True
+    ap1_voltage_ok: bool = True
+    ap2_voltage_ok: bool = True
+    ap3_voltage_ok: bool = True
+
+    @property
+    def power_ok(self) -> bool:
+        """ "Power OK. All power indicators are OK." (seed 000 section 3.1.1, byte 5 bit 0)."""
+        return (
+            self.bus_a_voltage_ok
+            and self.bus_b_voltage_ok
+            and self.arbiter_voltage_ok
+            and self.ap1_voltage_ok
+            and self.ap2_voltage_ok
+            and self.ap3_voltage_ok
+        )
+
+    @property
+    def all_ok(self) -> bool:
+        """Every check passes."""
+        return all(getattr(self, item.name) for item in fields(self))
+
+    def failing(self) -> list[str]:
+        """The names of the failing checks."""
+        return [item.name for item in fields(self) if not getattr(self, item.name)]
+
+
+class DecisionKind(enum.Enum):
+    """What a decision changed."""
+
+    MODE = "mode"
+    READY = "ready"
+    ARBITRATION = "arbitration"
+    DEAD = "dead"
+    SWITCH = "switch"
+    HOLD = "held"
+
+
+@dataclass(frozen=True, slots=True)
+class Decision:
+    """One state change or switch of the model, with its time and reason.
+
+    Attributes:
+        time: When it happened, in the timestamps' unit (s).
+        kind: What changed (``HOLD``: a switch the method asks for waits for the
+            holding time).
+        autopilot: The autopilot concerned (the new one for a switch), if any.
+        reason: Why, in words: "AP1 dead: arbitration variable 2 missing for 0.1 s".
+    """
+
+    time: float
+    kind: DecisionKind
+    autopilot: int | None
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.time:10.3f} s  {self.kind.value:<11} {self.reason}"
+
+
+@dataclass(frozen=True, slots=True)
+class ArbiterState:
+    """A snapshot of the model after the last input.
+
+    Attributes:
+        time: Timestamp of the last input, or ``None`` before the first one.
+        mode: Idle, Normal or Maintenance.
+        phase: The status-management phase (Normal splits into waiting and arbitrating).
+        arbitrating: Arbitration has started (Normal mode, every autopilot was Ready).
+        ready: AP1, AP2, AP3, external: the last Ready message said Ready.
+        alive: AP1, AP2, AP3, external: alive (only once arbitration has started).
+        dead: AP1, AP2, AP3, external: declared dead.
+        scores: Score of each taking-part autopilot that has sent every variable.
+        selected: The selected autopilot, 0 = AP1 .. 3 = external.
+        checks: The system checks last reported.
+        last_decision: The latest decision, or ``None``.
+    """
+
+    time: float | None
+    mode: Mode
+    phase: Phase
+    arbitrating: bool
+    ready: Flags4
+    alive: Flags4
+    dead: Flags4
+    scores: Mapping[int, float]
+    selected: int
+    checks: SystemChecks
+    last_decision: Decision | None
