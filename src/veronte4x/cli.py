@@ -17,7 +17,10 @@ from collections.abc import Callable, Sequence
 from typing import Any, TextIO
 
 from veronte4x import __version__, capture
+from veronte4x.arbiter.errors import ConfigError
 from veronte4x.busmap import BusMap, BusMapError
+from veronte4x.frames import Frame
+from veronte4x.readers.open import open_frames
 from veronte4x.records import Record
 from veronte4x.stats import Stats
 
@@ -37,7 +40,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         # of standard output from failing again.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_OK
-    except (OSError, BusMapError, ImportError) as error:
+    except (OSError, BusMapError, ConfigError, ImportError) as error:
         print(f"veronte4x: {error}", file=sys.stderr)
         return EXIT_USAGE
 
@@ -65,7 +68,14 @@ def _parser() -> argparse.ArgumentParser:
     stats.add_argument("file", help="capture file, or - for stdin")
     stats.set_defaults(run=_stats)
 
-    for sub in (decode, stats):
+    replay = commands.add_parser(
+        "replay", help="run the arbiter model on a capture; explain switches and disagreements"
+    )
+    replay.add_argument("file", help="capture file, or - for stdin")
+    replay.add_argument("--config", metavar="FILE", help="TOML arbiter configuration")
+    replay.set_defaults(run=_replay)
+
+    for sub in (decode, stats, replay):
         sub.add_argument("--bus-map", metavar="FILE", help="TOML file of CAN IDs and choices")
         sub.add_argument("--channel", help="keep only this interface's frames")
     return parser
@@ -96,6 +106,36 @@ def _decode(args: argparse.Namespace, bus_map: BusMap) -> int:
 
 def _stats(args: argparse.Namespace, bus_map: BusMap) -> int:
     print(capture.stats(capture.read(args.file, bus_map, args.channel)).report())
+    return EXIT_OK
+
+
+def _replay(args: argparse.Namespace, bus_map: BusMap) -> int:
+    from veronte4x import arbiter
+    from veronte4x.arbiter.config_file import load_config
+
+    if args.config:
+        config = load_config(args.config)
+    else:
+        config = arbiter.ArbiterConfig(
+            autopilot_ids=bus_map.autopilot_ids,
+            arbiter_id=bus_map.arbiter_id,
+            extended_ids=bus_map.extended,
+        )
+    frames = (
+        (frame.timestamp, frame.can_id, frame.data)
+        for frame in open_frames(args.file, args.channel)
+        if isinstance(frame, Frame)
+        and frame.timestamp is not None
+        and not (frame.error or frame.remote or frame.fd)
+        and frame.extended == config.extended_ids
+    )
+    result = arbiter.replay(frames, config)
+    print(result.timeline())
+    print(
+        f"veronte4x: {len(result.decisions)} decisions, {len(result.disagreements)} "
+        f"disagreements, {len(result.errors)} bad frames",
+        file=sys.stderr,
+    )
     return EXIT_OK
 
 
