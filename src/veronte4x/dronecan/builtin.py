@@ -28,6 +28,7 @@ def _structs(t: Any, found: dict[type, Struct]) -> dict[type, Struct]:
 _STRUCTS: dict[type, Struct] = {}
 for _data_type in DATA_TYPES:
     _structs(_data_type.schema, _STRUCTS)
+_MEMBER_OF = {member.cls: member for member in VALUE.members}
 _MEMBERS = {member.cls for member in VALUE.members if not isinstance(member.type, Struct)}
 
 
@@ -35,11 +36,11 @@ def _convert(value: Any, t: Any) -> Any:
     if isinstance(t, Struct):
         return {f.name: _convert(getattr(value, f.name), f.type) for f in t.fields if f.name}
     if isinstance(t, Union):
-        for member in t.members:
-            if value.__class__ is member.cls:
-                inner = value if isinstance(member.type, Struct) else value.value
-                return {member.name: _convert(inner, member.type)}
-        return value
+        member = _MEMBER_OF.get(value.__class__)
+        if member is None:
+            return value
+        inner = value if isinstance(member.type, Struct) else value.value
+        return {member.name: _convert(inner, member.type)}
     if isinstance(t, Array):
         return list(value)
     if isinstance(value, enum.Enum):
