@@ -321,7 +321,10 @@ class Reassembler:
             elif tid != session.closed:
                 session.closed = tid
                 if buffer is None:
+                    # Spec: skip to the next transfer id. The timeout counts from this
+                    # frame, so the late first frame of this transfer is not taken as new.
                     session.tid = (tid + 1) & 0x1F
+                    session.start = ts
                 self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
             return None
         if tail & 0x20 != session.toggle:
