@@ -106,10 +106,11 @@ def _pack_terms(var: str, t: Scalar, offset: int) -> list[str]:
     return terms
 
 
-def _unpack_expr(t: Scalar, offset: int) -> str:
+def _unpack_expr(t: Scalar, offset: int, var: str = "x") -> str:
     parts = []
     for source, width, dest in bit_runs(offset, t.bits):
-        value = f"(x >> {dest}) & {(1 << width) - 1:#x}" if dest else f"x & {(1 << width) - 1:#x}"
+        mask = (1 << width) - 1
+        value = f"({var} >> {dest}) & {mask:#x}" if dest else f"{var} & {mask:#x}"
         parts.append(f"(({value}) << {source})" if source else f"({value})")
     return " | ".join(parts)
 
@@ -159,68 +160,18 @@ class Transport(NamedTuple):
     crc_seed: int
 
 
-def _values(src: _Source, scalars: Sequence[Scalar], transport: Transport | None) -> list[str]:
-    """Emit the checks and float conversions of v0, v1, ...; return the payload int terms."""
-    checks = []
-    floats = []
-    terms: list[str] = []
-    offset = 0
-    for i, t in enumerate(scalars):
-        if t.kind in ("uint", "int"):
-            checks.append(f"{t.low} <= v{i} <= {t.high}")
-        elif t.kind == "bool":
-            checks.append(f"(v{i} is True or v{i} is False)")
-        elif t.kind == "float" and t.bits == 16:
-            floats.append(i)
-        elif t.kind == "float":
-            src.lines.append(f"    v{i} = f32(v{i})")
-        if t.kind != "void":
-            terms.extend(_pack_terms(f"v{i}", t, offset))
-        offset += t.bits
-    if transport is not None:
-        checks += ["1 <= src <= 127", "0 <= tid <= 31", "0 <= prio <= 31"]
-        checks.append("1 <= dst <= 127" if transport.service else "dst is None")
-    if checks:
-        src.lines += [f"    if not ({' and '.join(checks)}):", "        raise SlowPath"]
-    if floats:
-        pack = src.name("F", struct.Struct(f"<{len(floats)}f"))
-        unpack = src.name("U", struct.Struct(f"<{len(floats)}I"))
-        names = ", ".join(f"a{i}" for i in floats)
-        src.lines.append(
-            f"    {names}, = {unpack}.unpack({pack}.pack({', '.join(f'v{i}' for i in floats)}))"
-        )
-        for i in floats:
-            src.lines += [
-                f"    m{i} = a{i} & 0x7FFFFFFF",
-                f"    v{i} = ((m{i} - 0x37FFF000) >> 13 | (a{i} >> 16) & 0x8000"
-                f" if 0x38800000 <= m{i} < 0x477FF000"
-                f" else (a{i} >> 16) & 0x8000 if m{i} < 0x33000000 else f16(v{i}))",
-            ]
-    return terms
-
-
-def _emit_frames(
-    src: _Source, size: int, payload: str, transport: Transport, order: str = "little"
-) -> None:
-    """Emit the end of a frames function: from the payload int expression to the frames.
-
-    ``order`` says how the payload int reads its bytes: ``little`` or ``big``.
-    """
+def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transport) -> None:
+    """Emit the end of a frames function: from a big-endian payload int to the frames."""
     frame = src.name("Frame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
-    if transport.service:
-        can_id += " | dst << 8"
-    if size <= 7 and order == "little":
-        data = f"({payload} | (0xC0 | tid) << {8 * size}).to_bytes({size + 1}, 'little')"
-    elif size <= 7:
-        data = f"(({payload}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
     if size <= 7:
+        data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
         src.lines.append(f"    return [tnew({frame}, ({can_id}, {data}))]")
         return
     count = (size + 2 + 6) // 7
     tails = src.name("T", _tail_table(count))
     src.lines += [
-        f"    p = ({payload}).to_bytes({size}, '{order}')",
+        f"    p = ({stream}).to_bytes({size}, 'big')",
         f"    b = crc_hqx(p, {transport.crc_seed:#x}).to_bytes(2, 'little') + p",
         f"    c = {can_id}",
         f"    t = {tails}[tid]",
@@ -235,53 +186,196 @@ def _builder(cls: type) -> type:
     return type(f"_{cls.__name__}Builder", (), {"__slots__": cls.__slots__})  # type: ignore[attr-defined]
 
 
+class _Group(NamedTuple):
+    """Fields that together fill whole bytes, starting on a byte boundary."""
+
+    start: int
+    bits: int
+    members: tuple[int, ...]
+
+
+_STRUCT_CODES = {8: "B", 16: "H", 32: "I", 64: "Q"}
+
+
+def _groups(scalars: Sequence[Scalar]) -> list[_Group]:
+    """Cut a field list at every byte boundary; the last group is padded to a byte."""
+    groups: list[_Group] = []
+    start, offset, members = 0, 0, []
+    for i, t in enumerate(scalars):
+        members.append(i)
+        offset += t.bits
+        if offset % 8 == 0:
+            groups.append(_Group(start, offset - start, tuple(members)))
+            start, members = offset, []
+    if members:
+        groups.append(_Group(start, (offset - start + 7) // 8 * 8, tuple(members)))
+    return groups
+
+
+def _direct(group: _Group, scalars: Sequence[Scalar]) -> bool:
+    """Whether a group is one field that ``struct`` packs as is (it also range-checks it)."""
+    if len(group.members) != 1:
+        return False
+    t = scalars[group.members[0]]
+    return t.bits == group.bits and t.bits in _STRUCT_CODES and t.kind in ("uint", "int", "float")
+
+
+def _layout(src: _Source, scalars: Sequence[Scalar]) -> tuple[str, list[str], list[str]]:
+    """The struct format of a flat struct, the packed value of each group and the checks.
+
+    Direct groups are packed as is (``struct`` checks their range); the others are built
+    from their fields' bit runs (see :func:`bit_runs`, relative to the group's first byte)
+    and get explicit checks, each an expression that is non-zero when the value is out of
+    range (``v >> bits`` for an unsigned field).
+    """
+    codes, values, checks = ["<"], [], []
+    for group in _groups(scalars):
+        if _direct(group, scalars):
+            t = scalars[group.members[0]]
+            code = _STRUCT_CODES[t.bits]
+            codes.append(code.lower() if t.kind == "int" else code)
+            values.append(f"v{group.members[0]}")
+            continue
+        terms = []
+        for i in group.members:
+            t = scalars[i]
+            if t.kind == "uint":
+                checks.append(f"v{i} >> {t.bits}")
+            elif t.kind == "int":
+                checks.append(f"(v{i} + {1 << (t.bits - 1)}) >> {t.bits}")
+            elif t.kind == "bool":
+                checks.append(f"(v{i} is not True and v{i} is not False)")
+            if t.kind != "void":
+                offset = sum(scalars[j].bits for j in range(group.members[0], i))
+                terms.extend(_pack_terms(f"v{i}", t, offset))
+        value = " | ".join(terms) or "0"
+        size = group.bits // 8
+        if group.bits in _STRUCT_CODES:
+            codes.append(_STRUCT_CODES[group.bits])
+            values.append(value)
+        else:
+            codes.append(f"{size}s")
+            values.append(f"({value}).to_bytes({size}, 'little')")
+    return "".join(codes), values, checks
+
+
+def _floats(src: _Source, scalars: Sequence[Scalar]) -> None:
+    """Emit the conversion of every float field v<i> to its raw bits, in place."""
+    halves = [i for i, t in enumerate(scalars) if t.kind == "float" and t.bits == 16]
+    for i, t in enumerate(scalars):
+        if t.kind == "float" and t.bits == 32:
+            src.lines.append(f"    v{i} = f32(v{i})")
+    if not halves:
+        return
+    pack = src.name("F", struct.Struct(f"<{len(halves)}f"))
+    unpack = src.name("U", struct.Struct(f"<{len(halves)}I"))
+    names = "".join(f"a{i}, " for i in halves)
+    values = ", ".join(f"v{i}" for i in halves)
+    src.lines.append(f"    {names}= {unpack}.unpack({pack}.pack({values}))")
+    for i in halves:
+        src.lines += [
+            f"    m{i} = a{i} & 0x7FFFFFFF",
+            f"    v{i} = ((m{i} - 0x37FFF000) >> 13 | (a{i} >> 16) & 0x8000"
+            f" if 0x38800000 <= m{i} < 0x477FF000"
+            f" else (a{i} >> 16) & 0x8000 if m{i} < 0x33000000 else f16(v{i}))",
+        ]
+
+
+def _transport_checks(transport: Transport) -> list[str]:
+    """Conditions that are true when a transport argument is out of range."""
+    checks = ["src >> 7", "tid >> 5", "prio >> 5", "not src"]
+    checks += ["dst >> 7", "not dst"] if transport.service else ["dst is not None"]
+    return checks
+
+
+def _emit_struct_frames(
+    src: _Source, size: int, layout: str, values: list[str], transport: Transport
+) -> None:
+    """Emit the end of a frames function packing the groups with ``struct``."""
+    frame = src.name("Frame", transport.frame_class)
+    can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
+    if transport.service:
+        can_id += " | dst << 8"
+    if size <= 7:
+        packer = src.name("S", struct.Struct(layout + "B"))
+        data = f"{packer}.pack({''.join(v + ', ' for v in values)}0xC0 | tid)"
+        src.lines.append(f"    return [tnew({frame}, ({can_id}, {data}))]")
+        return
+    packer = src.name("S", struct.Struct(layout))
+    src.lines.append(f"    p = {packer}.pack({', '.join(values)})")
+    count = (size + 2 + 6) // 7
+    tails = src.name("T", _tail_table(count))
+    src.lines += [
+        f"    b = crc_hqx(p, {transport.crc_seed:#x}).to_bytes(2, 'little') + p",
+        f"    c = {can_id}",
+        f"    t = {tails}[tid]",
+    ]
+    items = [f"tnew({frame}, (c, b[{7 * i}:{7 * i + 7}] + t[{i}]))" for i in range(count - 1)]
+    items.append(f"tnew({frame}, (c, b[{7 * (count - 1)}:] + t[{count - 1}]))")
+    src.lines.append(f"    return [{', '.join(items)}]")
+
+
 def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
-    """Generate the fast paths of a struct of scalars, or None if it is not flat."""
+    """Generate the fast paths of a struct of scalars, or None if it is not flat.
+
+    Fields are packed with one :class:`struct.Struct` whose items are the byte-aligned
+    groups of :func:`_groups`: a whole uint8/16/32/64 field as is, anything else as the
+    little-endian int of its bit runs.
+    """
     fields = [f for f in schema.fields if isinstance(f.type, Scalar)]
     if len(fields) != len(schema.fields):
         return None
     scalars = [f.type for f in fields if isinstance(f.type, Scalar)]
-    named = [(i, f) for i, f in enumerate(fields) if f.name]
-    unpack = " ".join(f"v{i} = m.{f.name};" for i, f in named) or "pass"
+    unpack = " ".join(f"v{i} = m.{f.name};" for i, f in enumerate(fields) if f.name) or "pass"
     size = (sum(t.bits for t in scalars) + 7) // 8
     src = _Source()
-    for function, head in (
-        ("frames", "frames(m, src, tid, prio, dst)"),
-        ("payload", "payload(m)"),
+    layout, values, checks = _layout(src, scalars)
+    for function, extra in (
+        ("frames(m, src, tid, prio, dst)", _transport_checks(transport)),
+        ("payload(m)", []),
     ):
-        src.lines += [f"def {head}:", f"    {unpack}"]
-        terms = _values(src, scalars, transport if function == "frames" else None)
-        expression = " | ".join(terms) or "0"
-        if function == "frames":
-            _emit_frames(src, size, expression, transport)
+        src.lines += [f"def {function}:", f"    {unpack}"]
+        if checks or extra:
+            src.lines += [f"    if {' or '.join(checks + extra)}:", "        raise SlowPath"]
+        _floats(src, scalars)
+        if extra:
+            _emit_struct_frames(src, size, layout, values, transport)
         else:
-            src.lines.append(f"    return ({expression}).to_bytes({size}, 'little')")
+            packer = src.name("S", struct.Struct(layout))
+            src.lines.append(f"    return {packer}.pack({', '.join(values)})")
     builder = src.name("B", _builder(schema.cls))
     cls = src.name("C", schema.cls)
-    for function, length in (("decode", size), ("decode_frame", size + 1)):
-        src.lines += [
-            f"def {function}(buf):",
-            f"    if len(buf) != {length}:",
-            "        raise SlowPath",
-            "    x = from_bytes(buf, 'little')",
-            f"    o = new({builder})",
-        ]
-        offset = 0
-        for f in fields:
-            t = f.type
-            assert isinstance(t, Scalar)
-            if f.name:
-                raw = _unpack_expr(t, offset)
-                if t.kind == "int":
-                    raw = f"(({raw}) ^ {1 << (t.bits - 1):#x}) - {1 << (t.bits - 1):#x}"
-                elif t.kind == "float":
+    groups = _groups(scalars)
+    for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
+        unpacker = src.name("S", struct.Struct(layout + pad))
+        names = "".join(f"g{k}, " for k in range(len(groups)))
+        src.lines += [f"def {function}(buf):", f"    if len(buf) != {length}:"]
+        src.lines.append("        raise SlowPath")
+        if groups:
+            src.lines.append(f"    {names}= {unpacker}.unpack(buf)")
+        src.lines.append(f"    o = new({builder})")
+        for k, group in enumerate(groups):
+            if not _direct(group, scalars) and group.bits not in _STRUCT_CODES:
+                src.lines.append(f"    g{k} = from_bytes(g{k}, 'little')")
+            for i in group.members:
+                t, f = scalars[i], fields[i]
+                if not f.name:
+                    continue
+                if _direct(group, scalars):
+                    raw = f"g{k}"
+                else:
+                    offset = sum(scalars[j].bits for j in range(group.members[0], i))
+                    raw = _unpack_expr(t, offset, f"g{k}")
+                    if t.kind == "int":
+                        sign = 1 << (t.bits - 1)
+                        raw = f"(({raw}) ^ {sign:#x}) - {sign:#x}"
+                if t.kind == "float":
                     raw = f"F16[{raw}]" if t.bits == 16 else f"f32v({raw})"
                 elif t.kind == "bool":
                     raw = f"({raw}) != 0"
                 elif f.enum is not None:
                     raw = f"{src.name('E', enum_table(f.enum, t.bits))}[{raw}]"
                 src.lines.append(f"    o.{f.name} = {raw}")
-            offset += t.bits
         src.lines += [f"    o.__class__ = {cls}", "    return o"]
     code = src.build()
     return FastPaths(
@@ -314,76 +408,58 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
     src = _Source()
     enc, dec = src.name("S", to_stream), src.name("D", tuple(from_stream))
     builder, cls = src.name("B", _builder(schema.cls)), src.name("C", schema.cls)
-    frames_by_count, payload_by_count = [], []
-    decoders: dict[int, str] = {}
+    offset = -low
+    sizes = []
     for count in range(array.max_size + 1):
         size = (count * bits + 7) // 8
+        sizes.append(size)
         pad = 8 * size - count * bits
         names = "".join(f"v{i}, " for i in range(count))
-        checks = [f"{low} <= v{i} <= {item.high}" for i in range(count)]
-        stream = " | ".join(
-            f"{enc}[v{i} - {low}] << {(count - 1 - i) * bits + pad}" for i in range(count)
-        )
-        stream = stream or "0"
-        for function, extra in (
-            (f"frames{count}", ["1 <= src <= 127", "0 <= tid <= 31", "0 <= prio <= 31"]),
-            (f"payload{count}", []),
+        checks = [f"(v{i} + {offset}) >> {bits}" for i in range(count)]
+        shifts = [(count - 1 - i) * bits + pad for i in range(count)]
+        stream = " | ".join(f"{enc}[v{i} + {offset}] << {shifts[i]}" for i in range(count)) or "0"
+        for head, extra in (
+            (f"frames{count}(m, src, tid, prio, dst)", _transport_checks(transport)),
+            (f"payload{count}(m)", []),
         ):
-            head = f"{function}(m, src, tid, prio, dst)" if extra else f"{function}(m)"
-            all_checks = checks + extra + (["dst is None"] if extra else [])
             src.lines += [f"def {head}:", f"    {names}= m" if count else "    pass"]
-            if all_checks:
-                src.lines += [f"    if not ({' and '.join(all_checks)}):", "        raise SlowPath"]
+            if checks or extra:
+                src.lines += [f"    if {' or '.join(checks + extra)}:", "        raise SlowPath"]
             if extra:
-                _emit_frames(src, size, stream, transport, "big")
+                _emit_stream_frames(src, size, stream, transport)
             else:
                 src.lines.append(f"    return ({stream}).to_bytes({size}, 'big')")
-        frames_by_count.append(f"frames{count}")
-        payload_by_count.append(f"payload{count}")
-        items = "".join(
-            f"{dec}[(x >> {(count - 1 - i) * bits + pad}) & {(1 << bits) - 1:#x}], "
-            for i in range(count)
-        )
-        decoders[size] = f"decode{size}"
-        src.lines += [
-            f"def decode{size}(buf):",
-            "    x = from_bytes(buf, 'big')",
-            f"    o = new({builder})",
-            f"    o.{name} = ({items})",
-            f"    o.__class__ = {cls}",
-            "    return o",
-            f"def decode_frame{size}(buf):",
-            f"    return decode{size}(buf[:{size}])",
-        ]
-    src.names["FR"] = src.names["PL"] = ()
+        mask = (1 << bits) - 1
+        items = "".join(f"{dec}[(x >> {shift}) & {mask:#x}], " for shift in shifts)
+        for function, drop in ((f"decode{size}", ""), (f"decode_frame{size + 1}", " >> 8")):
+            src.lines += [
+                f"def {function}(buf):",
+                f"    x = from_bytes(buf, 'big'){drop}",
+                f"    o = new({builder})",
+                f"    o.{name} = ({items})",
+                f"    o.__class__ = {cls}",
+                "    return o",
+            ]
+    longest = sizes[-1] + 2
+    payloads = [f"decode{n}" if n in sizes else "bad" for n in range(longest)]
+    frames = [f"decode_frame{n}" if n - 1 in sizes and n <= 8 else "bad" for n in range(longest)]
     src.lines += [
+        "def bad(buf):",
+        "    raise SlowPath",
+        f"FR = ({''.join(f'frames{n}, ' for n in range(array.max_size + 1))})",
+        f"PL = ({''.join(f'payload{n}, ' for n in range(array.max_size + 1))})",
+        f"DP = ({', '.join(payloads)})",
+        f"DF = ({', '.join(frames)})",
         "def frames(m, src, tid, prio, dst):",
         f"    c = m.{name}",
         "    return FR[len(c)](c, src, tid, prio, dst)",
         "def payload(m):",
         f"    c = m.{name}",
         "    return PL[len(c)](c)",
+        "def decode(buf):",
+        f"    return (DP[len(buf)] if len(buf) < {longest} else bad)(buf)",
+        "def decode_frame(buf):",
+        f"    return (DF[len(buf)] if len(buf) < {longest} else bad)(buf)",
     ]
     code = src.build()
-    code["FR"] = tuple(code[f] for f in frames_by_count)
-    code["PL"] = tuple(code[f] for f in payload_by_count)
-    decode_by_length: list[Decoder | None] = [None] * (max(decoders) + 2)
-    frame_by_length: list[Decoder | None] = [None] * (max(decoders) + 2)
-    for size, function in decoders.items():
-        decode_by_length[size] = code[function]
-        if size <= 7:
-            frame_by_length[size + 1] = code[f"decode_frame{size}"]
-
-    def decode(buf: bytes) -> Any:
-        decoder = decode_by_length[len(buf)] if len(buf) < len(decode_by_length) else None
-        if decoder is None:
-            raise SlowPath
-        return decoder(buf)
-
-    def decode_frame(buf: bytes) -> Any:
-        decoder = frame_by_length[len(buf)] if len(buf) < len(frame_by_length) else None
-        if decoder is None:
-            raise SlowPath
-        return decoder(buf)
-
-    return FastPaths(code["frames"], code["payload"], decode, decode_frame)
+    return FastPaths(code["frames"], code["payload"], code["decode"], code["decode_frame"])

@@ -171,40 +171,59 @@ class Reassembler:
             data: The frame's data bytes, tail byte last.
             timestamp: Reception time in seconds, from any monotonic source.
         """
-        # Fast path: the next single-frame transfer of a known session, in order.
+        # Fast paths: the next frame of a known session, in order, nothing unusual. Any
+        # other case goes to _feed, which redoes the full state update (nothing changed yet).
         session = self._sessions.get(can_id & 0xFFFFFF) if type(can_id) is int else None
         if (
-            session is not None
-            and session.decode_frame is not None
-            and 0 <= can_id <= 0x1FFFFFFF
-            and 0 < len(data) <= 8
-            and data[-1] == 0xC0 | session.tid
-            and session.buffer is None
-            and timestamp - session.start <= self.timeout
+            session is None
+            or not 0 <= can_id <= 0x1FFFFFFF
+            or not 0 < len(data) <= 8
+            or timestamp - session.start > self.timeout
         ):
-            try:
-                message = session.decode_frame(data)
-            except Exception:
-                return self._feed(can_id, data, timestamp)
-            tid = session.tid
-            session.tid = (tid + 1) & 0x1F
-            session.closed = tid
-            session.start = timestamp
-            session.last = data
-            self.transfers += 1
-            return _new_tuple(
-                Transfer,
-                (
-                    message,
-                    can_id & 0x7F,
-                    session.destination,
-                    can_id >> 24,
-                    tid,
-                    timestamp,
-                    session.kind,
-                    session.data_type_id,
-                ),
-            )
+            return self._feed(can_id, data, timestamp)
+        tail = data[-1]
+        tid = tail & 0x1F
+        if tid != session.tid:
+            return self._feed(can_id, data, timestamp)
+        buffer = session.buffer
+        if buffer is None:
+            if tail & 0xE0 == 0xC0 and session.decode_frame is not None:  # single frame
+                try:
+                    message = session.decode_frame(data)
+                except Exception:
+                    return self._feed(can_id, data, timestamp)
+                session.tid = (tid + 1) & 0x1F
+                session.closed = tid
+                session.start = timestamp
+                session.last = data
+                self.transfers += 1
+                return _new_tuple(
+                    Transfer,
+                    (
+                        message,
+                        can_id & 0x7F,
+                        session.destination,
+                        can_id >> 24,
+                        tid,
+                        timestamp,
+                        session.kind,
+                        session.data_type_id,
+                    ),
+                )
+            if tail & 0xE0 == 0x80 and len(data) == 8:  # first frame of several
+                session.buffer = bytearray(data[:-1])
+                session.toggle = 0x20
+                session.start = timestamp
+                session.last = data
+                return None
+        elif tail & 0xA0 == session.toggle and (len(data) == 8 or tail & 0x40):
+            if len(buffer) + len(data) <= session.codec.max_payload + 3:
+                buffer += data[:-1]
+                session.last = data
+                if not tail & 0x40:
+                    session.toggle ^= 0x20
+                    return None
+                return self._complete(session, can_id, data, tid)
         return self._feed(can_id, data, timestamp)
 
     def _feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
@@ -341,24 +360,30 @@ class Reassembler:
             self._abandon(session, Problem.PAYLOAD_TOO_LONG, can_id, data, ts)
             return None
         session.last = data
-        session.toggle ^= 0x20
         if not tail & 0x40:
+            session.toggle ^= 0x20
             return None
+        return self._complete(session, can_id, data, tid)
+
+    def _complete(self, session: _Session, can_id: int, data: Any, tid: int) -> Transfer | None:
+        """The last frame of a multi-frame transfer arrived: check the CRC and decode."""
+        buffer = session.buffer
+        assert buffer is not None
         session.buffer = None
         session.closed = tid
         session.tid = (tid + 1) & 0x1F
         payload = bytes(buffer[2:])
-        crc = crc16(payload, codec.crc_seed)
+        crc = crc16(payload, session.codec.crc_seed)
         if crc != buffer[0] | buffer[1] << 8:
             self._report(
                 Problem.CRC_MISMATCH,
                 can_id,
                 data,
-                ts,
+                session.start,
                 f"CRC {buffer[0] | buffer[1] << 8:#06x}, computed {crc:#06x}",
             )
             return None
-        return self._deliver(codec, can_id, payload, tid, session.start)
+        return self._deliver(session.codec, can_id, payload, tid, session.start)
 
     def _deliver(
         self, codec: Codec, can_id: int, payload: Any, tid: int, ts: float

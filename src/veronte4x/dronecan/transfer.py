@@ -78,15 +78,13 @@ def encode(
         EncodeError: Unknown class, a field the type cannot hold, or bad transport fields.
     """
     if not saturate:
-        fast = _FAST.get(type(message))
-        if fast is not None:
-            try:
-                frames: list[Frame] = fast(
-                    message, source_node_id, transfer_id, priority, destination_node_id
-                )
-                return frames
-            except Exception:
-                pass
+        # Generated fast path; on anything unusual the checked path raises the precise error.
+        try:
+            return _FAST[message.__class__](  # type: ignore[no-any-return]
+                message, source_node_id, transfer_id, priority, destination_node_id
+            )
+        except Exception:
+            pass
     return _encode_checked(
         message, source_node_id, transfer_id, priority, destination_node_id, saturate
     )
