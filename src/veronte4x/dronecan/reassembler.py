@@ -216,14 +216,17 @@ class Reassembler:
                 session.start = timestamp
                 session.last = data
                 return None
-        elif tail & 0xA0 == session.toggle and (len(data) == 8 or tail & 0x40):
-            if len(buffer) + len(data) <= session.codec.max_payload + 3:
-                buffer += data[:-1]
-                session.last = data
-                if not tail & 0x40:
-                    session.toggle ^= 0x20
-                    return None
-                return self._complete(session, can_id, data, tid)
+        elif (
+            tail & 0xA0 == session.toggle
+            and (len(data) == 8 or tail & 0x40)
+            and len(buffer) + len(data) <= session.codec.max_payload + 3
+        ):
+            buffer += data[:-1]
+            session.last = data
+            if not tail & 0x40:
+                session.toggle ^= 0x20
+                return None
+            return self._complete(session, can_id, data, tid)
         return self._feed(can_id, data, timestamp)
 
     def _feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
@@ -267,9 +270,17 @@ class Reassembler:
         tid = tail & 0x1F
         timed_out = timestamp - session.start > self.timeout
         if timed_out or (tail & 0x80 and (session.tid - tid) & 0x1F > 1):
+            late_start = not timed_out and tid == session.closed
             if session.buffer is not None:
                 problem = Problem.TIMEOUT if timed_out else Problem.INTERRUPTED
                 self._abandon(session, problem, can_id, data, timestamp)
+            if late_start:  # the first frame of a transfer already counted as MISSED_START
+                session.closed = tid
+                session.tid = (tid + 1) & 0x1F
+                self._report(
+                    Problem.UNEXPECTED_TRANSFER_ID, can_id, data, timestamp, "late first frame"
+                )
+                return None
             session.tid = tid
             session.toggle = 0
         if tail & 0x80:

@@ -80,7 +80,7 @@ def encode(
     if not saturate:
         # Generated fast path; on anything unusual the checked path raises the precise error.
         try:
-            return _FAST[message.__class__](  # type: ignore[no-any-return]
+            return _FAST[message.__class__](
                 message, source_node_id, transfer_id, priority, destination_node_id
             )
         except Exception:
