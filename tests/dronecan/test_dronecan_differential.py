@@ -124,13 +124,13 @@ STRATEGIES: dict[tuple[str, dronecan.TransferKind], st.SearchStrategy[dict[str, 
             "name": _bytes(92),
         }
     ),
-    ("uavcan.protocol.RestartNode", K.REQUEST): st.fixed_dictionaries(
-        {"magic_number": _u(40)}
-    ),
+    ("uavcan.protocol.RestartNode", K.REQUEST): st.fixed_dictionaries({"magic_number": _u(40)}),
     ("uavcan.protocol.RestartNode", K.RESPONSE): st.fixed_dictionaries({"ok": st.booleans()}),
     ("uavcan.protocol.file.BeginFirmwareUpdate", K.REQUEST): st.fixed_dictionaries(
-        {"source_node_id": _u(8), "image_file_remote_path": st.fixed_dictionaries(
-            {"path": _bytes(200)})}
+        {
+            "source_node_id": _u(8),
+            "image_file_remote_path": st.fixed_dictionaries({"path": _bytes(200)}),
+        }
     ),
     ("uavcan.protocol.file.BeginFirmwareUpdate", K.RESPONSE): st.fixed_dictionaries(
         {"error": _u(8), "optional_error_message": _bytes(127)}

@@ -5,11 +5,11 @@ from __future__ import annotations
 import math
 import struct
 
-import dronecan as reference
 from dronecan.transport import f16_from_f32, f32_from_f16
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import dronecan as reference
 from veronte4x import dronecan
 from veronte4x.dronecan.float16 import (
     FLOAT16_VALUES,

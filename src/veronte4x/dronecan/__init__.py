@@ -43,12 +43,20 @@ from veronte4x.dronecan.messages import (
     TemperatureErrorFlag,
     Value,
 )
-from veronte4x.dronecan.reassembler import Problem, ProblemReport, Reassembler
+from veronte4x.dronecan.reassembler import (
+    TRANSFER_ID_TIMEOUT,
+    TRANSFER_PROBLEMS,
+    Problem,
+    ProblemReport,
+    Reassembler,
+)
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, decode_frames, encode
 from veronte4x.errors import DecodeError, EncodeError, Veronte4xError
 
 __all__ = [
     "DEFAULT_PRIORITY",
+    "TRANSFER_ID_TIMEOUT",
+    "TRANSFER_PROBLEMS",
     "BeginFirmwareUpdateRequest",
     "BeginFirmwareUpdateResponse",
     "BooleanValue",

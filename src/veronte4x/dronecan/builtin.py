@@ -53,7 +53,7 @@ def to_builtin(value: Any) -> Any:
 
     Structs become dicts keyed by DSDL field names (void fields left out), unions one-key
     dicts ``{member_name: value}`` (``{"empty": {}}`` for an empty value), byte and int
-    arrays lists of ints, enums their int value. A :class:`~veronte4x.dronecan.Transfer`
+    arrays lists of ints, enums their int value. A `Transfer`
     becomes a dict of its fields with the message converted. Anything else is returned as is.
     """
     schema = _STRUCTS.get(type(value))
@@ -103,10 +103,10 @@ def _build(t: Any, data: Any, enum: type | None, path: str) -> Any:
 
 
 def from_builtin(cls: type[T], data: dict[str, Any]) -> T:
-    """Build a message of class ``cls`` from plain data, the inverse of :func:`to_builtin`.
+    """Build a message of class ``cls`` from plain data, the inverse of `to_builtin`.
 
     Missing keys take the class defaults; a ``str`` is accepted for a uint8 array (UTF-8).
-    No range check is made here: :func:`~veronte4x.dronecan.encode` does that.
+    No range check is made here: `encode` does that.
 
     Raises:
         EncodeError: ``cls`` is not a DroneCAN class, or the data does not have its shape.

@@ -17,6 +17,31 @@ from veronte4x.errors import DecodeError, EncodeError
 CAN_ID_MASK = 0x1FFFFFFF
 """The 29 bits of an extended CAN ID."""
 
+LAYOUTS: dict[str, tuple[tuple[str, int, str], ...]] = {
+    "message": (
+        ("priority", 5, "0..31, 0 highest"),
+        ("message type id", 16, "0..65535"),
+        ("service not message", 1, "0"),
+        ("source node id", 7, "1..127"),
+    ),
+    "anonymous message": (
+        ("priority", 5, "0..31"),
+        ("discriminator", 14, "any, e.g. from the payload CRC"),
+        ("message type id, low 2 bits", 2, "type ids 0..3"),
+        ("service not message", 1, "0"),
+        ("source node id", 7, "0"),
+    ),
+    "service": (
+        ("priority", 5, "0..31; a response normally copies the request's"),
+        ("service type id", 8, "0..255"),
+        ("request not response", 1, "1 request, 0 response"),
+        ("destination node id", 7, "1..127"),
+        ("service not message", 1, "1"),
+        ("source node id", 7, "1..127"),
+    ),
+}
+"""Field name, width and allowed values of each CAN ID layout, bit 28 first (spec 4.1)."""
+
 
 class TransferKind(enum.IntEnum):
     """What a transfer carries: a message, a service request or a service response."""

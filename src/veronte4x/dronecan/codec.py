@@ -1,8 +1,8 @@
 """Payload encoding and decoding for each of the eight types, fast path first.
 
 Each top-level type gets the generated fast functions of
-:mod:`~veronte4x.dronecan.compiled` where its layout allows, and the generic
-:class:`~veronte4x.dronecan.serializer.Serializer` otherwise and for everything the fast
+`compiled` where its layout allows, and the generic
+`Serializer` otherwise and for everything the fast
 path hands over (errors, saturation, odd lengths).
 """
 
@@ -91,7 +91,7 @@ def _codec(data_type: DataType) -> Codec:
 
 
 CODECS: tuple[Codec, ...] = tuple(_codec(t) for t in DATA_TYPES)
-"""One codec per top-level type, in the order of :data:`DATA_TYPES`."""
+"""One codec per top-level type, in the order of `DATA_TYPES`."""
 
 BY_CLASS: dict[type, Codec] = {c.data_type.schema.cls: c for c in CODECS}
 """Codec of each message, request and response class."""

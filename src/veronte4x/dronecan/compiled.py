@@ -10,14 +10,14 @@ How the code stays cheap:
 - The payload is built as one int read little-endian. Under the v0 bit order
   (notes/dronecan-wire.md "Serialization rules") a byte-aligned field wider than a byte
   then lands unchanged, and any other field splits into a few runs of bits;
-  :func:`bit_runs` derives them bit by bit from the rule and merges neighbours.
+  `bit_runs` derives them bit by bit from the rule and merges neighbours.
 - RawCommand's int14 items go through two tables instead (value to its 14 stream bits and
   back), on an int read big-endian.
 - float16 fields are rounded inline from their float32 bits (round half away from zero,
-  as in :mod:`~veronte4x.dronecan.float16`); zeros, subnormals, out-of-range values,
-  infinity and NaN call :func:`~veronte4x.dronecan.float16.float16_bits`.
+  as in `float16`); zeros, subnormals, out-of-range values,
+  infinity and NaN call `float16_bits`.
 - The tail byte of a single-frame transfer is part of the same int; the CRC is
-  :func:`binascii.crc_hqx` seeded with the type's signature CRC.
+  `crc_hqx` seeded with the type's signature CRC.
 - Decoded objects are built as an instance of a private class with the same slots as the
   public frozen dataclass, filled by plain attribute stores and then given the public class
   (``__class__`` assignment, which Python allows between classes of identical layout).
@@ -26,7 +26,7 @@ How the code stays cheap:
 
 Anything unusual (a value out of range or of the wrong type, a payload of the wrong length)
 raises inside the generated code; the caller then runs the generic
-:class:`~veronte4x.dronecan.serializer.Serializer`, which raises the precise error or
+`Serializer`, which raises the precise error or
 saturates.
 """
 
@@ -224,7 +224,7 @@ def _layout(src: _Source, scalars: Sequence[Scalar]) -> tuple[str, list[str], li
     """The struct format of a flat struct, the packed value of each group and the checks.
 
     Direct groups are packed as is (``struct`` checks their range); the others are built
-    from their fields' bit runs (see :func:`bit_runs`, relative to the group's first byte)
+    from their fields' bit runs (see `bit_runs`, relative to the group's first byte)
     and get explicit checks, each an expression that is non-zero when the value is out of
     range (``v >> bits`` for an unsigned field).
     """
@@ -318,8 +318,8 @@ def _emit_struct_frames(
 def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     """Generate the fast paths of a struct of scalars, or None if it is not flat.
 
-    Fields are packed with one :class:`struct.Struct` whose items are the byte-aligned
-    groups of :func:`_groups`: a whole uint8/16/32/64 field as is, anything else as the
+    Fields are packed with one `Struct` whose items are the byte-aligned
+    groups of `_groups`: a whole uint8/16/32/64 field as is, anything else as the
     little-endian int of its bit runs.
     """
     fields = [f for f in schema.fields if isinstance(f.type, Scalar)]

@@ -5,7 +5,7 @@ CRC-16-CCITT-FALSE: poly 0x1021, init 0xFFFF, no reflection, xorout 0, check 0x2
 runs over the 8-byte little-endian data type signature and then the payload, so the
 signature part is precomputed once per type as a seed.
 
-The standard library's :func:`binascii.crc_hqx` computes exactly this CRC (poly 0x1021,
+The standard library's `crc_hqx` computes exactly this CRC (poly 0x1021,
 not reflected, no final xor) from a given start value, in C.
 """
 

@@ -8,7 +8,7 @@ float16 (65504) becomes +-65504, while infinity and NaN are kept. NaN is written
 0x7FFF (0xFFFF with the sign bit set), as both reference implementations do.
 
 The ``dronecan`` package differs for infinity: it clamps it to 65504 (0x7BFF). Pass
-``dronecan_inf=True`` to :func:`float16_bits` to get its behaviour.
+``dronecan_inf=True`` to `float16_bits` to get its behaviour.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The CAN frame type that :func:`~veronte4x.dronecan.encode` returns."""
+"""The CAN frame type that `encode` returns."""
 
 from __future__ import annotations
 

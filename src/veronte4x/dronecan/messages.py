@@ -2,13 +2,13 @@
 
 Field names are exactly those of the DSDL files (``dronecan/DSDL``, copied in
 ``shared/dsdl``); each class docstring names its file. DSDL constants are class attributes
-or enums. Constructors do not validate, so decoding stays cheap; :func:`encode` checks every
-field and raises :class:`~veronte4x.errors.EncodeError`. uint8 arrays are ``bytes``,
+or enums. Constructors do not validate, so decoding stays cheap; `encode` checks every
+field and raises `EncodeError`. uint8 arrays are ``bytes``,
 the int14 array of RawCommand a tuple of ints.
 
 Unions (``param.Value`` and ``param.NumericValue``) hold one of the member classes
-:class:`Empty`, :class:`IntegerValue`, :class:`RealValue`, :class:`BooleanValue` and
-:class:`StringValue`; the class says which member is set.
+`Empty`, `IntegerValue`, `RealValue`, `BooleanValue` and
+`StringValue`; the class says which member is set.
 """
 
 from __future__ import annotations
@@ -100,7 +100,7 @@ class Temperature:
     """``uavcan.equipment.device.Temperature``, message 1110 (``1110.Temperature.uavcan``).
 
     Vertiq (seed 004 section 1.3): device_id is the ESC index, temperature that of the
-    microcontroller in kelvin. ``error_flags`` bits: :class:`TemperatureErrorFlag`.
+    microcontroller in kelvin. ``error_flags`` bits: `TemperatureErrorFlag`.
     """
 
     ERROR_FLAG_OVERHEATING: ClassVar[int] = 1
@@ -125,7 +125,7 @@ class RawCommand:
 class SoftwareVersion:
     """``uavcan.protocol.SoftwareVersion`` (nested; ``SoftwareVersion.uavcan``).
 
-    ``optional_field_flags`` bits: :class:`SoftwareVersionFlag`.
+    ``optional_field_flags`` bits: `SoftwareVersionFlag`.
     """
 
     OPTIONAL_FIELD_FLAG_VCS_COMMIT: ClassVar[int] = 1
@@ -213,7 +213,7 @@ NumericValue: TypeAlias = Empty | IntegerValue | RealValue
 class GetSetRequest:
     """``uavcan.protocol.param.GetSet`` request, service 11 (``param/11.GetSet.uavcan``).
 
-    ``index`` is used only when ``name`` is empty; ``value`` other than :class:`Empty` sets
+    ``index`` is used only when ``name`` is empty; ``value`` other than `Empty` sets
     the parameter. ``name`` is at most 92 bytes.
     """
 

@@ -8,8 +8,8 @@ last transfer, by the frames' own timestamps) has passed, or when its transfer i
 neither the expected one nor the previous one; frames with the wrong toggle or transfer id
 are ignored. Time comes only from the ``timestamp`` argument; nothing reads a clock.
 
-Problems never raise. Each is counted in :attr:`Reassembler.counts` and recorded as a
-:class:`ProblemReport` in the bounded :attr:`Reassembler.problems`. A transfer that
+Problems never raise. Each is counted in `counts` and recorded as a
+`ProblemReport` in the bounded `problems`. A transfer that
 started or was seen but never came out is counted exactly once, under the first problem
 that broke it; the rest of its frames are dropped silently.
 """
@@ -31,42 +31,50 @@ TRANSFER_ID_TIMEOUT = 2.0
 
 
 class Problem(enum.Enum):
-    """What went wrong with a frame or a transfer.
+    """What went wrong with a frame or a transfer; the value says it in words.
 
-    Transfer problems (each broken transfer is counted once, under the first that hit it):
-    ``MISSED_START``, ``TOGGLE_ERROR``, ``CRC_MISMATCH``, ``TIMEOUT``, ``INTERRUPTED``,
-    ``PAYLOAD_TOO_LONG``, ``BAD_PAYLOAD``, ``EVICTED``, and ``MALFORMED_FRAME`` when the
-    bad frame belonged to a transfer in progress. Frame problems (the frame is ignored,
-    no transfer is lost): ``DUPLICATE_FRAME``, ``UNEXPECTED_TRANSFER_ID``,
-    ``UNKNOWN_TYPE``, ``MALFORMED_FRAME``.
+    The members in `TRANSFER_PROBLEMS` mean a transfer was lost, and each lost
+    transfer is counted once, under the first problem that hit it. The others mean a frame
+    was ignored and nothing was lost.
     """
 
-    MALFORMED_FRAME = "malformed frame"
-    """No tail byte, more than 8 data bytes, a CAN ID beyond 29 bits, a service frame with
-    node id 0, a multi-frame anonymous frame, or a frame other than the last of a
-    multi-frame transfer with fewer than 8 bytes."""
-    UNKNOWN_TYPE = "unknown type"
-    """A frame whose (kind, data type id) is none of the eight types; counted per frame."""
-    MISSED_START = "missed start"
-    """A frame of a transfer whose first frame was not seen."""
-    TOGGLE_ERROR = "toggle error"
-    """A toggle bit out of sequence that is not a duplicate: a frame was lost or reordered."""
-    DUPLICATE_FRAME = "duplicate frame"
-    """A repeat of the frame accepted just before; ignored."""
-    UNEXPECTED_TRANSFER_ID = "unexpected transfer id"
-    """A start frame with the transfer id of the transfer just received; ignored."""
-    CRC_MISMATCH = "CRC mismatch"
-    """A multi-frame transfer whose transfer CRC does not match its payload."""
-    TIMEOUT = "timeout"
-    """A transfer still incomplete when the transfer-ID timeout passed."""
-    INTERRUPTED = "interrupted"
-    """A transfer still incomplete when the next transfer of its session started."""
-    PAYLOAD_TOO_LONG = "payload too long"
-    """A transfer longer than the largest payload of its type."""
-    BAD_PAYLOAD = "bad payload"
-    """A complete transfer whose payload does not decode as its type."""
-    EVICTED = "evicted"
-    """An incomplete transfer dropped because the session table was full."""
+    MALFORMED_FRAME = (
+        "Not a DroneCAN frame: no tail byte, more than 8 bytes, a CAN ID beyond 29 bits, a "
+        "service with node id 0, a multi-frame anonymous frame, or a frame other than the "
+        "last of a transfer with fewer than 8 bytes (which also loses that transfer)."
+    )
+    UNKNOWN_TYPE = "A frame of none of the eight types (counted per frame)."
+    MISSED_START = "A frame of a transfer whose first frame was not seen."
+    TOGGLE_ERROR = (
+        "A toggle bit out of sequence that is not a repeat: a frame was lost or reordered; "
+        "the transfer is dropped."
+    )
+    DUPLICATE_FRAME = "A repeat of the frame accepted just before; ignored."
+    UNEXPECTED_TRANSFER_ID = (
+        "A first frame with a transfer id already handled (a replayed transfer, or the late "
+        "first frame of a transfer counted as MISSED_START); ignored."
+    )
+    CRC_MISMATCH = "The transfer CRC does not match the payload."
+    TIMEOUT = "A transfer still incomplete after the transfer-ID timeout."
+    INTERRUPTED = "A transfer still incomplete when the next one of its session started."
+    PAYLOAD_TOO_LONG = "More bytes than the largest payload of the type."
+    BAD_PAYLOAD = "A complete transfer whose payload does not decode as its type."
+    EVICTED = "An incomplete transfer dropped because the session table was full."
+
+
+TRANSFER_PROBLEMS: frozenset[Problem] = frozenset(
+    {
+        Problem.MISSED_START,
+        Problem.TOGGLE_ERROR,
+        Problem.CRC_MISMATCH,
+        Problem.TIMEOUT,
+        Problem.INTERRUPTED,
+        Problem.PAYLOAD_TOO_LONG,
+        Problem.BAD_PAYLOAD,
+        Problem.EVICTED,
+    }
+)
+"""Problems that lose a transfer (MALFORMED_FRAME also does when it hits one in progress)."""
 
 
 class ProblemReport(NamedTuple):
@@ -131,10 +139,10 @@ class Reassembler:
             session restarts (spec: 2 s).
         max_sessions: Most receiver states kept; beyond, timed-out sessions are dropped,
             then the oldest. Memory is bounded by this times the largest payload (378 B).
-        max_reports: How many recent :class:`ProblemReport` entries :attr:`problems` keeps.
+        max_reports: How many recent `ProblemReport` entries `problems` keeps.
 
     Attributes:
-        counts: Number of each :class:`Problem` so far.
+        counts: Number of each `Problem` so far.
         problems: The most recent problem reports, oldest first.
         transfers: Number of transfers delivered.
     """
@@ -427,7 +435,7 @@ class Reassembler:
     def expire(self, timestamp: float) -> int:
         """Drop sessions idle past the transfer-ID timeout at ``timestamp``.
 
-        Incomplete transfers among them are counted as :attr:`Problem.TIMEOUT`. Call it
+        Incomplete transfers among them are counted as `TIMEOUT`. Call it
         now and then on a quiet bus to report transfers whose end never came.
 
         Returns:

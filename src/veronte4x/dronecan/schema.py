@@ -1,7 +1,7 @@
 """The data model of DSDL types: scalars, arrays, structs and unions.
 
-The type definitions themselves are in :mod:`veronte4x.dronecan.definitions`; the
-serializers in :mod:`~veronte4x.dronecan.serializer` and :mod:`~veronte4x.dronecan.compiled`
+The type definitions themselves are in `definitions`; the
+serializers in `serializer` and `compiled`
 run from them. Bit lengths and the tail array optimisation follow spec 3 (DSDL) as
 summarised in notes/dronecan-wire.md "Serialization rules".
 """

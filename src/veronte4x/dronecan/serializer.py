@@ -1,4 +1,4 @@
-"""Generic DSDL v0 serializer: runs any :mod:`~veronte4x.dronecan.schema` definition.
+"""Generic DSDL v0 serializer: runs any `schema` definition.
 
 Bit order (notes/dronecan-wire.md "Serialization rules"): fields follow each other with no
 alignment, each byte filled from its MSB. A scalar wider than 8 bits is cut into
@@ -10,7 +10,7 @@ more drops it, and its decoder reads items while 8 bits or more remain. Void fie
 zeros. The payload is padded with zero bits to a whole byte.
 
 This module validates every value, so it is also the encoder's slow path for errors and
-for saturation; :mod:`~veronte4x.dronecan.compiled` holds the fast paths.
+for saturation; `compiled` holds the fast paths.
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
-"""Frames and transfers: :func:`encode` a message, :func:`decode_frames` one transfer.
+"""Frames and transfers: `encode` a message, `decode_frames` one transfer.
 
 A transfer of at most 7 payload bytes is one frame; a longer one is prefixed with the
 transfer CRC seeded with the type signature and cut into 7-byte chunks (spec 4.1;
 notes/dronecan-wire.md "Transport rules"). The stateful receiver for a stream of frames is
-:class:`~veronte4x.dronecan.reassembler.Reassembler`.
+`Reassembler`.
 """
 
 from __future__ import annotations
@@ -98,7 +98,7 @@ def _encode_checked(
     destination_node_id: int | None,
     saturate: bool,
 ) -> list[Frame]:
-    """:func:`encode` through the generic serializer, checking every argument."""
+    """`encode` through the generic serializer, checking every argument."""
     codec = BY_CLASS.get(type(message))
     if codec is None:
         raise EncodeError("encode", "message", message, "a DroneCAN message class")

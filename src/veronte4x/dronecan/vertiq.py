@@ -49,7 +49,7 @@ class Parameter(str, enum.Enum):
     ESC_INDEX = "esc_index"
     """Which RawCommand entry the module reads (3.3)."""
     ZERO_BEHAVIOR = "zero_behavior"
-    """What a zero RawCommand setpoint does: a :class:`ZeroBehavior` (3.4)."""
+    """What a zero RawCommand setpoint does: a `ZeroBehavior` (3.4)."""
     TELEM_FREQUENCY = "telem_frequency"
     """esc.Status and Temperature broadcast rate in Hz; 0 turns them off (3.5)."""
 
