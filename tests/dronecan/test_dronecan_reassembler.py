@@ -250,6 +250,10 @@ def test_payload_too_long_and_bad_payload() -> None:
     r2.feed(status_id, b"\x00\x00\xc0", timestamp=0.0)  # 2 bytes for a 7-byte type
     assert r2.counts[Problem.BAD_PAYLOAD] == 1
     assert "NodeStatus" in r2.problems[0].detail
+    request_id = dronecan.service_can_id(0, 1, True, source_node_id=5, destination_node_id=6)
+    assert r2.feed(request_id, b"\xc0", timestamp=0.0) is not None  # empty GetNodeInfo request
+    assert r2.feed(request_id, b"\x01\xc1", timestamp=0.1) is None  # one byte too many
+    assert r2.counts[Problem.BAD_PAYLOAD] == 2
 
 
 def test_unknown_types_and_malformed_frames_are_counted() -> None:

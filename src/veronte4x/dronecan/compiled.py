@@ -349,10 +349,12 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
         unpacker = src.name("S", struct.Struct(layout + pad))
         names = "".join(f"g{k}, " for k in range(len(groups)))
-        src.lines += [f"def {function}(buf):", f"    if len(buf) != {length}:"]
-        src.lines.append("        raise SlowPath")
-        if groups:
-            src.lines.append(f"    {names}= {unpacker}.unpack(buf)")
+        src.lines.append(f"def {function}(buf):")
+        if function == "decode":  # decode_frame relies on struct's own length check
+            src.lines += [f"    if len(buf) != {length}:", "        raise SlowPath"]
+        src.lines.append(
+            f"    {names}= {unpacker}.unpack(buf)" if groups else f"    {unpacker}.unpack(buf)"
+        )
         src.lines.append(f"    o = new({builder})")
         for k, group in enumerate(groups):
             if not _direct(group, scalars) and group.bits not in _STRUCT_CODES:

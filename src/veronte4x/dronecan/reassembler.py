@@ -17,12 +17,12 @@ that broke it; the rest of its frames are dropped silently.
 from __future__ import annotations
 
 import enum
+from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import deque
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
-from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import DecodeError
 
@@ -98,11 +98,14 @@ class _Session:
         "buffer",
         "closed",
         "codec",
+        "crc_seed",
         "data_type_id",
         "decode_frame",
+        "decode_payload",
         "destination",
         "kind",
         "last",
+        "limit",
         "start",
         "tid",
         "toggle",
@@ -114,6 +117,9 @@ class _Session:
         self.data_type_id = codec.data_type.data_type_id
         self.destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
         self.decode_frame = codec.fast.decode_frame if codec.fast else None
+        self.decode_payload = codec.fast.decode if codec.fast else codec.decode
+        self.crc_seed = codec.crc_seed
+        self.limit = codec.max_payload + 3  # CRC and tail byte included
         self.tid = 0  # transfer id expected next, or in progress
         self.toggle = 0  # expected toggle bit (0 or 0x20)
         self.start = -float("inf")  # timestamp of the first frame of the latest transfer
@@ -181,13 +187,11 @@ class Reassembler:
         """
         # Fast paths: the next frame of a known session, in order, nothing unusual. Any
         # other case goes to _feed, which redoes the full state update (nothing changed yet).
-        session = self._sessions.get(can_id & 0xFFFFFF) if type(can_id) is int else None
-        if (
-            session is None
-            or not 0 <= can_id <= 0x1FFFFFFF
-            or not 0 < len(data) <= 8
-            or timestamp - session.start > self.timeout
-        ):
+        try:
+            session = self._sessions[can_id & 0xFFFFFF]
+        except (KeyError, TypeError):  # a new session, or not an int
+            return self._feed(can_id, data, timestamp)
+        if can_id >> 29 or not 0 < len(data) <= 8 or timestamp - session.start > self.timeout:
             return self._feed(can_id, data, timestamp)
         tail = data[-1]
         tid = tail & 0x1F
@@ -227,7 +231,7 @@ class Reassembler:
         elif (
             tail & 0xA0 == session.toggle
             and (len(data) == 8 or tail & 0x40)
-            and len(buffer) + len(data) <= session.codec.max_payload + 3
+            and len(buffer) + len(data) <= session.limit
         ):
             buffer += data[:-1]
             session.last = data
@@ -392,7 +396,7 @@ class Reassembler:
         session.closed = tid
         session.tid = (tid + 1) & 0x1F
         payload = bytes(buffer[2:])
-        crc = crc16(payload, session.codec.crc_seed)
+        crc = crc_hqx(payload, session.crc_seed)
         if crc != buffer[0] | buffer[1] << 8:
             self._report(
                 Problem.CRC_MISMATCH,
@@ -402,7 +406,24 @@ class Reassembler:
                 f"CRC {buffer[0] | buffer[1] << 8:#06x}, computed {crc:#06x}",
             )
             return None
-        return self._deliver(session.codec, can_id, payload, tid, session.start)
+        try:
+            message = session.decode_payload(payload)
+        except Exception:  # odd length or bad content: the checked path decides
+            return self._deliver(session.codec, can_id, payload, tid, session.start)
+        self.transfers += 1
+        return _new_tuple(
+            Transfer,
+            (
+                message,
+                can_id & 0x7F,
+                session.destination,
+                can_id >> 24,
+                tid,
+                session.start,
+                session.kind,
+                session.data_type_id,
+            ),
+        )
 
     def _deliver(
         self, codec: Codec, can_id: int, payload: Any, tid: int, ts: float
