@@ -69,6 +69,14 @@ def test_any_frames_decode_or_raise_decode_error(can_id: int, frames: list[bytes
         dronecan.decode_frames([(can_id, data) for data in frames])
 
 
+def test_too_many_frames_is_a_decode_error() -> None:
+    can_id = dronecan.message_can_id(0, 1030, 1)
+    with pytest.raises(dronecan.DecodeError):
+        dronecan.decode_frames([(can_id, bytes(8))] * 70)
+    with pytest.raises(dronecan.DecodeError):
+        dronecan.decode_frames([])
+
+
 def test_unknown_class_is_an_encode_error() -> None:
     with pytest.raises(dronecan.EncodeError):
         dronecan.encode(object(), source_node_id=1, transfer_id=0)

@@ -15,7 +15,7 @@ from veronte4x.dronecan.can_id import TransferKind, parse_can_id
 from veronte4x.dronecan.codec import BY_CLASS, BY_ID, Codec, can_id_base
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
-from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
+from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
 from veronte4x.errors import DecodeError, EncodeError
 
 DEFAULT_PRIORITY = 16
@@ -47,8 +47,6 @@ class Transfer(NamedTuple):
     data_type_id: int
 
 
-_SINGLE_TAILS = tuple(bytes((0xC0 | tid,)) for tid in range(32))
-_new_tuple = tuple.__new__
 _FAST = {cls: codec.fast.frames for cls, codec in BY_CLASS.items() if codec.fast is not None}
 
 
@@ -123,15 +121,10 @@ def _encode_checked(
             codec.data_type.full_name, "destination_node_id", destination_node_id, "None"
         )
     payload = codec.encode(message, saturate)
-    if len(payload) <= 7:
-        return [_new_tuple(Frame, (can_id, payload + _SINGLE_TAILS[transfer_id]))]
+    if len(payload) <= SINGLE_FRAME_MAX:
+        return [Frame(can_id, payload + bytes((0xC0 | transfer_id,)))]
     crc = crc16(payload, codec.crc_seed)
-    body = bytes((crc & 0xFF, crc >> 8)) + payload
-    tails = MULTI_FRAME_TAILS[transfer_id][(len(body) + 6) // 7]
-    return [
-        _new_tuple(Frame, (can_id, body[i * 7 : i * 7 + 7] + bytes((tail,))))
-        for i, tail in enumerate(tails)
-    ]
+    return [Frame(can_id, data) for data in split_payload(payload, crc, transfer_id)]
 
 
 def _check_transport(codec: Codec, source: object, tid: object, priority: object) -> None:
@@ -155,8 +148,8 @@ def decode_frames(frames: Iterable[tuple[int, bytes]], timestamp: float = 0.0) -
         DecodeError: Any inconsistency.
     """
     items = [(can_id, bytes(data)) for can_id, data in frames]
-    if not items:
-        raise DecodeError(None, "no frames", b"")
+    if not 0 < len(items) < len(MULTI_FRAME_TAILS[0]):
+        raise DecodeError(None, f"{len(items)} frames, not 1..{len(MULTI_FRAME_TAILS[0]) - 1}", b"")
     can_id = items[0][0]
     fields = parse_can_id(can_id)
     codec = BY_ID.get((fields.kind, fields.data_type_id))
