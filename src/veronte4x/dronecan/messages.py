@@ -49,6 +49,25 @@ class FirmwareUpdateError(enum.IntEnum):
     UNKNOWN = 255
 
 
+class FileError(enum.IntEnum):
+    """``uavcan.protocol.file.Error`` result codes (``file/Error.uavcan``, int16 ``value``).
+
+    None of the eight types carries this nested type; it is here for the file services a
+    firmware update over DroneCAN goes on to use.
+    """
+
+    OK = 0
+    UNKNOWN_ERROR = 32767
+    NOT_FOUND = 2
+    IO_ERROR = 5
+    ACCESS_DENIED = 13
+    IS_DIRECTORY = 21
+    INVALID_VALUE = 22
+    FILE_TOO_LARGE = 27
+    OUT_OF_SPACE = 28
+    NOT_IMPLEMENTED = 38
+
+
 class TemperatureErrorFlag(enum.IntFlag):
     """Bits of ``Temperature.error_flags`` (DSDL constants ``ERROR_FLAG_*``)."""
 
