@@ -187,15 +187,14 @@ class Reassembler:
         """
         # Fast paths: the next frame of a known session, in order, nothing unusual. Any
         # other case goes to _feed, which redoes the full state update (nothing changed yet).
+        # Frame lengths: decode_frame checks a single frame's exact length itself.
         try:
             session = self._sessions[can_id & 0xFFFFFF]
-        except (KeyError, TypeError):  # a new session, or not an int
+            tail = data[-1]
+            tid = tail & 0x1F
+        except (KeyError, TypeError, IndexError):  # new session, not an int, no tail byte
             return self._feed(can_id, data, timestamp)
-        if can_id >> 29 or not 0 < len(data) <= 8 or timestamp - session.start > self.timeout:
-            return self._feed(can_id, data, timestamp)
-        tail = data[-1]
-        tid = tail & 0x1F
-        if tid != session.tid:
+        if can_id >> 29 or tid != session.tid or timestamp - session.start > self.timeout:
             return self._feed(can_id, data, timestamp)
         buffer = session.buffer
         if buffer is None:
@@ -230,7 +229,7 @@ class Reassembler:
                 return None
         elif (
             tail & 0xA0 == session.toggle
-            and (len(data) == 8 or tail & 0x40)
+            and (len(data) == 8 or (tail & 0x40 and len(data) <= 8))
             and len(buffer) + len(data) <= session.limit
         ):
             buffer += data[:-1]
