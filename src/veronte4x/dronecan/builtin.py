@@ -1,0 +1,123 @@
+"""Convert messages to and from plain Python data (for JSON, logs, data frames)."""
+
+from __future__ import annotations
+
+import enum
+from typing import Any, TypeVar
+
+from veronte4x.dronecan.definitions import DATA_TYPES, VALUE
+from veronte4x.dronecan.schema import Array, Struct, Union
+from veronte4x.dronecan.serializer import enum_table
+from veronte4x.dronecan.transfer import Transfer
+from veronte4x.errors import EncodeError
+
+T = TypeVar("T")
+
+
+def _structs(t: Any, found: dict[type, Struct]) -> dict[type, Struct]:
+    if isinstance(t, Struct):
+        found[t.cls] = t
+        for f in t.fields:
+            _structs(f.type, found)
+    elif isinstance(t, Union):
+        for member in t.members:
+            _structs(member.type, found)
+    return found
+
+
+_STRUCTS: dict[type, Struct] = {}
+for _data_type in DATA_TYPES:
+    _structs(_data_type.schema, _STRUCTS)
+_MEMBER_OF = {member.cls: member for member in VALUE.members}
+_MEMBERS = {member.cls for member in VALUE.members if not isinstance(member.type, Struct)}
+
+
+def _convert(value: Any, t: Any) -> Any:
+    if isinstance(t, Struct):
+        return {f.name: _convert(getattr(value, f.name), f.type) for f in t.fields if f.name}
+    if isinstance(t, Union):
+        member = _MEMBER_OF.get(value.__class__)
+        if member is None:
+            return value
+        inner = value if isinstance(member.type, Struct) else value.value
+        return {member.name: _convert(inner, member.type)}
+    if isinstance(t, Array):
+        return list(value)
+    if isinstance(value, enum.Enum):
+        return value.value
+    return value
+
+
+def to_builtin(value: Any) -> Any:
+    """Return ``value`` as plain dicts, lists, ints, floats and bools.
+
+    Structs become dicts keyed by DSDL field names (void fields left out), unions one-key
+    dicts ``{member_name: value}`` (``{"empty": {}}`` for an empty value), byte and int
+    arrays lists of ints, enums their int value. A `Transfer`
+    becomes a dict of its fields with the message converted. Anything else is returned as is.
+    """
+    schema = _STRUCTS.get(type(value))
+    if schema is not None:
+        return _convert(value, schema)
+    if type(value) in _MEMBERS:
+        return _convert(value, VALUE)
+    if isinstance(value, Transfer):
+        out = value._asdict()
+        out["message"] = to_builtin(value.message)
+        out["kind"] = value.kind.name.lower()
+        return out
+    if isinstance(value, enum.Enum):
+        return value.value
+    return value
+
+
+def _build(t: Any, data: Any, enum: type | None, path: str) -> Any:
+    if isinstance(t, Struct):
+        if not isinstance(data, dict):
+            raise EncodeError(t.name, path, data, "a dict")
+        values = {
+            f.name: _build(f.type, data[f.name], f.enum, f.name)
+            for f in t.fields
+            if f.name and f.name in data
+        }
+        return t.cls(**values)
+    if isinstance(t, Union):
+        if not isinstance(data, dict) or len(data) != 1:
+            raise EncodeError(t.name, path, data, "a one-key dict {member: value}")
+        ((name, inner),) = data.items()
+        for member in t.members:
+            if member.name == name:
+                value = _build(member.type, inner, None, name)
+                return value if isinstance(member.type, Struct) else member.cls(value)
+        raise EncodeError(t.name, path, data, ", ".join(mb.name for mb in t.members))
+    if isinstance(t, Array):
+        if t.is_bytes:
+            try:
+                return bytes(data.encode() if isinstance(data, str) else data)
+            except (TypeError, ValueError):
+                raise EncodeError(t.dsdl, path, data, "byte values 0..255") from None
+        return tuple(data)
+    if enum is not None and isinstance(data, int):
+        return enum_table(enum, t.bits)[data] if 0 <= data < 1 << t.bits else data
+    return data
+
+
+def from_builtin(cls: type[T], data: dict[str, Any]) -> T:
+    """Build a message of class ``cls`` from plain data, the inverse of `to_builtin`.
+
+    Missing keys take the class defaults; a ``str`` is accepted for a uint8 array (UTF-8).
+    No range check is made here: `encode` does that.
+
+    Raises:
+        EncodeError: ``cls`` is not a DroneCAN class, or the data does not have its shape.
+    """
+    schema = _STRUCTS.get(cls)
+    if schema is None:
+        raise EncodeError("from_builtin", "cls", cls, "a DroneCAN message class")
+    try:
+        built: T = _build(schema, data, None, "")
+    except (KeyError, TypeError) as error:
+        raise EncodeError(
+            schema.name, "", data, f"the fields of {cls.__name__} ({error})"
+        ) from None
+    return built

@@ -1,0 +1,140 @@
+"""The data model of DSDL types: scalars, arrays, structs and unions.
+
+The type definitions themselves are in `definitions`; the
+serializers in `serializer` and `compiled`
+run from them. Bit lengths and the tail array optimisation follow spec 3 (DSDL) as
+summarised in notes/dronecan-wire.md "Serialization rules".
+"""
+
+from __future__ import annotations
+
+import builtins
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Scalar:
+    """A primitive field: ``uint``, ``int``, ``float``, ``bool`` or ``void`` of ``bits`` bits."""
+
+    kind: str
+    bits: int
+
+    @property
+    def dsdl(self) -> str:
+        """The DSDL spelling, e.g. ``uint32``, ``int18``, ``float16``, ``bool``, ``void5``."""
+        return "bool" if self.kind == "bool" else f"{self.kind}{self.bits}"
+
+    @property
+    def low(self) -> int:
+        """Smallest integer value (0 for uint, bool and void)."""
+        return -(1 << (self.bits - 1)) if self.kind == "int" else 0
+
+    @property
+    def high(self) -> int:
+        """Largest integer value."""
+        return (1 << (self.bits - 1)) - 1 if self.kind == "int" else (1 << self.bits) - 1
+
+
+@dataclass(frozen=True)
+class Array:
+    """An array of scalars: fixed ``[max_size]`` or dynamic ``[<=max_size]``.
+
+    Arrays of uint8 are ``bytes`` in Python, others tuples of ints.
+    """
+
+    item: Scalar
+    max_size: int
+    dynamic: bool
+
+    @property
+    def prefix_bits(self) -> int:
+        """Bits of the length prefix: ``max_size.bit_length()`` for a dynamic array, else 0."""
+        return self.max_size.bit_length() if self.dynamic else 0
+
+    @property
+    def is_bytes(self) -> bool:
+        """True for uint8 arrays, held as ``bytes``."""
+        return self.item == Scalar("uint", 8)
+
+    @property
+    def dsdl(self) -> str:
+        """The DSDL spelling, e.g. ``uint8[<=92]``."""
+        return f"{self.item.dsdl}[{'<=' if self.dynamic else ''}{self.max_size}]"
+
+
+@dataclass(frozen=True)
+class Field:
+    """One field of a struct: its DSDL name (empty for void), type and optional enum."""
+
+    name: str
+    type: Scalar | Array | Struct | Union
+    enum: builtins.type | None = None
+
+
+@dataclass(frozen=True)
+class Struct:
+    """A DSDL struct (a message, a request, a response or a nested type) and its class."""
+
+    name: str
+    cls: type
+    fields: tuple[Field, ...]
+
+
+@dataclass(frozen=True)
+class Member:
+    """One member of a union: its DSDL name, its type, and the Python class that holds it.
+
+    The class has a single field ``value`` unless the member type is a struct, in which case
+    the class is that struct's own class.
+    """
+
+    name: str
+    type: Scalar | Array | Struct
+    cls: builtins.type
+
+
+@dataclass(frozen=True)
+class Union:
+    """A DSDL ``@union``: a tag of ``ceil(log2(len(members)))`` bits, then the member."""
+
+    name: str
+    members: tuple[Member, ...]
+
+    @property
+    def tag_bits(self) -> int:
+        """Bits of the union tag."""
+        return (len(self.members) - 1).bit_length()
+
+    @property
+    def dsdl(self) -> str:
+        """The type name."""
+        return self.name
+
+
+def min_bits(t: Scalar | Array | Struct | Union) -> int:
+    """Minimum serialized bit length of a type (dynamic arrays empty, with their prefix)."""
+    if isinstance(t, Scalar):
+        return t.bits
+    if isinstance(t, Array):
+        return t.prefix_bits if t.dynamic else t.max_size * t.item.bits
+    if isinstance(t, Struct):
+        return sum(min_bits(f.type) for f in t.fields)
+    return t.tag_bits + min(min_bits(m.type) for m in t.members)
+
+
+def max_bits(t: Scalar | Array | Struct | Union, tao: bool = False) -> int:
+    """Maximum serialized bit length, without the length prefix dropped by TAO when ``tao``."""
+    if isinstance(t, Scalar):
+        return t.bits
+    if isinstance(t, Array):
+        prefix = 0 if tao and uses_tao(t) else t.prefix_bits
+        return prefix + t.max_size * t.item.bits
+    if isinstance(t, Struct):
+        last = len(t.fields) - 1
+        return sum(max_bits(f.type, tao and i == last) for i, f in enumerate(t.fields))
+    return t.tag_bits + max(max_bits(m.type, tao) for m in t.members)
+
+
+def uses_tao(array: Array) -> bool:
+    """Whether a dynamic array in tail position drops its prefix: items of 8 bits or more."""
+    return array.dynamic and array.item.bits >= 8

@@ -1,0 +1,197 @@
+"""Vertiq ESC specifics (seed 004, "Vertiq Standard DroneCAN Support").
+
+Parameter names and types (section 3), the zero-behaviour values (3.4), the RestartNode
+magic numbers (2.3), the node name (2.1), GetSet requests by name and by index (2.2) and
+RawCommand throttle helpers (1.4: setpoints normalized over [-8192, 8191], entry i read by
+the ESC of index i, at most 20 entries).
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Mapping, Sequence
+
+from veronte4x.dronecan.messages import (
+    BooleanValue,
+    Empty,
+    GetSetRequest,
+    GetSetResponse,
+    IntegerValue,
+    RawCommand,
+    RealValue,
+    RestartNodeRequest,
+    StringValue,
+    Value,
+)
+from veronte4x.errors import EncodeError
+
+NODE_NAME = "iq_motion.esc"
+"""The GetNodeInfo ``name`` of Vertiq modules (seed 004 section 2.1)."""
+
+RESTART_MAGIC = 0xACCE551B1E
+"""RestartNode magic number of a normal reboot (seed 004 2.3; the DSDL MAGIC_NUMBER)."""
+
+BOOTLOADER_MAGIC = 0xBEEFCAFE
+"""Vertiq's RestartNode magic number that reboots into the ST bootloader (seed 004 2.3)."""
+
+
+class Parameter(str, enum.Enum):
+    """Configuration parameters of Vertiq modules (seed 004 section 3), all integers.
+
+    Not every module supports every parameter; access them by name, not by index.
+    """
+
+    UAVCAN_NODE_ID = "uavcan_node_id"
+    """Node ID on the bus; typically needs a reboot to take effect (3.1)."""
+    BIT_RATE = "bit_rate"
+    """Bus bit rate in bit/s, effective immediately; fixed 500000 where unsupported (3.2)."""
+    ESC_INDEX = "esc_index"
+    """Which RawCommand entry the module reads (3.3)."""
+    ZERO_BEHAVIOR = "zero_behavior"
+    """What a zero RawCommand setpoint does: a `ZeroBehavior` (3.4)."""
+    TELEM_FREQUENCY = "telem_frequency"
+    """esc.Status and Temperature broadcast rate in Hz; 0 turns them off (3.5)."""
+
+
+class ZeroBehavior(enum.IntEnum):
+    """Values of the ``zero_behavior`` parameter (seed 004 section 3.4)."""
+
+    COAST = 0
+    """Stop driving the motor and let it coast to a stop."""
+    BRAKE = 1
+    """Brake to a stop, then coast."""
+    NORMAL_CONTROLLER = 2
+    """Keep the controller running at 0 % throttle."""
+
+
+RAW_COMMAND_MIN = -8192
+"""Full speed in reverse (seed 004 1.4)."""
+RAW_COMMAND_MAX = 8191
+"""Full speed forward (seed 004 1.4)."""
+MAX_ESCS = 20
+"""Most entries of a RawCommand (DSDL ``int14[<=20] cmd``)."""
+
+
+def _name(name: str | Parameter) -> bytes:
+    text = name.value if isinstance(name, Parameter) else name
+    return text.encode("utf-8")
+
+
+def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
+    """Wrap a Python value as a ``param.Value`` member."""
+    if value is None:
+        return Empty()
+    if isinstance(value, (Empty, IntegerValue, RealValue, BooleanValue, StringValue)):
+        return value
+    if isinstance(value, bool):
+        return BooleanValue(int(value))
+    if isinstance(value, int):
+        return IntegerValue(int(value))
+    if isinstance(value, float):
+        return RealValue(value)
+    if isinstance(value, str):
+        return StringValue(value.encode("utf-8"))
+    if isinstance(value, bytes):
+        return StringValue(value)
+    raise EncodeError("uavcan.protocol.param.Value", "value", value, "int, float, bool, str")
+
+
+def get_parameter(name: str | Parameter) -> GetSetRequest:
+    """A GetSet request reading parameter ``name`` (the recommended access, seed 004 2.2)."""
+    return GetSetRequest(index=0, value=Empty(), name=_name(name))
+
+
+def set_parameter(
+    name: str | Parameter, value: int | float | bool | str | bytes | Value
+) -> GetSetRequest:
+    """A GetSet request setting parameter ``name``; Vertiq parameters are integers.
+
+    ``value`` may be an int (``IntegerValue``), a float, a bool, a str or a ready
+    ``param.Value`` member.
+    """
+    return GetSetRequest(index=0, value=_value(value), name=_name(name))
+
+
+def get_parameter_by_index(index: int) -> GetSetRequest:
+    """A GetSet request reading the parameter at ``index`` (for discovery only, seed 004 3)."""
+    return GetSetRequest(index=index, value=Empty(), name=b"")
+
+
+def is_end_of_parameters(response: GetSetResponse) -> bool:
+    """Whether a GetSet response is the empty reply that ends a discovery walk.
+
+    The DSDL: an empty name and/or an empty value means there is no such parameter.
+    """
+    return not response.name or isinstance(response.value, Empty)
+
+
+def discovered_parameters(responses: Sequence[GetSetResponse]) -> dict[str, Value]:
+    """Collect the replies of a discovery walk (index 0, 1, ...) up to the first empty one.
+
+    Returns:
+        Parameter name (decoded as UTF-8, undecodable bytes replaced) to its value.
+    """
+    found: dict[str, Value] = {}
+    for response in responses:
+        if is_end_of_parameters(response):
+            break
+        found[response.name.decode("utf-8", "replace")] = response.value
+    return found
+
+
+def restart(bootloader: bool = False) -> RestartNodeRequest:
+    """A RestartNode request: normal reboot, or into the ST bootloader (seed 004 2.3)."""
+    return RestartNodeRequest(BOOTLOADER_MAGIC if bootloader else RESTART_MAGIC)
+
+
+def throttle_to_raw(throttle: float) -> int:
+    """Map a throttle fraction in [-1, 1] to the 14-bit setpoint [-8192, 8191].
+
+    Positive fractions scale by 8191 and negative ones by 8192, so -1 and 1 are full speed
+    in reverse and forward (seed 004 1.4); values round to the nearest integer, halves
+    away from zero.
+
+    Raises:
+        EncodeError: ``throttle`` is outside [-1, 1] or not a finite number.
+    """
+    if isinstance(throttle, bool) or not isinstance(throttle, (int, float)):
+        raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
+    if not (math.isfinite(throttle) and -1.0 <= throttle <= 1.0):
+        raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
+    scaled = throttle * (RAW_COMMAND_MAX if throttle >= 0 else -RAW_COMMAND_MIN)
+    return int(math.copysign(math.floor(abs(scaled) + 0.5), scaled))
+
+
+def raw_to_throttle(raw: int) -> float:
+    """Map a 14-bit setpoint back to a throttle fraction in [-1, 1] (inverse of the scale)."""
+    return raw / (RAW_COMMAND_MAX if raw >= 0 else -RAW_COMMAND_MIN)
+
+
+def raw_command(throttles: Sequence[float] | Mapping[int, float]) -> RawCommand:
+    """Build a RawCommand from throttle fractions.
+
+    Args:
+        throttles: A sequence (entry i for ESC index i) or a mapping from ESC index
+            (0..19) to fraction; indices missing from a mapping get 0 (which the ESC
+            handles as its ``zero_behavior`` says).
+
+    Raises:
+        EncodeError: More than 20 ESCs, an index out of 0..19, or a bad fraction.
+    """
+    if isinstance(throttles, Mapping):
+        for index in throttles:
+            if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < MAX_ESCS:
+                raise EncodeError("RawCommand", "cmd", index, f"ESC indices 0..{MAX_ESCS - 1}")
+        count = max(throttles, default=-1) + 1
+        values = [throttles.get(i, 0.0) for i in range(count)]
+    else:
+        values = list(throttles)
+    if len(values) > MAX_ESCS:
+        raise EncodeError("RawCommand", "cmd", values, f"at most {MAX_ESCS} entries")
+    return RawCommand(tuple(throttle_to_raw(v) for v in values))
+
+
+def throttles(command: RawCommand) -> tuple[float, ...]:
+    """The throttle fraction of each ESC index in a RawCommand."""
+    return tuple(raw_to_throttle(v) for v in command.cmd)

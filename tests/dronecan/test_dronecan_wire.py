@@ -1,0 +1,160 @@
+"""CAN IDs, tail bytes, transfer CRC, v0 bit order and framing."""
+
+from __future__ import annotations
+
+import pytest
+
+from veronte4x import dronecan
+from veronte4x.dronecan.crc import crc16, signature_seed
+from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.tail import split_payload, tail_byte
+
+K = dronecan.TransferKind
+
+
+def test_crc_check_value_and_seeds() -> None:
+    assert crc16(b"123456789") == 0x29B1
+    seeds = {t.full_name: signature_seed(t.signature) for t in DATA_TYPES}
+    assert seeds == {
+        "uavcan.protocol.NodeStatus": 0xBE5F,
+        "uavcan.equipment.esc.Status": 0x1591,
+        "uavcan.equipment.device.Temperature": 0x5D7E,
+        "uavcan.equipment.esc.RawCommand": 0xE4B8,
+        "uavcan.protocol.GetNodeInfo": 0xD9A7,
+        "uavcan.protocol.param.GetSet": 0xFB10,
+        "uavcan.protocol.RestartNode": 0x1F7F,
+        "uavcan.protocol.file.BeginFirmwareUpdate": 0x729E,
+    }
+
+
+def test_message_can_id() -> None:
+    can_id = dronecan.message_can_id(priority=16, data_type_id=341, source_node_id=42)
+    assert can_id == 16 << 24 | 341 << 8 | 42
+    assert dronecan.parse_can_id(can_id) == dronecan.CanId(16, K.MESSAGE, 341, 42, None, None)
+
+
+def test_service_can_id() -> None:
+    request = dronecan.service_can_id(30, 11, True, source_node_id=5, destination_node_id=100)
+    assert request == 30 << 24 | 11 << 16 | 1 << 15 | 100 << 8 | 1 << 7 | 5
+    assert dronecan.parse_can_id(request) == dronecan.CanId(30, K.REQUEST, 11, 5, 100, None)
+    response = dronecan.service_can_id(30, 11, False, source_node_id=100, destination_node_id=5)
+    assert dronecan.parse_can_id(response) == dronecan.CanId(30, K.RESPONSE, 11, 100, 5, None)
+
+
+def test_anonymous_can_id() -> None:
+    can_id = dronecan.anonymous_can_id(priority=31, data_type_id=1, discriminator=0x2ABC)
+    assert can_id == 31 << 24 | 0x2ABC << 10 | 1 << 8
+    assert dronecan.parse_can_id(can_id) == dronecan.CanId(31, K.MESSAGE, 1, 0, None, 0x2ABC)
+
+
+@pytest.mark.parametrize(
+    ("function", "args"),
+    [
+        (dronecan.message_can_id, (32, 341, 1)),
+        (dronecan.message_can_id, (0, 65536, 1)),
+        (dronecan.message_can_id, (0, 341, 0)),
+        (dronecan.message_can_id, (0, 341, 128)),
+        (dronecan.anonymous_can_id, (0, 4, 0)),
+        (dronecan.anonymous_can_id, (0, 1, 1 << 14)),
+        (dronecan.service_can_id, (0, 256, True, 1, 2)),
+        (dronecan.service_can_id, (0, 1, True, 1, 0)),
+    ],
+)
+def test_can_id_ranges(function: object, args: tuple[object, ...]) -> None:
+    with pytest.raises(dronecan.EncodeError):
+        function(*args)  # type: ignore[operator]
+
+
+@pytest.mark.parametrize("can_id", [-1, 1 << 29, "x"])
+def test_parse_rejects_non_29_bit_ids(can_id: object) -> None:
+    with pytest.raises(dronecan.DecodeError):
+        dronecan.parse_can_id(can_id)  # type: ignore[arg-type]
+
+
+def test_tail_byte() -> None:
+    assert tail_byte(True, True, False, 3) == 0xC3
+    assert tail_byte(True, False, False, 31) == 0x9F
+    assert tail_byte(False, False, True, 0) == 0x20
+    assert tail_byte(False, True, False, 7) == 0x47
+
+
+def test_split_payload_prefixes_crc_and_alternates_toggle() -> None:
+    frames = split_payload(bytes(range(14)), 0xB7E4, 0)
+    assert frames == [
+        bytes.fromhex("e4b7000102030480"),
+        bytes.fromhex("05060708090a0b20"),
+        bytes.fromhex("0c0d40"),
+    ]
+
+
+def test_v0_bit_order_examples() -> None:
+    # notes/dronecan-wire.md "Serialization rules".
+    request = dronecan.GetSetRequest(index=5, value=dronecan.StringValue(b""), name=b"")
+    frames = dronecan.encode(request, source_node_id=1, destination_node_id=2, transfer_id=0)
+    assert frames[0].data[:2] == bytes.fromhex("0504")
+    command = dronecan.RawCommand((1, -1, 8191, -8192, 100))
+    payload = dronecan.decode_frames(
+        dronecan.encode(command, source_node_id=1, transfer_id=0)
+    ).message
+    assert payload == command
+    from veronte4x.dronecan.codec import BY_CLASS
+
+    assert BY_CLASS[dronecan.RawCommand].encode(command, False) == bytes.fromhex(
+        "0103fffff7c0206400"
+    )
+    status = dronecan.EscStatus(0, 0.0, 0.0, 0.0, 0x12345, 0, 0)
+    assert BY_CLASS[dronecan.EscStatus].encode(status, False)[10:] == bytes.fromhex("45234000")
+
+
+def test_restart_node_magic_numbers_on_the_wire() -> None:
+    for magic, data in ((0xACCE551B1E, "1e1b55ceac"), (0xBEEFCAFE, "fecaefbe00")):
+        frames = dronecan.encode(
+            dronecan.RestartNodeRequest(magic),
+            source_node_id=1,
+            destination_node_id=2,
+            transfer_id=4,
+        )
+        assert frames[0].data == bytes.fromhex(data + "c4")
+    ok = dronecan.encode(
+        dronecan.RestartNodeResponse(True), source_node_id=2, destination_node_id=1, transfer_id=4
+    )
+    assert ok[0].data == bytes.fromhex("80c4")
+
+
+def test_frame_counts() -> None:
+    def count(message: object, **kwargs: int) -> int:
+        return len(dronecan.encode(message, source_node_id=1, transfer_id=0, **kwargs))
+
+    assert count(dronecan.RawCommand((0,) * 4)) == 1
+    assert count(dronecan.RawCommand((0,) * 5)) == 2
+    assert count(dronecan.RawCommand((0,) * 20)) == 6
+    assert count(dronecan.EscStatus(0, 0.0, 0.0, 0.0, 0, 0, 0)) == 3
+    assert count(dronecan.GetNodeInfoRequest(), destination_node_id=2) == 1
+    empty = dronecan.encode(
+        dronecan.GetNodeInfoRequest(), source_node_id=1, destination_node_id=2, transfer_id=9
+    )
+    assert empty[0].data == b"\xc9"
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"source_node_id": 0, "transfer_id": 0}, "source_node_id"),
+        ({"source_node_id": 128, "transfer_id": 0}, "source_node_id"),
+        ({"source_node_id": 1, "transfer_id": 32}, "transfer_id"),
+        ({"source_node_id": 1, "transfer_id": -1}, "transfer_id"),
+        ({"source_node_id": 1, "transfer_id": 0, "priority": 32}, "priority"),
+        ({"source_node_id": 1, "transfer_id": 0, "destination_node_id": 5}, "destination_node_id"),
+    ],
+)
+def test_encode_checks_transport_fields(kwargs: dict[str, int], field: str) -> None:
+    status = dronecan.NodeStatus(0, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    with pytest.raises(dronecan.EncodeError) as info:
+        dronecan.encode(status, **kwargs)
+    assert info.value.field == field
+
+
+def test_services_need_a_destination() -> None:
+    with pytest.raises(dronecan.EncodeError) as info:
+        dronecan.encode(dronecan.RestartNodeResponse(True), source_node_id=1, transfer_id=0)
+    assert info.value.field == "destination_node_id"
