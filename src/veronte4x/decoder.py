@@ -11,6 +11,7 @@ from collections.abc import Iterable, Iterator
 from veronte4x.busmap import BusMap, Role
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
+from veronte4x.dronecan import Reassembler
 from veronte4x.frames import BadLine, Frame
 from veronte4x.readers.candump import parse_line
 from veronte4x.records import Record
@@ -32,6 +33,8 @@ class CaptureDecoder:
     def __init__(self, bus_map: BusMap | None = None) -> None:
         self.bus_map = bus_map or BusMap()
         self.codec = self.bus_map.codec()
+        self.reassemblers: dict[str, Reassembler] = {}
+        """One DroneCAN reassembler per channel (bus), created on its first frame."""
         self._routes: dict[int, Route] = {
             can_id: (role, index, self.codec.dispatch(_SENDERS[role]))
             for can_id, (role, index) in self.bus_map.veronte_roles.items()
@@ -100,11 +103,40 @@ class CaptureDecoder:
             yield Record(*base, "remote frame", "remote frame", frame.data)
         elif role is Role.ARBITER or role is Role.AUTOPILOT:
             yield Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
+        elif role is Role.DRONECAN and not frame.fd:
+            yield from self._dronecan(frame)
         else:
             kind = "29-bit" if frame.extended else "11-bit"
             yield Record(
                 *base, "unknown id", f"no role for {kind} CAN ID {frame.can_id:#x}", frame.data
             )
+
+    def _dronecan(self, frame: Frame) -> Iterator[Record]:
+        """Feed a 29-bit frame to its channel's reassembler: a record per problem it reports,
+        then one for the transfer it completes. A capture without timestamps feeds 0.0, so
+        no transfer-ID timeout ever fires there."""
+        reassembler = self.reassemblers.get(frame.channel)
+        if reassembler is None:
+            reassembler = self.reassemblers[frame.channel] = Reassembler()
+        before = reassembler.reported
+        stamp = frame.timestamp if frame.timestamp is not None else 0.0
+        transfer = reassembler.feed(frame.can_id, frame.data, stamp)
+        new = reassembler.reported - before
+        if new:
+            reports = list(reassembler.problems)[-new:]
+            for report in reports:
+                kind = report.problem.name.lower().replace("_", " ")
+                detail = f"{report.problem.value} {report.detail}"
+                yield Record(report.timestamp, frame.channel, report.can_id, Role.DRONECAN,
+                             None, report.can_id & 0x7F or None, None, kind, detail,
+                             report.data)  # fmt: skip
+        if transfer is not None:
+            yield _new(
+                Record,
+                (frame.timestamp, frame.channel, frame.can_id, Role.DRONECAN, None,
+                 transfer.source_node_id, transfer.message, None, "", frame.data,
+                 transfer.destination_node_id),
+            )  # fmt: skip
 
     def _veronte(
         self,

@@ -20,7 +20,7 @@ def test_odd_capture_gives_one_record_per_frame_or_bad_line() -> None:
     records = list(CaptureDecoder().decode(read_candump(str(ODD))))
     assert _kinds(records) == [
         ("arbiter", "Status"),
-        ("dronecan", "error: unknown id"),
+        ("node 42", "error: unknown type"),
         ("unknown", "error: remote frame"),
         ("unknown", "error: remote frame"),
         ("unknown", "error: unknown id"),

@@ -150,6 +150,8 @@ class Reassembler:
     Attributes:
         counts: Number of each `Problem` so far.
         problems: The most recent problem reports, oldest first.
+        reported: Number of problem reports so far; the reports of one `feed` are the
+            last ``reported - before`` entries of `problems` (up to its length).
         transfers: Number of transfers delivered.
     """
 
@@ -163,6 +165,7 @@ class Reassembler:
         self.max_sessions = max_sessions
         self.counts: dict[Problem, int] = dict.fromkeys(Problem, 0)
         self.problems: deque[ProblemReport] = deque(maxlen=max_reports)
+        self.reported = 0
         self.transfers = 0
         self._sessions: dict[int, _Session] = {}
 
@@ -175,6 +178,7 @@ class Reassembler:
         self, problem: Problem, can_id: int, data: Any, timestamp: float, detail: str
     ) -> None:
         self.counts[problem] += 1
+        self.reported += 1
         self.problems.append(ProblemReport(problem, can_id, bytes(data), timestamp, detail))
 
     def feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
