@@ -38,6 +38,8 @@ check: lint types test docs
 
 bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_codec.py
+	$(BIN)/python benchmarks/bench_dronecan.py
+	$(BIN)/python benchmarks/bench_capture.py
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info
