@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.builtin import from_builtin, to_builtin
 from veronte4x.dronecan.can_id import (
     CanId,
@@ -106,4 +107,5 @@ __all__ = [
     "parse_can_id",
     "service_can_id",
     "to_builtin",
+    "vertiq",
 ]

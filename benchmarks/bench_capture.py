@@ -1,0 +1,128 @@
+"""End-to-end speed: a candump file of at least 1 M frames to decoded records.
+
+Run: python benchmarks/bench_capture.py [--frames 1000000]
+
+The file is the example flight (`examples/make_capture.py`, Veronte traffic plus four
+Vertiq ESCs over DroneCAN), repeated with shifted timestamps up to ``--frames`` lines. In
+one run it times:
+- python-can's candump reader alone (`can.CanutilsLogReader`, messages only);
+- python-can's reader plus cantools decoding each Veronte frame with an equivalent DBC
+  built in memory (cantools cannot reassemble DroneCAN transfers, so those frames are only
+  read);
+- veronte4x from the file to records (`capture.read`: Veronte decoding and DroneCAN
+  reassembly and decoding included);
+- veronte4x from the file to a pandas DataFrame (`capture.to_dataframe`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import runpy
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import can
+import cantools.database as cdb
+from cantools.database.can import Message, Signal
+from cantools.database.conversion import BaseConversion
+
+from veronte4x import capture
+
+ROOT = Path(__file__).resolve().parent.parent
+HOUR_OF_TWO_BUSES = 63_000_000  # frames in one hour of two busy 1 Mbit/s buses
+
+
+def make_file(path: Path, frames: int) -> int:
+    """Write the example flight, repeated with shifted timestamps, up to `frames` lines."""
+    make = runpy.run_path(str(ROOT / "examples" / "make_capture.py"))
+    lines = make["generate"](2.0, 60.0, 4).lines
+    lines.sort(key=lambda line: line[0])
+    texts = [text for _, text in lines]
+    span = 120.0
+    written = 0
+    with path.open("w") as out:
+        copy = 0
+        while written < frames:
+            shift = copy * span
+            for text in texts:
+                stamp, rest = text.split(" ", 1)
+                out.write(f"({float(stamp[1:-1]) + shift:.6f}) {rest}\n")
+                written += 1
+                if written == frames:
+                    break
+            copy += 1
+    return written
+
+
+def _veronte_dbc() -> cdb.can.Database:
+    signals = [
+        Signal("cmd", 0, 8),
+        Signal("sub", 8, 8),
+        Signal("value", 16, 32, conversion=BaseConversion.factory(1, 0, None, True)),
+    ]
+    return cdb.can.Database([Message(i, f"m{i}", 6, signals) for i in (8, 9, 10, 11, 255)])
+
+
+def python_can_reader(path: Path) -> int:
+    """Read every message with python-can."""
+    return sum(1 for _ in can.CanutilsLogReader(str(path)))
+
+
+def python_can_and_cantools(path: Path) -> int:
+    """Read with python-can, decode Veronte frames with cantools."""
+    db = _veronte_dbc()
+    ids = {8, 9, 10, 11, 255}
+    count = 0
+    for message in can.CanutilsLogReader(str(path)):
+        if not message.is_extended_id and message.arbitration_id in ids:
+            db.decode_message(message.arbitration_id, message.data, allow_truncated=True)
+        count += 1
+    return count
+
+
+def veronte4x_records(path: Path) -> int:
+    """Read and decode every frame into records."""
+    return sum(1 for _ in capture.read(str(path)))
+
+
+def veronte4x_dataframe(path: Path) -> int:
+    """Read and decode into a DataFrame."""
+    return len(capture.to_dataframe(capture.read(str(path))))
+
+
+def _timed(function: Callable[[Path], int], path: Path) -> tuple[int, float]:
+    start = time.perf_counter()
+    count = function(path)
+    return count, time.perf_counter() - start
+
+
+def main() -> None:
+    """Build the file, time every reader, print rates and ratios."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--frames", type=int, default=1_000_000, help="lines in the file")
+    frames = parser.parse_args().frames
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "flight.log"
+        written = make_file(path, frames)
+        print(f"Python {platform.python_version()}, {written} frames, {path.stat().st_size} B")
+        baseline = 0.0
+        for name, function in (
+            ("python-can reader alone", python_can_reader),
+            ("python-can + cantools", python_can_and_cantools),
+            ("veronte4x to records", veronte4x_records),
+            ("veronte4x to DataFrame", veronte4x_dataframe),
+        ):
+            count, seconds = _timed(function, path)
+            rate = written / seconds
+            baseline = baseline or seconds
+            print(
+                f"{name:26} {rate:10.0f} frames/s  {baseline / seconds:5.2f}x reader"
+                f"  ({count} items, {seconds:.2f} s; 63 M frames: {HOUR_OF_TWO_BUSES / rate:.0f} s)"
+            )
+
+
+if __name__ == "__main__":
+    main()

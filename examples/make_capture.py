@@ -1,0 +1,150 @@
+"""Write a realistic candump log of one Veronte 4x vehicle with four Vertiq ESCs.
+
+Usage: python examples/make_capture.py [OUTPUT] [--minutes 2] [--fail-at 60] [--seed 4]
+
+What is on the bus (one CAN bus, ``can0``), at the rates of Embention's templates:
+- AP1, AP2, AP3 (IDs 8, 9, 10) send their Ready and three arbitration variables (roll and
+  pitch, relative; GNSS accuracy, absolute) every 20 ms, and a PWM set (channels 0-3) every
+  20 ms.
+- The arbiter (ID 255) is `veronte4x.arbiter.Arbiter`, fed with those frames: its Status
+  every 0.25 s and Scores every 3 s are what the capture records as the arbiter's frames.
+- A flight controller (DroneCAN node 10) sends RawCommand for four ESCs every 20 ms, and
+  asks each ESC for its node info once at start.
+- Four simulated Vertiq ESCs (`veronte4x.simulator.SimulatedEsc`, nodes 20-23, ESC indices
+  0-3) publish NodeStatus at 1 Hz and esc.Status and Temperature at 10 Hz, and answer.
+- At ``--fail-at`` seconds the autopilot selected then stops sending: the arbiter declares
+  it dead after 0.1 s and switches; ``veronte4x replay`` explains it.
+
+The sensor values are random but seeded, so the same arguments give the same file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import random
+from collections.abc import Iterator
+from pathlib import Path
+
+from veronte4x import arbiter, codec, dronecan
+from veronte4x.dronecan.vertiq import raw_command
+from veronte4x.simulator import SimulatedEsc
+
+START = 1_763_737_200.0  # capture clock at t = 0 (2025-11-21 15:00 UTC)
+TICK = 0.020  # the autopilots' arbitration period
+AUTOPILOT_IDS = (8, 9, 10)
+FC_NODE = 10
+ESC_NODES = (20, 21, 22, 23)
+VARIABLES = (
+    arbiter.VariableConfig(weight=1.0, absolute=False),  # roll, rad
+    arbiter.VariableConfig(weight=1.0, absolute=False),  # pitch, rad
+    arbiter.VariableConfig(weight=0.01, absolute=True),  # GNSS accuracy, m
+)
+CONFIG = arbiter.ArbiterConfig(
+    variables=VARIABLES, method=arbiter.Method.ALWAYS_BEST, hysteresis=0.3, holding_time=2.0
+)
+
+
+class Bus:
+    """Collects (time, CAN ID, extended, data) lines and writes them in candump -L form."""
+
+    def __init__(self) -> None:
+        self.lines: list[tuple[float, str]] = []
+
+    def send(self, time: float, can_id: int, data: bytes, extended: bool = False) -> None:
+        ident = f"{can_id:08X}" if extended else f"{can_id:03X}"
+        self.lines.append((time, f"({START + time:.6f}) can0 {ident}#{data.hex().upper()}"))
+
+    def write(self, path: Path) -> int:
+        self.lines.sort(key=lambda line: line[0])
+        path.write_text("".join(text + "\n" for _, text in self.lines))
+        return len(self.lines)
+
+
+def attitude(time: float) -> tuple[float, float]:
+    """The true roll and pitch of a gently manoeuvring aircraft, rad."""
+    return 0.15 * math.sin(time / 7.0), 0.05 + 0.04 * math.sin(time / 11.0)
+
+
+def throttle(time: float) -> float:
+    """Collective throttle: spool-up, then cruise with slow variation."""
+    return min(1.0, time / 5.0) * (0.55 + 0.1 * math.sin(time / 13.0))
+
+
+def generate(minutes: float, fail_at: float, seed: int) -> Bus:
+    """Simulate the vehicle and return the bus traffic."""
+    rng = random.Random(seed)
+    bus = Bus()
+    model = arbiter.Arbiter(CONFIG)
+    escs = [SimulatedEsc(node, index, start_time=0.0) for index, node in enumerate(ESC_NODES)]
+    noise = (0.010, 0.004, 0.007)  # each autopilot's sensor noise, rad
+    gnss = (1.7, 1.9, 1.5)  # each autopilot's GNSS accuracy, m
+    failed: int | None = None
+    fc_tid = 0
+    end = minutes * 60.0
+    ticks = int(end / TICK)
+
+    def deliver(time: float, frames: Iterator[dronecan.Frame] | list[dronecan.Frame]) -> None:
+        for offset, frame in enumerate(frames):
+            stamp = time + offset * 0.0002
+            bus.send(stamp, frame.can_id, frame.data, extended=True)
+            for esc in escs:
+                esc.receive(frame.can_id, frame.data, stamp)
+
+    for node in ESC_NODES:  # the flight controller asks every ESC who it is
+        request = dronecan.GetNodeInfoRequest()
+        deliver(
+            0.001 * node,
+            dronecan.encode(
+                request, source_node_id=FC_NODE, transfer_id=0, destination_node_id=node
+            ),
+        )
+    for tick in range(ticks):
+        now = tick * TICK
+        if failed is None and now >= fail_at:
+            failed = model.state.selected
+        roll, pitch = attitude(now)
+        for ap, can_id in enumerate(AUTOPILOT_IDS):
+            if ap == failed:
+                continue
+            at = now + 0.0005 * ap
+            values = (
+                roll + rng.gauss(0.0, noise[ap]),
+                pitch + rng.gauss(0.0, noise[ap]),
+                gnss[ap] + rng.uniform(-0.1, 0.1),
+            )
+            messages: list[codec.Message] = [codec.Ready(ready=True)]
+            messages += [codec.ArbitrationVariable(n, v) for n, v in enumerate(values)]
+            pwm = tuple(round(2048 + 1500 * math.sin(now / 3 + ch)) for ch in range(4))
+            messages.append(codec.PwmSet(0, pwm))  # type: ignore[arg-type]
+            for offset, message in enumerate(messages):
+                data = codec.encode(message)
+                stamp = at + offset * 0.0001
+                bus.send(stamp, can_id, data)
+                if not isinstance(message, codec.PwmSet):
+                    model.receive(can_id, data, stamp)
+        for can_id, data in model.poll(now + 0.002):
+            bus.send(now + 0.002, can_id, data)
+        command = raw_command([throttle(now)] * len(escs))
+        deliver(now + 0.003, dronecan.encode(command, source_node_id=FC_NODE, transfer_id=fc_tid))
+        fc_tid = (fc_tid + 1) % 32
+        for index, esc in enumerate(escs):
+            at = now + 0.005 + 0.001 * index
+            deliver(at, esc.poll(at))
+    return bus
+
+
+def main() -> None:
+    """Parse the arguments, simulate, write the file."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("output", nargs="?", default=str(Path(__file__).with_name("flight.log")))
+    parser.add_argument("--minutes", type=float, default=2.0, help="length of the flight")
+    parser.add_argument("--fail-at", type=float, default=60.0, help="seconds to the failure")
+    parser.add_argument("--seed", type=int, default=4, help="random seed of the sensor noise")
+    args = parser.parse_args()
+    count = generate(args.minutes, args.fail_at, args.seed).write(Path(args.output))
+    print(f"wrote {count} frames to {args.output}")
+
+
+if __name__ == "__main__":
+    main()
