@@ -153,8 +153,9 @@ def _lag(value: float, target: float, dt: float, time_constant: float) -> float:
 def advance(state: MotorState, dt: float, model: MotorModel = DEFAULT_MODEL) -> MotorState:
     """The state ``dt`` seconds later under the same command (``dt <= 0`` changes nothing).
 
-    Speed lags towards its target; the temperatures lag towards the steady values of the
-    current at the start of the step; current and voltage follow the new speed at once.
+    Speed lags towards its target; current and voltage follow the new speed at once; the
+    temperatures lag towards the steady values of that new current. Speed settles within
+    a second while temperatures take minutes, so long steps stay close to many short ones.
     """
     if dt <= 0:
         return state
@@ -172,8 +173,8 @@ def advance(state: MotorState, dt: float, model: MotorModel = DEFAULT_MODEL) -> 
     else:
         current = 0.0
     electronics = model.mcu_self_heating if state.driven else 0.0
-    coil_target = model.ambient_temperature + model.coil_heating * state.current**2
-    mcu_target = model.ambient_temperature + electronics + model.mcu_heating * state.current
+    coil_target = model.ambient_temperature + model.coil_heating * current**2
+    mcu_target = model.ambient_temperature + electronics + model.mcu_heating * current
     return MotorState(
         throttle=state.throttle,
         driven=state.driven,
