@@ -93,7 +93,9 @@ def main(clock: Callable[[], float] = time.monotonic, channel: str = "esc-demo")
         reply = ask(vertiq.restart(bootloader=True))
         assert isinstance(reply, dronecan.RestartNodeResponse)
         print(f"reboot into bootloader: ok={reply.ok}")
-        after = [t for t in client.listen(1.2, while_waiting=node.step) if t.source_node_id == 20]
+        after = [
+            t for t in client.listen(1.2, while_waiting=node.step) if t.source_node_id == ESC_NODE
+        ]
         print(f"frames from node {ESC_NODE} in the next 1.2 s: {len(after)}")
         return 0 if reply.ok and not after and rpm[-1] > rpm[0] else 1
 

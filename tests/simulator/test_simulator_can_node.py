@@ -111,7 +111,7 @@ def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.Bus
     node = EscNode(esc_bus, SimulatedEsc(ESC, telem_frequency=10, start_time=0.0), clock=clock)
     other = DroneCanClient(client_bus, 10, clock=clock)
     other.send(vertiq.raw_command([0.2]))
-    node.run(1.5)
+    node.run(1.5, max_wait=0.001)  # real seconds blocked per wait on the empty bus
     assert node.esc.state.throttle == vertiq.raw_to_throttle(1638)
     heard = [type(t.message).__name__ for t in other.listen(0.0)]
     assert heard.count("NodeStatus") == 2
