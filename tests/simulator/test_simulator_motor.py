@@ -101,3 +101,21 @@ def test_custom_model_constants() -> None:
     esc.poll(100.0)
     assert round(esc.state.rpm) == 2000
     assert esc.state.voltage == 12.0 - model.source_resistance * esc.state.current
+
+
+def test_docs_tables_describe_every_constant_and_parameter() -> None:
+    from veronte4x.simulator import docs
+
+    constants = docs.model_constants_table().splitlines()
+    assert len(constants) == 2 + len(fields(MotorModel))
+    assert (
+        constants[2]
+        == "| `max_rpm` | 10000.0 | rpm | Speed at full throttle (RawCommand 8191), rpm. |"
+    )
+    assert docs.parameters_table().splitlines()[2:] == [
+        "| 0 | `uavcan_node_id` | 1 | 127 | after a restart (seed 004 3.1) |",
+        "| 1 | `bit_rate` | 10000 | 1000000 | at once, stored only: the simulator has no wire |",
+        "| 2 | `esc_index` | 0 | 19 | at once: the next RawCommand |",
+        "| 3 | `zero_behavior` | 0 | 2 | at once: the next zero setpoint |",
+        "| 4 | `telem_frequency` | 0 | 1000 | at once: the schedule restarts |",
+    ]

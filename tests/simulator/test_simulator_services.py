@@ -296,10 +296,10 @@ def test_frames_before_start_time_are_ignored() -> None:
 )
 def test_bad_constructor_arguments(argument: str, value: object) -> None:
     kwargs: dict[str, object] = {"node_id": 20, argument: value}
-    field = "uavcan_node_id" if argument == "node_id" else argument
     with pytest.raises(dronecan.EncodeError) as error:
         SimulatedEsc(**kwargs)  # type: ignore[arg-type]
-    assert error.value.field == field
+    assert error.value.field == argument
+    assert error.value.message_type == "SimulatedEsc"
     assert error.value.value is value or math.isnan(error.value.value)  # type: ignore[arg-type]
 
 

@@ -156,10 +156,16 @@ class SimulatedEsc:
         priority: int = DEFAULT_PRIORITY,
         model: MotorModel = DEFAULT_MODEL,
     ) -> None:
-        given = (node_id, bit_rate, esc_index, zero_behavior, telem_frequency)
+        given = (
+            ("node_id", node_id),
+            ("bit_rate", bit_rate),
+            ("esc_index", esc_index),
+            ("zero_behavior", zero_behavior),
+            ("telem_frequency", telem_frequency),
+        )  # in the order of parameters.PARAMETERS
         self._defaults = tuple(
-            _check(r.parameter.value, value, r.minimum, r.maximum)
-            for r, value in zip(parameters.PARAMETERS, given, strict=True)
+            _check(argument, value, r.minimum, r.maximum)
+            for r, (argument, value) in zip(parameters.PARAMETERS, given, strict=True)
         )
         self._priority = _check("priority", priority, 0, 31)
         self._values = list(self._defaults)
