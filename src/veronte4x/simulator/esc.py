@@ -1,0 +1,427 @@
+"""`SimulatedEsc`: a sans-IO Vertiq ESC node that takes frames and gives frames.
+
+Behaviour from seed 004 ("Vertiq Standard DroneCAN Support"): NodeStatus at 1 Hz with
+health OK, mode OPERATIONAL, no sub-mode or vendor code (1.1); esc.Status and
+device.Temperature at ``telem_frequency`` Hz, none at 0 (1.2, 1.3, 3.5); the RawCommand
+entry at ``esc_index`` (1.4, 3.3) with ``zero_behavior`` for a zero setpoint (3.4);
+GetNodeInfo with the name ``iq_motion.esc`` (2.1); GetSet by name and by index (2.2, 3);
+RestartNode with the normal and the bootloader magic numbers (2.3); BeginFirmwareUpdate,
+answered INVALID_MODE by modules without DroneCAN firmware updates (2.4). Responses reuse
+the request's transfer id and priority (spec 4.1; notes/dronecan-wire.md).
+
+Nothing here reads a clock: every time is a ``timestamp`` argument.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
+
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.messages import (
+    BeginFirmwareUpdateRequest,
+    BeginFirmwareUpdateResponse,
+    EscStatus,
+    FirmwareUpdateError,
+    GetNodeInfoRequest,
+    GetNodeInfoResponse,
+    GetSetRequest,
+    GetSetResponse,
+    HardwareVersion,
+    Health,
+    Mode,
+    NodeStatus,
+    RawCommand,
+    RestartNodeRequest,
+    RestartNodeResponse,
+    SoftwareVersion,
+    Temperature,
+    TemperatureErrorFlag,
+)
+from veronte4x.dronecan.reassembler import Reassembler
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.dronecan.vertiq import (
+    BOOTLOADER_MAGIC,
+    NODE_NAME,
+    RESTART_MAGIC,
+    Parameter,
+    ZeroBehavior,
+    raw_to_throttle,
+)
+from veronte4x.errors import EncodeError
+from veronte4x.simulator import motor, parameters
+from veronte4x.simulator.motor import DEFAULT_MODEL, MotorModel, MotorState
+from veronte4x.simulator.schedule import Periodic
+
+NODE_STATUS_FREQUENCY = 1.0
+"""NodeStatus rate in Hz (seed 004 1.1)."""
+
+SOFTWARE_VERSION = SoftwareVersion(
+    major=1, minor=0, optional_field_flags=0, vcs_commit=0, image_crc=0
+)
+"""The simulator's GetNodeInfo software version (the seed gives none for real modules)."""
+
+HARDWARE_VERSION_MAJOR = 1
+"""The simulator's GetNodeInfo hardware version, major (minor is 0)."""
+
+UNIQUE_ID_PREFIX = b"veronte4x.sim\x00\x00"
+"""First 15 bytes of the 16-byte unique id; the last is the node id given at construction."""
+
+
+@dataclass(frozen=True, slots=True)
+class EscState:
+    """A snapshot of a `SimulatedEsc` at the latest timestamp it was given.
+
+    Attributes:
+        time: The latest timestamp given to `SimulatedEsc.receive` or `SimulatedEsc.poll`.
+        uptime_sec: Whole seconds since the last (re)start.
+        node_id: The node id in use (a new ``uavcan_node_id`` waits for a restart).
+        mode: The NodeStatus mode: OPERATIONAL, or SOFTWARE_UPDATE after a
+            BeginFirmwareUpdate.
+        in_bootloader: Rebooted into the bootloader: silent until `SimulatedEsc.power_cycle`.
+        firmware_source: Node id and path of the firmware image asked for by
+            BeginFirmwareUpdate, else None.
+        parameters: Each parameter's stored value, by name.
+        throttle: Commanded throttle fraction in [-1, 1].
+        rpm: Motor speed, negative in reverse.
+        power_rating_pct: PWM duty cycle, 0..100.
+        voltage: Supply voltage, V.
+        current: Supply current, A.
+        coil_temperature: Motor coil temperature, K (esc.Status).
+        mcu_temperature: Microcontroller temperature, K (device.Temperature).
+        overheating: Whether the MCU is at or above the model's overheat temperature.
+    """
+
+    time: float
+    uptime_sec: int
+    node_id: int
+    mode: Mode
+    in_bootloader: bool
+    firmware_source: tuple[int, bytes] | None
+    parameters: MappingProxyType[str, int]
+    throttle: float
+    rpm: float
+    power_rating_pct: int
+    voltage: float
+    current: float
+    coil_temperature: float
+    mcu_temperature: float
+    overheating: bool
+
+
+def _check(field: str, value: Any, low: int, high: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise EncodeError("SimulatedEsc", field, value, f"a whole number in {low}..{high}")
+    if not (math.isfinite(value) and value == int(value) and low <= value <= high):
+        raise EncodeError("SimulatedEsc", field, value, f"a whole number in {low}..{high}")
+    return int(value)
+
+
+class SimulatedEsc:
+    """A simulated Vertiq ESC: feed it the bus's frames, poll it for the frames it sends.
+
+    Args:
+        node_id: DroneCAN node id, 1..127 (also the ``uavcan_node_id`` default).
+        esc_index: Which RawCommand entry it reads, 0..19.
+        telem_frequency: esc.Status and device.Temperature rate in Hz, a whole number
+            (the parameter is an integer, seed 004 3.5), 0 for none.
+        zero_behavior: What a zero setpoint does (`ZeroBehavior` or its int value).
+        bit_rate: The ``bit_rate`` parameter, bit/s (stored and reported only).
+        supports_firmware_update: False for modules such as the 81-08 that answer
+            BeginFirmwareUpdate with INVALID_MODE (seed 004 2.4).
+        start_time: Power-on time: frames before it are ignored, NodeStatus and telemetry
+            start at it.
+        priority: CAN priority of the messages it publishes, 0 (highest) to 31.
+        model: The motor model's constants.
+
+    The arguments are also the parameters' defaults (``default_value`` in GetSet replies).
+
+    Raises:
+        EncodeError: An argument out of its range.
+    """
+
+    def __init__(
+        self,
+        node_id: int,
+        esc_index: int = 0,
+        *,
+        telem_frequency: float = 10.0,
+        zero_behavior: ZeroBehavior | int = ZeroBehavior.COAST,
+        bit_rate: int = 500000,
+        supports_firmware_update: bool = True,
+        start_time: float = 0.0,
+        priority: int = DEFAULT_PRIORITY,
+        model: MotorModel = DEFAULT_MODEL,
+    ) -> None:
+        given = (
+            ("node_id", node_id),
+            ("bit_rate", bit_rate),
+            ("esc_index", esc_index),
+            ("zero_behavior", zero_behavior),
+            ("telem_frequency", telem_frequency),
+        )  # in the order of parameters.PARAMETERS
+        self._defaults = tuple(
+            _check(argument, value, r.minimum, r.maximum)
+            for r, (argument, value) in zip(parameters.PARAMETERS, given, strict=True)
+        )
+        self._priority = _check("priority", priority, 0, 31)
+        self._values = list(self._defaults)
+        self._supports_firmware_update = supports_firmware_update
+        self._model = model
+        self._unique_id = UNIQUE_ID_PREFIX + bytes((self._defaults[0],))
+        self._start_time = start_time
+        self._now = start_time
+        self._motor = motor.at_rest(model)
+        self._outbox: list[Frame] = []
+        self._in_bootloader = False
+        self._node_status = Periodic(NODE_STATUS_FREQUENCY, start_time)
+        self._telemetry = Periodic(self._value(Parameter.TELEM_FREQUENCY), start_time)
+        self._boot(start_time)
+
+    # -- parameters and state -------------------------------------------------------------
+
+    def _value(self, parameter: Parameter) -> int:
+        return self._values[_INDEX[parameter]]
+
+    @property
+    def node_id(self) -> int:
+        """The node id in use."""
+        return self._node_id
+
+    @property
+    def esc_index(self) -> int:
+        """The RawCommand entry it reads."""
+        return self._value(Parameter.ESC_INDEX)
+
+    @property
+    def state(self) -> EscState:
+        """A snapshot at the latest timestamp given (see `EscState`)."""
+        m = self._motor
+        return EscState(
+            time=self._now,
+            uptime_sec=self._uptime(self._now),
+            node_id=self._node_id,
+            mode=self._mode,
+            in_bootloader=self._in_bootloader,
+            firmware_source=self._firmware_source,
+            parameters=MappingProxyType(
+                {
+                    r.parameter.value: v
+                    for r, v in zip(parameters.PARAMETERS, self._values, strict=True)
+                }
+            ),
+            throttle=m.throttle,
+            rpm=m.rpm,
+            power_rating_pct=m.power_rating_pct,
+            voltage=m.voltage,
+            current=m.current,
+            coil_temperature=m.coil_temperature,
+            mcu_temperature=m.mcu_temperature,
+            overheating=m.mcu_temperature >= self._model.mcu_overheat_temperature,
+        )
+
+    @property
+    def motor(self) -> MotorState:
+        """The motor model's state at the latest timestamp given."""
+        return self._motor
+
+    def _uptime(self, timestamp: float) -> int:
+        return max(0, math.floor(timestamp - self._boot_time))
+
+    def _advance(self, timestamp: float) -> None:
+        if timestamp > self._now:
+            self._motor = motor.advance(self._motor, timestamp - self._now, self._model)
+            self._now = timestamp
+
+    def _boot(self, timestamp: float) -> None:
+        """Start the application firmware at ``timestamp``: RAM state is lost."""
+        self._node_id = self._value(Parameter.UAVCAN_NODE_ID)
+        self._boot_time = timestamp
+        self._mode = Mode.OPERATIONAL
+        self._firmware_source: tuple[int, bytes] | None = None
+        self._in_bootloader = False
+        self._reassembler = Reassembler()
+        self._transfer_ids: dict[type, int] = {NodeStatus: 0, EscStatus: 0, Temperature: 0}
+        self._node_status.restart(NODE_STATUS_FREQUENCY, timestamp)
+        self._telemetry.restart(self._value(Parameter.TELEM_FREQUENCY), timestamp)
+        self._motor = motor.release(self._motor)
+
+    def power_cycle(self, timestamp: float) -> None:
+        """Switch the module off and on at ``timestamp`` (the way out of the bootloader).
+
+        Like a normal restart: uptime restarts, a new ``uavcan_node_id`` takes effect, the
+        motor coasts; frames not yet polled are lost.
+        """
+        self._advance(timestamp)
+        self._outbox.clear()
+        self._boot(timestamp)
+
+    # -- input ------------------------------------------------------------------------------
+
+    def receive(self, can_id: int, data: bytes, timestamp: float) -> None:
+        """Take one frame seen on the bus (29-bit ``can_id``, data with its tail byte).
+
+        A frame before ``start_time`` or while in the bootloader is ignored. A RawCommand
+        with an entry at ``esc_index`` sets the throttle; a request to this node queues
+        its response for `poll`. Other frames and bad frames are ignored (the
+        reassembler counts them).
+        """
+        if timestamp < self._start_time or self._in_bootloader:
+            return
+        self._advance(timestamp)
+        transfer = self._reassembler.feed(can_id, data, timestamp)
+        if transfer is None:
+            return
+        message = transfer.message
+        if transfer.kind is TransferKind.MESSAGE:
+            if isinstance(message, RawCommand):
+                self._command(message)
+        elif transfer.kind is TransferKind.REQUEST and transfer.destination_node_id == (
+            self._node_id
+        ):
+            self._serve(transfer, timestamp)
+
+    def _command(self, command: RawCommand) -> None:
+        index = self._value(Parameter.ESC_INDEX)
+        if index >= len(command.cmd) or self._mode is Mode.SOFTWARE_UPDATE:
+            return
+        behavior = ZeroBehavior(self._value(Parameter.ZERO_BEHAVIOR))
+        self._motor = motor.command(self._motor, raw_to_throttle(command.cmd[index]), behavior)
+
+    def _serve(self, request: Transfer, timestamp: float) -> None:
+        message = request.message
+        after = None
+        if isinstance(message, GetNodeInfoRequest):
+            reply: Any = GetNodeInfoResponse(
+                status=self._status(timestamp),
+                software_version=SOFTWARE_VERSION,
+                hardware_version=HardwareVersion(HARDWARE_VERSION_MAJOR, 0, self._unique_id),
+                name=NODE_NAME.encode(),
+            )
+        elif isinstance(message, GetSetRequest):
+            reply = self._get_set(message, timestamp)
+        elif isinstance(message, RestartNodeRequest):
+            known = message.magic_number in (RESTART_MAGIC, BOOTLOADER_MAGIC)
+            reply = RestartNodeResponse(ok=known)
+            if known:
+                after = message.magic_number
+        else:
+            assert isinstance(message, BeginFirmwareUpdateRequest)
+            reply = self._begin_firmware_update(message, request.source_node_id)
+        self._outbox += encode(
+            reply,
+            source_node_id=self._node_id,
+            destination_node_id=request.source_node_id,
+            transfer_id=request.transfer_id,
+            priority=request.priority,
+        )
+        if after == RESTART_MAGIC:
+            self._boot(timestamp)
+        elif after == BOOTLOADER_MAGIC:
+            self._motor = motor.release(self._motor)
+            self._in_bootloader = True
+
+    def _get_set(self, request: GetSetRequest, timestamp: float) -> GetSetResponse:
+        index = parameters.find(request)
+        if index is None:
+            return parameters.NO_PARAMETER
+        value = parameters.new_value(index, request)
+        if value is not None and value != self._values[index]:
+            self._values[index] = value
+            if parameters.PARAMETERS[index].parameter is Parameter.TELEM_FREQUENCY:
+                self._telemetry.restart(value, timestamp, skip_first=True)
+        return parameters.response(index, self._values[index], self._defaults[index])
+
+    def _begin_firmware_update(
+        self, request: BeginFirmwareUpdateRequest, caller: int
+    ) -> BeginFirmwareUpdateResponse:
+        if not self._supports_firmware_update:
+            return BeginFirmwareUpdateResponse(FirmwareUpdateError.INVALID_MODE)
+        if self._mode is Mode.SOFTWARE_UPDATE:
+            return BeginFirmwareUpdateResponse(FirmwareUpdateError.IN_PROGRESS)
+        self._mode = Mode.SOFTWARE_UPDATE
+        source = request.source_node_id or caller  # 0 means the caller (DSDL)
+        self._firmware_source = (source, request.image_file_remote_path.path)
+        self._motor = motor.release(self._motor)
+        return BeginFirmwareUpdateResponse(FirmwareUpdateError.OK)
+
+    # -- output -----------------------------------------------------------------------------
+
+    def _status(self, timestamp: float) -> NodeStatus:
+        return NodeStatus(
+            uptime_sec=self._uptime(timestamp),
+            health=Health.OK,
+            mode=self._mode,
+            sub_mode=0,
+            vendor_specific_status_code=0,
+        )
+
+    def _publish(self, message: Any) -> list[Frame]:
+        kind = type(message)
+        transfer_id = self._transfer_ids[kind]
+        self._transfer_ids[kind] = (transfer_id + 1) & 0x1F
+        return encode(
+            message, source_node_id=self._node_id, transfer_id=transfer_id, priority=self._priority
+        )
+
+    def poll(self, timestamp: float) -> list[Frame]:
+        """The frames to send at ``timestamp``, in order.
+
+        Queued service responses first, then NodeStatus if due (1 Hz), then esc.Status and
+        device.Temperature if due (``telem_frequency``). A message due several times since
+        the last poll is sent once and its schedule restarts at ``timestamp``: no burst of
+        stale telemetry after a gap. Nothing before ``start_time``; only already queued
+        responses while in the bootloader.
+        """
+        if timestamp < self._start_time:
+            return []
+        self._advance(timestamp)
+        frames = self._outbox
+        self._outbox = []
+        if self._in_bootloader:
+            return frames
+        if self._node_status.due(timestamp):
+            frames += self._publish(self._status(timestamp))
+        if self._telemetry.due(timestamp):
+            m = self._motor
+            index = self._value(Parameter.ESC_INDEX)
+            frames += self._publish(
+                EscStatus(
+                    error_count=0,
+                    voltage=m.voltage,
+                    current=m.current,
+                    temperature=m.coil_temperature,
+                    rpm=round(m.rpm),
+                    power_rating_pct=m.power_rating_pct,
+                    esc_index=index,
+                )
+            )
+            overheating = m.mcu_temperature >= self._model.mcu_overheat_temperature
+            frames += self._publish(
+                Temperature(
+                    device_id=index,
+                    temperature=m.mcu_temperature,
+                    error_flags=TemperatureErrorFlag.OVERHEATING if overheating else 0,
+                )
+            )
+        return frames
+
+    def next_time(self) -> float | None:
+        """When `poll` next has something to send, or None if never without new input.
+
+        For adapters that wait on the bus: block for at most until this time.
+        """
+        if self._outbox:
+            return self._now
+        if self._in_bootloader:
+            return None
+        times = [
+            t for t in (self._node_status.next_time, self._telemetry.next_time) if t is not None
+        ]
+        return max(min(times), self._start_time) if times else None
+
+
+_INDEX = {r.parameter: i for i, r in enumerate(parameters.PARAMETERS)}

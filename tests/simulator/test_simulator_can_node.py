@@ -1,0 +1,118 @@
+"""The python-can adapter and client on the virtual bus, with clocks the tests drive."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterator
+
+import can
+import pytest
+
+from veronte4x import dronecan
+from veronte4x.dronecan import vertiq
+from veronte4x.simulator import SimulatedEsc
+from veronte4x.simulator.can_node import EscNode, to_message, wanted
+from veronte4x.simulator.client import DroneCanClient
+
+from .support import ESC, StepClock
+
+_CHANNELS = itertools.count()
+
+
+@pytest.fixture
+def buses() -> Iterator[tuple[can.BusABC, can.BusABC]]:
+    channel = f"test-can-node-{next(_CHANNELS)}"
+    with (
+        can.Bus(interface="virtual", channel=channel) as esc_bus,
+        can.Bus(interface="virtual", channel=channel) as client_bus,
+    ):
+        yield esc_bus, client_bus
+
+
+def _drain(bus: can.BusABC) -> list[can.Message]:
+    messages = []
+    message = bus.recv(timeout=0.0)
+    while message is not None:
+        messages.append(message)
+        message = bus.recv(timeout=0.0)
+    return messages
+
+
+def test_step_sends_what_the_core_polls(buses: tuple[can.BusABC, can.BusABC]) -> None:
+    esc_bus, other = buses
+    node = EscNode(esc_bus, SimulatedEsc(ESC, 1), clock=lambda: 0.0)
+    assert node.step() == 5
+    received = _drain(other)
+    twin = SimulatedEsc(ESC, 1).poll(0.0)
+    assert [(m.arbitration_id, bytes(m.data)) for m in received] == twin
+    assert all(m.is_extended_id for m in received)
+    assert node.step() == 0
+
+
+def test_only_dronecan_shaped_messages_reach_the_core(
+    buses: tuple[can.BusABC, can.BusABC],
+) -> None:
+    esc_bus, other = buses
+    esc = SimulatedEsc(ESC)
+    node = EscNode(esc_bus, esc, clock=lambda: 0.0)
+    for message in (
+        can.Message(arbitration_id=0x123, data=b"\x01\xc0", is_extended_id=False),
+        can.Message(arbitration_id=0x10015501, is_remote_frame=True, dlc=2),
+        can.Message(arbitration_id=0x10015501, data=bytes(12), is_fd=True),
+        can.Message(arbitration_id=0x10015501, data=b""),
+    ):
+        assert not wanted(message)
+        other.send(message)
+    node.step()
+    assert sum(esc._reassembler.counts.values()) == 0
+    frame = dronecan.Frame(0x10015501, bytes(7) + b"\xc0")
+    assert wanted(to_message(frame))
+    assert to_message(frame, 1.5).timestamp == 1.5
+
+
+def test_client_requests_and_the_node_answers(buses: tuple[can.BusABC, can.BusABC]) -> None:
+    esc_bus, client_bus = buses
+    clock = StepClock(0.001)
+    esc = SimulatedEsc(ESC, telem_frequency=0)
+    node = EscNode(esc_bus, esc, clock=clock)
+    client = DroneCanClient(client_bus, 10, clock=clock, priority=24)
+    reply = client.request(
+        vertiq.set_parameter("esc_index", 2), ESC, timeout=0.1, while_waiting=node.step
+    )
+    assert reply is not None
+    assert reply.message.value == dronecan.IntegerValue(2)
+    assert (reply.transfer_id, reply.priority, reply.source_node_id) == (0, 24, ESC)
+    again = client.request(
+        vertiq.get_parameter("esc_index"), ESC, timeout=0.1, while_waiting=node.step
+    )
+    assert again is not None and again.transfer_id == 1
+    info = client.request(dronecan.GetNodeInfoRequest(), ESC, while_waiting=node.step)
+    assert info is not None and info.message.name == b"iq_motion.esc"
+    assert info.transfer_id == 0  # counted per service type and destination
+    assert esc.esc_index == 2
+    client.send(vertiq.raw_command([0.0, 0.0, 0.5]))
+    node.step()
+    assert esc.state.throttle == vertiq.raw_to_throttle(4096)
+    heard = client.listen(0.01, while_waiting=node.step)
+    assert [type(t.message).__name__ for t in heard] == ["NodeStatus"]
+
+
+def test_request_times_out_by_the_clock(buses: tuple[can.BusABC, can.BusABC]) -> None:
+    _, client_bus = buses
+    clock = StepClock(0.004)
+    client = DroneCanClient(client_bus, 10, clock=clock)
+    assert client.request(dronecan.GetNodeInfoRequest(), ESC, timeout=0.01) is None
+    assert client.listen(0.01) == []
+
+
+def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.BusABC]) -> None:
+    esc_bus, client_bus = buses
+    clock = StepClock(0.01)
+    node = EscNode(esc_bus, SimulatedEsc(ESC, telem_frequency=10, start_time=0.0), clock=clock)
+    other = DroneCanClient(client_bus, 10, clock=clock)
+    other.send(vertiq.raw_command([0.2]))
+    node.run(1.5, max_wait=0.001)  # real seconds blocked per wait on the empty bus
+    assert node.esc.state.throttle == vertiq.raw_to_throttle(1638)
+    heard = [type(t.message).__name__ for t in other.listen(0.0)]
+    assert heard.count("NodeStatus") == 2
+    assert heard.count("EscStatus") == heard.count("Temperature") > 10
