@@ -19,7 +19,10 @@ $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
 	touch $@ $(VENV)/.installed-run
 
 demo: $(VENV)/.installed-run
-	$(BIN)/python examples/decode_frames.py examples/capture.log
+	$(BIN)/python examples/make_capture.py examples/flight.log
+	$(BIN)/veronte4x decode examples/flight.log | head -n 25
+	$(BIN)/veronte4x stats examples/flight.log
+	$(BIN)/veronte4x replay examples/flight.log --config examples/arbiter.toml
 
 lint: $(VENV)/.installed-dev
 	$(BIN)/ruff check src tests examples benchmarks docs

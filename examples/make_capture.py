@@ -6,8 +6,9 @@ What is on the bus (one CAN bus, ``can0``), at the rates of Embention's template
 - AP1, AP2, AP3 (IDs 8, 9, 10) send their Ready and three arbitration variables (roll and
   pitch, relative; GNSS accuracy, absolute) every 20 ms, and a PWM set (channels 0-3) every
   20 ms.
-- The arbiter (ID 255) is `veronte4x.arbiter.Arbiter`, fed with those frames: its Status
-  every 0.25 s and Scores every 3 s are what the capture records as the arbiter's frames.
+- The arbiter (ID 255) is `veronte4x.arbiter.Arbiter` configured by ``arbiter.toml``, fed
+  with those frames: its Status every 0.25 s and Scores every 3 s are what the capture
+  records as the arbiter's frames.
 - A flight controller (DroneCAN node 10) sends RawCommand for four ESCs every 20 ms, and
   asks each ESC for its node info once at start.
 - Four simulated Vertiq ESCs (`veronte4x.simulator.SimulatedEsc`, nodes 20-23, ESC indices
@@ -27,6 +28,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from veronte4x import arbiter, codec, dronecan
+from veronte4x.arbiter.config_file import load_config
 from veronte4x.dronecan.vertiq import raw_command
 from veronte4x.simulator import SimulatedEsc
 
@@ -35,14 +37,7 @@ TICK = 0.020  # the autopilots' arbitration period
 AUTOPILOT_IDS = (8, 9, 10)
 FC_NODE = 10
 ESC_NODES = (20, 21, 22, 23)
-VARIABLES = (
-    arbiter.VariableConfig(weight=1.0, absolute=False),  # roll, rad
-    arbiter.VariableConfig(weight=1.0, absolute=False),  # pitch, rad
-    arbiter.VariableConfig(weight=0.01, absolute=True),  # GNSS accuracy, m
-)
-CONFIG = arbiter.ArbiterConfig(
-    variables=VARIABLES, method=arbiter.Method.ALWAYS_BEST, hysteresis=0.3, holding_time=2.0
-)
+CONFIG = load_config(str(Path(__file__).with_name("arbiter.toml")))
 
 
 class Bus:
@@ -77,7 +72,8 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
     bus = Bus()
     model = arbiter.Arbiter(CONFIG)
     escs = [SimulatedEsc(node, index, start_time=0.0) for index, node in enumerate(ESC_NODES)]
-    noise = (0.010, 0.004, 0.007)  # each autopilot's sensor noise, rad
+    bias = (0.012, 0.001, -0.006)  # each autopilot's steady attitude error, rad
+    noise = 0.0015  # sensor noise, rad
     gnss = (1.7, 1.9, 1.5)  # each autopilot's GNSS accuracy, m
     failed: int | None = None
     fc_tid = 0
@@ -109,9 +105,9 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
                 continue
             at = now + 0.0005 * ap
             values = (
-                roll + rng.gauss(0.0, noise[ap]),
-                pitch + rng.gauss(0.0, noise[ap]),
-                gnss[ap] + rng.uniform(-0.1, 0.1),
+                roll + bias[ap] + rng.gauss(0.0, noise),
+                pitch + bias[ap] + rng.gauss(0.0, noise),
+                gnss[ap] + rng.uniform(-0.05, 0.05),
             )
             messages: list[codec.Message] = [codec.Ready(ready=True)]
             messages += [codec.ArbitrationVariable(n, v) for n, v in enumerate(values)]

@@ -87,23 +87,53 @@ def to_dataframe(records: Iterable[Record]) -> pandas.DataFrame:
     """One row per record, the record's columns then every message field as a column.
 
     Columns: ``timestamp``, ``channel``, ``can_id``, ``sender``, ``message`` (class name),
-    ``error``, ``detail``, ``data`` (hex), then the fields of `fields`. Needs the ``pandas``
-    extra.
+    ``error``, ``detail``, ``data`` (hex), then the fields of `fields`. A field column holds
+    missing values where a row's message has no such field, with a nullable dtype that keeps
+    its kind: ``Int64`` for integers, ``boolean`` for flags, ``float64`` for floats. Needs the
+    ``pandas`` extra.
     """
     import pandas
 
-    rows = []
+    head: dict[str, list[Any]] = {name: [] for name in _HEAD_COLUMNS}
+    columns: dict[str, list[Any]] = {}
+    kinds: dict[str, set[type]] = {}
+    rows = 0
     for record in records:
-        row: dict[str, Any] = {
-            "timestamp": record.timestamp,
-            "channel": record.channel,
-            "can_id": record.can_id,
-            "sender": record.sender,
-            "message": None if record.error else type(record.message).__name__,
-            "error": record.error,
-            "detail": record.detail,
-            "data": record.data.hex(),
-        }
-        row.update(fields(record.message))
-        rows.append(row)
-    return pandas.DataFrame(rows)
+        head["timestamp"].append(record.timestamp)
+        head["channel"].append(record.channel)
+        head["can_id"].append(record.can_id)
+        head["sender"].append(record.sender)
+        head["message"].append(None if record.error else type(record.message).__name__)
+        head["error"].append(record.error)
+        head["detail"].append(record.detail)
+        head["data"].append(record.data.hex())
+        for name, value in fields(record.message).items():
+            column = columns.get(name)
+            if column is None:
+                column = columns[name] = []
+                kinds[name] = set()
+            if len(column) < rows:  # rows whose message had no such field
+                column.extend([None] * (rows - len(column)))
+            column.append(value)
+            if value is not None:
+                kinds[name].add(type(value))
+        rows += 1
+    data: dict[str, Any] = dict(head)
+    for name, values in columns.items():
+        values.extend([None] * (rows - len(values)))
+        data[name] = pandas.array(values, dtype=_dtype(kinds[name]))
+    return pandas.DataFrame(data)
+
+
+_HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
+
+
+def _dtype(kinds: set[type]) -> str | None:
+    """The nullable pandas dtype of a field column from the Python types it holds."""
+    if kinds == {bool}:
+        return "boolean"
+    if kinds and all(issubclass(k, int) and not issubclass(k, bool) for k in kinds):
+        return "Int64"
+    if kinds and all(issubclass(k, (int, float)) and not issubclass(k, bool) for k in kinds):
+        return "float64"
+    return None

@@ -70,8 +70,8 @@ class CaptureDecoder:
             if len(parts) == 3:
                 # The fast path of readers.candump.parse_candump, fused with decoding.
                 stamp, interface, body = parts
-                ident, _, text = body.partition("#")
-                if len(ident) == 3 and stamp[0] == "(" and stamp[-1] == ")":
+                ident, separator, text = body.partition("#")
+                if separator and len(ident) == 3 and stamp[0] == "(" and stamp[-1] == ")":
                     try:
                         can_id = int(ident, 16)
                         timestamp = float(stamp[1:-1])
@@ -79,12 +79,17 @@ class CaptureDecoder:
                     except ValueError:
                         pass
                     else:
-                        route = routes.get(can_id)
-                        if channel is not None and interface != channel:
-                            continue
-                        if route is not None:
-                            yield self._veronte(timestamp, interface, can_id, data, route, excess)
-                            continue
+                        # timestamp - timestamp is 0.0 for a finite time only (not nan, inf),
+                        # the others go to parse_line, which reports the line.
+                        if timestamp - timestamp == 0.0:
+                            if channel is not None and interface != channel:
+                                continue
+                            route = routes.get(can_id)
+                            if route is not None:
+                                yield self._veronte(
+                                    timestamp, interface, can_id, data, route, excess
+                                )
+                                continue
             if not parts:
                 continue
             item = parse_line(line, number, parts)

@@ -21,11 +21,11 @@ lines = st.lists(st.one_of(candump_like, st.text(max_size=40)), max_size=30)
 
 
 @settings(max_examples=400)
-@given(lines)
-def test_any_text_gives_records(text: list[str]) -> None:
+@given(lines, st.sampled_from([None, "can0"]))
+def test_any_text_gives_records(text: list[str], channel: str | None) -> None:
     decoder = CaptureDecoder()
-    fused = list(decoder.decode_candump(text))
-    two_stage = list(CaptureDecoder().decode(parse_candump(text)))
+    fused = list(decoder.decode_candump(text, channel))
+    two_stage = list(CaptureDecoder().decode(parse_candump(text, channel)))
     assert fused == two_stage
     assert all(r.message is not None or r.error is not None for r in fused)
 

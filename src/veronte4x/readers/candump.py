@@ -21,6 +21,7 @@ A line that is neither gives a `BadLine` with the reason; the stream goes on.
 from __future__ import annotations
 
 import datetime as _dt
+import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.frames import BadLine, Frame
@@ -46,16 +47,17 @@ def parse_candump(lines: Iterable[str], channel: str | None = None) -> Iterator[
         # Anything else (remote, FD, error frames, odd lines) goes to parse_line.
         if len(parts) == 3:
             stamp, interface, body = parts
-            ident, _, data = body.partition("#")
+            ident, separator, data = body.partition("#")
             size = len(ident)
-            if stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
+            if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
                 try:
                     can_id = int(ident, 16)
                     frame = (float(stamp[1:-1]), interface, can_id, fromhex(data), size == 8)
                 except ValueError:
                     pass
                 else:
-                    if not can_id & CAN_ERR_FLAG:
+                    # frame[0] - frame[0] is 0.0 for a finite time only (not nan or inf).
+                    if not can_id & CAN_ERR_FLAG and frame[0] - frame[0] == 0.0:
                         if channel is None or interface == channel:
                             yield new(Frame, (*frame, False, False, False))
                         continue
@@ -110,6 +112,8 @@ def _log_line(parts: list[str]) -> Frame | str:
     if not (stamp.startswith("(") and stamp.endswith(")")):
         return "timestamp not in parentheses"
     timestamp = float(stamp[1:-1])
+    if not math.isfinite(timestamp):
+        return f"timestamp {stamp} is not a finite number"
     ident, _, data = frame.partition("#")
     if len(ident) not in (3, 8) or not _is_hex(ident):
         return f"identifier {ident!r} is not 3 or 8 hex digits"
@@ -182,9 +186,11 @@ def _human_line(parts: list[str], line: str) -> Frame | str:
 def _human_timestamp(stamp: str) -> float | None:
     """Seconds from ``1436509052.249713``, ``000.000000`` or ``2015-07-10 08:17:32.249713``."""
     try:
-        return float(stamp)
+        seconds = float(stamp)
     except ValueError:
         pass
+    else:
+        return seconds if math.isfinite(seconds) else None
     try:
         moment = _dt.datetime.strptime(stamp.strip(), "%Y-%m-%d %H:%M:%S.%f")
     except ValueError:

@@ -1,0 +1,101 @@
+"""The example flight end to end: generate it, decode it, count it, replay it, tabulate it."""
+
+from __future__ import annotations
+
+import dataclasses
+import runpy
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from veronte4x import arbiter, capture, codec
+from veronte4x.arbiter.config_file import load_config
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+@pytest.fixture(scope="module")
+def flight(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A 30 s flight whose selected autopilot fails at 15 s."""
+    path = tmp_path_factory.mktemp("flight") / "flight.log"
+    make = runpy.run_path(str(EXAMPLES / "make_capture.py"))
+    make["generate"](0.5, 15.0, 4).write(path)
+    return path
+
+
+def run(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "veronte4x", *args], capture_output=True, text=True, check=False
+    )
+
+
+def test_stats_show_every_sender(flight: Path) -> None:
+    result = run("stats", str(flight))
+    assert result.returncode == 0
+    out = result.stdout
+    assert "errors: 0" in out
+    for sender in ("AP1", "AP2", "AP3", "arbiter", "node 10", "node 20", "node 23"):
+        assert f"  {sender} " in out
+    for kind in ("ArbitrationVariable", "Status", "Score", "PwmSet", "RawCommand", "EscStatus",
+                 "Temperature", "NodeStatus", "GetNodeInfoResponse"):  # fmt: skip
+        assert f"  {kind} " in out
+
+
+def test_decode_jsonl_has_both_protocols(flight: Path) -> None:
+    result = run("decode", str(flight), "--output", "jsonl")
+    assert result.returncode == 0
+    lines = result.stdout.splitlines()
+    assert any('"message": "EscStatus"' in line and '"sender": "node 21"' in line for line in lines)
+    assert any('"message": "Status"' in line for line in lines)
+
+
+def test_replay_explains_the_failure(flight: Path) -> None:
+    result = run("replay", str(flight), "--config", str(EXAMPLES / "arbiter.toml"))
+    assert result.returncode == 0
+    timeline = result.stdout
+    assert "switch      AP1 -> AP2: AP2 " in timeline
+    assert "dead        AP2 dead: Ready missing for 0.1 s" in timeline
+    assert "switch      AP2 -> AP3: AP2 is dead: AP3 (best score" in timeline
+    assert "DISAGREES" not in timeline
+    assert result.stderr.endswith(", 0 disagreements, 0 bad frames\n")
+
+
+def test_replay_reports_an_injected_disagreement(flight: Path) -> None:
+    """A Status that says AP1 is selected while the model selects AP2 is reported."""
+    config = load_config(str(EXAMPLES / "arbiter.toml"))
+    records = [r for r in capture.read(str(flight)) if r.error is None and r.node_id is None]
+    start = records[0].timestamp
+    frames = []
+    injected = None
+    for record in records:
+        message = record.message
+        late = record.timestamp > start + 5.0
+        if injected is None and late and isinstance(message, codec.Status):
+            assert message.selected == 1
+            message = dataclasses.replace(message, selected=0)
+            injected = record.timestamp
+        frames.append((record.timestamp, record.can_id, codec.encode(message)))
+    result = arbiter.replay(frames, config)
+    [disagreement] = result.disagreements
+    assert (disagreement.start, disagreement.field) == (injected, "selected")
+    assert (disagreement.recorded, disagreement.modelled) == (0, 1)
+    assert "DISAGREES   selected: recorded AP1, model AP2" in result.timeline()
+
+
+def test_notebook_example(flight: Path, tmp_path: Path) -> None:
+    plot = tmp_path / "arbitration.png"
+    result = subprocess.run(
+        [sys.executable, str(EXAMPLES / "notebook.py"), str(flight), str(plot)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "Mean rpm and current per ESC" in result.stdout
+    assert plot.stat().st_size > 10_000
+    frame = capture.to_dataframe(capture.read(str(flight)))
+    status = frame[frame.message == "Status"]
+    assert str(status.selected.dtype) == "Int64"
+    assert set(status.selected.dropna()) == {1, 2}
+    assert str(status.alive_1.dtype) == "boolean"
