@@ -63,4 +63,6 @@ class Stats:
         ):
             lines.append(f"{title}:")
             lines += [f"  {name:<28} {count:>10}" for name, count in sorted(counter.items())]
+            if not counter:
+                lines.append("  (none)")
         return "\n".join(lines)
