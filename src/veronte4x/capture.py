@@ -68,17 +68,27 @@ def fields(message: Any) -> dict[str, Any]:
     return out
 
 
+_SCALARS = frozenset({int, float, bool, str, bytes, type(None)})
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+
+
 def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
-    for field in dataclasses.fields(message):
-        value = getattr(message, field.name)
-        name = prefix + field.name
-        if dataclasses.is_dataclass(value) and not isinstance(value, type):
-            _flatten(value, name + ".", out)
+    cls = type(message)
+    names = _FIELD_NAMES.get(cls)
+    if names is None:  # dataclasses.fields() is slow: once per class
+        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(message))
+    for field in names:
+        value = getattr(message, field)
+        name = prefix + field
+        if type(value) in _SCALARS:
+            out[name] = value
         elif isinstance(value, tuple):
             for index, item in enumerate(value):
                 out[f"{name}_{index}"] = item
         elif isinstance(value, enum.Enum):
             out[name] = value.value
+        elif dataclasses.is_dataclass(value) and not isinstance(value, type):
+            _flatten(value, name + ".", out)
         else:
             out[name] = value
 

@@ -6,6 +6,7 @@ A bad frame becomes a record with its error and raw bytes; the stream never stop
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.busmap import BusMap, Role
@@ -13,7 +14,7 @@ from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
 from veronte4x.dronecan import Reassembler
 from veronte4x.frames import BadLine, Frame
-from veronte4x.readers.candump import parse_line
+from veronte4x.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.records import Record
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
@@ -59,39 +60,59 @@ class CaptureDecoder:
     def decode_candump(self, lines: Iterable[str], channel: str | None = None) -> Iterator[Record]:
         """Yield the records of candump text, reading and decoding in one pass.
 
-        Equivalent to ``decode(parse_candump(lines, channel))``, but classic frames of the
-        log form on Veronte IDs, the bulk of a capture, skip the intermediate `Frame`.
+        Equivalent to ``decode(parse_candump(lines, channel))``, but plain log-form frames,
+        the bulk of a capture, skip the intermediate `Frame` and the generic dispatch: an
+        11-bit frame on a Veronte ID is decoded inline, a 29-bit one goes straight to its
+        channel's DroneCAN reassembler. Every other line goes through `parse_line`.
         """
         routes = self._routes if not self.bus_map.extended else {}
+        dronecan = self.bus_map.dronecan and not self.bus_map.extended
         excess = self.bus_map.allow_excess
         fromhex = bytes.fromhex
         for number, line in enumerate(lines, 1):
             parts = line.split()
-            if len(parts) == 3:
-                # The fast path of readers.candump.parse_candump, fused with decoding.
-                stamp, interface, body = parts
-                ident, separator, text = body.partition("#")
-                if separator and len(ident) == 3 and stamp[0] == "(" and stamp[-1] == ")":
-                    try:
-                        can_id = int(ident, 16)
-                        timestamp = float(stamp[1:-1])
-                        data = fromhex(text)
-                    except ValueError:
-                        pass
-                    else:
-                        # timestamp - timestamp is 0.0 for a finite time only (not nan, inf),
-                        # the others go to parse_line, which reports the line.
-                        if timestamp - timestamp == 0.0:
-                            if channel is not None and interface != channel:
-                                continue
-                            route = routes.get(can_id)
-                            if route is not None:
-                                yield self._veronte(
-                                    timestamp, interface, can_id, data, route, excess
-                                )
-                                continue
             if not parts:
                 continue
+            if len(parts) == 3:
+                stamp, interface, body = parts
+                ident, separator, text = body.partition("#")
+                size = len(ident)
+                if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
+                    try:
+                        seconds = float(stamp[1:-1])
+                        can_id = int(ident, 16)
+                        data = fromhex(text)
+                    except ValueError:
+                        seconds = math.nan
+                    # seconds - seconds is 0.0 for a finite time only; the rest is parse_line's.
+                    if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
+                        if channel is not None and interface != channel:
+                            continue
+                        if size == 8 and dronecan and can_id not in routes:
+                            frame = (seconds, interface, can_id, data, True, False, False, False)
+                            yield from self._dronecan(_new(Frame, frame))
+                            continue
+                        route = routes.get(can_id) if size == 3 else None
+                        if route is not None:
+                            # The hottest path of a capture: the dispatch of _veronte, inlined.
+                            role, index, dispatch = route
+                            decode = None
+                            if data and data[0]:
+                                decode = dispatch.by_command[data[0]]
+                            elif len(data) > 1:
+                                decode = dispatch.header_ff if data[1] == 0xFF else dispatch.other
+                            if decode is not None:
+                                try:
+                                    message = decode(data, excess)
+                                except DecodeError:
+                                    pass
+                                else:
+                                    record = (seconds, interface, can_id, role, index, None,
+                                              message, None, "", data, None)  # fmt: skip
+                                    yield _new(Record, record)
+                                    continue
+                            yield self._veronte(seconds, interface, can_id, data, route, excess)
+                            continue
             item = parse_line(line, number, parts)
             if isinstance(item, BadLine):
                 yield self._bad_line(item)

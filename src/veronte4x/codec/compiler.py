@@ -197,6 +197,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     plan = _struct_plan(layout)
     if plan is not None:
         namespace["_unpack"] = struct.Struct(plan[0]).unpack_from
+        namespace["_pack"] = struct.Struct(plan[0]).pack
     for dc_field in dataclasses.fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
     return namespace
@@ -370,8 +371,17 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -
 
 
 def _encode_source(layout: FrameLayout) -> str:
-    const = 0
-    lines = ["def encode(m):"]
+    """``encode_bits`` (any layout, NaN payloads exact) and ``encode``: a `struct.pack` of the
+    whole frame where every field is within a byte or an aligned float32, else ``encode_bits``.
+    """
+    source = _encode_function(layout, "encode_bits", packed=False)
+    if _struct_plan(layout) is None:
+        return source + "encode = encode_bits\n"
+    return source + "\n" + _encode_function(layout, "encode", packed=True)
+
+
+def _encode_function(layout: FrameLayout, name: str, packed: bool) -> str:
+    lines = [f"def {name}(m):"]
     for attr, value in layout.implied:
         test = f"m.{attr} is not None" if value is None else f"m.{attr} != _implied_{attr}"
         lines += [
@@ -380,16 +390,28 @@ def _encode_source(layout: FrameLayout) -> str:
         ]
     seen_tuples: set[str] = set()
     body: list[str] = []
-    for p in layout.placed:
+    constants: dict[str, int] = {}
+    for number, p in enumerate(layout.placed):
         f = p.field
+        index = _byte_index(layout, p)
+        target, shift = (
+            ("w", p.shift) if not packed or index is None else (f"b{index}", p.shift % 8)
+        )
         if f.kind is Kind.CONSTANT:
-            const |= f.value << p.shift
+            constants[target] = constants.get(target, 0) | f.value << shift
         elif f.kind is not Kind.PADDING:
-            body += _encode_field(f, p.shift, seen_tuples, layout)
-    lines.append(f"    w = {const:#x}")
+            float_var = f"f{number}" if packed and f.kind is Kind.FLOAT32 else None
+            body += _encode_field(f, shift, seen_tuples, layout, target, float_var)
+    if packed:
+        plan = _struct_plan(layout)
+        assert plan is not None
+        names = plan[1]
+        lines += [f"    {b} = {constants.get(b, 0):#x}" for b in names if b.startswith("b")]
+        result = "frame"
+    else:
+        lines.append(f"    w = {constants.get('w', 0):#x}")
+        result = f"w.to_bytes({layout.fixed_size}, '{layout.byte_order.value}')"
     lines += body
-    order = layout.byte_order.value
-    result = f"w.to_bytes({layout.fixed_size}, '{order}')"
     if layout.tail is not None:
         most = layout.tail.bits // 8
         lines += [
@@ -398,11 +420,29 @@ def _encode_source(layout: FrameLayout) -> str:
             f"        raise _eerr('{layout.tail.attr}', v, 'bytes of length 0..{most}')",
         ]
         result += " + _bytes(v)"
+    if packed and any(name.startswith("f") for name in names):
+        lines += [
+            "    try:",
+            f"        frame = _pack({', '.join(names)})",
+            "    except _OverflowError:  # a float beyond float32: encode_bits names it",
+            "        return encode_bits(m)",
+        ]
+    elif packed:
+        lines.append(f"    frame = _pack({', '.join(names)})")
     lines.append(f"    return {result}")
     return "\n".join(lines) + "\n"
 
 
-def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayout) -> list[str]:
+def _encode_field(
+    f: Field,
+    shift: int,
+    seen_tuples: set[str],
+    layout: FrameLayout,
+    target: str = "w",
+    float_var: str | None = None,
+) -> list[str]:
+    """Read, check and place one field: OR it into `target` at `shift`, or for a float of a
+    packed encoder keep it in `float_var` (a NaN goes to ``encode_bits`` for its exact bits)."""
     lines: list[str] = []
     assert f.attr is not None
     if f.index is None:
@@ -424,7 +464,17 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
             *lines,
             "    if v is not True and v is not False:",
             f"        raise _eerr('{label}', v, 'a bool')",
-            f"    w |= v{place}",
+            f"    {target} |= v{place}",
+        ]
+    if f.kind is Kind.FLOAT32 and float_var is not None:
+        return [
+            *lines,
+            "    if v.__class__ is not _float and (not _isinstance(v, _number) "
+            "or _isinstance(v, _bool)):",
+            f"        raise _eerr('{label}', v, 'a float')",
+            "    if v != v:",
+            "        return encode_bits(m)",
+            f"    {float_var} = v",
         ]
     if f.kind is Kind.FLOAT32:
         return [
@@ -436,7 +486,7 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
             "        v = _from_bytes(_pack_f32(v), 'little') if v == v else _bits_from_float(v)",
             "    except _OverflowError:",
             f"        raise _eerr('{label}', v, 'a float within the float32 range') from None",
-            f"    w |= v{place}",
+            f"    {target} |= v{place}",
         ]
     if f.kind is Kind.SIGNED:
         low, high = -(1 << (f.bits - 1)), (1 << (f.bits - 1)) - 1
@@ -468,5 +518,5 @@ def _encode_field(f: Field, shift: int, seen_tuples: set[str], layout: FrameLayo
         ]
     if f.kind is Kind.SIGNED:
         lines.append(f"    v &= {mask:#x}")
-    lines.append(f"    w |= v{place}")
+    lines.append(f"    {target} |= v{place}")
     return lines

@@ -198,5 +198,8 @@ def _human_timestamp(stamp: str) -> float | None:
     return moment.replace(tzinfo=_dt.timezone.utc).timestamp()
 
 
+_HEX_DIGITS = "0123456789abcdefABCDEF"
+
+
 def _is_hex(token: str) -> bool:
-    return all(c in "0123456789abcdefABCDEF" for c in token)
+    return bool(token) and not token.strip(_HEX_DIGITS)
