@@ -7,16 +7,23 @@ decoding itself stays sans-IO in `veronte4x.decoder`.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import can
 
-from veronte4x import codec
+from veronte4x import codec, dronecan
 from veronte4x.busmap import BusMap
 from veronte4x.decoder import CaptureDecoder
 from veronte4x.readers.pythoncan import frame_from_message
 from veronte4x.records import Record
 
-__all__ = ["DecodingListener", "decode_can_message", "to_can_message"]
+__all__ = [
+    "DecodingListener",
+    "decode_can_message",
+    "frame_to_message",
+    "to_can_message",
+    "to_can_messages",
+]
 
 
 def decode_can_message(message: can.Message, decoder: CaptureDecoder | None = None) -> list[Record]:
@@ -69,6 +76,45 @@ def to_can_message(
         data=bus_map.codec().encode(message),
         channel=channel,
     )
+
+
+def frame_to_message(
+    frame: dronecan.Frame, timestamp: float = 0.0, channel: str | None = None
+) -> can.Message:
+    """One DroneCAN frame as an extended ``can.Message``."""
+    return can.Message(
+        timestamp=timestamp,
+        arbitration_id=frame.can_id,
+        is_extended_id=True,
+        data=frame.data,
+        channel=channel,
+    )
+
+
+def to_can_messages(
+    message: Any,
+    *,
+    source_node_id: int,
+    transfer_id: int,
+    priority: int = dronecan.DEFAULT_PRIORITY,
+    destination_node_id: int | None = None,
+    timestamp: float = 0.0,
+    channel: str | None = None,
+) -> list[can.Message]:
+    """Encode a DroneCAN message, request or response into the ``can.Message`` frames of its
+    transfer (see `veronte4x.dronecan.encode` for the arguments).
+
+    Raises:
+        EncodeError: A field is out of range, or an argument is.
+    """
+    frames = dronecan.encode(
+        message,
+        source_node_id=source_node_id,
+        transfer_id=transfer_id,
+        priority=priority,
+        destination_node_id=destination_node_id,
+    )
+    return [frame_to_message(frame, timestamp, channel) for frame in frames]
 
 
 class DecodingListener(can.Listener):

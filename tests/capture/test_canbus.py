@@ -5,7 +5,13 @@ import pytest
 
 from veronte4x import codec
 from veronte4x.busmap import BusMap
-from veronte4x.canbus import DecodingListener, decode_can_message, to_can_message
+from veronte4x.canbus import (
+    DecodingListener,
+    decode_can_message,
+    to_can_message,
+    to_can_messages,
+)
+from veronte4x.decoder import CaptureDecoder
 from veronte4x.records import Record
 
 
@@ -55,3 +61,22 @@ def test_listener_decodes_live_traffic_on_the_virtual_bus() -> None:
         codec.Score(2, 0.25),
     ]
     assert [r.sender for r in records] == ["AP1", "arbiter"]
+
+
+def test_dronecan_messages_go_out_as_their_transfer_frames() -> None:
+    from veronte4x import dronecan
+
+    status = dronecan.EscStatus(
+        error_count=0, voltage=24.0, current=1.5, temperature=300.0, rpm=900,
+        power_rating_pct=10, esc_index=1,
+    )  # fmt: skip
+    messages = to_can_messages(status, source_node_id=21, transfer_id=4, channel="can0")
+    frames = dronecan.encode(status, source_node_id=21, transfer_id=4)
+    assert [(m.arbitration_id, bytes(m.data), m.is_extended_id) for m in messages] == [
+        (f.can_id, f.data, True) for f in frames
+    ]
+    assert len(messages) == 3
+    decoder = CaptureDecoder()
+    records = [r for m in messages for r in decode_can_message(m, decoder)]
+    assert [r.message for r in records] == [status]
+    assert records[0].sender == "node 21"

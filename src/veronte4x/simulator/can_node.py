@@ -15,7 +15,7 @@ from collections.abc import Callable
 
 import can
 
-from veronte4x.dronecan.frame import Frame
+from veronte4x.canbus import frame_to_message
 from veronte4x.simulator.esc import SimulatedEsc
 
 __all__ = ["EscNode", "to_message", "wanted"]
@@ -32,11 +32,8 @@ def wanted(message: can.Message) -> bool:
     )
 
 
-def to_message(frame: Frame, timestamp: float = 0.0) -> can.Message:
-    """A DroneCAN frame as an extended ``can.Message``."""
-    return can.Message(
-        timestamp=timestamp, arbitration_id=frame.can_id, data=frame.data, is_extended_id=True
-    )
+to_message = frame_to_message
+"""One DroneCAN frame as an extended ``can.Message`` (`veronte4x.canbus.frame_to_message`)."""
 
 
 class EscNode:
