@@ -167,17 +167,8 @@ def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transpo
         data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
         src.lines.append(f"    return [tnew({frame}, ({can_id}, {data}))]")
         return
-    count = (size + 2 + 6) // 7
-    tails = src.name("T", _tail_table(count))
-    src.lines += [
-        f"    p = ({stream}).to_bytes({size}, 'big')",
-        f"    b = crc_hqx(p, {transport.crc_seed:#x}).to_bytes(2, 'little') + p",
-        f"    c = {can_id}",
-        f"    t = {tails}[tid]",
-    ]
-    items = [f"tnew({frame}, (c, b[{7 * i}:{7 * i + 7}] + t[{i}]))" for i in range(count - 1)]
-    items.append(f"tnew({frame}, (c, b[{7 * (count - 1)}:] + t[{count - 1}]))")
-    src.lines.append(f"    return [{', '.join(items)}]")
+    src.lines.append(f"    p = ({stream}).to_bytes({size}, 'big')")
+    _emit_multi_frame(src, size, frame, can_id, transport)
 
 
 def _builder(cls: type) -> type:
@@ -302,6 +293,14 @@ def _emit_struct_frames(
         return
     packer = src.name("S", struct.Struct(layout))
     src.lines.append(f"    p = {packer}.pack({', '.join(values)})")
+    _emit_multi_frame(src, size, frame, can_id, transport)
+
+
+def _emit_multi_frame(
+    src: _Source, size: int, frame: str, can_id: str, transport: Transport
+) -> None:
+    """Emit the end of a frames function that splits payload ``p`` into a multi-frame
+    transfer: the transfer CRC first, 7 bytes a frame, each with its tail byte (spec 4.1)."""
     count = (size + 2 + 6) // 7
     tails = src.name("T", _tail_table(count))
     src.lines += [
