@@ -119,6 +119,8 @@ class FrameLayout:
                 raise LayoutError(f"{self.name}: raw bytes must come last, byte-aligned")
             if f.kind is Kind.FLOAT32 and f.bits != 32:
                 raise LayoutError(f"{self.name}: float32 field {f.label} must have 32 bits")
+            if f.kind is Kind.MAPPED and not all(0 <= w < 1 << f.bits for w, _ in f.mapping):
+                raise LayoutError(f"{self.name}: a wire value of {f.label} does not fit")
             if f.kind is Kind.CONSTANT and not 0 <= f.value < 1 << f.bits:
                 raise LayoutError(f"{self.name}: constant {f.value} does not fit {f.bits} bits")
             if f.scale is not None and f.scale.encoded_min == f.scale.encoded_max:
@@ -191,9 +193,15 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         "_raw": (bytes, bytearray),
         "_OverflowError": OverflowError,
         "_ValueError": ValueError,
+        "_KeyError": KeyError,
+        "_TypeError": TypeError,
     }
     for attr, value in layout.implied:
         namespace[f"_implied_{attr}"] = value
+    for f in layout.fields:
+        if f.kind is Kind.MAPPED:
+            namespace[f"_from_wire_{f.attr}"] = dict(f.mapping)
+            namespace[f"_to_wire_{f.attr}"] = {value: wire for wire, value in f.mapping}
     plan = _struct_plan(layout)
     if plan is not None:
         namespace["_unpack"] = struct.Struct(plan[0]).unpack_from
@@ -345,6 +353,13 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -
         ]
     if f.kind is Kind.BOOL:
         return [f"    {var} = ({raw}) == 1"]
+    if f.kind is Kind.MAPPED:
+        wires = ", ".join(str(wire) for wire, _ in f.mapping)
+        return [
+            f"    {var} = _from_wire_{f.attr}.get({raw})",
+            f"    if {var} is None:",
+            f"        raise _derr('{{}} is none of {wires}'.format({raw}), data, '{label}')",
+        ]
     if f.kind is Kind.FLOAT32:
         if p.shift % 8 == 0:
             offset = p.start // 8
@@ -459,6 +474,16 @@ def _encode_field(
         lines.append(f"    v = t_{f.attr}[{f.index}]")
     label = f.label
     place = f" << {shift}" if shift else ""
+    if f.kind is Kind.MAPPED:
+        allowed = "one of " + ", ".join(repr(value) for _, value in f.mapping)
+        return [
+            *lines,
+            "    try:",
+            f"        v = _to_wire_{f.attr}[v]",
+            "    except (_KeyError, _TypeError):",
+            f"        raise _eerr('{label}', v, {allowed!r}) from None",
+            f"    {target} |= v{place}",
+        ]
     if f.kind is Kind.BOOL:
         return [
             *lines,

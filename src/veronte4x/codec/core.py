@@ -9,14 +9,14 @@ re-encode to the very bytes it came from.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from typing import NamedTuple
 
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import MAX_FRAME_BYTES, Decoder, Encoder
 from veronte4x.codec.declared import Layout
 from veronte4x.codec.messages import Message, PwmSet, Sender, Status
-from veronte4x.codec.pwm import PwmPacking
+from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, UnknownCommandError
 
 _ARBITER = Sender.ARBITER
@@ -100,12 +100,9 @@ class Codec:
                 layouts.VERSION_RESPONSE.message: encode_response,
             }
         )
-        pwm = layouts.PWM_SET[self.pwm_packing]
-        pwm_encoders: dict[int, Encoder] = {}
-        for first_channel, layout in pwm.items():
-            decode, pwm_encoders[first_channel] = layout.functions
-            self._by_command[layout.fields[0].value] = decode
-        self._encoders[PwmSet] = _by_first_channel(pwm_encoders)
+        decode_pwm, self._encoders[PwmSet] = layouts.PWM_SET[self.pwm_packing].functions
+        for command in PWM_COMMANDS.values():
+            self._by_command[command] = decode_pwm
         for command, layout in layouts.OPAQUE.items():
             self._by_command[command], self._encoders[layout.message] = layout.functions
 
@@ -180,17 +177,3 @@ class Codec:
                 type(message).__name__, "message", message, "a veronte4x.codec message"
             )
         return encode(message)
-
-
-def _by_first_channel(encoders: dict[int, Encoder]) -> Callable[[Message], bytes]:
-    allowed = "one of " + ", ".join(str(c) for c in encoders)
-
-    def encode_pwm(message: Message) -> bytes:
-        assert isinstance(message, PwmSet)
-        try:
-            encode = encoders[message.first_channel]
-        except (KeyError, TypeError):
-            raise EncodeError("PwmSet", "first_channel", message.first_channel, allowed) from None
-        return encode(message)
-
-    return encode_pwm

@@ -5,7 +5,7 @@ from __future__ import annotations
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import FrameLayout, Placed
 from veronte4x.codec.fields import ByteOrder, Kind
-from veronte4x.codec.pwm import PwmPacking
+from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 
 
 def _position(layout: FrameLayout, p: Placed) -> tuple[str, str]:
@@ -32,6 +32,8 @@ def _kind(layout: FrameLayout, p: Placed) -> str:
     f = p.field
     if f.kind is Kind.CONSTANT:
         return f"constant `{f.value:#04x}`"
+    if f.kind is Kind.MAPPED:
+        return "uint8, one of " + ", ".join(str(wire) for wire, _ in f.mapping)
     if f.kind is Kind.UNSIGNED:
         top = f.maximum if f.maximum is not None else (1 << f.bits) - 1
         return f"uint{f.bits}, 0..{top}"
@@ -76,8 +78,8 @@ def protocol_tables() -> str:
         layouts.ARBITRATION_VARIABLE,
         layouts.VERSION_REQUEST,
         layouts.VERSION_RESPONSE,
-        layouts.PWM_SET[PwmPacking.LSB_FIRST][0],
-        layouts.PWM_SET[PwmPacking.MSB_FIRST][0],
+        layouts.PWM_SET[PwmPacking.LSB_FIRST],
+        layouts.PWM_SET[PwmPacking.MSB_FIRST],
     ]
     return "\n".join(layout_table(layout) for layout in groups)
 
@@ -89,8 +91,7 @@ def command_table() -> str:
         (1, "| 1 | `VersionRequest` (1 byte), `VersionResponse` (2+ bytes) | see below |"),
         (20, "| 20-255 | unknown | `UnknownCommandError` |"),
     ]
-    for first, layout in layouts.PWM_SET[PwmPacking.LSB_FIRST].items():
-        command = layout.fields[0].value
+    for first, command in PWM_COMMANDS.items():
         rows.append((command, f"| {command} | `PwmSet(first_channel={first})` | 4 x 12 bits |"))
     for command, layout in layouts.OPAQUE.items():
         what = (layout.message.__doc__ or "").split(" (")[0]

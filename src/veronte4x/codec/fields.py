@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass
+from typing import Any
 
 
 class ByteOrder(enum.Enum):
@@ -35,6 +36,7 @@ class Kind(enum.Enum):
     BOOL = "bool"
     FLOAT32 = "float32"
     BYTES = "bytes"
+    MAPPED = "mapped"
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,6 +80,8 @@ class Field:
         scale: Linear compression of an integer field, if any.
         description: What the field means, from the source.
         name: Name of a constant or padding field, for errors and docs.
+        mapping: For a MAPPED field, (wire value, attribute value) pairs: the only values
+            the field may take.
     """
 
     kind: Kind
@@ -89,6 +93,7 @@ class Field:
     scale: Linear | None = None
     description: str = ""
     name: str = ""
+    mapping: tuple[tuple[int, Any], ...] = ()
 
     @property
     def label(self) -> str:

@@ -130,32 +130,31 @@ VERSION_RESPONSE = FrameLayout(
 )
 
 
-def _pwm(first_channel: int, packing: PwmPacking) -> FrameLayout:
-    command = PWM_COMMANDS[first_channel]
+def _pwm(packing: PwmPacking) -> FrameLayout:
     values = tuple(
-        Field(Kind.UNSIGNED, 12, "values", i, description=f"channel {first_channel + i}, 0..4095")
+        Field(Kind.UNSIGNED, 12, "values", i, description=f"channel first_channel + {i}, 0..4095")
         for i in range(4)
+    )
+    command = Field(
+        Kind.MAPPED,
+        8,
+        "first_channel",
+        mapping=tuple((wire, first) for first, wire in PWM_COMMANDS.items()),
+        description="message type, which names the first channel: "
+        + ", ".join(f"{wire} = PWMs {first}-{first + 3}" for first, wire in PWM_COMMANDS.items()),
     )
     order = ByteOrder.LITTLE if packing is PwmPacking.LSB_FIRST else ByteOrder.BIG
     return FrameLayout(
         m.PwmSet,
-        (
-            constant(
-                command, 8, f"message type (PWMs {first_channel} to {first_channel + 3})", "command"
-            ),
-            *values,
-        ),
+        (command, *values),
         byte_order=order,
-        implied=(("first_channel", first_channel),),
         source=f"{SEED_TABLE}; notes: four 12-bit values, packing {packing.value} (open point)",
-        title=f"PwmSet (cmd {command}, {packing.value})",
+        title=f"PwmSet ({packing.value})",
     )
 
 
-PWM_SET: dict[PwmPacking, dict[int, FrameLayout]] = {
-    packing: {first: _pwm(first, packing) for first in PWM_COMMANDS} for packing in PwmPacking
-}
-"""PWM set layouts by packing, then by first channel."""
+PWM_SET: dict[PwmPacking, FrameLayout] = {packing: _pwm(packing) for packing in PwmPacking}
+"""The PWM set layout of each packing; one layout serves the five PWM commands."""
 
 OPAQUE_CLASSES: tuple[type[m.OpaqueMessage], ...] = (
     m.ScorpionEscTelemetry,
@@ -201,8 +200,8 @@ BUILT_IN: tuple[FrameLayout, ...] = (
     ARBITRATION_VARIABLE,
     VERSION_REQUEST,
     VERSION_RESPONSE,
-    *PWM_SET[PwmPacking.LSB_FIRST].values(),
-    *PWM_SET[PwmPacking.MSB_FIRST].values(),
+    PWM_SET[PwmPacking.LSB_FIRST],
+    PWM_SET[PwmPacking.MSB_FIRST],
     *OPAQUE.values(),
 )
 """Every built-in layout, in the order the docs list them."""
