@@ -173,18 +173,9 @@ class CaptureDecoder:
         route: Route,
         excess: bool,
     ) -> Record:
-        role, index, dispatch = route
+        role, index, _ = route
         try:
-            command = data[0] if data else None
-            if command:
-                decode = dispatch.by_command[command]
-            elif command == 0 and len(data) > 1:
-                decode = dispatch.header_ff if data[1] == 0xFF else dispatch.other
-            else:
-                decode = None
-            if decode is None:  # let the codec raise its own error for this frame
-                self.codec.decode(data, sender=_SENDERS[role])
-            message = decode(data, excess)  # type: ignore[misc]
+            message = self.codec.decode(data, sender=_SENDERS[role], allow_excess=excess)
         except UnknownCommandError as failure:
             return Record(timestamp, channel, can_id, role, index, None, None,
                           "unknown command", str(failure), data)  # fmt: skip

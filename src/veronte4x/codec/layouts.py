@@ -191,17 +191,3 @@ OPAQUE: dict[int, FrameLayout] = {
 
 RESERVED_COMMANDS = frozenset({4, 14, 15})
 """Reserved in the seed's message-type table."""
-
-BUILT_IN: tuple[FrameLayout, ...] = (
-    STATUS_4X,
-    STATUS_CEX,
-    SCORE,
-    READY,
-    ARBITRATION_VARIABLE,
-    VERSION_REQUEST,
-    VERSION_RESPONSE,
-    PWM_SET[PwmPacking.LSB_FIRST],
-    PWM_SET[PwmPacking.MSB_FIRST],
-    *OPAQUE.values(),
-)
-"""Every built-in layout, in the order the docs list them."""
