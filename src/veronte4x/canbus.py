@@ -1,7 +1,7 @@
 """python-can in and out: decode ``can.Message`` objects, make them, listen to a live bus.
 
 Needs the ``can`` extra (``pip install "veronte4x[can]"``). This is the thin I/O adapter;
-decoding itself stays sans-IO in `veronte4x.decoder`.
+decoding itself stays sans-IO in `veronte4x.capture.decoder`.
 """
 
 from __future__ import annotations
@@ -12,10 +12,10 @@ from typing import Any
 import can
 
 from veronte4x import codec, dronecan
-from veronte4x.busmap import BusMap
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.readers.pythoncan import frame_from_message
-from veronte4x.records import Record
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.readers.pythoncan import frame_from_message
+from veronte4x.capture.records import Record
 
 __all__ = [
     "DecodingListener",

@@ -2,15 +2,17 @@
 
 from pathlib import Path
 
-from veronte4x.frames import BadLine, Frame
-from veronte4x.readers import parse_candump, read_candump
+from veronte4x.capture.source import open_frames
+
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers import parse_candump
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 T = 1436509052.0
 
 
 def test_every_line_of_the_odd_capture() -> None:
-    items = list(read_candump(str(ODD)))
+    items = list(open_frames(ODD))
     assert items == [
         Frame(T + 0.249713, "can0", 0xFF, bytes.fromhex("00ff8177ffff")),
         Frame(T + 0.25, "can0", 0x1004D42A, b"\xc0", extended=True),
@@ -52,4 +54,4 @@ def test_gzip(tmp_path: Path) -> None:
 
     packed = tmp_path / "capture.log.gz"
     packed.write_bytes(gzip.compress(b"(1.5) can0 0FF#01\n"))
-    assert list(read_candump(str(packed))) == [Frame(1.5, "can0", 0xFF, b"\x01")]
+    assert list(open_frames(packed)) == [Frame(1.5, "can0", 0xFF, b"\x01")]

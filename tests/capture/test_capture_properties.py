@@ -3,9 +3,9 @@
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.frames import Frame
-from veronte4x.readers import parse_candump
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import Frame
+from veronte4x.capture.readers import parse_candump
 
 hex_digits = st.text("0123456789ABCDEFabcdef", max_size=20)
 candump_like = st.builds(

@@ -2,11 +2,12 @@
 
 from pathlib import Path
 
+from veronte4x.capture.source import open_frames
+
 from veronte4x import codec
-from veronte4x.busmap import BusMap, Role
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.readers import read_candump
-from veronte4x.records import Record
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.records import Record
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
@@ -17,7 +18,7 @@ def _kinds(records: list[Record]) -> list[tuple[str, str]]:
 
 
 def test_odd_capture_gives_one_record_per_frame_or_bad_line() -> None:
-    records = list(CaptureDecoder().decode(read_candump(str(ODD))))
+    records = list(CaptureDecoder().decode(open_frames(ODD)))
     assert _kinds(records) == [
         ("arbiter", "Status"),
         ("node 42", "error: unknown type"),
@@ -51,11 +52,11 @@ def test_fused_candump_path_equals_the_two_stage_path() -> None:
     for path in (ODD, EXAMPLE):
         with path.open() as lines:
             fused = list(decoder.decode_candump(lines))
-        assert fused == list(decoder.decode(read_candump(str(path))))
+        assert fused == list(decoder.decode(open_frames(path)))
 
 
 def test_records_carry_role_autopilot_and_raw_bytes() -> None:
-    records = list(CaptureDecoder().decode(read_candump(str(EXAMPLE))))
+    records = list(CaptureDecoder().decode(open_frames(EXAMPLE)))
     ready = records[2]
     assert ready == Record(
         1763737200.01, "can0", 8, Role.AUTOPILOT, 0, None, codec.Ready(ready=True), None, "",

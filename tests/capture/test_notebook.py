@@ -6,7 +6,7 @@ import matplotlib
 import pytest
 
 from veronte4x import capture, codec
-from veronte4x.plot import arbitration_timeline
+from veronte4x.capture.plot import arbitration_timeline
 
 matplotlib.use("Agg")
 EXAMPLE = str(Path(__file__).resolve().parents[2] / "examples" / "capture.log")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from veronte4x.busmap import AUTOPILOT_NAMES, Role
+from veronte4x.capture.busmap import AUTOPILOT_NAMES, Role
 
 
 class Record(NamedTuple):

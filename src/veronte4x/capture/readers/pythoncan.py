@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from veronte4x.frames import BadLine, Frame
+from veronte4x.capture.frames import BadLine, Frame
 
 
 def frame_from_message(message: Any) -> Frame:

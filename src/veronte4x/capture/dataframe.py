@@ -1,60 +1,16 @@
-"""Captures in notebooks: read a capture into records, count them, tabulate and plot them.
-
-Example:
-    >>> from veronte4x import capture
-    >>> records = list(capture.read("examples/capture.log"))
-    >>> records[2].sender, records[2].message
-    ('AP1', Ready(ready=True))
-"""
+"""Tables of decoded records: message fields as flat columns, and pandas DataFrames."""
 
 from __future__ import annotations
 
 import dataclasses
 import enum
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
-from veronte4x.busmap import BusMap
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.readers.candump import read_candump
-from veronte4x.readers.open import CANDUMP_SUFFIXES, open_frames
-from veronte4x.records import Record
-from veronte4x.stats import Stats
+from veronte4x.capture.records import Record
 
 if TYPE_CHECKING:
     import pandas
-
-__all__ = ["Record", "Stats", "fields", "read", "stats", "to_dataframe"]
-
-
-def read(path: str, bus_map: BusMap | None = None, channel: str | None = None) -> Iterator[Record]:
-    """Stream the decoded records of a capture file.
-
-    Args:
-        path: candump text (``.log``, ``.txt``, gzipped or not; ``-`` for standard input),
-            or any format python-can reads (needs the ``can`` extra).
-        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
-        channel: Keep only this interface's frames.
-    """
-    decoder = CaptureDecoder(bus_map)
-    if path == "-" or path.lower().endswith(CANDUMP_SUFFIXES):
-        if path.endswith(".gz") or path == "-":
-            return decoder.decode(read_candump(path, channel))
-        return _decode_text_file(decoder, path, channel)
-    return decoder.decode(open_frames(path, channel))
-
-
-def _decode_text_file(decoder: CaptureDecoder, path: str, channel: str | None) -> Iterator[Record]:
-    with open(path, encoding="utf-8", errors="replace") as lines:
-        yield from decoder.decode_candump(lines, channel)
-
-
-def stats(records: Iterable[Record]) -> Stats:
-    """Count records per message type, per sender and errors per kind."""
-    counts = Stats()
-    for record in records:
-        counts.add(record)
-    return counts
 
 
 def fields(message: Any) -> dict[str, Any]:

@@ -10,9 +10,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
-from veronte4x.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
-from veronte4x.records import Record
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -9,13 +9,13 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator
 
-from veronte4x.busmap import BusMap, Role
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
+from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
 from veronte4x.dronecan import Reassembler
-from veronte4x.frames import BadLine, Frame
-from veronte4x.readers.candump import CAN_ERR_FLAG, parse_line
-from veronte4x.records import Record
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 _new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths

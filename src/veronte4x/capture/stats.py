@@ -6,7 +6,7 @@ from collections import Counter
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
-from veronte4x.records import Record
+from veronte4x.capture.records import Record
 
 
 @dataclass

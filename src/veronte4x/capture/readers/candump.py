@@ -24,7 +24,7 @@ import datetime as _dt
 import math
 from collections.abc import Iterable, Iterator
 
-from veronte4x.frames import BadLine, Frame
+from veronte4x.capture.frames import BadLine, Frame
 
 CAN_ERR_FLAG = 0x2000_0000
 """Error-frame flag of a SocketCAN identifier (linux/can.h)."""
@@ -87,19 +87,6 @@ def parse_line(line: str, number: int, parts: list[str] | None = None) -> Frame 
     if isinstance(result, str):
         return BadLine(number, line.rstrip("\r\n"), result)
     return result
-
-
-def read_candump(path: str, channel: str | None = None) -> Iterator[Frame | BadLine]:
-    """Parse a candump file (``-`` for standard input, ``.gz`` for gzip) as a stream."""
-    import gzip
-    import sys
-
-    if path == "-":
-        yield from parse_candump(sys.stdin, channel)
-        return
-    opener = gzip.open if path.endswith(".gz") else open
-    with opener(path, "rt", encoding="utf-8", errors="replace") as lines:
-        yield from parse_candump(lines, channel)
 
 
 def _log_line(parts: list[str]) -> Frame | str:

@@ -1,0 +1,73 @@
+"""Captures in notebooks: read a capture into records, count them, tabulate and plot them.
+
+The capture layer, in one package: readers (`veronte4x.capture.readers`), where a source
+comes from (`veronte4x.capture.source`), the bus map, the per-frame decoder, records, stats,
+DataFrames and plots. This module is its public face.
+
+Example:
+    >>> from veronte4x import capture
+    >>> records = list(capture.read("examples/capture.log"))
+    >>> records[2].sender, records[2].message
+    ('AP1', Ready(ready=True))
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+
+from veronte4x.capture.busmap import BusMap, BusMapError, Role
+from veronte4x.capture.dataframe import fields, to_dataframe
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers.pythoncan import read_with_python_can
+from veronte4x.capture.records import Record
+from veronte4x.capture.source import Format, Source, open_frames, open_text, resolve
+from veronte4x.capture.stats import Stats
+
+__all__ = [
+    "BadLine",
+    "BusMap",
+    "BusMapError",
+    "CaptureDecoder",
+    "Frame",
+    "Record",
+    "Role",
+    "Stats",
+    "fields",
+    "open_frames",
+    "read",
+    "stats",
+    "to_dataframe",
+]
+
+
+def read(
+    path: str | os.PathLike[str], bus_map: BusMap | None = None, channel: str | None = None
+) -> Iterator[Record]:
+    """Stream the decoded records of a capture file.
+
+    Args:
+        path: candump text (``.log``, ``.txt``, gzipped or not; ``-`` for standard input),
+            or any format python-can reads (needs the ``can`` extra).
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
+    """
+    source = resolve(path)
+    decoder = CaptureDecoder(bus_map)
+    if source.format is Format.CANDUMP:
+        return _decode_text(decoder, source, channel)
+    return decoder.decode(read_with_python_can(source.path, channel))
+
+
+def _decode_text(decoder: CaptureDecoder, source: Source, channel: str | None) -> Iterator[Record]:
+    with open_text(source) as lines:
+        yield from decoder.decode_candump(lines, channel)
+
+
+def stats(records: Iterable[Record]) -> Stats:
+    """Count records per message type, per sender and errors per kind."""
+    counts = Stats()
+    for record in records:
+        counts.add(record)
+    return counts
