@@ -16,10 +16,11 @@ from collections.abc import Iterable
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.columnar import frame
 from veronte4x.capture.columnar.engine import decode_columns, tables_from_records
 from veronte4x.capture.columnar.sources import read_frames
 
-__all__ = ["read_tables", "tables_from_records"]
+__all__ = ["frame", "read_tables", "tables_from_records"]
 
 Source = str | os.PathLike[str]
 

@@ -133,12 +133,12 @@ def _log_lines(
         odd = np.flatnonzero(_ODD[body])
         ok[np.searchsorted(ends, odd)] = False
     spaces = np.flatnonzero(body == 32)
-    spaces = np.append(spaces, len(a) + 1)
+    spaces = np.append(spaces, len(a) - 1)  # a sentinel in the padding
     first = np.searchsorted(spaces, starts)
     ok &= np.searchsorted(spaces, ends) - first == 2  # exactly two spaces
     second = np.minimum(first + 1, len(spaces) - 1)
     space1, space2 = spaces[first], spaces[second]
-    hashes = np.append(np.flatnonzero(body == 35), [len(a) + 1, len(a) + 1])
+    hashes = np.append(np.flatnonzero(body == 35), [len(a) - 1, len(a) - 1])
     at_hash = np.searchsorted(hashes, space2)
     hash1, hash2 = hashes[at_hash], hashes[at_hash + 1]
     ok &= (hash1 < ends) & (hash2 >= ends)  # one "#", in the third field

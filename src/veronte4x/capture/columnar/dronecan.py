@@ -310,7 +310,9 @@ def raw_command_items(size: int) -> int | None:
 def decode_raw_command(matrix: np.ndarray, count: int) -> pa.Array:
     """RawCommand ``cmd`` lists of ``count`` items for every row."""
     item = Scalar("int", 14)
-    values = np.stack([scalar(matrix, item, 14 * i) for i in range(count)], axis=1)
+    values = np.zeros((len(matrix), count), np.int64)
+    for i in range(count):
+        values[:, i] = scalar(matrix, item, 14 * i)
     offsets = np.arange(len(matrix) + 1, dtype=np.int32) * count
     return pa.ListArray.from_arrays(pa.array(offsets), pa.array(values.ravel().astype(np.int16)))
 

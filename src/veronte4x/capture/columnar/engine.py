@@ -36,6 +36,13 @@ def decode_columns(
     frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
 ) -> dict[str, pa.Table]:
     """The tables of a capture's frames (see `veronte4x.capture.read_tables`)."""
+    return decode_into(frames, bus_map, channel).finish()
+
+
+def decode_into(
+    frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
+) -> Tables:
+    """Decode a capture's frames into tables still being built (their rows keyed)."""
     bus_map = bus_map or BusMap()
     if channel is not None:
         frames = _only_channel(frames, channel)
@@ -61,7 +68,7 @@ def decode_columns(
         done[_decode_dronecan(frames, candidates, tables)] = True
     decoder = CaptureDecoder(bus_map)
     tables.add_records(_per_frame(frames, np.flatnonzero(~done), decoder))
-    return tables.finish()
+    return tables
 
 
 def _only_channel(frames: FrameColumns, channel: str) -> FrameColumns:

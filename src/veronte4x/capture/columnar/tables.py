@@ -118,8 +118,12 @@ class Tables:
 
     def finish(self) -> dict[str, pa.Table]:
         """The tables, each sorted into capture order; kinds without rows are left out."""
+        return {kind: table for kind, (table, _) in self.finish_with_keys().items()}
+
+    def finish_with_keys(self) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+        """The tables, each with the sort keys of its rows (increasing)."""
         channel_names = pa.array(self.channels, pa.string())
-        out: dict[str, pa.Table] = {}
+        out: dict[str, tuple[pa.Table, npt.NDArray[np.int64]]] = {}
         for kind, parts in self._parts.items():
             spec = self.specs[kind]
             keys = np.concatenate([k for k, _ in parts])
@@ -138,7 +142,7 @@ class Tables:
                     if pa.types.is_dictionary(field.type) and pa.types.is_string(column.type):
                         column = column.dictionary_encode().cast(field.type)
                 columns.append(column)
-            out[kind] = pa.Table.from_arrays(columns, schema=spec.schema)
+            out[kind] = pa.Table.from_arrays(columns, schema=spec.schema), keys[order]
         return out
 
 
