@@ -35,3 +35,22 @@ def test_arbitrary_text_agrees(lines: list[str]) -> None:
         expected = capture.tables_from_records(capture.read(path))
         got = capture.read_tables(path)
     assert_same_tables(got, expected)
+
+
+stamps = st.one_of(
+    st.from_regex(r"\A[0-9]{1,19}(\.[0-9]{0,12})?\Z"),
+    st.from_regex(r"\A\.?[0-9]{0,4}[.e+-]?[0-9]{0,3}\Z"),
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
+                min_size=1, max_size=12))  # fmt: skip
+def test_timestamps_of_any_shape_agree(lines: list[tuple[str, str]]) -> None:
+    text = "".join(f"({stamp}) can0 {frame}\n" for stamp, frame in lines)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "capture.log"
+        path.write_text(text)
+        expected = capture.tables_from_records(capture.read(path))
+        got = capture.read_tables(path)
+    assert_same_tables(got, expected)

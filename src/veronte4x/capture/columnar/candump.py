@@ -13,6 +13,7 @@ line for line.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import BinaryIO
 
 import numpy as np
@@ -70,48 +71,50 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
             return None
         ends[np.searchsorted(breaks, returns)] -= 1
     fast = _log_lines(a, starts, ends)
-    rows = np.flatnonzero(fast.ok)
-    slow = np.flatnonzero(~fast.ok & (ends > starts))
-    columns = fast.columns(rows, first_line)
-    if not len(slow):
+    slow = np.ones(len(starts), np.bool_)
+    slow[fast.line] = False
+    slow &= ends > starts
+    columns = fast.columns(first_line)
+    lines = np.flatnonzero(slow)
+    if not len(lines):
         return columns
     items: list[tuple[int, Frame | BadLine]] = []
-    for line in slow.tolist():
+    for line in lines.tolist():
         raw = text[starts[line] : ends[line]].decode("utf-8", "replace")
         for item in parse_candump((raw,), first_line=first_line + line):
             items.append((first_line + line, item))
     return concat([columns, from_frames(items)])
 
 
+@dataclass
 class _LogLines:
-    """The log-form lines of a text, parsed column-wise; `ok` marks the lines it took."""
+    """The log-form lines of a text the column parser took, one row each."""
 
-    def __init__(self) -> None:
-        self.ok: npt.NDArray[np.bool_] = np.zeros(0, np.bool_)
-        self.stamp: npt.NDArray[np.float64] = np.zeros(0)
-        self.interface: npt.NDArray[np.int32] = np.zeros(0, np.int32)
-        self.interfaces: list[str] = []
-        self.can_id: npt.NDArray[np.uint32] = np.zeros(0, np.uint32)
-        self.extended: npt.NDArray[np.bool_] = np.zeros(0, np.bool_)
-        self.length: npt.NDArray[np.int64] = np.zeros(0, np.int64)
-        self.data: npt.NDArray[np.uint8] = np.zeros((0, MAX_DATA), np.uint8)
+    line: npt.NDArray[np.int64]
+    stamp: npt.NDArray[np.float64]
+    interface: npt.NDArray[np.int32]
+    interfaces: list[str]
+    can_id: npt.NDArray[np.uint32]
+    extended: npt.NDArray[np.bool_]
+    length: npt.NDArray[np.int64]
+    data: npt.NDArray[np.uint8]
 
-    def columns(self, rows: npt.NDArray[np.int64], first_line: int) -> FrameColumns:
-        n = len(rows)
+    def columns(self, first_line: int) -> FrameColumns:
+        n = len(self.line)
         no = np.zeros(n, np.bool_)
         return FrameColumns(
-            order=rows + first_line,
-            timestamp=self.stamp[rows],
+            order=self.line + first_line,
+            timestamp=self.stamp,
             has_time=np.ones(n, np.bool_),
-            channel=self.interface[rows],
+            channel=self.interface,
             channels=self.interfaces,
-            can_id=self.can_id[rows],
-            extended=self.extended[rows],
+            can_id=self.can_id,
+            extended=self.extended,
             remote=no,
             fd=no,
             error=no,
-            length=self.length[rows],
-            data=self.data[rows],
+            length=self.length,
+            data=self.data,
         )
 
 
@@ -124,7 +127,6 @@ def _window(a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64], width: int) -> 
 def _log_lines(
     a: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64], ends: npt.NDArray[np.int64]
 ) -> _LogLines:
-    out = _LogLines()
     lines = len(starts)
     ok = a[starts] == 40  # "("
     body = a[: ends[-1] + 1]
@@ -151,31 +153,20 @@ def _log_lines(
     ok &= (data_size >= 0) & (data_size <= 2 * MAX_DATA) & (data_size % 2 == 0)
     ok &= a[np.maximum(space1 - 1, 0)] == 41  # ")"
     rows = np.flatnonzero(ok)
+    space1, space2, hash1 = space1[rows], space2[rows], hash1[rows]
     stamp, good = _stamps(a, starts[rows] + 1, stamp_size[rows])
-    can_id, extended, good_id = _identifiers(_window(a, space2[rows] + 1, 8), id_size[rows])
-    data, good_data = _data(_window(a, hash1[rows] + 1, 2 * MAX_DATA), data_size[rows])
-    interface, names = _interfaces(
-        _window(a, space1[rows] + 1, _INTERFACE), space2[rows] - space1[rows] - 1
-    )
+    can_id, extended, good_id = _identifiers(_window(a, space2 + 1, 8), id_size[rows])
+    size = data_size[rows]
+    data, good_data = _data(_window(a, hash1 + 1, 2 * MAX_DATA), size)
+    interface, names = _interfaces(_window(a, space1 + 1, _INTERFACE), space2 - space1 - 1)
     good &= good_id & good_data
-    ok[rows] = good
-    out.ok = ok
-    out.stamp = _scatter(rows, stamp, lines, np.float64)
-    out.can_id = _scatter(rows, can_id, lines, np.uint32)
-    out.extended = _scatter(rows, extended, lines, np.bool_)
-    out.length = _scatter(rows, data_size[rows] // 2, lines, np.int64)
-    out.interface = _scatter(rows, interface, lines, np.int32)
-    out.interfaces = names
-    full = np.zeros((lines, MAX_DATA), np.uint8)
-    full[rows] = data
-    out.data = full
-    return out
-
-
-def _scatter(rows: np.ndarray, values: np.ndarray, size: int, dtype: type) -> np.ndarray:
-    out: np.ndarray = np.zeros(size, dtype)
-    out[rows] = values
-    return out
+    if good.all():
+        return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data)
+    keep = np.flatnonzero(good)
+    return _LogLines(
+        rows[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
+        size[keep] // 2, data[keep],
+    )  # fmt: skip
 
 
 def _stamps(
@@ -197,8 +188,6 @@ def _stamps(
     same = sizes == size
     rows = np.flatnonzero(same)
     chars = _window(a, at[rows], size)
-    digits = chars - np.uint8(48)
-    weights = np.zeros(size)
     columns = np.ones(size, np.bool_)
     if len(dots) == 1:
         dot = int(dots[0])
@@ -209,16 +198,32 @@ def _stamps(
         fraction = 0
         shaped = np.ones(len(rows), np.bool_)
     count = int(columns.sum())
-    if 0 < count <= 17:
-        weights[columns] = 10.0 ** np.arange(count - 1, -1, -1)
-        shaped &= (digits[:, columns] < 10).all(axis=1)
-        mantissa = digits.astype(np.float64) @ weights  # exact below 2**53, else >= 2**53
-        stamp[rows] = mantissa / _POW10F[fraction]
-        good[rows] = shaped & (mantissa < _EXACT)
+    if 0 < count <= 16:
+        padded = np.full((len(rows), 16), 48, np.uint8)  # "0"
+        padded[:, 16 - count :] = chars[:, columns]
+        words = padded.view("<u8")
+        high, high_ok = _eight_digits(words[:, 0])
+        low, low_ok = _eight_digits(words[:, 1])
+        mantissa = high * np.uint64(100_000_000) + low
+        shaped &= high_ok & low_ok & (mantissa < _EXACT)
+        stamp[rows] = mantissa.astype(np.float64) / _POW10F[fraction]
+        good[rows] = shaped
     rest = np.flatnonzero(~good)
     if len(rest):
         stamp[rest], good[rest] = _stamps_any(_window(a, at[rest], _STAMP), sizes[rest])
     return stamp, good
+
+
+def _eight_digits(words: npt.NDArray[np.uint64]) -> tuple[np.ndarray, np.ndarray]:
+    """Eight ASCII digits per word (first digit in the lowest byte) to their value, and
+    whether all eight are digits: three multiply-shift steps that combine neighbours."""
+    valid = (words + np.uint64(0x4646464646464646)) | (words - np.uint64(0x3030303030303030))
+    valid = (valid & np.uint64(0x8080808080808080)) == 0
+    value = words & np.uint64(0x0F0F0F0F0F0F0F0F)
+    value = (value * np.uint64(2561)) >> np.uint64(8)
+    value = ((value & np.uint64(0x00FF00FF00FF00FF)) * np.uint64(6553601)) >> np.uint64(16)
+    value = ((value & np.uint64(0x0000FFFF0000FFFF)) * np.uint64(42949672960001)) >> np.uint64(32)
+    return value & np.uint64(0xFFFFFFFF), valid
 
 
 def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -231,7 +236,7 @@ def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.nd
     total = counted[:, -1].astype(np.int64)
     good = (is_digit | dots | ~inside).all(axis=1) & (dots.sum(axis=1) <= 1) & (total > 0)
     good &= total <= 18
-    power = np.where(is_digit, total[:, None] - counted, 0)
+    power = np.where(is_digit, np.minimum(total[:, None] - counted, 18), 0)
     mantissa = (np.where(is_digit, digits, 0).astype(np.int64) * _POW10[power]).sum(axis=1)
     before_dot = np.where(dots.any(axis=1), (counted * dots).sum(axis=1), total)
     good &= mantissa < _EXACT
@@ -255,26 +260,27 @@ def _identifiers(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]
 def _data(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Up to 16 hex digits to up to 8 bytes, zero-padded."""
     nibbles = _NIBBLE[chars]
-    nibbles[np.arange(2 * MAX_DATA) >= sizes[:, None]] = 0
-    words = nibbles.view(np.uint64)
-    good = ((words[:, 0] | words[:, 1]) & 0xF0F0F0F0F0F0F0F0) == 0
-    return (nibbles[:, 0::2] << 4) | nibbles[:, 1::2], good
+    bad = np.packbits(nibbles > 15, axis=1, bitorder="little").view("<u2")[:, 0]
+    good = (bad & ((1 << sizes) - 1).astype(np.uint16)) == 0
+    data = (nibbles[:, 0::2] << 4) | (nibbles[:, 1::2] & 15)
+    data[np.arange(MAX_DATA) >= (sizes // 2)[:, None]] = 0
+    return data, good
 
 
 def _interfaces(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, list[str]]:
     """Interface names to codes: one pass per distinct name."""
-    inside = np.arange(_INTERFACE) < sizes[:, None]
-    chars = np.where(inside, chars, 0).astype(np.uint8)
-    keys = np.ascontiguousarray(chars).view(np.uint64)
+    chars = np.where(np.arange(_INTERFACE) < sizes[:, None], chars, 0).astype(np.uint8)
+    words = chars.view("<u8")
+    low, high = np.ascontiguousarray(words[:, 0]), np.ascontiguousarray(words[:, 1])
     codes = np.full(len(chars), -1, np.int32)
     names: list[str] = []
-    left = np.arange(len(chars))
+    left = np.flatnonzero(codes < 0)
     while len(left):
         row = left[0]
-        same = (keys[left] == keys[row]).all(axis=1)
-        codes[left[same]] = len(names)
+        same = np.flatnonzero((low == low[row]) & (high == high[row]) & (codes < 0))
+        codes[same] = len(names)
         names.append(chars[row, : sizes[row]].tobytes().decode("ascii"))
-        left = left[~same]
+        left = np.flatnonzero(codes < 0)
     return codes, names
 
 
