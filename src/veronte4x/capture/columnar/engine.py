@@ -52,17 +52,19 @@ def decode_into(
     if frames.long_data:
         plain[list(frames.long_data)] = False
     done = np.zeros(len(frames), np.bool_)
-    veronte_rows = np.zeros(len(frames), np.bool_)
-    for can_id, (role, index) in bus_map.veronte_roles.items():
-        rows = np.flatnonzero(
-            plain & (frames.can_id == can_id) & (frames.extended == bus_map.extended)
-        )
-        veronte_rows[rows] = True
-        sender = Sender.ARBITER if role is Role.ARBITER else Sender.AUTOPILOT
+    sender_code = np.full(len(frames), -1, np.int16)
+    veronte_ids = plain & (frames.extended == bus_map.extended)
+    for can_id, (_, index) in bus_map.veronte_roles.items():
         code = SENDER_INDEX["arbiter"] if index is None else SENDER_INDEX["AP1"] + index
-        done[_decode_veronte(frames, rows, codec, sender, code, bus_map.allow_excess, tables)] = (
-            True
-        )
+        sender_code[veronte_ids & (frames.can_id == can_id)] = code
+    arbiter = sender_code == SENDER_INDEX["arbiter"]
+    for sender, rows in (
+        (Sender.ARBITER, np.flatnonzero(arbiter)),
+        (Sender.AUTOPILOT, np.flatnonzero((sender_code >= 0) & ~arbiter)),
+    ):
+        taken = _decode_veronte(frames, rows, codec, sender, sender_code, bus_map, tables)
+        done[taken] = True
+    veronte_rows = sender_code >= 0
     if bus_map.dronecan:
         candidates = np.flatnonzero(plain & frames.extended & ~veronte_rows)
         done[_decode_dronecan(frames, candidates, tables)] = True
@@ -107,9 +109,10 @@ def _head(frames: FrameColumns, rows: npt.NDArray[np.int64]) -> dict[str, np.nda
 
 def _decode_veronte(
     frames: FrameColumns, rows: npt.NDArray[np.int64], codec: Codec, sender: Sender,
-    sender_code: int, excess: bool, tables: Tables,
+    sender_code: npt.NDArray[np.int16], bus_map: BusMap, tables: Tables,
 ) -> npt.NDArray[np.int64]:  # fmt: skip
-    """Decode one Veronte ID's frames column-wise; return the rows decoded."""
+    """Decode one sender's frames column-wise; return the rows decoded."""
+    excess = bus_map.allow_excess
     data, length = frames.data[rows], frames.length[rows]
     target = veronte.targets(codec, sender, data, length, excess)
     layouts = veronte.layout_list(codec)
@@ -120,7 +123,7 @@ def _decode_veronte(
         good, columns = veronte.decode(layout, data[picked], length[picked], excess)
         taken = rows[picked[good]]
         head = _head(frames, taken)
-        head["sender"] = np.full(len(taken), sender_code, np.int16)
+        head["sender"] = sender_code[taken]
         fields = {
             name: (value.filter(pa.array(good)) if isinstance(value, pa.Array) else value[good])
             for name, value in columns.items()
@@ -155,7 +158,9 @@ def _decode_dronecan(
         wrong = multi[computed != found.crc[multi]]
         records += _crc_mismatches(frames, found, wrong, computed[computed != found.crc[multi]],
                                    stamp)  # fmt: skip
-        good = np.setdiff1d(which, wrong)
+        intact = np.ones(len(found.last), np.bool_)
+        intact[wrong] = False
+        good = which[intact[which]]
         records += _decode_type(frames, found, index, good, stamp, tables)
     tables.add_records(records)
     return taken

@@ -130,25 +130,28 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
     in_sequence = all(
         not len(a) or not len(b) or a.order[-1] < b.order[0] for a, b in itertools.pairwise(parts)
     )
-    sort = np.arange(len(order)) if in_sequence else np.argsort(order, kind="stable")
-    offsets = np.cumsum([0] + [len(p) for p in parts])
-    rank = np.empty(len(sort), np.int64)
-    rank[sort] = np.arange(len(sort))
-    long_data = {
-        int(rank[offsets[i] + row]): data
-        for i, p in enumerate(parts)
-        for row, data in p.long_data.items()
-    }
+    sort = order if in_sequence else np.argsort(order, kind="stable")
+    long_data: dict[int, bytes] = {}
+    if any(p.long_data for p in parts):
+        offsets = np.cumsum([0] + [len(p) for p in parts])
+        rank = np.arange(len(order))
+        if not in_sequence:
+            rank[sort] = np.arange(len(sort))
+        long_data = {
+            int(rank[offsets[i] + row]): data
+            for i, p in enumerate(parts)
+            for row, data in p.long_data.items()
+        }
 
     def joined(name: str) -> np.ndarray:
         joined: np.ndarray = np.concatenate([getattr(p, name) for p in parts])
         return joined if in_sequence else joined[sort]
 
     return FrameColumns(
-        order=order[sort],
+        order=order if in_sequence else order[sort],
         timestamp=joined("timestamp"),
         has_time=joined("has_time"),
-        channel=np.concatenate(remapped)[sort],
+        channel=np.concatenate(remapped) if in_sequence else np.concatenate(remapped)[sort],
         channels=list(channels),
         can_id=joined("can_id"),
         extended=joined("extended"),
