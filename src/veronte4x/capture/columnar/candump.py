@@ -12,7 +12,10 @@ line for line.
 
 from __future__ import annotations
 
+import os
+from collections import deque
 from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import BinaryIO
 
@@ -288,17 +291,26 @@ BLOCK = 1 << 22
 """Bytes of text parsed at once: small enough for the processor's caches."""
 
 
-def parse_stream(stream: BinaryIO) -> FrameColumns | None:
-    """Parse candump text from a binary stream, block by block; see `parse_text`."""
-    parts: list[FrameColumns] = []
+def parse_stream(stream: BinaryIO, workers: int | None = None) -> FrameColumns | None:
+    """Parse candump text from a binary stream, block by block; see `parse_text`.
+
+    Blocks are parsed on ``workers`` threads (default: one per processor); NumPy releases
+    the interpreter lock in its loops, so they run side by side.
+    """
+    workers = workers or os.cpu_count() or 1
+    parts: list[FrameColumns | None] = []
+    pending: deque[Future[FrameColumns | None]] = deque()
     line = 1
-    for block in _blocks(stream):
-        part = parse_text(block, line)
-        if part is None:
-            return None
-        parts.append(part)
-        line += block.count(b"\n") + (not block.endswith(b"\n"))
-    return concat(parts) if parts else parse_text(b"")
+    with ThreadPoolExecutor(workers) as pool:
+        for block in _blocks(stream):
+            pending.append(pool.submit(parse_text, block, line))
+            line += block.count(b"\n") + (not block.endswith(b"\n"))
+            if len(pending) > 2 * workers:
+                parts.append(pending.popleft().result())
+        parts += [future.result() for future in pending]
+    if any(part is None for part in parts):
+        return None
+    return concat([p for p in parts if p is not None]) if parts else parse_text(b"")
 
 
 def _blocks(stream: BinaryIO) -> Iterator[bytes]:
