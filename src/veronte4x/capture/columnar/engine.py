@@ -113,7 +113,8 @@ def _decode_veronte(
 ) -> npt.NDArray[np.int64]:  # fmt: skip
     """Decode one sender's frames column-wise; return the rows decoded."""
     excess = bus_map.allow_excess
-    data, length = frames.data[rows], frames.length[rows]
+    data = frames.data.view("<u8")[rows, 0]
+    length = frames.length[rows]
     target = veronte.targets(codec, sender, data, length, excess)
     layouts = veronte.layout_list(codec)
     decoded = []
