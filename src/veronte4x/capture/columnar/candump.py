@@ -72,11 +72,20 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
         if not (a[returns + 1] == 10).all():
             return None
         ends[np.searchsorted(breaks, returns)] -= 1
-    fast = _log_lines(a, starts, ends)
-    slow = np.ones(len(starts), np.bool_)
+    clean = _clean_lines(a, starts, ends)
+    fast = _log_lines(a, starts, ends, clean)
+    slow = ends > starts
     slow[fast.line] = False
-    slow &= ends > starts
-    columns = fast.columns(first_line)
+    parts = [fast.columns(first_line)]
+    hashes = np.bincount(
+        np.searchsorted(ends, np.flatnonzero(a[:size] == 35)), minlength=len(starts)
+    )
+    human = np.flatnonzero(slow & clean & (hashes[: len(starts)] == 0))
+    if len(human):
+        found = _human_lines(a, starts, ends, human)
+        slow[found.line] = False
+        parts.append(found.columns(first_line))
+    columns = concat(parts)
     lines = np.flatnonzero(slow)
     if not len(lines):
         return columns
@@ -100,6 +109,7 @@ class _LogLines:
     extended: npt.NDArray[np.bool_]
     length: npt.NDArray[np.int64]
     data: npt.NDArray[np.uint8]
+    has_time: npt.NDArray[np.bool_] | None = None
 
     def columns(self, first_line: int) -> FrameColumns:
         n = len(self.line)
@@ -107,7 +117,7 @@ class _LogLines:
         return FrameColumns(
             order=self.line + first_line,
             timestamp=self.stamp,
-            has_time=np.ones(n, np.bool_),
+            has_time=np.ones(n, np.bool_) if self.has_time is None else self.has_time,
             channel=self.interface,
             channels=self.interfaces,
             can_id=self.can_id,
@@ -126,16 +136,27 @@ def _window(a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64], width: int) -> 
     return np.lib.stride_tricks.sliding_window_view(a, width)[at]
 
 
-def _log_lines(
+def _clean_lines(
     a: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64], ends: npt.NDArray[np.int64]
-) -> _LogLines:
-    lines = len(starts)
-    ok = a[starts] == 40  # "("
+) -> npt.NDArray[np.bool_]:
+    """Lines with no control character and no non-ASCII byte (see `_ODD`)."""
+    clean = np.ones(len(starts), np.bool_)
     body = a[: ends[-1] + 1]
-    controls = np.count_nonzero(body < 32) - lines - np.count_nonzero(body == 13)
+    controls = np.count_nonzero(body < 32) - len(starts) - np.count_nonzero(body == 13)
     if controls or body.max() >= 128:
-        odd = np.flatnonzero(_ODD[body])
-        ok[np.searchsorted(ends, odd)] = False
+        clean[np.searchsorted(ends, np.flatnonzero(_ODD[body]))] = False
+    return clean
+
+
+def _log_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    clean: npt.NDArray[np.bool_],
+) -> _LogLines:
+    """The plain log-form lines: ``(seconds) interface ID#DATA``, a classic data frame."""
+    ok = clean & (a[starts] == 40)  # "("
+    body = a[: ends[-1] + 1]
     spaces = np.flatnonzero(body == 32)
     spaces = np.append(spaces, len(a) - 1)  # a sentinel in the padding
     first = np.searchsorted(spaces, starts)
@@ -170,6 +191,79 @@ def _log_lines(
     return _LogLines(
         rows[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
         size[keep] // 2, data_bytes[keep],
+    )  # fmt: skip
+
+
+def _human_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    lines: npt.NDArray[np.int64],
+) -> _LogLines:
+    """The plain human-view lines: ``[(seconds)] interface ID [n] XX XX ...``, a classic
+    data frame and nothing after its bytes (lines with "#" are left to `parse_line`)."""
+    body = a[: ends[-1] + 1]
+    separator = (body == 32) | (body == 10) | (body == 13)
+    begins = ~separator
+    begins[1:] &= separator[:-1]
+    finishes = ~separator
+    finishes[:-1] &= separator[1:]
+    token_start = np.append(np.flatnonzero(begins), len(body))  # a sentinel token
+    token_end = np.append(np.flatnonzero(finishes) + 1, len(body))
+    last = len(token_start) - 1
+    first = np.searchsorted(token_start, starts[lines])
+    count = np.searchsorted(token_start, ends[lines]) - first
+    stamped = (a[token_start[first]] == 40) & (count > 0)  # "("
+    head = first + stamped  # the interface's token
+    size_token = np.minimum(head + 2, last)
+    size_at = token_start[size_token]
+    size_len = token_end[size_token] - size_at
+    words = _words(a)
+    size_word = words[size_at]
+    size_one = (size_len == 3) & ((size_word & np.uint64(0xFF00FF)) == np.uint64(0x5D005B))
+    size = ((size_word >> np.uint64(8)) & np.uint64(0xFF)).astype(np.int64) - 48  # "[n]"
+    ok = (count >= 3) & size_one & (size >= 0) & (size <= MAX_DATA)
+    ok &= count == 3 + stamped + size
+    rows = np.flatnonzero(ok)
+    lines, first, head, size, stamped = (
+        lines[rows],
+        first[rows],
+        head[rows],
+        size[rows],
+        stamped[rows],
+    )
+    ident = head + 1
+    id_size = token_end[ident] - token_start[ident]
+    iface_size = token_end[head] - token_start[head]
+    can_id, extended, good = _identifiers(words[token_start[ident]], id_size)
+    good &= ((id_size == 3) | (id_size == 8)) & (iface_size <= _INTERFACE)
+    stamp = np.zeros(len(lines))
+    if stamped.any():
+        timed = np.flatnonzero(stamped)
+        at, end = token_start[first[timed]], token_end[first[timed]]
+        good[timed] &= a[end - 1] == 41  # ")"
+        stamp[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
+        good[timed] &= timed_ok & (end - at - 2 > 0) & (end - at - 2 <= _STAMP)
+    # The data bytes: one two-character token each.
+    owner = np.repeat(np.arange(len(lines)), size)
+    position = np.arange(len(owner)) - np.repeat(np.cumsum(size) - size, size)
+    token = head[owner] + 3 + position
+    pair = words[token_start[token]]
+    nibbles, pair_ok = _hex(pair, _MASKS[np.full(len(token), 2)])
+    pair_ok &= token_end[token] - token_start[token] == 2
+    value = ((nibbles & np.uint64(15)) << np.uint64(4)) | (
+        (nibbles >> np.uint64(8)) & np.uint64(15)
+    )
+    good &= np.bincount(owner, weights=~pair_ok, minlength=len(lines)) == 0
+    data = np.zeros((len(lines), MAX_DATA), np.uint8)
+    data[owner, position] = value.astype(np.uint8)
+    interface, names = _interfaces(
+        words[token_start[head]], words[token_start[head] + 8], iface_size
+    )
+    keep = np.flatnonzero(good)
+    return _LogLines(
+        lines[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
+        size[keep], data[keep], stamped[keep],
     )  # fmt: skip
 
 

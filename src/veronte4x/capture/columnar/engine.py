@@ -144,7 +144,8 @@ def _decode_dronecan(
     rows = rows[(types[rows] >= 0) & (length[rows] >= 1)]
     if not len(rows):
         return rows
-    stamp = np.where(frames.has_time, frames.timestamp, 0.0)
+    stamp = np.zeros(len(frames))
+    stamp[rows] = np.where(frames.has_time[rows], frames.timestamp[rows], 0.0)
     tail = frames.data[rows, length[rows] - 1]
     order, regular = dronecan.regular_sessions(
         frames.channel[rows], frames.can_id[rows], stamp[rows], length[rows], tail, types[rows]
