@@ -24,7 +24,7 @@ def test_decode_text_skips_and_counts_bad_frames() -> None:
     lines = result.stdout.splitlines()
     assert len(lines) == 38
     assert lines[2] == "1763737200.010000 can0 008 AP1       Ready(ready=True)"
-    assert result.stderr == "veronte4x: 39 records, 1 bad (skip)\n"
+    assert result.stderr == "veronte4x: 39 records, 0 undecoded, 1 bad (skip)\n"
 
 
 def test_decode_jsonl_keeps_bad_frames() -> None:
@@ -72,13 +72,13 @@ def test_decode_raise_stops_with_exit_code_1() -> None:
 def test_decode_from_stdin_as_a_filter() -> None:
     result = run("decode", "-", stdin="(1.0) can0 009#00FF01\n(2.0) can0 0FF#0003000000803F\n")
     assert result.stdout == ("1.000000 can0 009 AP2       Ready(ready=True)\n")
-    assert result.stderr == "veronte4x: 2 records, 1 bad (skip)\n"
+    assert result.stderr == "veronte4x: 2 records, 0 undecoded, 1 bad (skip)\n"
 
 
 def test_stats() -> None:
     result = run("stats", str(EXAMPLE))
     assert result.returncode == 0
-    assert "records: 39, errors: 1" in result.stdout
+    assert "records: 39, undecoded: 0, errors: 1" in result.stdout
     assert "  ArbitrationVariable                  12" in result.stdout
     assert "  external                              3" in result.stdout
     assert "  unknown command                       1" in result.stdout
@@ -89,3 +89,21 @@ def test_usage_errors_exit_2() -> None:
     assert missing.returncode == 2
     assert "No such file or directory" in missing.stderr
     assert run("frobnicate").returncode == 2
+
+
+def test_foreign_traffic_is_undecoded_not_bad() -> None:
+    stdin = (
+        "(1.0) can0 123#0102\n"  # 11-bit ID outside the bus map
+        "(2.0) can0 1004D42A#C0\n"  # DroneCAN data type 1236, no codec
+        "(3.0) can0 009#00FF01\n"
+    )
+    result = run("decode", "-", "--on-error", "raise", stdin=stdin)
+    assert result.returncode == 0
+    assert result.stdout.splitlines()[:2] == [
+        "1.000000 can0 123 unknown   unknown: 11-bit CAN ID 0x123 [01 02]",
+        "2.000000 can0 1004D42A node 42   unknown: DroneCAN data type 1236 [c0]",
+    ]
+    assert result.stderr == "veronte4x: 3 records, 2 undecoded, 0 bad (raise)\n"
+    stats = run("stats", "-", stdin=stdin)
+    assert "records: 3, undecoded: 2, errors: 0" in stats.stdout
+    assert "  DroneCAN data type 1236               1" in stats.stdout

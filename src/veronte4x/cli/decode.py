@@ -53,7 +53,11 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         if live:
             out.flush()
     errors = sum(counts.errors.values())
-    print(f"veronte4x: {counts.records} records, {errors} bad ({args.on_error})", file=sys.stderr)
+    unknown = sum(counts.unknown.values())
+    print(
+        f"veronte4x: {counts.records} records, {unknown} undecoded, {errors} bad ({args.on_error})",
+        file=sys.stderr,
+    )
     return status
 
 
@@ -66,6 +70,13 @@ def _text_writer(out: TextIO) -> Callable[[Record], None]:
     def write(record: Record) -> None:
         if record.error is not None:
             out.write(f"{_describe(record)} [{record.data.hex(' ')}]\n")
+            return
+        if record.message is None:
+            stamp = "-" if record.timestamp is None else f"{record.timestamp:.6f}"
+            out.write(
+                f"{stamp} {record.channel} {record.can_id:03X} {record.sender:<9} unknown: "
+                f"{record.detail} [{record.data.hex(' ')}]\n"
+            )
             return
         stamp = "-" if record.timestamp is None else f"{record.timestamp:.6f}"
         out.write(
@@ -82,7 +93,9 @@ def _row(record: Record) -> dict[str, Any]:
         "can_id": record.can_id,
         "sender": record.sender,
     }
-    if record.error is None:
+    if record.error is None and record.message is None:
+        row.update(message=None, detail=record.detail, data=record.data.hex())
+    elif record.error is None:
         row["message"] = type(record.message).__name__
         row.update({k: _plain(v) for k, v in capture.fields(record.message).items()})
     else:
@@ -117,7 +130,7 @@ def _csv_writer(out: TextIO) -> Callable[[Record], None]:
     def write(record: Record) -> None:
         row = _row(record)
         fields = {k: v for k, v in row.items() if k not in CSV_COLUMNS and k != "data"}
-        if record.error is not None:
+        if record.message is None:
             fields = {"data": record.data.hex()}
         writer.writerow(
             [
