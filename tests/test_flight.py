@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import re
 import runpy
 import subprocess
 import sys
@@ -99,3 +100,14 @@ def test_notebook_example(flight: Path, tmp_path: Path) -> None:
     assert str(status.selected.dtype) == "Int64"
     assert set(status.selected.dropna()) == {1, 2}
     assert str(status.alive_1.dtype) == "boolean"
+
+
+def test_replay_without_config_says_what_it_assumed_and_fails_on_disagreements(
+    flight: Path,
+) -> None:
+    result = run("replay", str(flight))
+    assert result.returncode == 1
+    first, last = result.stderr.splitlines()
+    assert first.startswith("veronte4x: no --config: assuming the default arbiter configuration")
+    assert first.endswith("pass the vehicle's arbiter configuration with --config FILE")
+    assert re.fullmatch(r"veronte4x: \d+ decisions, [1-9]\d* disagreements, 0 bad frames", last)

@@ -9,7 +9,7 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
 from veronte4x.capture.source import open_frames
-from veronte4x.cli.exit_codes import EXIT_OK
+from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK
 from veronte4x.cli.options import add_capture_options
 
 
@@ -19,13 +19,21 @@ def add_parser(commands: Any) -> None:
         "replay", help="run the arbiter model on a capture; explain switches and disagreements"
     )
     parser.add_argument("file", help="capture file, or - for stdin")
-    parser.add_argument("--config", metavar="FILE", help="TOML arbiter configuration")
+    parser.add_argument(
+        "--config",
+        metavar="FILE",
+        help="TOML arbiter configuration of the captured vehicle (without it, the defaults "
+        "are assumed and disagreements may come from them)",
+    )
     add_capture_options(parser)
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
-    """Replay the capture through the arbiter model and print its timeline."""
+    """Replay the capture through the arbiter model and print its timeline.
+
+    Exit code 1 when the recorded arbiter disagrees with the model, as a checker does.
+    """
     from veronte4x import arbiter
     from veronte4x.arbiter.config_file import load_config
 
@@ -37,6 +45,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             arbiter_id=bus_map.arbiter_id,
             extended_ids=bus_map.extended,
         )
+        print(NO_CONFIG, file=sys.stderr)
     frames = (
         (frame.timestamp, frame.can_id, frame.data)
         for frame in open_frames(args.file, args.channel)
@@ -52,4 +61,13 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         f"disagreements, {len(result.errors)} bad frames",
         file=sys.stderr,
     )
-    return EXIT_OK
+    return EXIT_FINDINGS if result.disagreements else EXIT_OK
+
+
+NO_CONFIG = (
+    "veronte4x: no --config: assuming the default arbiter configuration (no arbitration "
+    "variables, method 'always best', AP1 preferred, no holding time or hysteresis), so "
+    "disagreements may come from the vehicle's configuration rather than its arbiter; pass "
+    "the vehicle's arbiter configuration with --config FILE"
+)
+"""The warning of a replay without ``--config``."""
