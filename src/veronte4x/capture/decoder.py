@@ -10,7 +10,7 @@ import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.busmap import BusMap, Role
-from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
@@ -191,6 +191,9 @@ class CaptureDecoder:
 
     @staticmethod
     def _bad_line(item: BadLine) -> Record:
+        if isinstance(item, Truncation):
+            return Record(None, "", 0, Role.UNKNOWN, None, None, None, "truncated", item.reason,
+                          b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
 

@@ -14,7 +14,8 @@ from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
-from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_OK
+from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.notices import tell_truncation
 from veronte4x.cli.options import add_capture_options
 
 
@@ -36,29 +37,36 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
-    records = counts.counted(capture.read(args.file, bus_map, args.channel))
+    records = counts.counted(tell_truncation(capture.read(args.file, bus_map, args.channel)))
     out = sys.stdout
     write = {"text": _text_writer, "jsonl": _jsonl_writer, "csv": _csv_writer}[args.output](out)
     live = args.file == "-"
     status = EXIT_OK
-    for record in records:
-        if record.error is not None:
-            if args.on_error == "skip":
-                continue
-            if args.on_error == "raise":
-                print(f"veronte4x: {_describe(record)}", file=sys.stderr)
-                status = EXIT_BAD_FRAME
-                break
-        write(record)
-        if live:
-            out.flush()
+    try:
+        for record in records:
+            if record.error is not None:
+                if args.on_error == "skip":
+                    continue
+                if args.on_error == "raise":
+                    out.flush()
+                    print(f"veronte4x: {_describe(record)}", file=sys.stderr)
+                    status = EXIT_BAD_FRAME
+                    break
+            write(record)
+            if live:
+                out.flush()
+    except KeyboardInterrupt:
+        out.flush()
+        print(f"veronte4x: interrupted after {_summary(counts)}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    print(f"veronte4x: {_summary(counts)} ({args.on_error})", file=sys.stderr)
+    return status
+
+
+def _summary(counts: Stats) -> str:
     errors = sum(counts.errors.values())
     unknown = sum(counts.unknown.values())
-    print(
-        f"veronte4x: {counts.records} records, {unknown} undecoded, {errors} bad ({args.on_error})",
-        file=sys.stderr,
-    )
-    return status
+    return f"{counts.records} records, {unknown} undecoded, {errors} bad"
 
 
 def _describe(record: Record) -> str:

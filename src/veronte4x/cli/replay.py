@@ -45,7 +45,6 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             arbiter_id=bus_map.arbiter_id,
             extended_ids=bus_map.extended,
         )
-        print(NO_CONFIG, file=sys.stderr)
     frames = (
         (frame.timestamp, frame.can_id, frame.data)
         for frame in open_frames(args.file, args.channel)
@@ -54,6 +53,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         and not (frame.error or frame.remote or frame.fd)
         and frame.extended == config.extended_ids
     )
+    if not args.config:  # said once the capture opened: an error about it comes first
+        print(NO_CONFIG, file=sys.stderr)
     result = arbiter.replay(frames, config)
     print(result.timeline())
     print(
