@@ -6,6 +6,7 @@ from collections import Counter
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
+from veronte4x.capture.readable import format_time
 from veronte4x.capture.records import Record
 
 
@@ -63,7 +64,8 @@ class Stats:
         ]
         if self.first_timestamp is not None and self.last_timestamp is not None:
             span = self.last_timestamp - self.first_timestamp
-            lines.append(f"time span: {span:.3f} s")
+            first, last = format_time(self.first_timestamp), format_time(self.last_timestamp)
+            lines.append(f"time: {first} to {last} ({round(span, 6)} s)")
         for title, counter in (
             ("by message type", self.by_type),
             ("by sender", self.by_sender),
