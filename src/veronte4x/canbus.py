@@ -127,7 +127,7 @@ def to_can_messages(
 class DecodingListener(can.Listener):
     """A ``can.Listener`` that decodes live traffic and hands each record to a callback.
 
-    Example:
+    Examples:
         >>> import can
         >>> records = []
         >>> with can.Bus(interface="virtual", channel="demo") as bus:

@@ -19,7 +19,7 @@ def require(module: str, extra: str, needed_for: str) -> ModuleType:
     Raises:
         MissingExtraError: The module is not installed.
 
-    Example:
+    Examples:
         >>> require("json", "none", "the example").__name__
         'json'
     """

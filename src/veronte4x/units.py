@@ -10,7 +10,7 @@ current in ampere, temperature in kelvin, rpm, power rating in percent;
 ``uavcan.equipment.device.Temperature``: kelvin; ``uavcan.protocol.NodeStatus``: uptime in
 seconds).
 
-Example:
+Examples:
     >>> unit("EscStatus", "voltage")
     'V'
     >>> unit("GetNodeInfoResponse", "status.uptime_sec")

@@ -4,7 +4,7 @@ The capture layer, in one package: readers (`veronte4x.capture.readers`), where 
 comes from (`veronte4x.capture.source`), the bus map, the per-frame decoder, records, stats,
 DataFrames and plots. This module is its public face.
 
-Example:
+Examples:
     >>> from veronte4x import capture
     >>> records = list(capture.read("examples/capture.log"))
     >>> records[2].sender, records[2].message

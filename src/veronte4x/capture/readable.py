@@ -76,7 +76,7 @@ def shortest(value: float, bits: int = 32) -> float:
     its shortest form is ``0.1``. A value that is not a ``bits``-bit float (or not finite)
     comes back unchanged.
 
-    Example:
+    Examples:
         >>> shortest(0.10000000149011612)
         0.1
         >>> shortest(1.0009765625, 16), shortest(1.0009765625, 32)
@@ -138,7 +138,7 @@ def readable_fields(message: Any) -> dict[str, Any]:
     The keys are those of `veronte4x.capture.fields` (tuples as ``name_0``, ``name_1``...,
     nested structures with dots); the values go through `readable`.
 
-    Example:
+    Examples:
         >>> from veronte4x import codec, dronecan
         >>> readable_fields(codec.ArbitrationVariable(number=0, value=0.10000000149011612))
         {'number': 0, 'value': 0.1}
@@ -170,7 +170,7 @@ def _walk(message: Any, prefix: str) -> Iterator[tuple[str, type, str, Any]]:
 def format_message(message: Any) -> str:
     """A message on one line: its class, then every field as ``name=value``, with units.
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> format_message(dronecan.EscStatus(0, 16.203125, 2.5, 310.25, 1200, 40, 2))
         'EscStatus(error_count=0, voltage=16.2 V, current=2.5 A, temperature=310.2 K, \
@@ -215,7 +215,7 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
         ``-`` without a time; seconds since `start` with microseconds when given; else
         ISO 8601 in UTC for Unix time (see `EPOCH_THRESHOLD`) and seconds otherwise.
 
-    Example:
+    Examples:
         >>> format_time(1763737200.01)
         '2025-11-21T15:00:00.010000Z'
         >>> format_time(1763737200.01, start=1763737200.0)

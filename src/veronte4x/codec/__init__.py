@@ -1,6 +1,6 @@
 """Encode and decode the Veronte 4x CAN messages (seed manual, chapter "CAN Bus protocol").
 
-Example:
+Examples:
     >>> from veronte4x import codec
     >>> codec.decode(b"\\x00\\xff\\x01", sender=codec.Sender.AUTOPILOT)
     Ready(ready=True)

@@ -38,7 +38,7 @@ class Layout:
         byte_order: Little endian (first field in the low bits, the default) or big endian
             (first field in the high bits).
 
-    Example:
+    Examples:
         >>> from veronte4x import codec
         >>> esc = codec.Layout(5, "EscTelemetry", [
         ...     codec.unsigned("rpm", 16),

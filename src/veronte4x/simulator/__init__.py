@@ -5,7 +5,7 @@ and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can ada
 small client are in `veronte4x.simulator.can_node` and `veronte4x.simulator.client` (the
 ``can`` extra).
 
-Example:
+Examples:
     >>> from veronte4x import dronecan
     >>> from veronte4x.simulator import SimulatedEsc
     >>> esc = SimulatedEsc(node_id=20, esc_index=0, telem_frequency=10)

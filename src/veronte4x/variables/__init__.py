@@ -9,7 +9,7 @@ printed row in ``PdiError.seed_text``).
 ``BIT_VARIABLES``, ``REAL_VARIABLES`` and ``INTEGER_VARIABLES`` (also ``VARIABLES[kind]``)
 and ``PDI_ERRORS`` are tuples in the manual's order; a row may cover an id range.
 
-Example:
+Examples:
     >>> from veronte4x import variables
     >>> variables.by_id(variables.Kind.BIT, 803).name
     'PWM 0-5 GPIO Off'
