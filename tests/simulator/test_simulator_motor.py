@@ -104,7 +104,7 @@ def test_custom_model_constants() -> None:
 
 
 def test_docs_tables_describe_every_constant_and_parameter() -> None:
-    from veronte4x.simulator import docs
+    from docgen import simulator as docs
 
     constants = docs.model_constants_table().splitlines()
     assert len(constants) == 2 + len(fields(MotorModel))

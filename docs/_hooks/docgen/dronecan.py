@@ -1,6 +1,6 @@
 """Markdown tables for the docs, generated from the code's own definitions.
 
-Each function returns Markdown for a ``<!-- generate: veronte4x.dronecan.docs:name -->``
+Each function returns Markdown for a ``<!-- generate: docgen.dronecan:name -->``
 line of a docs page (see ``docs/_hooks/generate.py``).
 """
 

@@ -1,6 +1,6 @@
 """Markdown tables of the variable lists, for ``docs/veronte/variables.md``.
 
-The docs page calls these through ``<!-- generate: veronte4x.variables.docs:... -->``
+The docs page calls these through ``<!-- generate: docgen.variables:... -->``
 markers, so the published tables are the package's own data.
 """
 

@@ -1,6 +1,6 @@
 """Markdown for the docs, generated from the model's own definitions.
 
-Each function is named in a ``<!-- generate: veronte4x.arbiter.docs:function -->`` marker of
+Each function is named in a ``<!-- generate: docgen.arbiter:function -->`` marker of
 a docs page; the docs hook puts its result there.
 """
 
