@@ -63,7 +63,7 @@ def seed_example() -> str:
     totals = compute_scores(SEED_EXAMPLE_VALUES, SEED_EXAMPLE_VARIABLES)
     lines = [
         "| Autopilot | Var. | Variable | Type | Value | Mean | Deviation | Weight "
-        "| Contribution | Total score | Seed's total |",
+        "| Contribution | Total score | Manual's total |",
         "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for row in rows:

@@ -1,6 +1,6 @@
 """Which CAN IDs carry which Veronte role, and how the rest of a bus is read.
 
-Defaults are Embention's template IDs (notes/veronte-protocol.md, "Frame model"): AP1, AP2,
+Defaults are the IDs of Embention's manuals and configuration templates: AP1, AP2,
 AP3 and the external autopilot send on 8, 9, 10 and 11, the arbiter on 255, all with
 standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 

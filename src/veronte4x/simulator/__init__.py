@@ -1,4 +1,5 @@
-"""A simulated Vertiq ESC (seed 004): a sans-IO DroneCAN node with a motor model.
+"""A simulated Vertiq ESC (Vertiq's DroneCAN support document): a sans-IO DroneCAN node with a
+motor model.
 
 `SimulatedEsc` takes the frames seen on a bus with their timestamps (`SimulatedEsc.receive`)
 and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can adapter and a
