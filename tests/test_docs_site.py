@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from docgen import arbiter, codec, dronecan, simulator, variables
+from docgen import arbiter, capture, codec, dronecan, simulator, variables
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
@@ -15,8 +15,8 @@ INTERNAL = re.compile(r"\bseeds?\b(?! nibble)|notes/|shared/|\bissue \d|\bOCR\b"
 
 def _generated() -> str:
     """Every Markdown the pages' generate markers ask for."""
-    modules = {"arbiter": arbiter, "codec": codec, "dronecan": dronecan, "simulator": simulator,
-               "variables": variables}  # fmt: skip
+    modules = {"arbiter": arbiter, "capture": capture, "codec": codec, "dronecan": dronecan,
+               "simulator": simulator, "variables": variables}  # fmt: skip
     parts = []
     for page in DOCS.rglob("*.md"):
         for module, name in re.findall(r"<!-- generate: docgen\.(\w+):(\w+) -->", page.read_text()):
@@ -53,3 +53,10 @@ def test_wide_tables_scroll() -> None:
     css = (DOCS / "stylesheets" / "tables.css").read_text()
     assert "overflow-x: auto" in css and "min-width: 0" in css
     assert "  - stylesheets/tables.css" in (ROOT / "mkdocs.yml").read_text()
+
+
+def test_units_in_the_generated_tables() -> None:
+    types = dronecan.type_tables()
+    assert "| 32 | 16 | float16 | `voltage` | V |  |" in types
+    assert "| `status.uptime_sec` | s |" in types
+    assert "| `EscStatus` | `temperature` | K | kelvin |" in capture.units_table()
