@@ -119,7 +119,11 @@ class Decision:
     reason: str
 
     def __str__(self) -> str:
-        return f"{self.time:10.3f} s  {self.kind.value:<11} {self.reason}"
+        return f"{self.time:10.3f} s  {self.body()}"
+
+    def body(self) -> str:
+        """The decision without its time."""
+        return f"{self.kind.value:<11} {self.reason}"
 
 
 @dataclass(frozen=True, slots=True)

@@ -8,21 +8,17 @@ The command line's text, JSON lines and CSV outputs are written through these fu
 from __future__ import annotations
 
 import dataclasses
-import datetime as _dt
 import enum
-import math
-import struct
 from collections.abc import Iterator
 from typing import Any
 
 from veronte4x.dronecan import definitions as _dronecan
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.numbers import shortest
+from veronte4x.times import format_time
 from veronte4x.units import unit
 
-EPOCH_THRESHOLD = 1e8
-"""Timestamps at or above this many seconds (March 1973) are read as Unix time, printed as
-ISO 8601 in UTC; smaller ones are a capture's own clock (seconds since its start), printed
-as seconds."""
+__all__ = ["format_message", "format_time", "readable", "readable_fields", "shortest"]
 
 
 def _float16_fields() -> frozenset[tuple[type, str]]:
@@ -65,38 +61,6 @@ TEXT_FIELDS = frozenset(
 )
 """(class name, attribute) of the byte fields that hold text (DroneCAN names, strings and
 paths); every other byte field is data, shown in hex."""
-
-_PACK = {16: struct.Struct("<e"), 32: struct.Struct("<f")}
-
-
-def shortest(value: float, bits: int = 32) -> float:
-    """The float with the shortest decimal form that rounds to the same ``bits``-bit float.
-
-    For a float32 field the decoder holds the exact float32 value, ``0.10000000149011612``;
-    its shortest form is ``0.1``. A value that is not a ``bits``-bit float (or not finite)
-    comes back unchanged.
-
-    Examples:
-        >>> shortest(0.10000000149011612)
-        0.1
-        >>> shortest(1.0009765625, 16), shortest(1.0009765625, 32)
-        (1.001, 1.0009766)
-    """
-    packer = _PACK[bits]
-    try:
-        single = packer.unpack(packer.pack(value))[0]
-    except (OverflowError, struct.error):
-        return value
-    if single != value or not math.isfinite(value):
-        return value
-    for digits in range(1, 18):
-        candidate = float(f"{value:.{digits}g}")
-        try:
-            if packer.unpack(packer.pack(candidate))[0] == value:
-                return candidate
-        except OverflowError:  # rounded up past the largest finite value
-            continue
-    return value  # pragma: no cover - 9 digits always suffice for a float32
 
 
 def _float_bits(owner: type, attr: str) -> int:
@@ -202,34 +166,3 @@ def _scalar(owner: type, attr: str, value: Any) -> str:
     if type(value) is bytes and (owner.__name__, attr) in TEXT_FIELDS:
         return repr(shown)
     return str(shown)
-
-
-def format_time(seconds: float | None, start: float | None = None) -> str:
-    """A timestamp as people read it.
-
-    Args:
-        seconds: The timestamp (None: the capture has no time).
-        start: Print the time relative to this one (the first frame's), in seconds.
-
-    Returns:
-        ``-`` without a time; seconds since `start` with microseconds when given; else
-        ISO 8601 in UTC for Unix time (see `EPOCH_THRESHOLD`) and seconds otherwise.
-
-    Examples:
-        >>> format_time(1763737200.01)
-        '2025-11-21T15:00:00.010000Z'
-        >>> format_time(1763737200.01, start=1763737200.0)
-        '0.010000'
-    """
-    if seconds is None:
-        return "-"
-    if start is not None:
-        return f"{seconds - start:.6f}"
-    if seconds < EPOCH_THRESHOLD:
-        return f"{seconds:.6f}"
-    micros = round(seconds * 1_000_000)
-    moment = _EPOCH + _dt.timedelta(microseconds=micros)
-    return moment.strftime("%Y-%m-%dT%H:%M:%S.%fZ")
-
-
-_EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)

@@ -6,8 +6,8 @@ from collections import Counter
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
-from veronte4x.capture.readable import format_time
 from veronte4x.capture.records import Record
+from veronte4x.times import format_time
 
 
 @dataclass

@@ -16,12 +16,13 @@ from typing import Any, TextIO
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.readable import format_message, format_time, readable_fields
+from veronte4x.capture.readable import format_message, readable_fields
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.notices import tell_truncation
 from veronte4x.cli.options import add_capture_options
+from veronte4x.times import format_time
 
 HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
 """The record's own columns, before the message's fields."""

@@ -11,6 +11,7 @@ from veronte4x.capture.frames import Frame
 from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK
 from veronte4x.cli.options import add_capture_options
+from veronte4x.times import format_time
 
 
 def add_parser(commands: Any) -> None:
@@ -24,6 +25,11 @@ def add_parser(commands: Any) -> None:
         metavar="FILE",
         help="TOML arbiter configuration of the captured vehicle (without it, the defaults "
         "are assumed and disagreements may come from them)",
+    )
+    parser.add_argument(
+        "--relative-time",
+        action="store_true",
+        help="times in seconds since the first frame (default: ISO 8601 for Unix time)",
     )
     add_capture_options(parser)
     parser.set_defaults(run=run)
@@ -45,8 +51,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             arbiter_id=bus_map.arbiter_id,
             extended_ids=bus_map.extended,
         )
+    clock = _Clock(args.relative_time)
     frames = (
-        (frame.timestamp, frame.can_id, frame.data)
+        (clock.see(frame.timestamp), frame.can_id, frame.data)
         for frame in open_frames(args.file, args.channel)
         if isinstance(frame, Frame)
         and frame.timestamp is not None
@@ -56,7 +63,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     if not args.config:  # said once the capture opened: an error about it comes first
         print(NO_CONFIG, file=sys.stderr)
     result = arbiter.replay(frames, config)
-    print(result.timeline())
+    print(result.timeline(clock.format))
     print(
         f"veronte4x: {len(result.decisions)} decisions, {len(result.disagreements)} "
         f"disagreements, {len(result.errors)} bad frames",
@@ -72,3 +79,21 @@ NO_CONFIG = (
     "the vehicle's arbiter configuration with --config FILE"
 )
 """The warning of a replay without ``--config``."""
+
+
+class _Clock:
+    """The timeline's times: ISO 8601 for Unix time, or seconds since the first frame."""
+
+    def __init__(self, relative: bool) -> None:
+        self.relative = relative
+        self.start: float | None = None
+
+    def see(self, stamp: float) -> float:
+        """Note a frame's time (the first one is the start); return it unchanged."""
+        if self.start is None:
+            self.start = stamp
+        return stamp
+
+    def format(self, stamp: float) -> str:
+        """A time of the timeline, as people read it."""
+        return format_time(stamp, self.start if self.relative else None)
