@@ -1,4 +1,7 @@
-"""Encode and decode the Veronte 4x CAN messages (seed manual, chapter "CAN Bus protocol").
+"""Encode and decode the Veronte 4x CAN messages.
+
+The messages are those of the Veronte Autopilot 4x Software Manual, section 3 "CAN Bus
+protocol".
 
 Examples:
     >>> from veronte4x import codec
