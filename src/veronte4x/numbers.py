@@ -6,6 +6,9 @@ import math
 import struct
 
 _PACK = {16: struct.Struct("<e"), 32: struct.Struct("<f")}
+_CACHE: dict[int, dict[float, float]] = {16: {}, 32: {}}
+_CACHE_SIZE = 1 << 16
+"""Values remembered per width: telemetry repeats its values (a float16 has only 65536)."""
 
 
 def shortest(value: float, bits: int = 32) -> float:
@@ -21,18 +24,39 @@ def shortest(value: float, bits: int = 32) -> float:
         >>> shortest(1.0009765625, 16), shortest(1.0009765625, 32)
         (1.001, 1.0009766)
     """
-    packer = _PACK[bits]
+    cache = _CACHE[bits]
+    found = cache.get(value)
+    if found is not None:
+        return found
+    found = _shortest(value, _PACK[bits])
+    if len(cache) >= _CACHE_SIZE:
+        cache.clear()
+    if found == found:  # not NaN: a NaN key is never found again
+        cache[value] = found
+    return found
+
+
+def _shortest(value: float, packer: struct.Struct) -> float:
+    pack, unpack = packer.pack, packer.unpack
     try:
-        single = packer.unpack(packer.pack(value))[0]
+        single = unpack(pack(value))[0]
     except (OverflowError, struct.error):
         return value
     if single != value or not math.isfinite(value):
         return value
-    for digits in range(1, 18):
+    # More digits only come closer to the value, so the digits that read back form a range
+    # up to 9 (17 for a float64 value, never reached here): find its start by bisection.
+    low, high = 1, 9
+    best = float(f"{value:.9g}")
+    while low <= high:
+        digits = (low + high) // 2
         candidate = float(f"{value:.{digits}g}")
         try:
-            if packer.unpack(packer.pack(candidate))[0] == value:
-                return candidate
+            same = unpack(pack(candidate))[0] == value
         except OverflowError:  # rounded up past the largest finite value
-            continue
-    return value  # pragma: no cover - 9 digits always suffice for a float32
+            same = False
+        if same:
+            best, high = candidate, digits - 1
+        else:
+            low = digits + 1
+    return best

@@ -149,3 +149,12 @@ def test_foreign_traffic_is_undecoded_not_bad() -> None:
     stats = run("stats", "-", stdin=stdin)
     assert "records: 3, undecoded: 2, errors: 0" in stats.stdout
     assert "  DroneCAN data type 1236               1" in stats.stdout
+
+
+def test_jsonl_non_finite_floats_are_strings() -> None:
+    stdin = "(1.0) can0 008#00000000C07F\n(2.0) can0 008#00010000807F\n"
+    rows = [
+        json.loads(line)
+        for line in run("decode", "-", "--output", "jsonl", stdin=stdin).stdout.splitlines()
+    ]
+    assert [row["value"] for row in rows] == ["nan", "inf"]

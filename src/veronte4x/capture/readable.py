@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import dataclasses
 import enum
-from collections.abc import Iterator
 from typing import Any
 
 from veronte4x.dronecan import definitions as _dronecan
@@ -112,23 +111,24 @@ def readable_fields(message: Any) -> dict[str, Any]:
     """
     out: dict[str, Any] = {}
     if _is_message(message):
-        for name, owner, attr, value in _walk(message, ""):
-            out[name] = readable(owner, attr, value)
+        _fill(message, "", out)
     return out
 
 
-def _walk(message: Any, prefix: str) -> Iterator[tuple[str, type, str, Any]]:
+def _fill(message: Any, prefix: str, out: dict[str, Any]) -> None:
     owner = type(message)
     for attr in _names(owner):
         value = getattr(message, attr)
-        name = prefix + attr
-        if type(value) is tuple:
+        kind = type(value)
+        if kind is int or kind is bool or value is None:
+            out[prefix + attr] = value
+        elif kind is tuple:
             for index, item in enumerate(value):
-                yield f"{name}_{index}", owner, attr, item
-        elif _is_message(value):
-            yield from _walk(value, name + ".")
+                out[f"{prefix}{attr}_{index}"] = readable(owner, attr, item)
+        elif hasattr(kind, "__dataclass_fields__"):
+            _fill(value, f"{prefix}{attr}.", out)
         else:
-            yield name, owner, attr, value
+            out[prefix + attr] = readable(owner, attr, value)
 
 
 def format_message(message: Any) -> str:

@@ -178,7 +178,11 @@ def _json_safe(value: Any) -> Any:
 def _jsonl_writer(out: TextIO, clock: _Clock) -> Writer:
     def write(record: Record) -> None:
         row = _row(record, clock)
-        out.write(json.dumps({k: _json_safe(v) for k, v in row.items()}) + "\n")
+        try:
+            text = json.dumps(row, allow_nan=False)
+        except ValueError:  # a NaN or an infinity, which JSON has not
+            text = json.dumps({k: _json_safe(v) for k, v in row.items()})
+        out.write(text + "\n")
 
     return write, _nothing
 
