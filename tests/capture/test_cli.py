@@ -158,3 +158,8 @@ def test_jsonl_non_finite_floats_are_strings() -> None:
         for line in run("decode", "-", "--output", "jsonl", stdin=stdin).stdout.splitlines()
     ]
     assert [row["value"] for row in rows] == ["nan", "inf"]
+
+
+def test_version() -> None:
+    result = run("--version")
+    assert (result.returncode, result.stdout, result.stderr) == (0, "veronte4x 0.1.0\n", "")

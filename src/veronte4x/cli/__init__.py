@@ -18,7 +18,6 @@ import os
 import sys
 from collections.abc import Sequence
 
-from veronte4x import __version__
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli import decode, replay, stats
@@ -70,8 +69,21 @@ def _parser() -> argparse.ArgumentParser:
         prog="veronte4x",
         description="Decode Veronte 4x and Vertiq DroneCAN traffic from CAN captures.",
     )
-    parser.add_argument("--version", action="version", version=f"veronte4x {__version__}")
+    parser.add_argument("--version", action=_Version, help="show the version and exit")
     commands = parser.add_subparsers(required=True, metavar="COMMAND")
     for command in COMMANDS:
         command.add_parser(commands)
     return parser
+
+
+class _Version(argparse.Action):
+    """``--version``, which looks the version up only when asked (it reads package metadata)."""
+
+    def __init__(self, option_strings: Sequence[str], dest: str, help: str | None = None) -> None:
+        super().__init__(option_strings, dest, nargs=0, help=help)
+
+    def __call__(self, parser: argparse.ArgumentParser, *_: object) -> None:
+        from veronte4x import __version__
+
+        print(f"veronte4x {__version__}")
+        parser.exit()
