@@ -22,7 +22,7 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
-from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_text, resolve
+from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_lines, resolve
 from veronte4x.capture.stats import Stats
 
 __all__ = [
@@ -68,7 +68,7 @@ def read(
 
 
 def _decode_text(decoder: CaptureDecoder, source: Source, channel: str | None) -> Iterator[Record]:
-    with open_text(source) as lines:
+    with open_lines(source) as lines:
         try:
             yield from decoder.decode_candump(lines, channel)
         except Truncated as cut:

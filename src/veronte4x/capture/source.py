@@ -147,10 +147,11 @@ class Truncated(SourceError):
 
 
 @contextmanager
-def open_text(source: Source) -> Iterator[Iterator[str]]:
-    """Open candump text for reading as lines; bytes that are not UTF-8 are replaced.
+def open_text(source: Source) -> Iterator[IO[str]]:
+    """Open candump text for reading; bytes that are not UTF-8 are replaced.
 
-    Iterating over gzip text that ends early raises `Truncated` after its last whole line.
+    Reading gzip text that ends early raises ``EOFError`` (or ``gzip.BadGzipFile``);
+    `open_lines` turns that into `Truncated`.
     """
     if source.is_stdin:
         stream = io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
@@ -159,12 +160,17 @@ def open_text(source: Source) -> Iterator[Iterator[str]]:
         finally:
             stream.detach()
         return
-    if not source.gzipped:
-        with open(source.path, encoding="utf-8", errors="replace") as lines:
-            yield lines
-        return
-    with gzip.open(source.path, "rt", encoding="utf-8", errors="replace") as lines:
-        yield _until_truncated(lines, source.path)
+    opener = gzip.open if source.gzipped else open
+    with opener(source.path, "rt", encoding="utf-8", errors="replace") as text:
+        yield text
+
+
+@contextmanager
+def open_lines(source: Source) -> Iterator[Iterator[str]]:
+    """Open candump text as lines; gzip text that ends early raises `Truncated` after its
+    last whole line."""
+    with open_text(source) as text:
+        yield _until_truncated(text, source.path) if source.gzipped else text
 
 
 def _until_truncated(lines: IO[str], path: str) -> Iterator[str]:
@@ -200,7 +206,7 @@ def open_frames(
 def _candump_frames(source: Source, channel: str | None) -> Iterator[Frame | BadLine]:
     from veronte4x.capture.readers.candump import parse_candump
 
-    with open_text(source) as lines:
+    with open_lines(source) as lines:
         try:
             yield from parse_candump(lines, channel)
         except Truncated as cut:
