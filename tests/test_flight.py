@@ -158,3 +158,16 @@ def test_replay_times_iso_or_relative(flight: Path) -> None:
     assert relative.splitlines()[0] == "0.000000  mode        boot: Idle, checking the system"
     switch = next(line for line in relative.splitlines() if "switch      AP2 -> AP3" in line)
     assert switch.startswith("15.08")  # AP2 falls silent at 15 s
+
+
+def test_tables_example(flight: Path, tmp_path: Path) -> None:
+    plot = tmp_path / "tables.png"
+    result = subprocess.run(
+        [sys.executable, str(EXAMPLES / "tables.py"), str(flight), str(plot)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "ESC node 20, 5-15 s from the start: 100 rows" in result.stdout
+    assert "AP3" in result.stdout.split("Selected autopilot changes")[1]
+    assert plot.stat().st_size > 10_000

@@ -15,7 +15,7 @@ from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
-from veronte4x.dronecan import Reassembler
+from veronte4x.dronecan import ProblemReport, Reassembler
 from veronte4x.dronecan.reassembler import Problem
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
@@ -147,18 +147,8 @@ class CaptureDecoder:
         transfer = reassembler.feed(frame.can_id, frame.data, stamp)
         new = reassembler.reported - before
         if new:
-            reports = list(reassembler.problems)[-new:]
-            for report in reports:
-                if report.problem is Problem.UNKNOWN_TYPE:
-                    yield Record(report.timestamp, frame.channel, report.can_id, Role.DRONECAN,
-                                 None, report.can_id & 0x7F or None, None, None,
-                                 foreign_data_type(report.can_id), report.data)  # fmt: skip
-                    continue
-                kind = report.problem.name.lower().replace("_", " ")
-                detail = f"{report.problem.value} {report.detail}"
-                yield Record(report.timestamp, frame.channel, report.can_id, Role.DRONECAN,
-                             None, report.can_id & 0x7F or None, None, kind, detail,
-                             report.data)  # fmt: skip
+            for report in list(reassembler.problems)[-new:]:
+                yield problem_record(report, frame.channel)
         if transfer is not None:
             yield _new(
                 Record,
@@ -196,6 +186,19 @@ class CaptureDecoder:
                           b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
+
+
+def problem_record(report: ProblemReport, channel: str) -> Record:
+    """The record of a DroneCAN reassembly problem on a channel; a frame of a data type
+    with no codec is undecoded traffic (error None, `foreign_data_type` as its detail)."""
+    if report.problem is Problem.UNKNOWN_TYPE:
+        return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                      report.can_id & 0x7F or None, None, None, foreign_data_type(report.can_id),
+                      report.data)  # fmt: skip
+    kind = report.problem.name.lower().replace("_", " ")
+    detail = f"{report.problem.value} {report.detail}"
+    return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                  report.can_id & 0x7F or None, None, kind, detail, report.data)  # fmt: skip
 
 
 def foreign_id(can_id: int, extended: bool) -> str:
