@@ -171,3 +171,10 @@ def test_ctrl_c_during_a_file(tmp_path: Path, command: str) -> None:
     assert result.returncode == 130
     [line] = result.stderr.decode().splitlines()
     assert line.startswith("veronte4x: interrupted")
+
+
+def test_a_pipe_without_a_suffix_is_read_whole() -> None:
+    """/dev/stdin (like a shell's <(candump -L can0)) is not sniffed: nothing is lost."""
+    result = run("decode", "/dev/stdin", stdin=LINES.encode())
+    assert result.returncode == 0
+    assert len(result.stdout.splitlines()) == 2000

@@ -70,7 +70,8 @@ def resolve(path: str | os.PathLike[str]) -> Source:
     candump text (``.log``, ``.txt``, ``.candump``, gzipped or not, or ``-`` for standard
     input) is parsed natively; ``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4`` and ``.trc`` go
     through python-can's ``LogReader``. A file with any other suffix, or none, is read as
-    candump text if its first lines are candump frames.
+    candump text if its first lines are candump frames; a pipe without a suffix is read as
+    candump text.
 
     Raises:
         SourceError: The path is a directory, or a file in no format veronte4x knows.
@@ -88,6 +89,10 @@ def resolve(path: str | os.PathLike[str]) -> Source:
         return Source(name, Format.CANDUMP, gzipped)
     if stem.endswith(PYTHON_CAN_SUFFIXES):
         return Source(name, Format.PYTHON_CAN, gzipped)
+    if not os.path.isfile(name):
+        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is candump text,
+        # the one format that streams. A missing file fails when it is opened.
+        return Source(name, Format.CANDUMP, gzipped)
     with open(name, "rb") as file:
         head = file.read(_SNIFF_BYTES)
     gzipped = head.startswith(_GZIP_MAGIC)
