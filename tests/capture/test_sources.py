@@ -49,6 +49,9 @@ def test_resolve_by_suffix_then_by_content(tmp_path: Path) -> None:
     other.write_text("# not a capture\n")
     with pytest.raises(SourceError, match="not candump text"):
         capture.read(other)
+    garbled = tmp_path / "garbled"
+    garbled.write_text("garbage first\n" + EXAMPLE.read_text())
+    assert resolve(garbled).format is Format.CANDUMP  # one bad line first is still candump
     empty = tmp_path / "empty"
     empty.write_bytes(b"")
     with pytest.raises(SourceError, match="not candump text"):

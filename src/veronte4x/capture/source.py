@@ -123,14 +123,16 @@ def _gunzip_head(name: str) -> bytes:
 
 
 def _is_candump(head: bytes) -> bool:
-    """Whether the first complete lines of a file are all candump frames (one at least)."""
+    """Whether most of the first complete lines of a file are candump frames (a capture may
+    start with a bad line; other text or binary data has none or few)."""
     from veronte4x.capture.readers.candump import parse_line
 
     lines = head.decode("utf-8", "replace").splitlines()
     if len(head) == _SNIFF_BYTES and len(lines) > 1:
         lines.pop()  # cut by the sniff, not by the file
     numbered = [(n, line) for n, line in enumerate(lines, 1) if line.strip()][:_SNIFF_LINES]
-    return bool(numbered) and all(isinstance(parse_line(t, n), Frame) for n, t in numbered)
+    frames = sum(isinstance(parse_line(text, n), Frame) for n, text in numbered)
+    return frames * 2 > len(numbered)
 
 
 class Truncated(SourceError):
