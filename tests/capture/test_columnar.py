@@ -183,5 +183,14 @@ def test_missing_extra_names_it() -> None:
         [sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, check=True
     )
     assert done.stdout.strip() == (
-        "decoding into Arrow tables needs pyarrow: pip install 'veronte4x[arrow]'"
+        "decoding into Arrow tables needs the 'pyarrow' package: pip install 'veronte4x[arrow]'"
     )
+
+
+def test_truncated_gzip_ends_as_the_per_frame_path_ends(flight: Path, tmp_path: Path) -> None:
+    packed = gzip.compress(flight.read_bytes())
+    cut = tmp_path / "cut.log.gz"
+    cut.write_bytes(packed[: len(packed) // 2])
+    expected = capture.tables_from_records(capture.read(cut))
+    assert rows(expected["errors"])[-1]["error"] == "truncated"
+    assert_same_tables(capture.read_tables(cut), expected)

@@ -25,6 +25,7 @@ from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_lines, resolve
 from veronte4x.capture.stats import Stats
+from veronte4x.extras import require
 
 if TYPE_CHECKING:
     import pyarrow
@@ -114,8 +115,9 @@ def read_tables(
         channel: Keep only this interface's frames.
 
     Raises:
-        ImportError: The ``arrow`` extra (or the ``can`` extra, for formats other than
-            candump text and MF4) is not installed; the message names it.
+        SourceError: The path is a directory or a file in no format veronte4x knows.
+        MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
+            than candump text and MF4) is not installed; the message names it.
     """
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(source, bus_map, channel)
     return tables
@@ -133,10 +135,8 @@ def tables_from_records(
 
 
 def _columnar() -> Any:
-    try:
-        from veronte4x.capture import columnar
-    except ModuleNotFoundError as missing:
-        raise ImportError(
-            f"decoding into Arrow tables needs {missing.name}: pip install 'veronte4x[arrow]'"
-        ) from None
+    for module in ("numpy", "pyarrow"):
+        require(module, "arrow", "decoding into Arrow tables")
+    from veronte4x.capture import columnar
+
     return columnar
