@@ -60,6 +60,8 @@ def read(
             (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+        relative_time: Timestamps in seconds from each capture's first timestamped frame,
+            as ``candump -t z`` shows them.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows
@@ -94,6 +96,7 @@ def read_tables(
     source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
     bus_map: BusMap | None = None,
     channel: str | None = None,
+    relative_time: bool = False,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -104,8 +107,9 @@ def read_tables(
     ``data``) and ``unknown`` (undecoded traffic), each only when the capture has such
     rows. Every table starts with ``timestamp``, ``channel``, ``can_id`` and ``sender``
     (DroneCAN tables then ``node_id``, and ``destination_node_id`` for services), then one
-    column per message field, with an Arrow type fixed by the layout. Rows keep capture
-    order; several files are decoded one by one and their tables joined in the order given.
+    column per message field, with an Arrow type fixed by the layout (a field with a
+    physical unit carries it in its metadata: ``unit`` ``V``, ``A``, ``K``, ...). Rows keep
+    capture order; several files are decoded one by one and their tables joined in the order given.
     Needs the ``arrow`` extra.
 
     Args:
@@ -113,13 +117,17 @@ def read_tables(
             standard input) or a list of them.
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+        relative_time: Timestamps in seconds from each capture's first timestamped frame,
+            as ``candump -t z`` shows them.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
         MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
             than candump text and MF4) is not installed; the message names it.
     """
-    tables: dict[str, pyarrow.Table] = _columnar().read_tables(source, bus_map, channel)
+    tables: dict[str, pyarrow.Table] = _columnar().read_tables(
+        source, bus_map, channel, relative_time
+    )
     return tables
 
 
