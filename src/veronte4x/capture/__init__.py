@@ -60,8 +60,6 @@ def read(
             (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
-        relative_time: Timestamps in seconds from each capture's first timestamped frame,
-            as ``candump -t z`` shows them.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows
@@ -117,6 +115,8 @@ def read_tables(
             standard input) or a list of them.
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+        relative_time: Timestamps in seconds from each capture's first timestamped frame,
+            as ``candump -t z`` shows them.
         relative_time: Timestamps in seconds from each capture's first timestamped frame,
             as ``candump -t z`` shows them.
 
