@@ -107,16 +107,14 @@ def read_tables(
     (DroneCAN tables then ``node_id``, and ``destination_node_id`` for services), then one
     column per message field, with an Arrow type fixed by the layout (a field with a
     physical unit carries it in its metadata: ``unit`` ``V``, ``A``, ``K``, ...). Rows keep
-    capture order; several files are decoded one by one and their tables joined in the order given.
-    Needs the ``arrow`` extra.
+    capture order; several files are decoded one by one and their tables joined in the
+    order given. Needs the ``arrow`` extra.
 
     Args:
         source: A capture file (any format `read` takes, ``-`` for candump text on
             standard input) or a list of them.
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
-        relative_time: Timestamps in seconds from each capture's first timestamped frame,
-            as ``candump -t z`` shows them.
         relative_time: Timestamps in seconds from each capture's first timestamped frame,
             as ``candump -t z`` shows them.
 
