@@ -122,6 +122,17 @@ def read_tables(
         SourceError: The path is a directory or a file in no format veronte4x knows.
         MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
             than candump text and MF4) is not installed; the message names it.
+
+    Examples:
+        >>> from veronte4x import capture
+        >>> tables = capture.read_tables("examples/capture.log")
+        >>> scores = tables["Score"]
+        >>> scores.column_names
+        ['timestamp', 'channel', 'can_id', 'sender', 'autopilot', 'score']
+        >>> scores.column("sender")[0].as_py(), scores.column("score").type
+        ('arbiter', DataType(float))
+        >>> tables["errors"].column("error").to_pylist()
+        ['unknown command']
     """
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time
