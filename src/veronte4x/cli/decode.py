@@ -15,7 +15,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_OK
-from veronte4x.cli.options import add_capture_options
+from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 
 
 def add_parser(commands: Any) -> None:
@@ -30,16 +30,17 @@ def add_parser(commands: Any) -> None:
         help="bad frames: skip and count them (default), keep them as records, or stop",
     )
     add_capture_options(parser)
+    add_live_options(parser)
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
-    records = counts.counted(capture.read(args.file, bus_map, args.channel))
+    records = counts.counted(open_records(args, bus_map))
     out = sys.stdout
     write = {"text": _text_writer, "jsonl": _jsonl_writer, "csv": _csv_writer}[args.output](out)
-    live = args.file == "-"
+    flush = args.file == "-" or live(args)
     status = EXIT_OK
     for record in records:
         if record.error is not None:
@@ -50,7 +51,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                 status = EXIT_BAD_FRAME
                 break
         write(record)
-        if live:
+        if flush:
             out.flush()
     errors = sum(counts.errors.values())
     print(f"veronte4x: {counts.records} records, {errors} bad ({args.on_error})", file=sys.stderr)

@@ -8,9 +8,8 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
-from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_OK
-from veronte4x.cli.options import add_capture_options
+from veronte4x.cli.options import add_capture_options, add_live_options, open_frame_source
 
 
 def add_parser(commands: Any) -> None:
@@ -18,9 +17,10 @@ def add_parser(commands: Any) -> None:
     parser = commands.add_parser(
         "replay", help="run the arbiter model on a capture; explain switches and disagreements"
     )
-    parser.add_argument("file", help="capture file, or - for stdin")
+    parser.add_argument("file", nargs="?", help="capture file, or - for stdin")
     parser.add_argument("--config", metavar="FILE", help="TOML arbiter configuration")
     add_capture_options(parser)
+    add_live_options(parser)
     parser.set_defaults(run=run)
 
 
@@ -39,7 +39,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         )
     frames = (
         (frame.timestamp, frame.can_id, frame.data)
-        for frame in open_frames(args.file, args.channel)
+        for frame in open_frame_source(args)
         if isinstance(frame, Frame)
         and frame.timestamp is not None
         and not (frame.error or frame.remote or frame.fd)

@@ -394,7 +394,9 @@ class BusClient:
         finally:
             self.protocol.files.remove(name)
         if last.phase is not Phase.DONE:
-            raise FirmwareUpdateError(last.error or f"node {node_id}: update failed")
+            raise FirmwareUpdateError(
+                last.error or f"node {node_id}: update failed", timed_out=last.timed_out
+            )
         info = self.node_info(node_id)
         version = info.software_version
         expected = crc64we(image)

@@ -40,4 +40,12 @@ class ParameterError(ClientError):
 
 
 class FirmwareUpdateError(ClientError):
-    """A firmware update that did not complete; the node is left in its bootloader or app."""
+    """A firmware update that did not complete, or whose result the node contradicts.
+
+    Attributes:
+        timed_out: The node fell silent (rather than refusing or reporting another CRC).
+    """
+
+    def __init__(self, message: str, *, timed_out: bool = False) -> None:
+        super().__init__(message)
+        self.timed_out = timed_out

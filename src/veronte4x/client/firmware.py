@@ -54,6 +54,7 @@ class UpdateProgress:
         sent: Bytes of the image sent so far (the end of the furthest read).
         size: Bytes in the image.
         error: Why it failed, one line, when `phase` is FAILED.
+        timed_out: It failed because the node fell silent (not because it refused).
     """
 
     node_id: int
@@ -61,6 +62,7 @@ class UpdateProgress:
     sent: int
     size: int
     error: str | None = None
+    timed_out: bool = False
 
     @property
     def finished(self) -> bool:
@@ -85,8 +87,9 @@ class FirmwareUpdate:
         >>> update = FirmwareUpdate(21, b"fw.bin", 300, now=0.0)
         >>> update.accepted(dronecan.BeginFirmwareUpdateResponse(0), 0.1)
         >>> update.served(21, FileRead(b"fw.bin", 0, 256, 300), 0.2)
-        >>> update.poll(0.3)
-        UpdateProgress(node_id=21, phase=<Phase.READING: 'reading'>, sent=256, size=300, error=None)
+        >>> progress = update.poll(0.3)
+        >>> progress.phase, progress.sent, progress.size
+        (<Phase.READING: 'reading'>, 256, 300)
         >>> update.poll(6.0).error
         'node 21 stopped reading the image at byte 256 of 300 (nothing for 5 s)'
     """
@@ -112,16 +115,20 @@ class FirmwareUpdate:
         self._sent = 0
         self._since = now
         self._error: str | None = None
+        self._timed_out = False
 
     @property
     def progress(self) -> UpdateProgress:
         """Where the update stands."""
-        return UpdateProgress(self.node_id, self._phase, self._sent, self.size, self._error)
+        return UpdateProgress(
+            self.node_id, self._phase, self._sent, self.size, self._error, self._timed_out
+        )
 
-    def _fail(self, error: str) -> None:
+    def _fail(self, error: str, timed_out: bool = False) -> None:
         if not self.progress.finished:
             self._phase = Phase.FAILED
             self._error = error
+            self._timed_out = timed_out
 
     def accepted(self, response: BeginFirmwareUpdateResponse, now: float) -> None:
         """The node answered BeginFirmwareUpdate."""
@@ -145,7 +152,7 @@ class FirmwareUpdate:
 
     def no_answer(self, error: str) -> None:
         """BeginFirmwareUpdate got no answer (``error`` says so)."""
-        self._fail(error)
+        self._fail(error, timed_out=True)
 
     def served(self, node_id: int, read: FileRead, now: float) -> None:
         """The file server answered a read of ``node_id``."""
@@ -176,16 +183,19 @@ class FirmwareUpdate:
         if self._phase is Phase.WAITING and waited >= self.start_timeout:
             self._fail(
                 f"node {self.node_id} accepted the update but did not read the image "
-                f"within {self.start_timeout:g} s"
+                f"within {self.start_timeout:g} s",
+                timed_out=True,
             )
         elif self._phase is Phase.READING and waited >= self.read_timeout:
             self._fail(
                 f"node {self.node_id} stopped reading the image at byte {self._sent} of "
-                f"{self.size} (nothing for {self.read_timeout:g} s)"
+                f"{self.size} (nothing for {self.read_timeout:g} s)",
+                timed_out=True,
             )
         elif self._phase is Phase.RESTARTING and waited >= self.restart_timeout:
             self._fail(
                 f"node {self.node_id} read the whole image but did not report running "
-                f"within {self.restart_timeout:g} s"
+                f"within {self.restart_timeout:g} s",
+                timed_out=True,
             )
         return self.progress
