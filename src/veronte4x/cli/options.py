@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import threading
 from collections.abc import Iterator
 from typing import Any
 
@@ -98,8 +99,12 @@ def _option_value(text: str) -> object:
     return text
 
 
-def open_records(args: argparse.Namespace, bus_map: BusMap) -> Iterator[Record]:
+def open_records(
+    args: argparse.Namespace, bus_map: BusMap, stop: threading.Event | None = None
+) -> Iterator[Record]:
     """The records of the command's source: the capture file, or the live bus if one is set.
+
+    A live bus is read until its ``--duration`` ends, Ctrl-C or ``stop`` is set.
 
     Raises:
         SourceError: Both a file and a bus, or neither.
@@ -109,10 +114,12 @@ def open_records(args: argparse.Namespace, bus_map: BusMap) -> Iterator[Record]:
         if args.file is None:
             raise SourceError("give a capture file, or a live bus with --interface")
         return capture.read(args.file, bus_map, args.channel)
-    return CaptureDecoder(bus_map).decode(open_frame_source(args))
+    return CaptureDecoder(bus_map).decode(open_frame_source(args, stop))
 
 
-def open_frame_source(args: argparse.Namespace) -> Iterator[Frame | BadLine]:
+def open_frame_source(
+    args: argparse.Namespace, stop: threading.Event | None = None
+) -> Iterator[Frame | BadLine]:
     """The frames of the command's source: the capture file, or the live bus if one is set.
 
     Raises:
@@ -124,15 +131,17 @@ def open_frame_source(args: argparse.Namespace) -> Iterator[Frame | BadLine]:
         return open_frames(args.file, args.channel)
     if args.file not in (None, "-"):
         raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
-    return _live_frames(args)
+    return _live_frames(args, stop)
 
 
-def _live_frames(args: argparse.Namespace) -> Iterator[Frame | BadLine]:
+def _live_frames(
+    args: argparse.Namespace, stop: threading.Event | None
+) -> Iterator[Frame | BadLine]:
     from veronte4x.canbus import open_bus
     from veronte4x.capture.readers.live import read_bus
 
     bus = open_bus(**bus_settings(args))
     try:
-        yield from read_bus(bus, args.channel or args.interface, args.duration)
+        yield from read_bus(bus, args.channel or args.interface, args.duration, stop=stop)
     finally:
         bus.shutdown()

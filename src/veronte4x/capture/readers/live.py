@@ -6,6 +6,7 @@ Needs the ``can`` extra (``pip install "veronte4x[can]"``). The bus is opened by
 
 from __future__ import annotations
 
+import threading
 import time
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -22,18 +23,21 @@ def read_bus(
     channel: str | None = None,
     duration: float | None = None,
     clock: Callable[[], float] = time.monotonic,
+    stop: threading.Event | None = None,
 ) -> Iterator[Frame]:
-    """Yield the frames received on ``bus`` until ``duration`` seconds pass or Ctrl-C.
+    """Yield the frames received on ``bus`` until ``duration`` seconds pass, Ctrl-C or
+    ``stop`` is set.
 
     Args:
         bus: An open python-can bus.
         channel: Channel name put in frames that carry none (the ``virtual`` interface's).
         duration: Seconds of ``clock`` to read, or None for no limit.
         clock: Measures ``duration``.
+        stop: Set by another thread to end the stream.
     """
     end = None if duration is None else clock() + duration
     try:
-        while True:
+        while stop is None or not stop.is_set():
             wait = POLL
             if end is not None:
                 wait = min(wait, end - clock())
