@@ -17,10 +17,11 @@ from collections.abc import Sequence
 from veronte4x import __version__
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import decode, esc, monitor, replay, simulate, stats
+from veronte4x.cli import decode, esc, monitor, plot, replay, simulate, stats
+from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 
-COMMANDS = (decode, stats, replay, monitor, esc, simulate)
+COMMANDS = (decode, stats, replay, monitor, plot, list_command, esc, simulate)
 """The command modules, in the order ``--help`` lists them."""
 
 
