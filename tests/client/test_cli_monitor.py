@@ -96,3 +96,22 @@ def test_interactive_in_a_terminal() -> None:
             assert "veronte4x: " in screen and " records, 0 bad" in screen
         finally:
             subprocess.run([*tmux, "kill-server"], check=False)
+
+
+def test_stats_and_replay_read_a_live_bus() -> None:
+    port = free_port()
+    with simulator(port, "--nodes", "21"):
+        stats = veronte4x("stats", *bus_args(port), "--duration", "1.2")
+        replay = veronte4x("replay", *bus_args(port), "--duration", "0.3")
+    assert stats.returncode == 0, stats.stderr
+    assert "NodeStatus" in stats.stdout and "EscStatus" in stats.stdout
+    assert replay.returncode == 0, replay.stderr
+    assert replay.stderr == "veronte4x: 0 decisions, 0 disagreements, 0 bad frames\n"
+
+
+def test_live_bus_and_a_file_is_a_usage_error() -> None:
+    result = veronte4x("stats", str(CAPTURE), *bus_args(free_port()))
+    assert result.returncode == 2
+    assert result.stderr == (
+        f"veronte4x: give a capture file ({CAPTURE}) or --interface, not both\n"
+    )

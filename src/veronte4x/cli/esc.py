@@ -193,7 +193,7 @@ def _print_json(data: Any) -> None:
 # -- nodes and info ------------------------------------------------------------------------
 
 
-def _entry(entry: NodeEntry) -> dict[str, Any]:
+def _entry(entry: NodeEntry, now: float) -> dict[str, Any]:
     return {
         "node_id": entry.node_id,
         "health": _name(entry.health),
@@ -201,6 +201,7 @@ def _entry(entry: NodeEntry) -> dict[str, Any]:
         "sub_mode": entry.sub_mode,
         "vendor_specific_status_code": entry.vendor_specific_status_code,
         "uptime_sec": entry.uptime_sec,
+        "last_seen_sec_ago": round(now - entry.last_seen, 3),
     }
 
 
@@ -210,8 +211,9 @@ def _name(value: Any) -> Any:
 
 def _nodes(client: BusClient, args: argparse.Namespace) -> int:
     found = client.discover(args.timeout)
+    now = client.clock()
     if args.json:
-        _print_json([_entry(e) for e in found])
+        _print_json([_entry(e, now) for e in found])
     if not found:
         _error(
             f"no node on the bus within {args.timeout:g} s; "
@@ -219,11 +221,12 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
         )
         return EXIT_NO_ANSWER
     if not args.json:
-        print(f"{'node':>4}  {'health':<8}  {'mode':<15}  {'uptime':>9}  vendor")
+        print(f"{'node':>4}  {'health':<8}  {'mode':<15}  {'uptime':>9}  {'seen':>10}  vendor")
         for e in found:
             print(
                 f"{e.node_id:>4}  {_name(e.health):<8}  {_name(e.mode):<15}  "
-                f"{e.uptime_sec:>7} s  {e.vendor_specific_status_code:#06x}"
+                f"{e.uptime_sec:>7} s  {now - e.last_seen:>5.1f} s ago  "
+                f"{e.vendor_specific_status_code:#06x}"
             )
     return EXIT_OK
 

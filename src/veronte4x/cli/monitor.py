@@ -84,8 +84,19 @@ class _Reader:
             return render_text(self.state, text_filter)
 
 
+def _need_rich() -> None:
+    try:
+        import rich  # noqa: F401
+    except ImportError:
+        raise ImportError(
+            "monitor on a terminal needs rich: pip install 'veronte4x[monitor]'"
+        ) from None
+
+
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
+    if sys.stdout.isatty():
+        _need_rich()
     state = MonitorState()
     reader = _Reader(args, bus_map, state)
     reader.start()

@@ -20,6 +20,9 @@ DEFAULT_RATE = 50.0
 DEFAULT_WATCHDOG = 0.5
 """Seconds without a refresh after which the throttle drops to zero."""
 
+EPSILON = 1e-9
+"""Seconds of tolerance when comparing a time with a due time (float rounding)."""
+
 
 class Commander:
     """When to send which RawCommand, from throttles set by the caller and the time.
@@ -52,7 +55,8 @@ class Commander:
         self.watchdog = watchdog
         self._cmd: tuple[int, ...] = ()
         self._refreshed: float | None = None
-        self._next: float | None = None
+        self._anchor: float | None = None
+        self._count = 0
         self.tripped = False
         """Whether the watchdog has zeroed the throttle since the last `set`."""
 
@@ -65,24 +69,34 @@ class Commander:
         self._cmd = vertiq.raw_command(throttles).cmd
         self._refreshed = now
         self.tripped = False
-        if self._next is None:
-            self._next = now
+        if self._anchor is None:
+            self._anchor, self._count = now, 0
 
     def stop(self) -> RawCommand:
         """Zero every throttle now; the command to send at once. `set` starts again."""
         self._refreshed = None
-        self._next = None
+        self._anchor = None
         return RawCommand((0,) * len(self._cmd))
 
     def poll(self, now: float) -> RawCommand | None:
-        """The command to send at ``now``, or None if none is due."""
-        if self._next is None or now < self._next:
+        """The command to send at ``now``, or None if none is due.
+
+        Due times are ``first set + k * period``, counted rather than summed so that they do
+        not drift; a poll more than a period late sends once and restarts the grid.
+        """
+        due = self.next_time()
+        if due is None or now + EPSILON < due:
             return None
-        self._next = max(self._next + self.period, now)
+        self._count += 1
+        following = self.next_time()
+        if following is not None and following <= now + EPSILON:
+            self._anchor, self._count = now, 1
         if self._refreshed is not None and now - self._refreshed >= self.watchdog:
             self.tripped = True
         return RawCommand((0,) * len(self._cmd) if self.tripped else self._cmd)
 
     def next_time(self) -> float | None:
         """When `poll` next has a command, or None when stopped."""
-        return self._next
+        if self._anchor is None:
+            return None
+        return self._anchor + self._count * self.period

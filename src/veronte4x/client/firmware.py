@@ -135,7 +135,8 @@ class FirmwareUpdate:
         if self._phase is not Phase.STARTING:
             return
         if response.error != FirmwareUpdateError.OK:
-            name = getattr(response.error, "name", str(response.error))
+            known = {int(e): e.name for e in FirmwareUpdateError}
+            name = known.get(int(response.error), f"error {int(response.error)}")
             detail = response.optional_error_message.decode("utf-8", "replace")
             self._fail(
                 f"node {self.node_id} refused the update: {name}"
