@@ -68,6 +68,7 @@ __all__ = [
     "DecodingListener",
     "decode_can_message",
     "frame_to_message",
+    "is_dronecan_frame",
     "open_bus",
     "to_can_message",
     "to_can_messages",
@@ -123,6 +124,17 @@ def to_can_message(
         is_extended_id=bus_map.extended,
         data=bus_map.codec().encode(message),
         channel=channel,
+    )
+
+
+def is_dronecan_frame(message: can.Message) -> bool:
+    """Whether a bus message can be a DroneCAN frame: extended ID, data, classic CAN."""
+    return (
+        message.is_extended_id
+        and not message.is_remote_frame
+        and not message.is_error_frame
+        and not message.is_fd
+        and 0 < message.dlc <= 8
     )
 
 

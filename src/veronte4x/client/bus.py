@@ -15,7 +15,7 @@ from typing import Any
 
 import can
 
-from veronte4x.canbus import frame_to_message
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.errors import (
     FirmwareUpdateError,
@@ -80,16 +80,6 @@ MAX_PARAMETERS = 8192
 _RAW_COMMAND_ID = BY_CLASS[RawCommand].data_type.data_type_id
 
 _VALUES = (Empty, IntegerValue, RealValue, BooleanValue, StringValue)
-
-
-def _is_dronecan(message: can.Message) -> bool:
-    return (
-        message.is_extended_id
-        and not message.is_remote_frame
-        and not message.is_error_frame
-        and not message.is_fd
-        and 0 < message.dlc <= 8
-    )
 
 
 class BusClient:
@@ -168,7 +158,7 @@ class BusClient:
         events: list[Event] = []
         message = self.bus.recv(timeout=max_wait)
         while message is not None:
-            if _is_dronecan(message):
+            if is_dronecan_frame(message):
                 events += self.protocol.receive(
                     message.arbitration_id, bytes(message.data), self.clock()
                 )

@@ -16,21 +16,14 @@ from collections.abc import Callable, Sequence
 
 import can
 
-from veronte4x.canbus import frame_to_message
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.simulator.esc import SimulatedEsc
 
 __all__ = ["EscBus", "EscNode", "to_message", "wanted"]
 
 
-def wanted(message: can.Message) -> bool:
-    """Whether a bus message can be a DroneCAN frame: extended ID, data, classic CAN."""
-    return (
-        message.is_extended_id
-        and not message.is_remote_frame
-        and not message.is_error_frame
-        and not message.is_fd
-        and 0 < message.dlc <= 8
-    )
+wanted = is_dronecan_frame
+"""Whether a bus message can be a DroneCAN frame (`veronte4x.canbus.is_dronecan_frame`)."""
 
 
 to_message = frame_to_message
