@@ -8,6 +8,10 @@ to be left safe (still answering, motors stopped).
 from __future__ import annotations
 
 import json
+import signal
+import subprocess
+import sys
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -148,3 +152,31 @@ def test_bus_that_cannot_be_opened() -> None:
         "veronte4x: cannot open the CAN bus (interface no_such_interface, channel x): "
     )
     assert len(result.stderr.splitlines()) == 1
+
+
+def test_a_killed_spin_stops_the_motors(bus: list[str]) -> None:
+    spin = subprocess.Popen(
+        [sys.executable, "-m", "veronte4x", "esc", "spin", "21", "--throttle", "0.5",
+         "--duration", "30", "--yes", *bus],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )  # fmt: skip
+    time.sleep(1.5)
+    running = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
+    spin.send_signal(signal.SIGTERM)
+    _, stderr = spin.communicate(timeout=10)
+    assert spin.returncode == 130
+    assert stderr == "veronte4x: interrupted\n"
+    assert _duty(running.stdout, 21) and set(_duty(running.stdout, 21)) == {50}
+    stopped = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
+    assert _duty(stopped.stdout, 21) and set(_duty(stopped.stdout, 21)) == {0}
+
+
+def _duty(jsonl: str, node: int) -> list[int]:
+    """The duty cycles (power_rating_pct) node ``node`` reported in decoded JSON lines."""
+    return [
+        r["power_rating_pct"]
+        for r in map(json.loads, jsonl.splitlines())
+        if r["message"] == "EscStatus" and r["sender"] == f"node {node}"
+    ]

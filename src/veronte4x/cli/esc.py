@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import signal
 import sys
 import time
 from collections.abc import Callable
@@ -391,6 +392,10 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
 # -- spin -----------------------------------------------------------------------------------------
 
 
+def _interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
+
+
 def _spin(client: BusClient, args: argparse.Namespace) -> int:
     if not args.yes:
         _error("esc spin moves motors: add --yes to confirm that they are free to turn")
@@ -405,6 +410,7 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
             raise EncodeError("esc spin", "esc_index", plain(value), "an integer parameter")
         indices[node] = value.value
     setpoint = {index: args.throttle for index in indices.values()}
+    signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
     by_index = {index: node for node, index in indices.items()}
     rpm: dict[int, list[int]] = {node: [] for node in args.nodes}
     with client.command_stream(args.rate, args.watchdog) as stream:
