@@ -33,9 +33,9 @@ def test_nodes(bus: list[str]) -> None:
     result = veronte4x("esc", "nodes", *bus, "--json")
     assert result.returncode == 0, result.stderr
     nodes = json.loads(result.stdout)
-    assert [(n["node_id"], n["health"], n["mode"]) for n in nodes] == [
-        (21, "OK", "OPERATIONAL"),
-        (22, "OK", "OPERATIONAL"),
+    assert [(n["node_id"], n["name"], n["health"], n["mode"]) for n in nodes] == [
+        (21, "iq_motion.esc", "OK", "OPERATIONAL"),
+        (22, "iq_motion.esc", "OK", "OPERATIONAL"),
     ]
 
 

@@ -194,9 +194,10 @@ def _print_json(data: Any) -> None:
 # -- nodes and info ------------------------------------------------------------------------
 
 
-def _entry(entry: NodeEntry, now: float) -> dict[str, Any]:
+def _entry(entry: NodeEntry, now: float, name: str | None) -> dict[str, Any]:
     return {
         "node_id": entry.node_id,
+        "name": name,
         "health": _name(entry.health),
         "mode": _name(entry.mode),
         "sub_mode": entry.sub_mode,
@@ -213,8 +214,9 @@ def _name(value: Any) -> Any:
 def _nodes(client: BusClient, args: argparse.Namespace) -> int:
     found = client.discover(args.timeout)
     now = client.clock()
+    names = {e.node_id: _node_name(client, e.node_id) for e in found}
     if args.json:
-        _print_json([_entry(e, now) for e in found])
+        _print_json([_entry(e, now, names[e.node_id]) for e in found])
     if not found:
         _error(
             f"no node on the bus within {args.timeout:g} s; "
@@ -222,14 +224,26 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
         )
         return EXIT_NO_ANSWER
     if not args.json:
-        print(f"{'node':>4}  {'health':<8}  {'mode':<15}  {'uptime':>9}  {'seen':>10}  vendor")
+        width = max(len(n or "?") for n in names.values())
+        print(
+            f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  {'uptime':>9}  "
+            f"{'seen':>10}  vendor"
+        )
         for e in found:
             print(
-                f"{e.node_id:>4}  {_name(e.health):<8}  {_name(e.mode):<15}  "
-                f"{e.uptime_sec:>7} s  {now - e.last_seen:>5.1f} s ago  "
+                f"{e.node_id:>4}  {names[e.node_id] or '?':<{width}}  {_name(e.health):<8}  "
+                f"{_name(e.mode):<15}  {e.uptime_sec:>7} s  {now - e.last_seen:>5.1f} s ago  "
                 f"{e.vendor_specific_status_code:#06x}"
             )
     return EXIT_OK
+
+
+def _node_name(client: BusClient, node_id: int) -> str | None:
+    """The node's GetNodeInfo name, or None if it does not answer (as the GUI tool shows)."""
+    try:
+        return client.node_info(node_id).name.decode("utf-8", "replace")
+    except NoResponseError:
+        return None
 
 
 def _info_dict(node_id: int, info: GetNodeInfoResponse) -> dict[str, Any]:
