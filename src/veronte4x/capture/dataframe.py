@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import os
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
+from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.records import Record
 
 if TYPE_CHECKING:
@@ -49,16 +51,38 @@ def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
             out[name] = value
 
 
-def to_dataframe(records: Iterable[Record]) -> pandas.DataFrame:
+def to_dataframe(
+    source: Iterable[Record] | str | os.PathLike[str],
+    bus_map: BusMap | None = None,
+    channel: str | None = None,
+) -> pandas.DataFrame:
     """One row per record, the record's columns then every message field as a column.
 
-    Columns: ``timestamp``, ``channel``, ``can_id``, ``sender``, ``message`` (class name),
+    Given records (from `veronte4x.capture.read` or a live bus), columns are
+    ``timestamp``, ``channel``, ``can_id``, ``sender``, ``message`` (class name),
     ``error``, ``detail``, ``data`` (hex), then the fields of `fields`. A field column holds
     missing values where a row's message has no such field, with a nullable dtype that keeps
     its kind: ``Int64`` for integers, ``boolean`` for flags, ``float64`` for floats. Needs the
     ``pandas`` extra.
+
+    Given a path, the capture is decoded by the columnar engine (`read_tables`, the
+    ``arrow`` extra too) and the frame joins its tables in capture order: the same rows, with
+    the tables' column names and Arrow-backed dtypes (enums as categories of names,
+    RawCommand's ``cmd`` as a list); ``data`` is kept for errors only.
+
+    Args:
+        source: Records, or a capture file (``bus_map`` and ``channel`` apply to a file).
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
     """
     import pandas
+
+    if isinstance(source, (str, os.PathLike)):
+        from veronte4x.capture import _columnar
+
+        frame: pandas.DataFrame = _columnar().frame.dataframe(source, bus_map, channel)
+        return frame
+    records = source
 
     head: dict[str, list[Any]] = {name: [] for name in _HEAD_COLUMNS}
     columns: dict[str, list[Any]] = {}

@@ -15,7 +15,7 @@ from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
-from veronte4x.dronecan import Reassembler
+from veronte4x.dronecan import ProblemReport, Reassembler
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 _new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
@@ -149,13 +149,8 @@ class CaptureDecoder:
         transfer = reassembler.feed(frame.can_id, frame.data, stamp)
         new = reassembler.reported - before
         if new:
-            reports = list(reassembler.problems)[-new:]
-            for report in reports:
-                kind = report.problem.name.lower().replace("_", " ")
-                detail = f"{report.problem.value} {report.detail}"
-                yield Record(report.timestamp, frame.channel, report.can_id, Role.DRONECAN,
-                             None, report.can_id & 0x7F or None, None, kind, detail,
-                             report.data)  # fmt: skip
+            for report in list(reassembler.problems)[-new:]:
+                yield problem_record(report, frame.channel)
         if transfer is not None:
             yield _new(
                 Record,
@@ -190,3 +185,11 @@ class CaptureDecoder:
     def _bad_line(item: BadLine) -> Record:
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
+
+
+def problem_record(report: ProblemReport, channel: str) -> Record:
+    """The record of a DroneCAN reassembly problem on a channel."""
+    kind = report.problem.name.lower().replace("_", " ")
+    detail = f"{report.problem.value} {report.detail}"
+    return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                  report.can_id & 0x7F or None, None, kind, detail, report.data)  # fmt: skip

@@ -32,16 +32,19 @@ CAN_ERR_FLAG = 0x2000_0000
 _ID_MASK = 0x1FFF_FFFF
 
 
-def parse_candump(lines: Iterable[str], channel: str | None = None) -> Iterator[Frame | BadLine]:
+def parse_candump(
+    lines: Iterable[str], channel: str | None = None, first_line: int = 1
+) -> Iterator[Frame | BadLine]:
     """Parse candump lines into frames, yielding a `BadLine` for every line that is not one.
 
     Args:
         lines: Lines of text, with or without line breaks.
         channel: Keep only frames of this interface (None keeps all).
+        first_line: The line number of the first line.
     """
     fromhex = bytes.fromhex
     new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on the hot path
-    for number, line in enumerate(lines, 1):
+    for number, line in enumerate(lines, first_line):
         parts = line.split()
         # Fast path: the log form with a plain classic frame, the bulk of any capture.
         # Anything else (remote, FD, error frames, odd lines) goes to parse_line.
