@@ -78,8 +78,8 @@ def write_mf4(log: Path, path: Path) -> None:
     records["CAN_DataFrame.DLC"] = frames.length
     records["CAN_DataFrame.DataLength"] = frames.length
     records["CAN_DataFrame.DataBytes"][:, :8] = frames.data
-    stamps = frames.timestamp - writer._start_time  # noqa: SLF001 - the writer's own epoch
-    writer._mdf.extend(0, [(stamps, None), (records, None)])  # noqa: SLF001
+    stamps = frames.timestamp - writer._start_time  # the writer's own epoch
+    writer._mdf.extend(0, [(stamps, None), (records, None)])
     writer.stop()
 
 
@@ -138,14 +138,26 @@ def main() -> None:
         )
         rows = [
             ("python-can CanutilsLogReader", written, _timed(lambda: python_can_reader(big))),
-            ("asammdf extract_bus_logging + to_dataframe", written,
-             _timed(lambda: asammdf_dataframe(mf4, dbc))),  # fmt: skip
-            ("veronte4x to_dataframe(read()) (per frame)", args.per_frame,
-             _timed(lambda: per_frame_dataframe(head))),  # fmt: skip
-            (f"veronte4x read_tables, {args.small} frames", args.small,
-             _timed(lambda: columnar_tables(small))),  # fmt: skip
-            (f"veronte4x read_tables, {written} frames", written,
-             _timed(lambda: columnar_tables(big))),  # fmt: skip
+            (
+                "asammdf extract_bus_logging + to_dataframe",
+                written,
+                _timed(lambda: asammdf_dataframe(mf4, dbc)),
+            ),
+            (
+                "veronte4x to_dataframe(read()) (per frame)",
+                args.per_frame,
+                _timed(lambda: per_frame_dataframe(head)),
+            ),
+            (
+                f"veronte4x read_tables, {args.small} frames",
+                args.small,
+                _timed(lambda: columnar_tables(small)),
+            ),
+            (
+                f"veronte4x read_tables, {written} frames",
+                written,
+                _timed(lambda: columnar_tables(big)),
+            ),
         ]
         rates = {name: frames / seconds for name, frames, seconds in rows}
         ours = rows[-1][1] / rows[-1][2]
