@@ -160,6 +160,8 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
             raise ImportError(
                 "the esc commands need python-can: pip install 'veronte4x[can]'"
             ) from None
+        import can
+
         bus = open_bus(**bus_settings(args))
         try:
             client = BusClient(
@@ -181,6 +183,9 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
         except KeyboardInterrupt:
             _error("interrupted")
             return EXIT_INTERRUPTED
+        except can.CanError as error:
+            _error(f"the CAN bus failed: {error}")
+            return EXIT_USAGE
         finally:
             bus.shutdown()
 

@@ -88,10 +88,15 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
         esc.power_cycle(start)
     names = ", ".join(f"{n} (esc_index {i})" for i, n in enumerate(args.nodes))
     print(f"veronte4x: simulating Vertiq ESC nodes {names}; Ctrl-C stops", file=sys.stderr)
+    import can
+
     try:
         node.run(stop)
     except KeyboardInterrupt:
         pass
+    except can.CanError as error:
+        print(f"veronte4x: the CAN bus failed: {error}", file=sys.stderr)
+        return EXIT_USAGE
     finally:
         stop.set()
         bus.shutdown()

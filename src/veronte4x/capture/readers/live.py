@@ -13,6 +13,12 @@ from typing import Any
 
 from veronte4x.capture.frames import Frame
 from veronte4x.capture.readers.pythoncan import frame_from_message
+from veronte4x.errors import Veronte4xError
+
+
+class BusFailedError(Veronte4xError, OSError):
+    """The bus stopped working while it was read (python-can raised ``can.CanError``)."""
+
 
 POLL = 0.1
 """Longest single wait on the bus, in seconds (how soon a duration ends on a quiet bus)."""
@@ -34,7 +40,12 @@ def read_bus(
         duration: Seconds of ``clock`` to read, or None for no limit.
         clock: Measures ``duration``.
         stop: Set by another thread to end the stream.
+
+    Raises:
+        BusFailedError: python-can reported a bus failure.
     """
+    import can
+
     end = None if duration is None else clock() + duration
     try:
         while stop is None or not stop.is_set():
@@ -43,7 +54,10 @@ def read_bus(
                 wait = min(wait, end - clock())
                 if wait <= 0:
                     return
-            message = bus.recv(timeout=wait)
+            try:
+                message = bus.recv(timeout=wait)
+            except can.CanError as error:
+                raise BusFailedError(f"the CAN bus failed: {error}") from None
             if message is None:
                 continue
             frame = frame_from_message(message)
