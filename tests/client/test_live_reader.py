@@ -1,4 +1,8 @@
-"""The live-bus reader: frames from a python-can bus, a duration, a stop event, bus failures."""
+"""The live-bus reader: frames from a python-can bus, a duration, a stop event, bus failures.
+
+(The channel name argument fills in frames that carry none, as udp_multicast's do; the
+virtual interface names its channel itself.)
+"""
 
 from __future__ import annotations
 
@@ -20,8 +24,8 @@ def test_frames_until_the_duration_ends() -> None:
         other.send(can.Message(arbitration_id=0x0FF, data=b"\x01", is_extended_id=False))
         frames = list(read_bus(bus, "rig", duration=0.2))
     assert [(f.channel, f.can_id, f.data, f.extended) for f in frames] == [
-        ("rig", 0x10015515, b"\x01\x02", True),
-        ("rig", 0x0FF, b"\x01", False),
+        ("live-1", 0x10015515, b"\x01\x02", True),
+        ("live-1", 0x0FF, b"\x01", False),
     ]
     assert all(isinstance(f, Frame) and f.timestamp is not None for f in frames)
 
@@ -36,5 +40,5 @@ def test_a_stop_event_ends_it() -> None:
 def test_a_failing_bus_is_the_library_error() -> None:
     bus = can.Bus(interface="virtual", channel="live-3")
     bus.shutdown()
-    with pytest.raises(BusFailedError, match="^the CAN bus failed: "):
+    with pytest.raises(BusFailedError, match=r"^the CAN bus failed: "):
         list(read_bus(bus, duration=0.2))
