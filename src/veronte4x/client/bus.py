@@ -383,6 +383,7 @@ class BusClient:
                 last = current
         finally:
             self.protocol.files.remove(name)
+            self.protocol.requests.cancel(handle)  # no retry of BeginFirmwareUpdate after this
         if last.phase is not Phase.DONE:
             raise FirmwareUpdateError(
                 last.error or f"node {node_id}: update failed", timed_out=last.timed_out
