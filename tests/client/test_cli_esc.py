@@ -11,7 +11,6 @@ import json
 import signal
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -129,11 +128,11 @@ def test_node_that_stops_answering_mid_update(tmp_path: Path) -> None:
     firmware.write_bytes(bytes(2000))
     with simulator(port, "--nodes", "21", "--stall-update-at", "512"):
         result = veronte4x(
-            "esc", "update", "21", str(firmware), *bus_args(port), "--read-timeout", "0.5"
+            "esc", "update", "21", str(firmware), *bus_args(port), "--read-timeout", "1"
         )
     assert result.returncode == 3
     assert result.stderr.splitlines()[-1] == (
-        "veronte4x: node 21 stopped reading the image at byte 512 of 2000 (nothing for 0.5 s)"
+        "veronte4x: node 21 stopped reading the image at byte 512 of 2000 (nothing for 1 s)"
     )
 
 
@@ -162,13 +161,15 @@ def test_a_killed_spin_stops_the_motors(bus: list[str]) -> None:
         stderr=subprocess.PIPE,
         text=True,
     )  # fmt: skip
-    time.sleep(1.5)
-    running = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
+    for _ in range(20):  # until the spin has started (the machine may be busy)
+        running = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
+        if set(_duty(running.stdout, 21)) == {50}:
+            break
     spin.send_signal(signal.SIGTERM)
     _, stderr = spin.communicate(timeout=10)
     assert spin.returncode == 130
     assert stderr == "veronte4x: interrupted\n"
-    assert _duty(running.stdout, 21) and set(_duty(running.stdout, 21)) == {50}
+    assert set(_duty(running.stdout, 21)) == {50}
     stopped = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
     assert _duty(stopped.stdout, 21) and set(_duty(stopped.stdout, 21)) == {0}
 
