@@ -88,6 +88,15 @@ def test_every_parameter_set_saved_and_read_back(buses: tuple[can.BusABC, can.Bu
     assert client.get_param(21, "esc_index").value == dronecan.IntegerValue(7)
     client.erase_params(21)
     assert client.get_param(21, "esc_index").value == dronecan.IntegerValue(0)
+    by_index = client.set_param(21, 4, 25)  # telem_frequency, by index
+    assert (by_index.name, by_index.value, by_index.index) == (
+        "telem_frequency",
+        dronecan.IntegerValue(25),
+        4,
+    )
+    assert client.get_param(21, 4).as_dict()["value"] == 25
+    with pytest.raises(ParameterError, match=r"^node 21 has no parameter at index 5$"):
+        client.get_param(21, 5)
 
 
 def test_bad_parameter_name_and_value(buses: tuple[can.BusABC, can.BusABC]) -> None:

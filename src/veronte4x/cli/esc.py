@@ -76,13 +76,13 @@ def add_parser(commands: Any) -> None:
     params = action("params", "every parameter: name, value, default, range", _params)
     _node(params)
 
-    get = action("get", "read one parameter by name", _get)
+    get = action("get", "read one parameter by name (or index)", _get)
     _node(get)
-    get.add_argument("name", help="parameter name, e.g. esc_index")
+    get.add_argument("name", type=_name_or_index, help="parameter name, e.g. esc_index, or index")
 
-    set_ = action("set", "set one parameter by name (checked against its range first)", _set)
+    set_ = action("set", "set one parameter by name or index (range checked first)", _set)
     _node(set_)
-    set_.add_argument("name", help="parameter name, e.g. esc_index")
+    set_.add_argument("name", type=_name_or_index, help="parameter name, or index")
     set_.add_argument("value", help="new value, of the parameter's type")
 
     save = action("save", "save the parameters to non-volatile storage (ExecuteOpcode)", _save)
@@ -118,6 +118,11 @@ def add_parser(commands: Any) -> None:
     )
     spin.add_argument("--yes", action="store_true", help="confirm: this moves motors")
     _options(spin)
+
+
+def _name_or_index(text: str) -> str | int:
+    """A parameter name, or an index when the argument is a whole number."""
+    return int(text) if text.isdigit() else text
 
 
 def _node(parser: argparse.ArgumentParser) -> None:

@@ -55,6 +55,7 @@ from veronte4x.dronecan.messages import (
     GetNodeInfoRequest,
     GetNodeInfoResponse,
     GetSetRequest,
+    GetSetResponse,
     IntegerValue,
     Opcode,
     Path,
@@ -233,16 +234,27 @@ class BusClient:
         response: GetNodeInfoResponse = self.call(GetNodeInfoRequest(), node_id)
         return response
 
-    def get_param(self, node_id: int, name: str) -> ParameterInfo:
-        """Read one parameter by name (Vertiq: always by name, indices may change).
+    def get_param(self, node_id: int, name: str | int) -> ParameterInfo:
+        """Read one parameter by name, or by index given an int.
+
+        Vertiq's modules are best read by name: their indices may change between firmware
+        versions and serve for discovery only.
 
         Raises:
             ParameterError: The node has no such parameter.
         """
-        response = self.call(vertiq.get_parameter(name), node_id)
+        if isinstance(name, int):
+            request = vertiq.get_parameter_by_index(name)
+        else:
+            request = vertiq.get_parameter(name)
+        return self._parameter(node_id, name, self.call(request, node_id))
+
+    @staticmethod
+    def _parameter(node_id: int, name: str | int, response: GetSetResponse) -> ParameterInfo:
         if vertiq.is_end_of_parameters(response):
-            raise ParameterError(f"node {node_id} has no parameter {name!r}")
-        return ParameterInfo.from_response(response)
+            where = f"at index {name}" if isinstance(name, int) else repr(name)
+            raise ParameterError(f"node {node_id} has no parameter {where}")
+        return ParameterInfo.from_response(response, name if isinstance(name, int) else None)
 
     def list_params(self, node_id: int) -> list[ParameterInfo]:
         """Every parameter, walking the indices from 0 to the first empty answer."""
@@ -255,9 +267,10 @@ class BusClient:
         return found
 
     def set_param(
-        self, node_id: int, name: str, value: int | float | bool | str | Value
+        self, node_id: int, name: str | int, value: int | float | bool | str | Value
     ) -> ParameterInfo:
-        """Set a parameter by name and return what the node reports after the set.
+        """Set a parameter by name (or by index given an int); return what the node reports
+        after the set.
 
         The parameter is read first: a ``str`` is parsed as a value of its type, and a value
         of another type or outside the node's range is refused before anything is set.
@@ -275,17 +288,19 @@ class BusClient:
             except ValueError as error:
                 raise ParameterError(f"node {node_id}: {error}") from None
         else:
-            wanted = vertiq.set_parameter(name, value).value
+            wanted = vertiq.set_parameter(current.name, value).value
         problem = current.check(wanted)
         if problem is not None:
             raise ParameterError(f"node {node_id}: {problem}")
-        response = self.call(GetSetRequest(value=wanted, name=name.encode("utf-8")), node_id)
-        if vertiq.is_end_of_parameters(response):
-            raise ParameterError(f"node {node_id} has no parameter {name!r}")
-        after = ParameterInfo.from_response(response)
+        if isinstance(name, int):
+            request = GetSetRequest(index=name, value=wanted)
+        else:
+            request = GetSetRequest(value=wanted, name=name.encode("utf-8"))
+        after = self._parameter(node_id, name, self.call(request, node_id))
         if plain(after.value) != plain(wanted):
             raise RejectedError(
-                f"node {node_id} kept {name} at {plain(after.value)!r} instead of {plain(wanted)!r}"
+                f"node {node_id} kept {after.name} at {plain(after.value)!r} "
+                f"instead of {plain(wanted)!r}"
             )
         return after
 
