@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import random
 import signal
 import sys
 import time
@@ -170,7 +171,12 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
         bus = open_bus(**bus_settings(args))
         try:
             client = BusClient(
-                bus, args.node_id, timeout=getattr(args, "timeout", 1.0), retries=args.retries
+                bus,
+                args.node_id,
+                timeout=getattr(args, "timeout", 1.0),
+                retries=args.retries,
+                # A run right after another must not repeat its last transfer ids.
+                first_transfer_id=random.randrange(32),
             )
             return action(client, args)
         except NoResponseError as error:

@@ -94,6 +94,9 @@ class BusClient:
         retries: Times a request is sent again after a timeout.
         while_waiting: Called before each short wait on the bus (e.g. a simulated node's
             ``step``, to run it in the same thread).
+        priority: CAN priority of what it sends.
+        first_transfer_id: Where every transfer id stream starts; a tool that runs briefly
+            and often should pick it at random (see `TransferIds`).
 
     Example:
         >>> import can
@@ -118,9 +121,10 @@ class BusClient:
         retries: int = DEFAULT_RETRIES,
         while_waiting: Callable[[], object] | None = None,
         priority: int = DEFAULT_PRIORITY,
+        first_transfer_id: int = 0,
     ) -> None:
         self.bus = bus
-        self.protocol = ClientProtocol(node_id, priority)
+        self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
         self.clock = clock
         self.timeout = timeout
         self.retries = retries

@@ -66,6 +66,7 @@ class ClientProtocol:
     Args:
         node_id: This node's id, 1..127.
         priority: CAN priority of what it sends.
+        first_transfer_id: Where every transfer id stream starts (see `TransferIds`).
 
     Example:
         >>> from veronte4x import dronecan
@@ -81,12 +82,17 @@ class ClientProtocol:
         b'iq_motion.esc'
     """
 
-    def __init__(self, node_id: int = DEFAULT_NODE_ID, priority: int = DEFAULT_PRIORITY) -> None:
+    def __init__(
+        self,
+        node_id: int = DEFAULT_NODE_ID,
+        priority: int = DEFAULT_PRIORITY,
+        first_transfer_id: int = 0,
+    ) -> None:
         if isinstance(node_id, bool) or not isinstance(node_id, int) or not 1 <= node_id <= 127:
             raise EncodeError("ClientProtocol", "node_id", node_id, "a node id in 1..127")
         self.node_id = node_id
         self.priority = priority
-        self.transfer_ids = TransferIds()
+        self.transfer_ids = TransferIds(first_transfer_id)
         self.requests = Requester(node_id, self.transfer_ids, priority)
         self.nodes = NodeTable()
         self.files = FileServer()
