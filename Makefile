@@ -43,6 +43,7 @@ bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_codec.py
 	$(BIN)/python benchmarks/bench_dronecan.py
 	$(BIN)/python benchmarks/bench_capture.py
+	$(BIN)/python benchmarks/bench_columnar.py
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info

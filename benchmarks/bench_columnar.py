@@ -78,7 +78,7 @@ def write_mf4(log: Path, path: Path) -> None:
     records["CAN_DataFrame.DLC"] = frames.length
     records["CAN_DataFrame.DataLength"] = frames.length
     records["CAN_DataFrame.DataBytes"][:, :8] = frames.data
-    stamps = frames.timestamp - writer._start_time  # the writer's own epoch
+    stamps = frames.timestamp - writer._start_time
     writer._mdf.extend(0, [(stamps, None), (records, None)])
     writer.stop()
 

@@ -99,3 +99,16 @@ def test_notebook_example(flight: Path, tmp_path: Path) -> None:
     assert str(status.selected.dtype) == "Int64"
     assert set(status.selected.dropna()) == {1, 2}
     assert str(status.alive_1.dtype) == "boolean"
+
+
+def test_tables_example(flight: Path, tmp_path: Path) -> None:
+    plot = tmp_path / "tables.png"
+    result = subprocess.run(
+        [sys.executable, str(EXAMPLES / "tables.py"), str(flight), str(plot)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "ESC node 20, 5-15 s from the start: 100 rows" in result.stdout
+    assert "AP3" in result.stdout.split("Selected autopilot changes")[1]
+    assert plot.stat().st_size > 10_000

@@ -95,6 +95,32 @@ def test_flight_agrees_and_takes_the_fast_paths(
     assert taken == [0]  # every frame of a clean flight decoded column-wise
 
 
+@pytest.mark.parametrize("stamped", [True, False])
+def test_human_view_is_parsed_column_wise(
+    flight: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, stamped: bool
+) -> None:
+    human = tmp_path / "human.log"
+    with human.open("w") as out:
+        for message in can.CanutilsLogReader(str(flight)):
+            ident = f"{message.arbitration_id:0{8 if message.is_extended_id else 3}X}"
+            stamp = f"({message.timestamp:.6f})  " if stamped else "  "
+            data = " ".join(f"{byte:02X}" for byte in message.data)
+            out.write(f"{stamp}can0  {ident}   [{len(message.data)}]  {data}\n")
+    expected = capture.tables_from_records(capture.read(human))
+    taken = []
+    original = engine._per_frame
+
+    def per_frame(frames: object, rows: object, decoder: object) -> object:
+        taken.append(len(rows))  # type: ignore[arg-type]
+        return original(frames, rows, decoder)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(engine, "_per_frame", per_frame)
+    assert_same_tables(capture.read_tables(human), expected)
+    ready = expected["Ready"]
+    assert ready.column("timestamp").null_count == (0 if stamped else ready.num_rows)
+    assert taken == [0]
+
+
 def test_gzip_list_and_channel(flight: Path, tmp_path: Path) -> None:
     packed = tmp_path / "flight.log.gz"
     packed.write_bytes(gzip.compress(flight.read_bytes()))

@@ -12,7 +12,10 @@ line for line.
 
 from __future__ import annotations
 
+import os
+from collections import deque
 from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import BinaryIO
 
@@ -28,16 +31,15 @@ _STAMP = 24
 _INTERFACE = 16
 """Most characters of an interface name the column parser reads."""
 
-_NIBBLE = np.full(256, 255, np.uint8)
-for _digit, _char in enumerate(b"0123456789abcdef"):
-    _NIBBLE[_char] = _digit
-for _digit, _char in enumerate(b"ABCDEF", 10):
-    _NIBBLE[_char] = _digit
 _ODD = np.zeros(256, np.bool_)
-"""Bytes that make a line the per-line parser's: other white space than the space (the
-per-frame reader splits on it too) and non-ASCII bytes (decoded with replacement there)."""
-_ODD[[9, 11, 12, 28, 29, 30, 31]] = True
+"""Bytes that make a line the per-line parser's: control characters (white space to the
+per-frame reader's split, among others) and non-ASCII bytes (decoded with replacement
+there). The column parser's byte arithmetic relies on lines having none."""
+_ODD[:32] = True
+_ODD[[10, 13]] = False
 _ODD[128:] = True
+_ONES = np.uint64(0x0101010101010101)
+_HIGH = np.uint64(0x8080808080808080)
 _PAD = 32
 """Line breaks after the text, more than the widest window."""
 _POW10 = 10 ** np.arange(19, dtype=np.int64)
@@ -70,11 +72,20 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
         if not (a[returns + 1] == 10).all():
             return None
         ends[np.searchsorted(breaks, returns)] -= 1
-    fast = _log_lines(a, starts, ends)
-    slow = np.ones(len(starts), np.bool_)
+    clean = _clean_lines(a, starts, ends)
+    fast = _log_lines(a, starts, ends, clean)
+    slow = ends > starts
     slow[fast.line] = False
-    slow &= ends > starts
-    columns = fast.columns(first_line)
+    parts = [fast.columns(first_line)]
+    hashes = np.bincount(
+        np.searchsorted(ends, np.flatnonzero(a[:size] == 35)), minlength=len(starts)
+    )
+    human = np.flatnonzero(slow & clean & (hashes[: len(starts)] == 0))
+    if len(human):
+        found = _human_lines(a, starts, ends, human)
+        slow[found.line] = False
+        parts.append(found.columns(first_line))
+    columns = concat(parts)
     lines = np.flatnonzero(slow)
     if not len(lines):
         return columns
@@ -98,6 +109,7 @@ class _LogLines:
     extended: npt.NDArray[np.bool_]
     length: npt.NDArray[np.int64]
     data: npt.NDArray[np.uint8]
+    has_time: npt.NDArray[np.bool_] | None = None
 
     def columns(self, first_line: int) -> FrameColumns:
         n = len(self.line)
@@ -105,7 +117,7 @@ class _LogLines:
         return FrameColumns(
             order=self.line + first_line,
             timestamp=self.stamp,
-            has_time=np.ones(n, np.bool_),
+            has_time=np.ones(n, np.bool_) if self.has_time is None else self.has_time,
             channel=self.interface,
             channels=self.interfaces,
             can_id=self.can_id,
@@ -124,16 +136,27 @@ def _window(a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64], width: int) -> 
     return np.lib.stride_tricks.sliding_window_view(a, width)[at]
 
 
-def _log_lines(
+def _clean_lines(
     a: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64], ends: npt.NDArray[np.int64]
-) -> _LogLines:
-    lines = len(starts)
-    ok = a[starts] == 40  # "("
+) -> npt.NDArray[np.bool_]:
+    """Lines with no control character and no non-ASCII byte (see `_ODD`)."""
+    clean = np.ones(len(starts), np.bool_)
     body = a[: ends[-1] + 1]
-    controls = np.count_nonzero(body < 32) - lines - np.count_nonzero(body == 13)
+    controls = np.count_nonzero(body < 32) - len(starts) - np.count_nonzero(body == 13)
     if controls or body.max() >= 128:
-        odd = np.flatnonzero(_ODD[body])
-        ok[np.searchsorted(ends, odd)] = False
+        clean[np.searchsorted(ends, np.flatnonzero(_ODD[body]))] = False
+    return clean
+
+
+def _log_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    clean: npt.NDArray[np.bool_],
+) -> _LogLines:
+    """The plain log-form lines: ``(seconds) interface ID#DATA``, a classic data frame."""
+    ok = clean & (a[starts] == 40)  # "("
+    body = a[: ends[-1] + 1]
     spaces = np.flatnonzero(body == 32)
     spaces = np.append(spaces, len(a) - 1)  # a sentinel in the padding
     first = np.searchsorted(spaces, starts)
@@ -153,60 +176,180 @@ def _log_lines(
     ok &= (data_size >= 0) & (data_size <= 2 * MAX_DATA) & (data_size % 2 == 0)
     ok &= a[np.maximum(space1 - 1, 0)] == 41  # ")"
     rows = np.flatnonzero(ok)
+    words = _words(a)
     space1, space2, hash1 = space1[rows], space2[rows], hash1[rows]
-    stamp, good = _stamps(a, starts[rows] + 1, stamp_size[rows])
-    can_id, extended, good_id = _identifiers(_window(a, space2 + 1, 8), id_size[rows])
+    stamp, good = _stamps(a, words, starts[rows] + 1, stamp_size[rows])
+    can_id, extended, good_id = _identifiers(words[space2 + 1], id_size[rows])
     size = data_size[rows]
-    data, good_data = _data(_window(a, hash1 + 1, 2 * MAX_DATA), size)
-    interface, names = _interfaces(_window(a, space1 + 1, _INTERFACE), space2 - space1 - 1)
+    data, good_data = _data(words[hash1 + 1], words[hash1 + 9], size)
+    interface, names = _interfaces(words[space1 + 1], words[space1 + 9], space2 - space1 - 1)
     good &= good_id & good_data
+    data_bytes = data.view(np.uint8).reshape(-1, MAX_DATA)
     if good.all():
-        return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data)
+        return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data_bytes)
     keep = np.flatnonzero(good)
     return _LogLines(
         rows[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
-        size[keep] // 2, data[keep],
+        size[keep] // 2, data_bytes[keep],
     )  # fmt: skip
 
 
+def _human_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    lines: npt.NDArray[np.int64],
+) -> _LogLines:
+    """The plain human-view lines: ``[(seconds)] interface ID [n] XX XX ...``, a classic
+    data frame and nothing after its bytes (lines with "#" are left to `parse_line`)."""
+    body = a[: ends[-1] + 1]
+    separator = (body == 32) | (body == 10) | (body == 13)
+    begins = ~separator
+    begins[1:] &= separator[:-1]
+    finishes = ~separator
+    finishes[:-1] &= separator[1:]
+    token_start = np.append(np.flatnonzero(begins), len(body))  # a sentinel token
+    token_end = np.append(np.flatnonzero(finishes) + 1, len(body))
+    last = len(token_start) - 1
+    first = np.searchsorted(token_start, starts[lines])
+    count = np.searchsorted(token_start, ends[lines]) - first
+    stamped = (a[token_start[first]] == 40) & (count > 0)  # "("
+    head = first + stamped  # the interface's token
+    size_token = np.minimum(head + 2, last)
+    size_at = token_start[size_token]
+    size_len = token_end[size_token] - size_at
+    words = _words(a)
+    size_word = words[size_at]
+    size_one = (size_len == 3) & ((size_word & np.uint64(0xFF00FF)) == np.uint64(0x5D005B))
+    size = ((size_word >> np.uint64(8)) & np.uint64(0xFF)).astype(np.int64) - 48  # "[n]"
+    ok = (count >= 3) & size_one & (size >= 0) & (size <= MAX_DATA)
+    ok &= count == 3 + stamped + size
+    rows = np.flatnonzero(ok)
+    lines, first, head, size, stamped = (
+        lines[rows],
+        first[rows],
+        head[rows],
+        size[rows],
+        stamped[rows],
+    )
+    ident = head + 1
+    id_size = token_end[ident] - token_start[ident]
+    iface_size = token_end[head] - token_start[head]
+    can_id, extended, good = _identifiers(words[token_start[ident]], id_size)
+    good &= ((id_size == 3) | (id_size == 8)) & (iface_size <= _INTERFACE)
+    stamp = np.zeros(len(lines))
+    if stamped.any():
+        timed = np.flatnonzero(stamped)
+        at, end = token_start[first[timed]], token_end[first[timed]]
+        good[timed] &= a[end - 1] == 41  # ")"
+        stamp[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
+        good[timed] &= timed_ok & (end - at - 2 > 0) & (end - at - 2 <= _STAMP)
+    # The data bytes: one two-character token each.
+    owner = np.repeat(np.arange(len(lines)), size)
+    position = np.arange(len(owner)) - np.repeat(np.cumsum(size) - size, size)
+    token = head[owner] + 3 + position
+    pair = words[token_start[token]]
+    nibbles, pair_ok = _hex(pair, _MASKS[np.full(len(token), 2)])
+    pair_ok &= token_end[token] - token_start[token] == 2
+    value = ((nibbles & np.uint64(15)) << np.uint64(4)) | (
+        (nibbles >> np.uint64(8)) & np.uint64(15)
+    )
+    good &= np.bincount(owner, weights=~pair_ok, minlength=len(lines)) == 0
+    data = np.zeros((len(lines), MAX_DATA), np.uint8)
+    data[owner, position] = value.astype(np.uint8)
+    interface, names = _interfaces(
+        words[token_start[head]], words[token_start[head] + 8], iface_size
+    )
+    keep = np.flatnonzero(good)
+    return _LogLines(
+        lines[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
+        size[keep], data[keep], stamped[keep],
+    )  # fmt: skip
+
+
+def _words(a: npt.NDArray[np.uint8]) -> npt.NDArray[np.uint64]:
+    """The eight bytes from every position of the text as one little-endian integer: an
+    overlapping view, so that ``words[p]`` reads the eight characters at ``p``."""
+    words: npt.NDArray[np.uint64] = np.ndarray(
+        shape=(len(a) - 7,), dtype="<u8", buffer=a, strides=(1,)
+    )
+    return words
+
+
+_MASKS = np.array([(1 << (8 * n)) - 1 for n in range(9)], np.uint64)
+
+
+def _byte_mask(count: npt.NDArray[np.int64]) -> npt.NDArray[np.uint64]:
+    """A mask of the ``count`` low bytes of a word (none below 0, all eight above 8)."""
+    masks: npt.NDArray[np.uint64] = _MASKS[np.clip(count, 0, 8)]
+    return masks
+
+
+def _hex(word: npt.NDArray[np.uint64], mask: npt.NDArray[np.uint64]) -> tuple[np.ndarray, ...]:
+    """Eight hex characters per word (no control or non-ASCII bytes) to their nibbles, one
+    per byte, and whether every character under ``mask`` is a hex digit."""
+    lower = word | (_ONES * np.uint64(0x20))
+    digit = (lower + _ONES * np.uint64(0x50)) & ~(lower + _ONES * np.uint64(0x46))
+    letter = (lower + _ONES * np.uint64(0x1F)) & ~(lower + _ONES * np.uint64(0x19))
+    good = (~(digit | letter) & mask & _HIGH) == 0
+    nibbles = (lower & (_ONES * np.uint64(15))) + np.uint64(9) * ((lower >> np.uint64(6)) & _ONES)
+    return nibbles, good
+
+
+def _pack(nibbles: npt.NDArray[np.uint64]) -> npt.NDArray[np.uint64]:
+    """Eight nibbles, one per byte, to the four bytes they spell (first nibble high)."""
+    pairs = ((nibbles << np.uint64(4)) | (nibbles >> np.uint64(8))) & np.uint64(0x00FF00FF00FF00FF)
+    pairs = (pairs | (pairs >> np.uint64(8))) & np.uint64(0x0000FFFF0000FFFF)
+    packed: npt.NDArray[np.uint64] = (pairs | (pairs >> np.uint64(16))) & np.uint64(0xFFFFFFFF)
+    return packed
+
+
 def _stamps(
-    a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64], sizes: npt.NDArray[np.int64]
+    a: npt.NDArray[np.uint8],
+    words: npt.NDArray[np.uint64],
+    at: npt.NDArray[np.int64],
+    sizes: npt.NDArray[np.int64],
 ) -> tuple[np.ndarray, np.ndarray]:
     """Decimal ``digits[.digits]`` to float64, exactly as ``float()``; others not good.
 
-    The timestamps of a capture share one shape (``1436509052.249713``): those of the first
-    one's shape go through a fixed-width window and one exact floating-point dot product
-    (every partial sum is an integer below 2**53); the rest through `_stamps_any`.
+    The timestamps of a capture share one shape (``1436509052.249713``): for those of the
+    first one's shape, the digits are moved into two words of eight (zero-padded in front)
+    with a few shifts, converted eight at a time, and the exact integer divided by a power
+    of ten once; the rest go through `_stamps_any`.
     """
     stamp = np.zeros(len(at))
     good = np.zeros(len(at), np.bool_)
     if not len(at):
         return stamp, good
     size = int(sizes[0])
-    window = _window(a, at[:1], size)[0]
-    dots = np.flatnonzero(window == 46)
-    same = sizes == size
-    rows = np.flatnonzero(same)
-    chars = _window(a, at[rows], size)
-    columns = np.ones(size, np.bool_)
-    if len(dots) == 1:
-        dot = int(dots[0])
-        columns[dot] = False
-        fraction = size - 1 - dot
-        shaped = chars[:, dot] == 46
-    else:
-        fraction = 0
-        shaped = np.ones(len(rows), np.bool_)
-    count = int(columns.sum())
-    if 0 < count <= 16:
-        padded = np.full((len(rows), 16), 48, np.uint8)  # "0"
-        padded[:, 16 - count :] = chars[:, columns]
-        words = padded.view("<u8")
-        high, high_ok = _eight_digits(words[:, 0])
-        low, low_ok = _eight_digits(words[:, 1])
+    shape = bytes(a[at[0] : at[0] + size])
+    dot = shape.find(b".")
+    digits = size - (dot >= 0)
+    rows = np.flatnonzero(sizes == size)
+    if 0 < digits <= 16 and shape.count(b".") <= 1:
+        base = at[rows]
+        runs = [(0, dot), (dot + 1, size - dot - 1)] if dot >= 0 else [(0, size)]
+        halves = [np.zeros(len(rows), np.uint64), np.zeros(len(rows), np.uint64)]
+        pad = 16 - digits
+        for half in range(2):
+            zeros = [j - 8 * half for j in range(8 * half, 8 * half + 8) if j < pad]
+            for j in zeros:
+                halves[half] |= np.uint64(48) << np.uint64(8 * j)
+        target = pad
+        for source, length in runs:
+            while length:
+                half, offset = divmod(target, 8)
+                piece = min(length, 8 - offset)
+                mask = np.uint64((1 << (8 * piece)) - 1)
+                halves[half] |= (words[base + source] & mask) << np.uint64(8 * offset)
+                target, source, length = target + piece, source + piece, length - piece
+        high, high_ok = _eight_digits(halves[0])
+        low, low_ok = _eight_digits(halves[1])
         mantissa = high * np.uint64(100_000_000) + low
-        shaped &= high_ok & low_ok & (mantissa < _EXACT)
-        stamp[rows] = mantissa.astype(np.float64) / _POW10F[fraction]
+        shaped = high_ok & low_ok & (mantissa < _EXACT)
+        if dot >= 0:
+            shaped &= a[base + dot] == 46
+        stamp[rows] = mantissa.astype(np.float64) / _POW10F[size - dot - 1 if dot >= 0 else 0]
         good[rows] = shaped
     rest = np.flatnonzero(~good)
     if len(rest):
@@ -243,43 +386,47 @@ def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.nd
     return mantissa / _POW10F[np.minimum(total - before_dot, 22)], good
 
 
-def _identifiers(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
+def _identifiers(word: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
     """3 or 8 hex digits to the identifier; error frames (bit 29) are not good."""
-    nibbles = _NIBBLE[chars]
     long = sizes == 8
-    nibbles[~long, 3:] = 0
-    good = (nibbles.view(np.uint64)[:, 0] & 0xF0F0F0F0F0F0F0F0) == 0
-    n = nibbles.astype(np.uint32)
-    short_id = n[:, 0] << 8 | n[:, 1] << 4 | n[:, 2]
-    long_id = short_id << 20 | n[:, 3] << 16 | n[:, 4] << 12 | n[:, 5] << 8 | n[:, 6] << 4 | n[:, 7]
-    can_id = np.where(long, long_id, short_id)
+    nibbles, good = _hex(word, _byte_mask(sizes))
+    short_id = (
+        (nibbles & np.uint64(15)) << np.uint64(8)
+        | ((nibbles >> np.uint64(8)) & np.uint64(15)) << np.uint64(4)
+        | (nibbles >> np.uint64(16)) & np.uint64(15)
+    )
+    long_id = _pack(nibbles).astype(np.uint32).byteswap().astype(np.uint64)
+    can_id = np.where(long, long_id, short_id).astype(np.uint32)
     good &= (can_id & 0x2000_0000) == 0
     return can_id, long, good
 
 
-def _data(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Up to 16 hex digits to up to 8 bytes, zero-padded."""
-    nibbles = _NIBBLE[chars]
-    bad = np.packbits(nibbles > 15, axis=1, bitorder="little").view("<u2")[:, 0]
-    good = (bad & ((1 << sizes) - 1).astype(np.uint16)) == 0
-    data = (nibbles[:, 0::2] << 4) | (nibbles[:, 1::2] & 15)
-    data[np.arange(MAX_DATA) >= (sizes // 2)[:, None]] = 0
-    return data, good
+def _data(
+    first: npt.NDArray[np.uint64], second: npt.NDArray[np.uint64], sizes: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Up to 16 hex digits (in two words of eight) to up to 8 bytes, zero-padded, as one
+    little-endian word."""
+    high, good_high = _hex(first, _byte_mask(sizes))
+    low, good_low = _hex(second, _byte_mask(sizes - 8))
+    data = (_pack(high) | _pack(low) << np.uint64(32)) & _byte_mask(sizes // 2)
+    return data, good_high & good_low
 
 
-def _interfaces(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, list[str]]:
-    """Interface names to codes: one pass per distinct name."""
-    chars = np.where(np.arange(_INTERFACE) < sizes[:, None], chars, 0).astype(np.uint8)
-    words = chars.view("<u8")
-    low, high = np.ascontiguousarray(words[:, 0]), np.ascontiguousarray(words[:, 1])
-    codes = np.full(len(chars), -1, np.int32)
+def _interfaces(
+    first: npt.NDArray[np.uint64], second: npt.NDArray[np.uint64], sizes: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, list[str]]:
+    """Interface names (up to 16 characters, in two words) to codes: a pass per name."""
+    low = first & _byte_mask(sizes)
+    high = second & _byte_mask(sizes - 8)
+    codes = np.full(len(sizes), -1, np.int32)
     names: list[str] = []
     left = np.flatnonzero(codes < 0)
     while len(left):
         row = left[0]
         same = np.flatnonzero((low == low[row]) & (high == high[row]) & (codes < 0))
         codes[same] = len(names)
-        names.append(chars[row, : sizes[row]].tobytes().decode("ascii"))
+        text = (int(low[row]) | int(high[row]) << 64).to_bytes(16, "little")
+        names.append(text[: sizes[row]].decode("ascii"))
         left = np.flatnonzero(codes < 0)
     return codes, names
 
@@ -288,17 +435,26 @@ BLOCK = 1 << 22
 """Bytes of text parsed at once: small enough for the processor's caches."""
 
 
-def parse_stream(stream: BinaryIO) -> FrameColumns | None:
-    """Parse candump text from a binary stream, block by block; see `parse_text`."""
-    parts: list[FrameColumns] = []
+def parse_stream(stream: BinaryIO, workers: int | None = None) -> FrameColumns | None:
+    """Parse candump text from a binary stream, block by block; see `parse_text`.
+
+    Blocks are parsed on ``workers`` threads (default: one per processor); NumPy releases
+    the interpreter lock in its loops, so they run side by side.
+    """
+    workers = workers or os.cpu_count() or 1
+    parts: list[FrameColumns | None] = []
+    pending: deque[Future[FrameColumns | None]] = deque()
     line = 1
-    for block in _blocks(stream):
-        part = parse_text(block, line)
-        if part is None:
-            return None
-        parts.append(part)
-        line += block.count(b"\n") + (not block.endswith(b"\n"))
-    return concat(parts) if parts else parse_text(b"")
+    with ThreadPoolExecutor(workers) as pool:
+        for block in _blocks(stream):
+            pending.append(pool.submit(parse_text, block, line))
+            line += block.count(b"\n") + (not block.endswith(b"\n"))
+            if len(pending) > 2 * workers:
+                parts.append(pending.popleft().result())
+        parts += [future.result() for future in pending]
+    if any(part is None for part in parts):
+        return None
+    return concat([p for p in parts if p is not None]) if parts else parse_text(b"")
 
 
 def _blocks(stream: BinaryIO) -> Iterator[bytes]:

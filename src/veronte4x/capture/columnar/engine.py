@@ -113,7 +113,8 @@ def _decode_veronte(
 ) -> npt.NDArray[np.int64]:  # fmt: skip
     """Decode one sender's frames column-wise; return the rows decoded."""
     excess = bus_map.allow_excess
-    data, length = frames.data[rows], frames.length[rows]
+    data = frames.data.view("<u8")[rows, 0]
+    length = frames.length[rows]
     target = veronte.targets(codec, sender, data, length, excess)
     layouts = veronte.layout_list(codec)
     decoded = []
@@ -143,7 +144,8 @@ def _decode_dronecan(
     rows = rows[(types[rows] >= 0) & (length[rows] >= 1)]
     if not len(rows):
         return rows
-    stamp = np.where(frames.has_time, frames.timestamp, 0.0)
+    stamp = np.zeros(len(frames))
+    stamp[rows] = np.where(frames.has_time[rows], frames.timestamp[rows], 0.0)
     tail = frames.data[rows, length[rows] - 1]
     order, regular = dronecan.regular_sessions(
         frames.channel[rows], frames.can_id[rows], stamp[rows], length[rows], tail, types[rows]

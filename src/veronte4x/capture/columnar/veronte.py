@@ -25,22 +25,25 @@ Columns = dict[str, Any]
 
 
 def targets(
-    codec: Codec, sender: Sender, data: npt.NDArray[np.uint8], length: npt.NDArray[np.int64],
+    codec: Codec, sender: Sender, data: npt.NDArray[np.uint64], length: npt.NDArray[np.int64],
     excess: bool,
 ) -> npt.NDArray[np.int16]:  # fmt: skip
     """Which layout decodes each frame of one sender: an index into `layout_list`, or -1
-    where the per-frame decoder must decide (unknown command, too short to tell)."""
+    where the per-frame decoder must decide (unknown command, too short to tell).
+
+    ``data`` holds each frame's eight first bytes as one little-endian integer.
+    """
     table = layout_list(codec)
     index = {id(layout): i for i, layout in enumerate(table)}
     by_command = np.full(256, -1, np.int16)
     for wire, layout in _by_command(codec).items():
         by_command[wire] = index[id(layout)]
-    command = data[:, 0]
+    command = (data & np.uint64(0xFF)).astype(np.uint8)
     out = np.where(length > 0, by_command[command], -1).astype(np.int16)
     version = (command == 1) & (length == 1)
     out[version] = index[id(layouts.VERSION_REQUEST)]
     zero = (command == 0) & (length >= 2)
-    header = data[:, 1] == 0xFF
+    header = (data >> np.uint64(8)) & np.uint64(0xFF) == 0xFF
     if sender is Sender.ARBITER:
         cex = (length == 4) | ((length == 5) & excess)
         status = np.where(cex, index[id(layouts.STATUS_CEX)], index[id(layouts.STATUS_4X)])
@@ -81,9 +84,9 @@ def _by_command(codec: Codec) -> dict[int, FrameLayout]:
 
 
 def decode(
-    layout: FrameLayout, data: npt.NDArray[np.uint8], length: npt.NDArray[np.int64], excess: bool
+    layout: FrameLayout, data: npt.NDArray[np.uint64], length: npt.NDArray[np.int64], excess: bool
 ) -> tuple[npt.NDArray[np.bool_], Columns]:
-    """Decode frames that all take one layout.
+    """Decode frames that all take one layout (``data``: as for `targets`).
 
     Returns:
         Which frames decoded (the others are the per-frame decoder's), and each field's
@@ -132,22 +135,19 @@ def decode(
     return good, columns
 
 
-def _word(data: npt.NDArray[np.uint8], size: int, order: ByteOrder) -> npt.NDArray[np.uint64]:
+def _word(data: npt.NDArray[np.uint64], size: int, order: ByteOrder) -> npt.NDArray[np.uint64]:
     """The first ``size`` bytes of each frame as one integer."""
     if size == 0:
         return np.zeros(len(data), np.uint64)
-    head = np.zeros((len(data), 8), np.uint8)
-    head[:, :size] = data[:, :size]
-    word: npt.NDArray[np.uint64]
-    if order is ByteOrder.LITTLE:
-        word = head.view("<u8")[:, 0].astype(np.uint64)
-    else:
-        word = head.view(">u8")[:, 0].astype(np.uint64) >> np.uint64(8 * (8 - size))
+    word: npt.NDArray[np.uint64] = data & np.uint64((1 << (8 * size)) - 1)
+    if order is ByteOrder.BIG:
+        word = word.byteswap() >> np.uint64(8 * (8 - size))
     return word
 
 
-def _tail(data: npt.NDArray[np.uint8], length: npt.NDArray[np.int64], size: int) -> pa.Array:
+def _tail(words: npt.NDArray[np.uint64], length: npt.NDArray[np.int64], size: int) -> pa.Array:
     """The bytes past ``size`` of each frame, as a binary array."""
+    data = words.astype("<u8").view(np.uint8).reshape(-1, 8)
     sizes = np.maximum(length - size, 0)
     keep = np.arange(data.shape[1]) < (size + sizes)[:, None]
     keep[:, :size] = False
