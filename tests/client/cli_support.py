@@ -36,6 +36,26 @@ def veronte4x(*args: str, timeout: float = 30) -> subprocess.CompletedProcess[st
     )
 
 
+def veronte4x_all(
+    *commands: list[str], timeout: float = 30
+) -> list[subprocess.CompletedProcess[str]]:
+    """Run several commands at once (each ``esc`` one should have its own ``--node-id``)."""
+    processes = [
+        subprocess.Popen(
+            [sys.executable, "-m", "veronte4x", *args],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        for args in commands
+    ]
+    results = []
+    for process, args in zip(processes, commands, strict=True):
+        out, err = process.communicate(timeout=timeout)
+        results.append(subprocess.CompletedProcess(args, process.returncode, out, err))
+    return results
+
+
 @contextmanager
 def simulator(port: int, *options: str) -> Iterator[subprocess.Popen[str]]:
     """``veronte4x simulate esc`` in the background until the block ends (SIGTERM)."""

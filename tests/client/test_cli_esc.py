@@ -18,7 +18,7 @@ import pytest
 
 from veronte4x.dronecan.image_crc import crc64we
 
-from .cli_support import bus_args, free_port, simulator, veronte4x
+from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 
 
 @pytest.fixture(scope="module")
@@ -39,10 +39,12 @@ def test_nodes(bus: list[str]) -> None:
 
 
 def test_info_and_params(bus: list[str]) -> None:
-    info = veronte4x("esc", "info", "21", *bus)
+    info, params = veronte4x_all(
+        ["esc", "info", "21", *bus, "--node-id", "120"],
+        ["esc", "params", "22", *bus, "--json", "--node-id", "121"],
+    )
     assert info.returncode == 0, info.stderr
     assert info.stdout.splitlines()[0] == "node 21: iq_motion.esc"
-    params = veronte4x("esc", "params", "22", *bus, "--json")
     assert params.returncode == 0, params.stderr
     assert [(p["name"], p["value"], p["min"], p["max"]) for p in json.loads(params.stdout)] == [
         ("uavcan_node_id", 22, 1, 127),
@@ -65,21 +67,23 @@ def test_set_save_get(bus: list[str]) -> None:
 
 
 def test_errors_are_one_line_with_their_exit_code(bus: list[str]) -> None:
-    result = veronte4x("esc", "set", "21", "esc_index", "20", *bus)
-    assert result.returncode == 4
-    assert result.stderr == "veronte4x: node 21: 20 is out of range for esc_index: 0..19\n"
-    result = veronte4x("esc", "get", "21", "esc_idx", *bus)
-    assert result.returncode == 4
-    assert result.stderr == "veronte4x: node 21 has no parameter 'esc_idx'\n"
-    result = veronte4x("esc", "info", "99", *bus, "--timeout", "0.2", "--retries", "0")
-    assert result.returncode == 3
-    assert result.stderr == (
+    out_of_range, bad_name, no_node, unconfirmed = veronte4x_all(
+        ["esc", "set", "21", "esc_index", "20", *bus, "--node-id", "120"],
+        ["esc", "get", "21", "esc_idx", *bus, "--node-id", "121"],
+        ["esc", "info", "99", *bus, "--timeout", "0.2", "--retries", "0", "--node-id", "122"],
+        ["esc", "spin", "21", "--throttle", "0.2", "--duration", "1", *bus],
+    )
+    assert out_of_range.returncode == 4
+    assert out_of_range.stderr == ("veronte4x: node 21: 20 is out of range for esc_index: 0..19\n")
+    assert bad_name.returncode == 4
+    assert bad_name.stderr == "veronte4x: node 21 has no parameter 'esc_idx'\n"
+    assert no_node.returncode == 3
+    assert no_node.stderr == (
         "veronte4x: node 99 did not answer uavcan.protocol.GetNodeInfo (sent once, 0.2 s "
         "each); check the node id, the bus and the bit rate\n"
     )
-    result = veronte4x("esc", "spin", "21", "--throttle", "0.2", "--duration", "1", *bus)
-    assert result.returncode == 2
-    assert result.stderr.startswith("veronte4x: esc spin moves motors: add --yes")
+    assert unconfirmed.returncode == 2
+    assert unconfirmed.stderr.startswith("veronte4x: esc spin moves motors: add --yes")
     result = veronte4x("esc", "get", "21", "esc_index", *bus)
     assert result.stdout == "esc_index = 0 (default 0, range 0..19)\n"  # unchanged
 

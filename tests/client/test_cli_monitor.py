@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from .cli_support import bus_args, free_port, simulator, veronte4x
+from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 
@@ -101,8 +101,10 @@ def test_interactive_in_a_terminal() -> None:
 def test_stats_and_replay_read_a_live_bus() -> None:
     port = free_port()
     with simulator(port, "--nodes", "21"):
-        stats = veronte4x("stats", *bus_args(port), "--duration", "1.2")
-        replay = veronte4x("replay", *bus_args(port), "--duration", "0.3")
+        stats, replay = veronte4x_all(
+            ["stats", *bus_args(port), "--duration", "1.2"],
+            ["replay", *bus_args(port), "--duration", "0.3"],
+        )
     assert stats.returncode == 0, stats.stderr
     assert "NodeStatus" in stats.stdout and "EscStatus" in stats.stdout
     assert replay.returncode == 0, replay.stderr
