@@ -44,8 +44,13 @@ stamps = st.one_of(
 
 
 @settings(max_examples=200, deadline=None)
-@given(st.lists(st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
-                min_size=1, max_size=12))  # fmt: skip
+@given(
+    st.lists(
+        st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
+        min_size=1,
+        max_size=12,
+    )
+)
 def test_timestamps_of_any_shape_agree(lines: list[tuple[str, str]]) -> None:
     text = "".join(f"({stamp}) can0 {frame}\n" for stamp, frame in lines)
     with tempfile.TemporaryDirectory() as folder:

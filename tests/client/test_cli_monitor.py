@@ -27,8 +27,8 @@ def test_plain_table_over_a_capture() -> None:
         "sender    type                        id    count   rate/s  errors  fields",
     ]
     assert (
-        "AP1       ArbitrationVariable        008        3      1.5       0  number=2 value=1.7"
-        in (lines)
+        "AP1       ArbitrationVariable        008        3      1.5       0  number=2, value=1.7"
+        in lines
     )
     assert result.stderr == "veronte4x: 39 records, 1 bad, 0.501 s\n"
 
@@ -108,7 +108,9 @@ def test_stats_and_replay_read_a_live_bus() -> None:
     assert stats.returncode == 0, stats.stderr
     assert "NodeStatus" in stats.stdout and "EscStatus" in stats.stdout
     assert replay.returncode == 0, replay.stderr
-    assert replay.stderr == "veronte4x: 0 decisions, 0 disagreements, 0 bad frames\n"
+    assert replay.stderr.splitlines()[-1] == (
+        "veronte4x: 0 decisions, 0 disagreements, 0 bad frames"
+    )
 
 
 def test_live_bus_and_a_file_is_a_usage_error() -> None:

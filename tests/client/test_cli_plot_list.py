@@ -51,7 +51,7 @@ def test_plot_arbitration_to_png(tmp_path: Path) -> None:
 def test_plot_missing_capture(tmp_path: Path) -> None:
     result = veronte4x("plot", str(tmp_path / "none.log"), "--output", str(tmp_path / "x.png"))
     assert result.returncode == 2
-    assert result.stderr.startswith("veronte4x: [Errno 2] No such file or directory")
+    assert result.stderr == f"veronte4x: {tmp_path / 'none.log'}: No such file or directory\n"
 
 
 def test_list_text() -> None:

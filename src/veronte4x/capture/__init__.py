@@ -4,7 +4,7 @@ The capture layer, in one package: readers (`veronte4x.capture.readers`), where 
 comes from (`veronte4x.capture.source`), the bus map, the per-frame decoder, records, stats,
 DataFrames and plots. This module is its public face.
 
-Example:
+Examples:
     >>> from veronte4x import capture
     >>> records = list(capture.read("examples/capture.log"))
     >>> records[2].sender, records[2].message
@@ -23,7 +23,7 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
-from veronte4x.capture.source import Format, Source, open_frames, open_text, resolve
+from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_lines, resolve
 from veronte4x.capture.stats import Stats
 
 if TYPE_CHECKING:
@@ -54,10 +54,17 @@ def read(
     """Stream the decoded records of a capture file.
 
     Args:
-        path: candump text (``.log``, ``.txt``, gzipped or not; ``-`` for standard input),
-            or any format python-can reads (needs the ``can`` extra).
+        path: candump text (``.log``, ``.txt``, gzipped or not, or any other name whose
+            content is candump; ``-`` for standard input), or a format python-can reads
+            (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+
+    Raises:
+        SourceError: The path is a directory or a file in no format veronte4x knows
+            (raised by the call, before any record).
+        MissingExtraError: The format needs python-can and it is not installed.
+        OSError: The file cannot be opened.
     """
     source = resolve(path)
     decoder = CaptureDecoder(bus_map)
@@ -67,8 +74,11 @@ def read(
 
 
 def _decode_text(decoder: CaptureDecoder, source: Source, channel: str | None) -> Iterator[Record]:
-    with open_text(source) as lines:
-        yield from decoder.decode_candump(lines, channel)
+    with open_lines(source) as lines:
+        try:
+            yield from decoder.decode_candump(lines, channel)
+        except Truncated as cut:
+            yield from decoder.decode((cut.bad_line(),))
 
 
 def stats(records: Iterable[Record]) -> Stats:

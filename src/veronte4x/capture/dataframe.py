@@ -93,7 +93,7 @@ def to_dataframe(
         head["channel"].append(record.channel)
         head["can_id"].append(record.can_id)
         head["sender"].append(record.sender)
-        head["message"].append(None if record.error else type(record.message).__name__)
+        head["message"].append(None if record.message is None else type(record.message).__name__)
         head["error"].append(record.error)
         head["detail"].append(record.detail)
         head["data"].append(record.data.hex())

@@ -1,7 +1,8 @@
 """What `veronte4x monitor` shows: the latest of every message type per sender (sans-IO).
 
 `MonitorState` takes decoded records and keeps, per (message type, sender), the latest
-fields, the count, the rate over the last seconds and the errors; and the arbiter's state
+fields (as `veronte4x.capture.readable` writes them: shortest numbers, enums by name,
+units), the count, the rate over the last seconds and the errors; and the arbiter's state
 from its Status and Score frames (Veronte Autopilot 4x Software Manual, the arbiter's CAN
 messages). Time is the records' own timestamps, so a capture and a live bus give the same
 table. `render_text` writes the table as plain text; the terminal view is drawn by the CLI.
@@ -9,67 +10,32 @@ table. `render_text` writes the table as plain text; the terminal view is drawn 
 
 from __future__ import annotations
 
-import dataclasses
-import enum
-import math
-import struct
 from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.readable import format_message
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
+from veronte4x.numbers import shortest
 
 RATE_WINDOW = 2.0
 """Seconds over which a row's rate is counted."""
 
-_FLOAT32 = struct.Struct("<f")
 
+def fields_text(message: Any) -> str:
+    """A message's fields as people read them, with units: ``voltage=25.2 V, rpm=1200 rpm``.
 
-def short(value: Any) -> str:
-    """A value as a person reads it: shortest round-trip numbers, enums by name, bytes in hex.
-
-    A float that a float32 holds exactly is written with the fewest digits that give the
-    same float32 back (``0.12`` for the float32 nearest 0.12), any other float with
-    Python's shortest repr.
-
-    Example:
-        >>> short(0.11999999731779099), short(10.0), short(1 / 3), short(b"\\x01\\x02")
-        ('0.12', '10.0', '0.3333333333333333', '0102')
+    The same text as `veronte4x.capture.readable.format_message`, without the class name.
     """
-    if isinstance(value, enum.Enum):
-        return value.name
-    if isinstance(value, bool) or value is None:
-        return str(value)
-    if isinstance(value, float):
-        if math.isfinite(value) and abs(value) <= 3.4e38:
-            single = _FLOAT32.unpack(_FLOAT32.pack(value))[0]
-            if single == value:
-                for digits in range(1, 10):
-                    shorter = float(f"{value:.{digits}g}")
-                    if _FLOAT32.unpack(_FLOAT32.pack(shorter))[0] == value:
-                        return repr(shorter)
-        return repr(value)
-    if isinstance(value, (bytes, bytearray)):
-        return value.hex()
-    if isinstance(value, tuple):
-        return "(" + ", ".join(short(v) for v in value) + ")"
-    return str(value)
+    text = format_message(message)
+    return text[len(type(message).__name__) + 1 : -1]
 
 
-def _fields(message: Any, prefix: str = "") -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-    if not (dataclasses.is_dataclass(message) and not isinstance(message, type)):
-        return out
-    for f in dataclasses.fields(message):
-        value = getattr(message, f.name)
-        if dataclasses.is_dataclass(value) and not isinstance(value, type):
-            inner = _fields(value, f"{prefix}{f.name}.")
-            out += inner or [(f"{prefix}{f.name}", type(value).__name__)]
-        else:
-            out.append((prefix + f.name, short(value)))
-    return out
+def rate_text(rate: float) -> str:
+    """A rate in records per second, to one decimal."""
+    return str(round(rate, 1))
 
 
 @dataclass(frozen=True, slots=True)
@@ -83,7 +49,7 @@ class Row:
         count: Records of this type from this sender.
         errors: Bad frames on this sender's CAN ID since this type was first decoded there.
         rate: Records per second over the last `RATE_WINDOW` seconds.
-        fields: The latest message's fields, as (name, text) pairs.
+        fields: The latest message's fields, as people read them (`fields_text`).
         last_seen: Timestamp of the latest one.
     """
 
@@ -93,7 +59,7 @@ class Row:
     count: int
     errors: int
     rate: float
-    fields: tuple[tuple[str, str], ...]
+    fields: str
     last_seen: float | None
 
 
@@ -102,7 +68,7 @@ class _Entry:
     can_id: int
     count: int = 0
     errors: int = 0
-    fields: tuple[tuple[str, str], ...] = ()
+    fields: str = ""
     last_seen: float | None = None
     times: deque[float] = field(default_factory=deque)
 
@@ -136,7 +102,7 @@ class ArbiterView:
                 parts.append(f"{name} {shown}")
         if self.scores:
             parts.append(
-                "scores " + " ".join(f"{AUTOPILOT_NAMES[a]} {short(s)}" for a, s in self.scores)
+                "scores " + " ".join(f"{AUTOPILOT_NAMES[a]} {shortest(s)}" for a, s in self.scores)
             )
         return "; ".join(parts)
 
@@ -189,7 +155,7 @@ class MonitorState:
         self._by_id[(sender, record.can_id)] = key
         entry.can_id = record.can_id
         entry.count += 1
-        entry.fields = tuple(_fields(message))
+        entry.fields = fields_text(message)
         entry.last_seen = stamp
         if stamp is not None:
             entry.times.append(stamp)
@@ -233,7 +199,7 @@ class MonitorState:
         """One line: records, errors, time span."""
         span = ""
         if self.first_timestamp is not None and self.last_timestamp is not None:
-            span = f", {short(round(self.last_timestamp - self.first_timestamp, 3))} s"
+            span = f", {round(self.last_timestamp - self.first_timestamp, 3)} s"
         return f"{self.records} records, {self.errors} bad{span}"
 
 
@@ -253,10 +219,9 @@ def render_text(state: MonitorState, text_filter: str = "") -> str:
         f"{'rate/s':>7}  {'errors':>6}  fields"
     )
     for r in rows:
-        values = " ".join(f"{name}={text}" for name, text in r.fields)
         line = (
             f"{r.sender:<{sender_width}}  {r.kind:<{kind_width}}  {can_id_text(r.can_id):>8}  "
-            f"{r.count:>7}  {short(round(r.rate, 1)):>7}  {r.errors:>6}  {values}"
+            f"{r.count:>7}  {rate_text(r.rate):>7}  {r.errors:>6}  {r.fields}"
         )
         lines.append(line.rstrip())
     return "\n".join(lines) + "\n"

@@ -46,6 +46,7 @@ from veronte4x.dronecan.messages import (
     SoftwareVersionFlag,
 )
 from veronte4x.errors import EncodeError
+from veronte4x.extras import require
 
 if TYPE_CHECKING:
     from veronte4x.client.bus import BusClient
@@ -159,14 +160,11 @@ def _error(message: str) -> None:
 
 def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int]:
     def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
-        try:
-            from veronte4x.canbus import open_bus
-            from veronte4x.client.bus import BusClient
-        except ImportError:
-            raise ImportError(
-                "the esc commands need python-can: pip install 'veronte4x[can]'"
-            ) from None
+        require("can", "can", "veronte4x esc")
         import can
+
+        from veronte4x.canbus import open_bus
+        from veronte4x.client.bus import BusClient
 
         bus = open_bus(**bus_settings(args))
         try:

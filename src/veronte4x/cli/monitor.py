@@ -19,9 +19,10 @@ from collections.abc import Iterator
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.monitor import MonitorState, Row, can_id_text, render_text, short
+from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
 from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
+from veronte4x.extras import require
 
 KEYS_HELP = "p pause · f filter · c clear filter · q quit"
 
@@ -84,19 +85,10 @@ class _Reader:
             return render_text(self.state, text_filter)
 
 
-def _need_rich() -> None:
-    try:
-        import rich  # noqa: F401
-    except ImportError:
-        raise ImportError(
-            "monitor on a terminal needs rich: pip install 'veronte4x[monitor]'"
-        ) from None
-
-
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
     if sys.stdout.isatty():
-        _need_rich()
+        require("rich", "monitor", "veronte4x monitor on a terminal")
     state = MonitorState()
     reader = _Reader(args, bus_map, state)
     reader.start()
@@ -155,9 +147,9 @@ def _table(snapshot: Snapshot, text_filter: str, status: str = "") -> Any:
             r.kind,
             can_id_text(r.can_id),
             str(r.count),
-            short(round(r.rate, 1)),
+            rate_text(r.rate),
             Text(str(r.errors), style="bold red" if r.errors else ""),
-            " ".join(f"{name}={text}" for name, text in r.fields),
+            r.fields,
         )
     top = Text(header, style="bold")
     line = Text(f"{summary}   {status}".rstrip())

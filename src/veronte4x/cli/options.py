@@ -13,11 +13,7 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
-from veronte4x.errors import Veronte4xError
-
-
-class SourceError(Veronte4xError, OSError):
-    """A source that cannot be opened; the CLI reports it with exit code 2."""
+from veronte4x.errors import SourceError
 
 
 def add_capture_options(parser: argparse.ArgumentParser) -> None:

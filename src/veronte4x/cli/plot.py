@@ -9,6 +9,7 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import add_capture_options, open_records
+from veronte4x.extras import require
 
 
 def add_parser(commands: Any) -> None:
@@ -33,10 +34,7 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Draw the figure and save or show it."""
-    try:
-        import matplotlib
-    except ImportError:
-        raise ImportError("plot needs matplotlib: pip install 'veronte4x[plot]'") from None
+    matplotlib = require("matplotlib", "plot", "veronte4x plot")
     if args.output:
         matplotlib.use("Agg")
     records = open_records(args, bus_map)

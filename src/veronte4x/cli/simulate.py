@@ -11,6 +11,7 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.extras import require
 
 
 def _node_list(text: str) -> list[int]:
@@ -55,13 +56,11 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
     """Serve the bus until Ctrl-C, SIGTERM or the duration."""
-    try:
-        from veronte4x.canbus import open_bus
-        from veronte4x.simulator import SimulatedEsc
-        from veronte4x.simulator.can_node import EscBus
-    except ImportError:
-        raise ImportError("simulate needs python-can: pip install 'veronte4x[can]'") from None
+    require("can", "can", "veronte4x simulate")
+    from veronte4x.canbus import open_bus
     from veronte4x.errors import EncodeError
+    from veronte4x.simulator import SimulatedEsc
+    from veronte4x.simulator.can_node import EscBus
 
     try:
         escs = [

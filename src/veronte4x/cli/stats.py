@@ -8,6 +8,7 @@ from typing import Any
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK
+from veronte4x.cli.notices import tell_truncation
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 
 
@@ -22,5 +23,6 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Print the counts of the capture."""
-    print(capture.stats(open_records(args, bus_map)).report())
+    records = tell_truncation(open_records(args, bus_map))
+    print(capture.stats(records).report())
     return EXIT_OK

@@ -1,10 +1,8 @@
 """The DroneCAN types as data: fields in wire order, ids, signatures.
 
-Field lists are those of the DSDL files in ``shared/dsdl`` (``dronecan/DSDL`` b4653c7);
-the signatures of ExecuteOpcode, file.GetInfo and file.Read are those the ``dronecan``
-package computes from the same files (its golden vectors are in the tests);
-ids, 64-bit data type signatures and CRC seeds are those of notes/dronecan-wire.md
-"Types". The seeds are recomputed from the signatures at import time. The serializers
+Field lists are those of the DSDL files of the public ``dronecan/DSDL`` repository (b4653c7);
+ids, 64-bit data type signatures and CRC seeds are those of as libcanard and the dronecan package
+implement it. The CRC seeds are recomputed from the signatures at import time. The serializers
 run from these definitions; the docs tables are generated from them too.
 """
 
@@ -298,7 +296,8 @@ DATA_TYPES: tuple[DataType, ...] = (
     DataType("uavcan.protocol.file.Read", _REQ, 48, 0x8DCDCA939F33F678, FILE_READ_REQUEST),
     DataType("uavcan.protocol.file.Read", _RESP, 48, 0x8DCDCA939F33F678, FILE_READ_RESPONSE),
 )
-"""Every top-level type: the eight of seed 004 in its order, then the ground station's."""
+"""Every top-level type: those of Vertiq's DroneCAN support document in its order, then
+the ground station's (ExecuteOpcode, file.GetInfo, file.Read)."""
 
 NESTED_SIGNATURES: dict[str, int] = {
     "uavcan.protocol.SoftwareVersion": 0xDD46FD376527FEA1,

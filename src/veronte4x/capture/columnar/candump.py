@@ -189,9 +189,15 @@ def _log_lines(
         return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data_bytes)
     keep = np.flatnonzero(good)
     return _LogLines(
-        rows[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
-        size[keep] // 2, data_bytes[keep],
-    )  # fmt: skip
+        rows[keep],
+        stamp[keep],
+        interface[keep],
+        names,
+        can_id[keep],
+        extended[keep],
+        size[keep] // 2,
+        data_bytes[keep],
+    )
 
 
 def _human_lines(
@@ -262,9 +268,16 @@ def _human_lines(
     )
     keep = np.flatnonzero(good)
     return _LogLines(
-        lines[keep], stamp[keep], interface[keep], names, can_id[keep], extended[keep],
-        size[keep], data[keep], stamped[keep],
-    )  # fmt: skip
+        lines[keep],
+        stamp[keep],
+        interface[keep],
+        names,
+        can_id[keep],
+        extended[keep],
+        size[keep],
+        data[keep],
+        stamped[keep],
+    )
 
 
 def _words(a: npt.NDArray[np.uint8]) -> npt.NDArray[np.uint64]:

@@ -75,27 +75,8 @@ def decode_into(
 
 def _only_channel(frames: FrameColumns, channel: str) -> FrameColumns:
     if channel not in frames.channels:
-        keep = np.zeros(len(frames), np.bool_)
-    else:
-        keep = frames.channel == frames.channels.index(channel)
-    rows = np.flatnonzero(keep)
-    renumber = {int(old): new for new, old in enumerate(rows)}
-    return FrameColumns(
-        order=frames.order[rows],
-        timestamp=frames.timestamp[rows],
-        has_time=frames.has_time[rows],
-        channel=frames.channel[rows],
-        channels=frames.channels,
-        can_id=frames.can_id[rows],
-        extended=frames.extended[rows],
-        remote=frames.remote[rows],
-        fd=frames.fd[rows],
-        error=frames.error[rows],
-        length=frames.length[rows],
-        data=frames.data[rows],
-        long_data={renumber[r]: d for r, d in frames.long_data.items() if r in renumber},
-        bad_lines=frames.bad_lines,
-    )
+        return frames.take(np.zeros(0, np.int64))
+    return frames.take(np.flatnonzero(frames.channel == frames.channels.index(channel)))
 
 
 def _head(frames: FrameColumns, rows: npt.NDArray[np.int64]) -> dict[str, np.ndarray]:
@@ -108,9 +89,14 @@ def _head(frames: FrameColumns, rows: npt.NDArray[np.int64]) -> dict[str, np.nda
 
 
 def _decode_veronte(
-    frames: FrameColumns, rows: npt.NDArray[np.int64], codec: Codec, sender: Sender,
-    sender_code: npt.NDArray[np.int16], bus_map: BusMap, tables: Tables,
-) -> npt.NDArray[np.int64]:  # fmt: skip
+    frames: FrameColumns,
+    rows: npt.NDArray[np.int64],
+    codec: Codec,
+    sender: Sender,
+    sender_code: npt.NDArray[np.int16],
+    bus_map: BusMap,
+    tables: Tables,
+) -> npt.NDArray[np.int64]:
     """Decode one sender's frames column-wise; return the rows decoded."""
     excess = bus_map.allow_excess
     data = frames.data.view("<u8")[rows, 0]
@@ -158,8 +144,9 @@ def _decode_dronecan(
         multi = which[found.crc[which] >= 0]
         computed = dronecan.crc_ok(found, multi)
         wrong = multi[computed != found.crc[multi]]
-        records += _crc_mismatches(frames, found, wrong, computed[computed != found.crc[multi]],
-                                   stamp)  # fmt: skip
+        records += _crc_mismatches(
+            frames, found, wrong, computed[computed != found.crc[multi]], stamp
+        )
         intact = np.ones(len(found.last), np.bool_)
         intact[wrong] = False
         good = which[intact[which]]
@@ -169,9 +156,12 @@ def _decode_dronecan(
 
 
 def _crc_mismatches(
-    frames: FrameColumns, found: dronecan.Transfers, wrong: np.ndarray, computed: np.ndarray,
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    wrong: np.ndarray,
+    computed: np.ndarray,
     stamp: np.ndarray,
-) -> list[tuple[int, Record]]:  # fmt: skip
+) -> list[tuple[int, Record]]:
     out = []
     for transfer, crc in zip(wrong.tolist(), computed.tolist(), strict=True):
         last, carried = int(found.last[transfer]), int(found.crc[transfer])
@@ -188,9 +178,13 @@ def _crc_mismatches(
 
 
 def _decode_type(
-    frames: FrameColumns, found: dronecan.Transfers, index: int, which: np.ndarray,
-    stamp: np.ndarray, tables: Tables,
-) -> list[tuple[int, Record]]:  # fmt: skip
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    index: int,
+    which: np.ndarray,
+    stamp: np.ndarray,
+    tables: Tables,
+) -> list[tuple[int, Record]]:
     """Decode one type's transfers: by columns where the layout allows, else one by one."""
     codec = dronecan.codec_of(index)
     schema = codec.data_type.schema
@@ -219,9 +213,13 @@ def _decode_type(
 
 
 def _add_transfers(
-    frames: FrameColumns, found: dronecan.Transfers, which: np.ndarray, kind: str,
-    fields: dict[str, object], tables: Tables,
-) -> None:  # fmt: skip
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    which: np.ndarray,
+    kind: str,
+    fields: dict[str, object],
+    tables: Tables,
+) -> None:
     last = found.last[which]
     head = _head(frames, last)
     can_id = frames.can_id[last].astype(np.int64)
@@ -233,9 +231,12 @@ def _add_transfers(
 
 
 def _one_transfer(
-    frames: FrameColumns, found: dronecan.Transfers, transfer: int, codec: DroneCanCodec,
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    transfer: int,
+    codec: DroneCanCodec,
     stamp: np.ndarray,
-) -> list[tuple[int, Record]]:  # fmt: skip
+) -> list[tuple[int, Record]]:
     """A transfer the column decoders do not take, decoded as the reassembler does."""
     last, first = int(found.last[transfer]), int(found.first[transfer])
     can_id = int(frames.can_id[last])
@@ -245,8 +246,9 @@ def _one_transfer(
     try:
         message = codec.decode(payload)
     except DecodeError as error:
-        report = ProblemReport(Problem.BAD_PAYLOAD, can_id, payload, float(stamp[first]),
-                               str(error))  # fmt: skip
+        report = ProblemReport(
+            Problem.BAD_PAYLOAD, can_id, payload, float(stamp[first]), str(error)
+        )
         return [(key, problem_record(report, channel))]
     record = Record(
         float(frames.timestamp[last]) if frames.has_time[last] else None,

@@ -59,6 +59,28 @@ class FrameColumns:
     def __len__(self) -> int:
         return len(self.order)
 
+    def take(
+        self, rows: npt.NDArray[np.int64], order: npt.NDArray[np.int64] | None = None
+    ) -> FrameColumns:
+        """The frames of ``rows``, in that order (numbered ``order`` if given)."""
+        where = {int(old): new for new, old in enumerate(rows)} if self.long_data else {}
+        return FrameColumns(
+            order=self.order[rows] if order is None else order,
+            timestamp=self.timestamp[rows],
+            has_time=self.has_time[rows],
+            channel=self.channel[rows],
+            channels=self.channels,
+            can_id=self.can_id[rows],
+            extended=self.extended[rows],
+            remote=self.remote[rows],
+            fd=self.fd[rows],
+            error=self.error[rows],
+            length=self.length[rows],
+            data=self.data[rows],
+            long_data={where[r]: d for r, d in self.long_data.items() if r in where},
+            bad_lines=self.bad_lines,
+        )
+
     def frame(self, row: int) -> Frame:
         """The frame of one row, as the per-frame readers give it."""
         data = self.long_data.get(row)
@@ -123,8 +145,9 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
     channels: dict[str, int] = {}
     remapped = []
     for part in parts:
-        codes = np.array([channels.setdefault(c, len(channels)) for c in part.channels] or [0],
-                         np.int32)  # fmt: skip
+        codes = np.array(
+            [channels.setdefault(c, len(channels)) for c in part.channels] or [0], np.int32
+        )
         remapped.append(codes[part.channel] if len(part) else part.channel)
     order = np.concatenate([p.order for p in parts])
     in_sequence = all(

@@ -27,10 +27,10 @@ from typing import Any
 import pyarrow as pa
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
-from veronte4x.codec import Codec, layouts
+from veronte4x.capture.columnar.veronte import layout_list
+from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import Field, Kind
-from veronte4x.codec.pwm import PWM_COMMANDS
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
@@ -123,18 +123,7 @@ def integer_type(low: int, high: int) -> pa.DataType:
 def veronte_layouts(codec: Codec) -> dict[str, list[FrameLayout]]:
     """The frame layouts of each Veronte message type this codec decodes, by type name."""
     found: dict[str, list[FrameLayout]] = {}
-    built_in = [
-        layouts.STATUS_4X,
-        layouts.STATUS_CEX,
-        layouts.SCORE,
-        layouts.READY,
-        layouts.ARBITRATION_VARIABLE,
-        layouts.VERSION_REQUEST,
-        layouts.VERSION_RESPONSE,
-        layouts.PWM_SET[codec.pwm_packing],
-        *layouts.OPAQUE.values(),
-    ]
-    for layout in [*built_in, *(declared.frame for declared in codec.layouts)]:
+    for layout in layout_list(codec):
         found.setdefault(layout.name, []).append(layout)
     return found
 
@@ -283,6 +272,3 @@ ERRORS = TableSpec("errors", (*HEAD, *PROBLEM), ())
 """The table of every record whose ``error`` is set."""
 UNDECODED = TableSpec("unknown", (*HEAD, *UNKNOWN), ())
 """The table of undecoded traffic: records with neither a message nor an error."""
-
-PWM_FIRST_CHANNELS = tuple(PWM_COMMANDS)
-"""First channels of the PWM set commands (for docs and checks)."""

@@ -103,26 +103,7 @@ def _mf4(path: str) -> FrameColumns:
             for p, offset in zip(parts, np.cumsum([0] + [len(p) for p in parts[:-1]]), strict=True)
         ]
     )
-    return _reorder(joined, order)
-
-
-def _reorder(columns: FrameColumns, order: np.ndarray) -> FrameColumns:
-    where = {int(old): new for new, old in enumerate(order)} if columns.long_data else {}
-    return FrameColumns(
-        order=np.arange(1, len(order) + 1, dtype=np.int64),
-        timestamp=columns.timestamp[order],
-        has_time=columns.has_time[order],
-        channel=columns.channel[order],
-        channels=columns.channels,
-        can_id=columns.can_id[order],
-        extended=columns.extended[order],
-        remote=columns.remote[order],
-        fd=columns.fd[order],
-        error=columns.error[order],
-        length=columns.length[order],
-        data=columns.data[order],
-        long_data={where[row]: data for row, data in columns.long_data.items()},
-    )
+    return joined.take(order, np.arange(1, len(order) + 1, dtype=np.int64))
 
 
 def _mf4_group(mdf: Any, index: int, kind: str, names: set[str], start: float) -> FrameColumns:

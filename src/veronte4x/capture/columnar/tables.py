@@ -45,9 +45,12 @@ class Tables:
         self._parts: dict[str, list[tuple[npt.NDArray[np.int64], dict[str, pa.Array]]]] = {}
 
     def add_columns(
-        self, kind: str, keys: npt.NDArray[np.int64], head: Mapping[str, Any],
+        self,
+        kind: str,
+        keys: npt.NDArray[np.int64],
+        head: Mapping[str, Any],
         fields: Mapping[str, Any],
-    ) -> None:  # fmt: skip
+    ) -> None:
         """Add rows given as columns (NumPy or Arrow), head columns included.
 
         ``head`` holds ``timestamp`` (NaN for none), ``has_time``, ``channel`` (codes),
@@ -61,8 +64,9 @@ class Tables:
         arrays: dict[str, pa.Array] = {}
         for field in spec.schema:
             if field.name == "timestamp":
-                arrays["timestamp"] = pa.array(head["timestamp"], pa.float64(),
-                                               mask=~head["has_time"])  # fmt: skip
+                arrays["timestamp"] = pa.array(
+                    head["timestamp"], pa.float64(), mask=~head["has_time"]
+                )
             elif field.name == "channel":
                 arrays["channel"] = np.asarray(head["channel"], np.int32)
             elif field.name == "sender":
@@ -163,8 +167,9 @@ def _arrow(
     if pa.types.is_dictionary(type_):
         if names is None:  # names found in the data: encoded once the table is whole
             return pa.array(list(values), pa.string())
-        indices = pa.array(values if isinstance(values, np.ndarray) else list(values),
-                           type_.index_type)  # fmt: skip
+        indices = pa.array(
+            values if isinstance(values, np.ndarray) else list(values), type_.index_type
+        )
         return pa.DictionaryArray.from_arrays(indices, pa.array(names, pa.string()))
     if isinstance(values, np.ndarray) and values.dtype != object:
         return pa.array(values, type_)

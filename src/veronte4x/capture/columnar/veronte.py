@@ -25,9 +25,12 @@ Columns = dict[str, Any]
 
 
 def targets(
-    codec: Codec, sender: Sender, data: npt.NDArray[np.uint64], length: npt.NDArray[np.int64],
+    codec: Codec,
+    sender: Sender,
+    data: npt.NDArray[np.uint64],
+    length: npt.NDArray[np.int64],
     excess: bool,
-) -> npt.NDArray[np.int16]:  # fmt: skip
+) -> npt.NDArray[np.int16]:
     """Which layout decodes each frame of one sender: an index into `layout_list`, or -1
     where the per-frame decoder must decide (unknown command, too short to tell).
 
