@@ -113,7 +113,7 @@ class MonitorState:
     Args:
         rate_window: Seconds over which rates are counted.
 
-    Example:
+    Examples:
         >>> from veronte4x import capture
         >>> state = MonitorState()
         >>> for record in capture.read("examples/capture.log"):

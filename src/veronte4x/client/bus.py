@@ -98,7 +98,7 @@ class BusClient:
         first_transfer_id: Where every transfer id stream starts; a tool that runs briefly
             and often should pick it at random (see `TransferIds`).
 
-    Example:
+    Examples:
         >>> import can
         >>> from veronte4x.simulator import SimulatedEsc
         >>> from veronte4x.simulator.can_node import EscBus

@@ -34,7 +34,7 @@ class Commander:
     Raises:
         EncodeError: A rate or watchdog that is not a positive number.
 
-    Example:
+    Examples:
         >>> commander = Commander(rate=10, watchdog=0.25)
         >>> commander.set({0: 0.5, 1: -0.5}, now=0.0)
         >>> commander.poll(0.0)

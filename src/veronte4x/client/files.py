@@ -44,7 +44,7 @@ class FileRead:
 class FileServer:
     """Files in memory, by path, answered to ``file.GetInfo`` and ``file.Read`` requests.
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> server = FileServer()
         >>> server.add(b"fw.bin", bytes(300))

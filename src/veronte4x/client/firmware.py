@@ -82,7 +82,7 @@ class FirmwareUpdate:
         read_timeout: See `READ_TIMEOUT`.
         restart_timeout: See `RESTART_TIMEOUT`.
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> update = FirmwareUpdate(21, b"fw.bin", 300, now=0.0)
         >>> update.accepted(dronecan.BeginFirmwareUpdateResponse(0), 0.1)

@@ -45,7 +45,7 @@ class NodeEntry:
 class NodeTable:
     """Nodes by id, updated from NodeStatus transfers given with their timestamps.
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> table = NodeTable()
         >>> status = dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)

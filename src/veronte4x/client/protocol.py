@@ -68,7 +68,7 @@ class ClientProtocol:
         priority: CAN priority of what it sends.
         first_transfer_id: Where every transfer id stream starts (see `TransferIds`).
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> from veronte4x.simulator import SimulatedEsc
         >>> client, esc = ClientProtocol(), SimulatedEsc(node_id=21)

@@ -92,7 +92,7 @@ class Requester:
         transfer_ids: The transfer id counters to share with other senders of this node.
         priority: CAN priority of the requests.
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> requester = Requester(node_id=127)
         >>> handle = requester.request(dronecan.GetNodeInfoRequest(), 21, now=0.0)

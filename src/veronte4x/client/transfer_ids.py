@@ -22,7 +22,7 @@ class TransferIds:
             repeat, so a run that starts at 0 again right after another would lose its
             first request.
 
-    Example:
+    Examples:
         >>> ids = TransferIds()
         >>> [ids.next(TransferKind.REQUEST, 11, 21) for _ in range(3)], ids.next(
         ...     TransferKind.REQUEST, 11, 22

@@ -27,7 +27,7 @@ _TABLE = _table()
 def crc64we(data: bytes, crc: int = 0) -> int:
     """CRC-64-WE of ``data``; pass a previous result as ``crc`` to continue over more data.
 
-    Example:
+    Examples:
         >>> hex(crc64we(b"123456789"))
         '0x62ec59e3f1a4f00a'
         >>> crc64we(b"6789", crc64we(b"12345")) == crc64we(b"123456789")

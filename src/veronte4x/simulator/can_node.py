@@ -105,7 +105,7 @@ class EscBus:
         escs: The simulated ESCs (distinct node ids).
         clock: Seconds from any monotonic source; the only clock the simulators see.
 
-    Example:
+    Examples:
         >>> import can
         >>> from veronte4x.simulator import SimulatedEsc
         >>> with can.Bus(interface="virtual", channel="doc-escs") as bus:
