@@ -3,6 +3,11 @@
 Every error the library raises on purpose derives from :class:`Veronte4xError`.
 :class:`DecodeError` and :class:`EncodeError` also derive from :class:`ValueError`, so
 code written for the standard library's conventions keeps working.
+
+Arguments of the wrong type are a caller's mistake, not bad data: every public entry point
+raises :class:`TypeError` for them, naming the argument and the type expected (see
+:func:`argument_type_error`). Bad bytes from a bus or a file give a :class:`DecodeError`
+(or, in the reassembler, a counted problem), never a :class:`TypeError`.
 """
 
 from __future__ import annotations
@@ -32,7 +37,7 @@ class DecodeError(Veronte4xError, ValueError):
     ) -> None:
         self.message_type = message_type
         self.reason = reason
-        self.data = bytes(data)
+        self.data = bytes(data) if isinstance(data, (bytes, bytearray, memoryview)) else b""
         self.field = field
         where = message_type or "frame"
         if field is not None:
@@ -74,3 +79,13 @@ class EncodeError(Veronte4xError, ValueError):
 
 class LayoutError(Veronte4xError, ValueError):
     """A layout declaration that cannot describe a Veronte frame (too long, misplaced bytes)."""
+
+
+def argument_type_error(function: str, argument: str, expected: str, value: object) -> TypeError:
+    """The `TypeError` for an argument of the wrong type, in one wording everywhere.
+
+    Example:
+        >>> argument_type_error("decode", "data", "bytes-like", "00ff")
+        TypeError("decode(): data must be bytes-like, not str")
+    """
+    return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
