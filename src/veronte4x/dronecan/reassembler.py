@@ -23,6 +23,7 @@ and evicting the oldest one cost O(1) amortised, whatever the size of the table.
 from __future__ import annotations
 
 import enum
+import math
 import struct
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import OrderedDict, deque
@@ -95,6 +96,7 @@ class ProblemReport(NamedTuple):
     detail: str
 
 
+_NEVER = -math.inf
 _LOST = 32
 """Added to a transfer id in `_Session.closed` when that transfer was lost (not delivered)."""
 
@@ -125,34 +127,55 @@ class _Session:
         "toggle",
     )
 
-    def __init__(self, codec: Codec, can_id: int) -> None:
-        self.codec = codec
-        self.kind = codec.data_type.kind
-        self.data_type_id = codec.data_type.data_type_id
+    def __init__(self, shared: tuple[Any, ...], can_id: int) -> None:
+        self.codec = None
+        self.reset(shared, can_id)
+
+    def reset(self, shared: tuple[Any, ...], can_id: int) -> None:
+        """Make this the fresh state of the session of ``can_id`` (of the type ``shared``)."""
+        if self.codec is not shared[0]:
+            (
+                self.codec,
+                self.kind,
+                self.data_type_id,
+                self.decode_frame,
+                self.decode_payload,
+                self.crc_seed,
+                self.limit,
+            ) = shared
         self.destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
-        self.decode_frame = codec.fast.decode_frame if codec.fast else None
-        self.decode_payload = codec.fast.decode if codec.fast else codec.decode
-        self.crc_seed = codec.crc_seed
-        self.limit = codec.max_payload + 3  # CRC and tail byte included
         # The transfer id the fast path of `feed` takes: the one in progress, or the one
         # after the transfer delivered last; -1 sends every frame through the full update.
         self.tid = -1
         self.toggle = 0  # expected toggle bit (0 or 0x20)
-        self.start = -float("inf")  # timestamp of the first frame of the latest transfer
+        self.start = _NEVER  # timestamp of the first frame of the latest transfer
         self.buffer: bytearray | None = None  # payload so far (CRC first), None when idle
         self.last = b""  # the frame accepted last
         # The transfer that ended last: its id if it was delivered (then it began at
         # `start`), its id + _LOST if it was lost or counted as MISSED_START (then its frames
         # are silent until `closed_at` + timeout), -1 if none.
         self.closed = -1
-        self.closed_at = -float("inf")
+        self.closed_at = _NEVER
         self.counted = False  # the transfer in progress was already counted as lost
 
 
+def _shared(codec: Codec) -> tuple[Any, ...]:
+    """What every session of a type holds, in the order `_Session` takes it."""
+    return (
+        codec,
+        codec.data_type.kind,
+        codec.data_type.data_type_id,
+        codec.fast.decode_frame if codec.fast else None,
+        codec.fast.decode if codec.fast else codec.decode,
+        codec.crc_seed,
+        codec.max_payload + 3,  # CRC and tail byte included
+    )
+
+
 _new_tuple = tuple.__new__
-_MESSAGES = {dtid: c for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
+_MESSAGES = {dtid: _shared(c) for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
 _SERVICES = {
-    dtid << 1 | (kind is TransferKind.REQUEST): c
+    dtid << 1 | (kind is TransferKind.REQUEST): _shared(c)
     for (kind, dtid), c in BY_ID.items()
     if kind is not TransferKind.MESSAGE
 }
@@ -218,6 +241,7 @@ class Reassembler:
         # their latest lost frame came). Only the front is ever examined for expiry.
         self._age: OrderedDict[int, _Session] = OrderedDict()
         self._touch = self._age.move_to_end
+        self._get = self._sessions.get
 
     @property
     def session_count(self) -> int:
@@ -251,7 +275,9 @@ class Reassembler:
         # Frame lengths: decode_frame checks a single frame's exact length itself.
         try:
             key = can_id & 0xFFFFFF
-            session = self._sessions[key]
+            session = self._get(key)
+            if session is None:
+                return self._open(can_id, data, timestamp)
             tail = data[-1]
             tid = tail & 0x1F
             if (
@@ -261,7 +287,7 @@ class Reassembler:
                 or timestamp - session.start > self.timeout
             ):
                 return self._feed(can_id, data, timestamp)
-        except (KeyError, TypeError, IndexError):  # new session, wrong type, no tail byte
+        except (TypeError, IndexError):  # wrong type, no tail byte
             return self._feed(can_id, data, timestamp)
         buffer = session.buffer
         if buffer is None:
@@ -327,12 +353,12 @@ class Reassembler:
             return None
         tail = data[-1]
         if can_id & 0x80:
-            codec = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
             if not can_id & 0x7F or not can_id & 0x7F00:
                 self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
                 return None
         elif can_id & 0x7F:
-            codec = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
         else:
             if tail & 0xC0 != 0xC0:
                 self._report(
@@ -341,26 +367,86 @@ class Reassembler:
             else:
                 self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "anonymous message")
             return None
-        if codec is None:
+        if shared is None:
             self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "unknown data type")
             return None
         session = self._sessions.get(can_id & 0xFFFFFF)
         if session is None:
-            session = self._new_session(codec, can_id, timestamp)
+            session = self._new_session(shared, can_id, timestamp)
         if tail & 0x80:
             return self._start(session, can_id, data, tail, timestamp)
         return self._continue(session, can_id, data, tail, timestamp)
 
-    def _new_session(self, codec: Codec, can_id: int, timestamp: float) -> _Session:
-        if len(self._sessions) >= self.max_sessions:
-            self._expire(timestamp)
-            if len(self._sessions) >= self.max_sessions:  # evict the oldest
-                key, dropped = self._age.popitem(last=False)
-                del self._sessions[key]
-                if dropped.buffer is not None and not dropped.counted:
-                    self._report(Problem.EVICTED, key, b"", timestamp, "session table full")
+    def _open(self, can_id: int, data: Any, timestamp: float) -> Transfer | None:
+        """The first frame of a session not in the table: a lean path for a valid single
+        frame of a type with a generated decoder; anything else goes through `_feed`."""
+        if (
+            data.__class__ is not bytes
+            or can_id.__class__ is not int
+            or not 0 < len(data) <= 8
+            or not 0 < can_id <= 0x1FFFFFFF
+        ):
+            return self._feed(can_id, data, timestamp)
+        tail = data[-1]
+        if can_id & 0x80:
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            destination: int | None = (can_id >> 8) & 0x7F
+            if not destination or not can_id & 0x7F:
+                return self._feed(can_id, data, timestamp)
+        elif can_id & 0x7F:
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            destination = None
+        else:
+            return self._feed(can_id, data, timestamp)
+        if shared is None or tail & 0xE0 != 0xC0 or shared[3] is None:
+            return self._feed(can_id, data, timestamp)
+        try:
+            message = shared[3](data)
+        except _FRAME_ERRORS:  # wrong length: the checked path reports it
+            return self._feed(can_id, data, timestamp)
+        session = self._new_session(shared, can_id, timestamp)
+        tid = tail & 0x1F
+        session.tid = (tid + 1) & 0x1F
+        session.closed = tid
+        session.start = timestamp
+        session.last = data
+        self.transfers += 1
+        return _new_tuple(
+            Transfer,
+            (
+                message,
+                can_id & 0x7F,
+                destination,
+                can_id >> 24,
+                tid,
+                timestamp,
+                shared[1],
+                shared[2],
+            ),
+        )
+
+    def _new_session(self, shared: tuple[Any, ...], can_id: int, timestamp: float) -> _Session:
+        """Add a session, first making room if the table is full.
+
+        The front of the age order is the session whose latest transfer began first; if
+        any session is idle past the timeout, that one is. It is dropped (its incomplete
+        transfer counted as TIMEOUT if it timed out, else as EVICTED).
+        """
+        sessions = self._sessions
+        if len(sessions) < self.max_sessions:
+            session = _Session(shared, can_id)
+        else:
+            key, session = self._age.popitem(last=False)
+            del sessions[key]
+            if session.buffer is not None and not session.counted:
+                if timestamp - max(session.start, session.closed_at) > self.timeout:
+                    problem, detail = Problem.TIMEOUT, f"transfer id {session.tid}"
+                else:
+                    problem, detail = Problem.EVICTED, "session table full"
+                self._report(problem, key, b"", timestamp, detail)
+            session.reset(shared, can_id)  # the dropped state, reused
         key = can_id & 0xFFFFFF
-        session = self._sessions[key] = self._age[key] = _Session(codec, can_id)
+        sessions[key] = self._age[key] = session
         return session
 
     def _lost(self, session: _Session, can_id: int, tid: int, timestamp: float) -> None:
