@@ -353,7 +353,7 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
         src.lines.append(
             f"    {names}= {unpacker}.unpack(buf)" if groups else f"    {unpacker}.unpack(buf)"
         )
-        src.lines.append(f"    o = new({builder})")
+        src.lines.append(f"    o = {builder}()")
         for k, group in enumerate(groups):
             if not _direct(group, scalars) and group.bits not in _STRUCT_CODES:
                 src.lines.append(f"    g{k} = from_bytes(g{k}, 'little')")
@@ -435,7 +435,7 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
             src.lines += [
                 f"def {function}(buf):",
                 f"    x = from_bytes(buf, 'big'){drop}",
-                f"    o = new({builder})",
+                f"    o = {builder}()",
                 f"    o.{name} = ({items})",
                 f"    o.__class__ = {cls}",
                 "    return o",
