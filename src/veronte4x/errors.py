@@ -85,7 +85,7 @@ def argument_type_error(function: str, argument: str, expected: str, value: obje
     """The `TypeError` for an argument of the wrong type, in one wording everywhere.
 
     Example:
-        >>> argument_type_error("decode", "data", "bytes-like", "00ff")
-        TypeError("decode(): data must be bytes-like, not str")
+        >>> str(argument_type_error("decode", "data", "bytes-like", "00ff"))
+        'decode(): data must be bytes-like, not str'
     """
     return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
