@@ -301,26 +301,30 @@ def optimistic_decoder(
 
 
 def builder(cls: type[Message]) -> type | None:
-    """A plain class with the same slots as ``cls`` under `Message`, or None if none fits.
+    """A plain class with the same slots as ``cls``, or None if none fits.
 
     An instance of it is filled by plain slot stores (no frozen ``__setattr__``, no call)
     and then given the message class by ``__class__`` assignment, which Python allows
     between classes of identical layout. The result is an ordinary instance of ``cls``,
     built several times faster than through the slots' setters or the frozen ``__init__``.
-    Classes whose slots are spread over several bases get None (the setters are used).
+    The builder derives from the base under the class that declares the slots, which must
+    be a plain slotted class (`Message`, `DeclaredMessage`); otherwise None (the slots'
+    setters are used).
     """
-    if Message not in cls.__mro__:
+    declaring: type = cls
+    while not declaring.__dict__.get("__slots__") and declaring.__base__ is not object:
+        declaring = declaring.__base__
+    base = declaring.__base__
+    if base is None or base.__setattr__ is not object.__setattr__:
         return None
-    slots: list[str] = []
-    for base in reversed(cls.__mro__[: cls.__mro__.index(Message)]):
-        slots += base.__dict__.get("__slots__", ())
-    builder = type(f"_{cls.__name__}Builder", (Message,), {"__slots__": tuple(slots)})
+    slots = declaring.__dict__.get("__slots__", ())
+    made = type(f"_{cls.__name__}Builder", (base,), {"__slots__": tuple(slots)})
     try:
-        probe = object.__new__(builder)
+        probe = object.__new__(made)
         probe.__class__ = cls
     except TypeError:
         return None
-    return builder
+    return made
 
 
 def _slot_setter(cls: type[Message], attr: str) -> Callable[[Message, Any], None]:

@@ -22,9 +22,10 @@ from veronte4x.errors import LayoutError
 _DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
 
 
-@dataclasses.dataclass(frozen=True, slots=True)
 class DeclaredMessage(Message):
-    """Base class of the message classes that `Layout` generates."""
+    """Base class of the message classes that `Layout` generates (frozen dataclasses)."""
+
+    __slots__ = ()
 
 
 class Layout:
