@@ -135,8 +135,11 @@ def test_encode_errors(message: codec.Message, error: str) -> None:
 
 
 def test_encoding_a_foreign_object() -> None:
-    with pytest.raises(codec.EncodeError, match=r"^str\.message = 'x': expected a veronte4x"):
+    with pytest.raises(TypeError, match=r"^encode\(\): message must be a Veronte message, not str"):
         codec.encode("x")  # type: ignore[arg-type]
+    declared = codec.Layout(20, "Other", [codec.unsigned("a", 8)])
+    with pytest.raises(codec.EncodeError, match=r"^Other\.message = "):
+        codec.encode(declared.message_class(a=1))  # type: ignore[call-arg]
 
 
 def test_infinities_and_nans_are_float32_values() -> None:

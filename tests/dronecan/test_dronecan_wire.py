@@ -65,9 +65,15 @@ def test_can_id_ranges(function: object, args: tuple[object, ...]) -> None:
         function(*args)  # type: ignore[operator]
 
 
-@pytest.mark.parametrize("can_id", [-1, 1 << 29, "x"])
-def test_parse_rejects_non_29_bit_ids(can_id: object) -> None:
+@pytest.mark.parametrize("can_id", [-1, 1 << 29])
+def test_parse_rejects_non_29_bit_ids(can_id: int) -> None:
     with pytest.raises(dronecan.DecodeError):
+        dronecan.parse_can_id(can_id)
+
+
+@pytest.mark.parametrize("can_id", ["x", 1.0, True, None])
+def test_parse_refuses_a_can_id_that_is_not_an_int(can_id: object) -> None:
+    with pytest.raises(TypeError, match=r"^parse_can_id\(\): can_id must be an int, not "):
         dronecan.parse_can_id(can_id)  # type: ignore[arg-type]
 
 

@@ -105,8 +105,13 @@ class Codec:
         pwm_packing: PwmPacking = PwmPacking.LSB_FIRST,
         layouts: Iterable[Layout] = (),
     ) -> None:
+        if not isinstance(pwm_packing, PwmPacking):
+            raise argument_type_error("Codec", "pwm_packing", "a PwmPacking", pwm_packing)
         self.pwm_packing = pwm_packing
         self.layouts = tuple(layouts)
+        for declared in self.layouts:
+            if not isinstance(declared, Layout):
+                raise argument_type_error("Codec", "layouts", "Layout objects", declared)
         self._by_command: list[Decoder | None] = [None] * 256
         self._encoders: dict[type[Message], Encoder] = {}
         self._install_built_in()
@@ -357,7 +362,12 @@ class Codec:
 
         Each decoder is called as ``decoder(data, allow_excess)``; a missing one (None) is
         where `decode` raises `UnknownCommandError`.
+
+        Raises:
+            TypeError: ``sender`` is not a `Sender`.
         """
+        if not isinstance(sender, Sender):
+            raise argument_type_error("dispatch", "sender", "a Sender", sender)
         if sender is _ARBITER:
             return Dispatch(tuple(self._by_command), self._status, self._score)
         return Dispatch(tuple(self._by_command), self._ready, self._variable)
@@ -368,10 +378,13 @@ class Codec:
         Raises:
             EncodeError: A field is out of range or of the wrong kind (the error names the
                 message type, the field, the value and what is allowed), or the message is
-                not a Veronte message this codec knows.
+                of a declared class this codec does not hold.
+            TypeError: ``message`` is not a Veronte message at all.
         """
         encode = self._encoders.get(type(message))
         if encode is None:
+            if not isinstance(message, Message):
+                raise argument_type_error("encode", "message", "a Veronte message", message)
             raise EncodeError(
                 type(message).__name__, "message", message, "a veronte4x.codec message"
             )

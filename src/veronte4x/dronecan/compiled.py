@@ -52,6 +52,12 @@ class SlowPath(Exception):
     """Raised by generated code when the generic serializer must take over."""
 
 
+ENCODE_FALLBACK = (SlowPath, TypeError, IndexError, OverflowError, struct.error)
+"""What the generated encoders raise on values they do not handle (out of range, of
+another type, of another length): the generic serializer then decides. Nothing else is
+caught, so a fault in the generated code itself is not hidden."""
+
+
 class FastPaths(NamedTuple):
     """The generated functions of one type.
 

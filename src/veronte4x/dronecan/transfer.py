@@ -15,7 +15,7 @@ from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
 from veronte4x.dronecan.codec import BY_CLASS, BY_ID, Codec, can_id_base
-from veronte4x.dronecan.compiled import SlowPath
+from veronte4x.dronecan.compiled import ENCODE_FALLBACK, SlowPath
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
@@ -76,16 +76,18 @@ def encode(
             cast) instead of raising.
 
     Raises:
-        EncodeError: Unknown class, a field the type cannot hold, or bad transport fields.
+        EncodeError: A field the type cannot hold, or a transport field out of range.
+        TypeError: ``message`` not an instance of a DroneCAN message, request or response
+            class, or a transport argument that is not an int.
     """
     if not saturate:
         # Generated fast path; on anything unusual the checked path raises the precise error.
-        try:
-            return _FAST[message.__class__](
-                message, source_node_id, transfer_id, priority, destination_node_id
-            )
-        except Exception:
-            pass
+        fast = _FAST.get(message.__class__)
+        if fast is not None:
+            try:
+                return fast(message, source_node_id, transfer_id, priority, destination_node_id)
+            except ENCODE_FALLBACK:
+                pass
     return _encode_checked(
         message, source_node_id, transfer_id, priority, destination_node_id, saturate
     )
@@ -102,7 +104,9 @@ def _encode_checked(
     """`encode` through the generic serializer, checking every argument."""
     codec = BY_CLASS.get(type(message))
     if codec is None:
-        raise EncodeError("encode", "message", message, "a DroneCAN message class")
+        raise argument_type_error(
+            "encode", "message", "a DroneCAN message, request or response", message
+        )
     if not (
         type(source_node_id) is int
         and type(transfer_id) is int
@@ -114,7 +118,13 @@ def _encode_checked(
         _check_transport(codec, source_node_id, transfer_id, priority)
     can_id = priority << 24 | can_id_base(codec.data_type) | source_node_id
     if can_id & 0x80:
-        if type(destination_node_id) is not int or not 1 <= destination_node_id <= 127:
+        if destination_node_id is not None and (
+            not isinstance(destination_node_id, int) or isinstance(destination_node_id, bool)
+        ):
+            raise argument_type_error(
+                "encode", "destination_node_id", "an int", destination_node_id
+            )
+        if destination_node_id is None or not 1 <= destination_node_id <= 127:
             raise EncodeError(
                 codec.data_type.full_name, "destination_node_id", destination_node_id, "1..127"
             )
@@ -137,7 +147,9 @@ def _check_transport(codec: Codec, source: object, tid: object, priority: object
         ("transfer_id", tid, 0, 31),
         ("priority", priority, 0, 31),
     ):
-        if type(value) is not int or not low <= value <= high:
+        if not isinstance(value, int) or isinstance(value, bool):
+            raise argument_type_error("encode", field, "an int", value)
+        if not low <= value <= high:
             raise EncodeError(name, field, value, f"an int in {low}..{high}")
 
 
