@@ -225,7 +225,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     if plan is not None:
         namespace["_unpack"] = struct.Struct(plan[0]).unpack_from
         namespace["_pack"] = struct.Struct(plan[0]).pack
-    for dc_field in dataclasses.fields(layout.message):
+    for dc_field in _dataclass_fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
     if plan is not None:
         namespace["_unpack_exact"] = struct.Struct(plan[0]).unpack
@@ -312,19 +312,25 @@ def builder(cls: type[Message]) -> type | None:
     setters are used).
     """
     declaring: type = cls
-    while not declaring.__dict__.get("__slots__") and declaring.__base__ is not object:
+    while not declaring.__dict__.get("__slots__") and declaring.__base__ not in (None, object):
         declaring = declaring.__base__
-    base = declaring.__base__
+    base: Any = declaring.__base__
     if base is None or base.__setattr__ is not object.__setattr__:
         return None
     slots = declaring.__dict__.get("__slots__", ())
     made = type(f"_{cls.__name__}Builder", (base,), {"__slots__": tuple(slots)})
     try:
-        probe = object.__new__(made)
+        probe: Any = object.__new__(made)
         probe.__class__ = cls
     except TypeError:
         return None
     return made
+
+
+def _dataclass_fields(cls: type[Message]) -> tuple[dataclasses.Field[Any], ...]:
+    """The fields of a message class (every concrete message is a dataclass)."""
+    message_class: Any = cls
+    return dataclasses.fields(message_class)
 
 
 def _slot_setter(cls: type[Message], attr: str) -> Callable[[Message, Any], None]:
@@ -343,7 +349,7 @@ def _values(layout: FrameLayout) -> list[tuple[str, str]]:
             by_attr.setdefault(f.attr, []).append((f.index or 0, f"f{number}"))
     implied = {attr for attr, _ in layout.implied}
     values = []
-    for dc_field in dataclasses.fields(layout.message):
+    for dc_field in _dataclass_fields(layout.message):
         attr = dc_field.name
         if attr in implied:
             values.append((attr, f"_implied_{attr}"))

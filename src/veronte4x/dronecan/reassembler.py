@@ -128,7 +128,7 @@ class _Session:
     )
 
     def __init__(self, shared: tuple[Any, ...], can_id: int) -> None:
-        self.codec = None
+        self.codec: Any = None
         self.reset(shared, can_id)
 
     def reset(self, shared: tuple[Any, ...], can_id: int) -> None:
