@@ -12,6 +12,11 @@ raises :class:`TypeError` for them, naming the argument and the type expected (s
 
 from __future__ import annotations
 
+from typing import Union
+
+BytesLike = Union[bytes, bytearray, memoryview]  # noqa: UP007  (a run-time alias on 3.10)
+"""What the codecs accept as data: bytes, bytearray or memoryview."""
+
 
 class Veronte4xError(Exception):
     """Base class of every error raised by veronte4x."""
@@ -32,7 +37,7 @@ class DecodeError(Veronte4xError, ValueError):
         self,
         message_type: str | None,
         reason: str,
-        data: bytes,
+        data: BytesLike,
         field: str | None = None,
     ) -> None:
         self.message_type = message_type
@@ -52,7 +57,7 @@ class UnknownCommandError(DecodeError):
         command: The command byte (byte 0) of the frame.
     """
 
-    def __init__(self, command: int, data: bytes, reason: str = "") -> None:
+    def __init__(self, command: int, data: BytesLike, reason: str = "") -> None:
         self.command = command
         super().__init__(
             None, reason or f"command byte {command} is reserved or unknown", data, "command"

@@ -28,6 +28,7 @@ from veronte4x.codec.declared import Layout
 from veronte4x.codec.messages import Message, OpaqueMessage, PwmSet, Sender, Status
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 from veronte4x.errors import (
+    BytesLike,
     DecodeError,
     EncodeError,
     LayoutError,
@@ -323,7 +324,7 @@ class Codec:
                 opaque[command] = layout.message
         return tuple(opaque)
 
-    def decode(self, data: bytes, *, sender: Sender, allow_excess: bool = False) -> Message:
+    def decode(self, data: BytesLike, *, sender: Sender, allow_excess: bool = False) -> Message:
         """Decode one Veronte frame's data bytes.
 
         Args:
@@ -340,22 +341,12 @@ class Codec:
             UnknownCommandError: The command byte is reserved or unknown (and no layout was
                 declared for it); the error carries the command byte and the data.
             DecodeError: The frame is empty, too short, too long, or a field is out of range.
+            TypeError: ``data`` is not bytes-like, or ``sender`` is not a `Sender`.
         """
-        if not data:
-            raise DecodeError(None, f"0 bytes; a frame has 1 to {MAX_FRAME_BYTES}", data)
-        command = data[0]
-        if command:
-            decode = self._by_command[command]
-            if decode is None:
-                raise UnknownCommandError(command, data)
-            return decode(data, allow_excess)
-        if len(data) < 2:
-            raise DecodeError(None, "an arbitration frame has at least 2 bytes", data)
-        if sender is _ARBITER:
-            return (self._status if data[1] == 0xFF else self._score)(data, allow_excess)
-        if sender is _AUTOPILOT:
-            return (self._ready if data[1] == 0xFF else self._variable)(data, allow_excess)
-        raise TypeError(f"sender must be a Sender, not {sender!r}")
+        # Each instance holds its generated decoder under this name (see __init__); this
+        # method is reached only through the class, as in ``Codec.decode(codec, ...)``.
+        generated: Callable[..., Message] = self.__dict__["decode"]
+        return generated(data, sender=sender, allow_excess=allow_excess)
 
     def dispatch(self, sender: Sender) -> Dispatch:
         """The decoders `decode` chooses from for one sender, for loops that inline dispatch.

@@ -17,7 +17,7 @@ from typing import Any
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant
 from veronte4x.codec.messages import Message
-from veronte4x.errors import LayoutError, argument_type_error
+from veronte4x.errors import BytesLike, LayoutError, argument_type_error
 
 _DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
 
@@ -82,7 +82,7 @@ class Layout:
         self.name = name
         self.fields = tuple(fields)
         self.byte_order = byte_order
-        self.message_class = self._make_class()
+        self.message_class: type[Any] = self._make_class()
         self.frame = FrameLayout(
             self.message_class,
             (constant(command, 8, "message type", "command"), *self.fields),
@@ -115,8 +115,11 @@ class Layout:
         )
         return cls
 
-    def decode(self, data: bytes, allow_excess: bool = False) -> Message:
+    def decode(self, data: BytesLike, allow_excess: bool = False) -> Any:
         """Decode one frame (command byte included) with this layout.
+
+        Returns:
+            An instance of `message_class` (typed Any: its fields are declared at run time).
 
         Raises:
             DecodeError: Wrong length, wrong command byte or constant.

@@ -24,7 +24,7 @@ from veronte4x.dronecan.compiled import (
 from veronte4x.dronecan.definitions import DATA_TYPES, DataType
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.serializer import Serializer
-from veronte4x.errors import DecodeError, argument_type_error
+from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 
 @dataclass(frozen=True)
@@ -103,7 +103,7 @@ BY_ID: dict[tuple[TransferKind, int], Codec] = {
 """Codec of each (kind, data type id)."""
 
 
-def decode_payload(kind: TransferKind, data_type_id: int, payload: bytes) -> Any:
+def decode_payload(kind: TransferKind, data_type_id: int, payload: BytesLike) -> Any:
     """Decode the payload of one complete transfer (without CRC and tail bytes).
 
     Raises:

@@ -33,7 +33,7 @@ from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
 from veronte4x.dronecan.compiled import SlowPath
 from veronte4x.dronecan.transfer import Transfer
-from veronte4x.errors import DecodeError, argument_type_error
+from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 TRANSFER_ID_TIMEOUT = 2.0
 """Transfer-ID timeout in seconds (spec 4.1 "State variables")."""
@@ -255,7 +255,7 @@ class Reassembler:
         self.reported += 1
         self.problems.append(ProblemReport(problem, can_id, bytes(data), timestamp, detail))
 
-    def feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
+    def feed(self, can_id: int, data: BytesLike, timestamp: float) -> Transfer | None:
         """Take one frame; return the transfer it completes, else None.
 
         Whatever the frame holds, bad bus data never raises: it is counted in `counts`

@@ -19,7 +19,7 @@ from veronte4x.dronecan.compiled import ENCODE_FALLBACK, SlowPath
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
-from veronte4x.errors import DecodeError, EncodeError, argument_type_error
+from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
 
 DEFAULT_PRIORITY = 16
 """Priority used when none is given: the middle of 0 (highest) to 31, libcanard's
@@ -178,7 +178,7 @@ _FAST_ERRORS = (SlowPath, struct.error)  # what the generated decoders raise
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 
 
-def decode_frames(frames: Iterable[tuple[int, bytes]], timestamp: float = 0.0) -> Transfer:
+def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.0) -> Transfer:
     """Decode the frames of exactly one transfer, in order, checking everything.
 
     Checks the CAN IDs (all equal), the tail bytes (start, end, toggle, transfer id), the
