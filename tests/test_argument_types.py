@@ -12,6 +12,7 @@ import pytest
 
 from veronte4x import codec, dronecan
 from veronte4x.dronecan import TransferKind
+from veronte4x.errors import BytesLike
 
 AP = codec.Sender.AUTOPILOT
 STATUS = dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
@@ -215,7 +216,8 @@ def test_feed_with_a_known_session_refuses_wrong_types_too() -> None:
 
 def test_bytes_like_data_is_accepted_everywhere() -> None:
     frames = dronecan.encode(dronecan.RawCommand(tuple(range(8))), source_node_id=5, transfer_id=0)
-    for kind in (bytes, bytearray, memoryview):
+    kinds: tuple[Callable[[bytes], BytesLike], ...] = (bytes, bytearray, memoryview)
+    for kind in kinds:
         assert codec.decode(kind(b"\x00\xff\x01"), sender=AP) == codec.Ready(True)
         assert dronecan.decode_frames([(f.can_id, kind(f.data)) for f in frames]).message.cmd == (
             tuple(range(8))

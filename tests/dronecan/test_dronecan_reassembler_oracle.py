@@ -9,6 +9,7 @@ duplicates, swaps and bit flips per frame, and gaps in time that time sessions o
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -67,6 +68,11 @@ class OnWire:
 _FAULT = st.sampled_from([0] * 12 + [1, 2, 3, 4])
 
 
+def _same_kind(request: bool) -> Callable[[tuple[Any, bool]], bool]:
+    """A filter for payloads of the same kind (message or request) as ``request``."""
+    return lambda payload: payload[1] == request
+
+
 @st.composite
 def _scenario(draw: st.DrawFn) -> tuple[list[Sent], list[OnWire], list[float]]:
     sessions = draw(
@@ -82,7 +88,7 @@ def _scenario(draw: st.DrawFn) -> tuple[list[Sent], list[OnWire], list[float]]:
         count = draw(st.integers(1, 40))
         stream: list[OnWire] = []
         for n in range(count):
-            message = first if n == 0 else draw(_PAYLOADS.filter(lambda p, r=request: p[1] == r))[0]
+            message = first if n == 0 else draw(_PAYLOADS.filter(_same_kind(request)))[0]
             tid = (first_tid + n) % 32
             dest = destination if request else None
             frames = [
@@ -173,7 +179,7 @@ def test_every_intact_transfer_is_delivered(
     r = dronecan.Reassembler()
     results = [r.feed(f.can_id, f.data, t) for f, t in zip(wire, times, strict=True)]
     intact = _intact(sent, wire, times)
-    first = {}
+    first: dict[int, int] = {}
     for position, frame in enumerate(wire):
         first.setdefault(frame.transfer, position)
     for number, last in intact.items():

@@ -10,6 +10,7 @@ import pytest
 
 from veronte4x import dronecan
 from veronte4x.dronecan import Problem, TransferKind
+from veronte4x.dronecan import codec as dronecan_codec
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.float16 import float16_bits
 from veronte4x.dronecan.serializer import Serializer
@@ -20,7 +21,7 @@ OPERATIONAL = dronecan.Mode.OPERATIONAL
 ESC = dronecan.EscStatus(3, 24.5, 12.25, 310.0, 4321, 55, 2)
 
 
-def _frames(message: Any, source: int = 10, tid: int = 0, **kwargs: Any) -> list[Any]:
+def _frames(message: Any, source: int = 10, tid: int = 0, **kwargs: Any) -> list[tuple[int, bytes]]:
     return [
         (f.can_id, f.data)
         for f in dronecan.encode(message, source_node_id=source, transfer_id=tid, **kwargs)
@@ -97,7 +98,7 @@ def test_the_checked_path_delivers_exactly_like_the_fast_one() -> None:
 
 def test_a_payload_the_generated_decoder_refuses_goes_to_the_checked_decoder() -> None:
     """A 3-frame transfer of esc.Status one byte short: the checked decoder decides."""
-    codec = transfer_module.BY_CLASS[dronecan.EscStatus]
+    codec = dronecan_codec.BY_CLASS[dronecan.EscStatus]
     payload = codec.encode(ESC, False)[:-1]
     can_id = dronecan.message_can_id(16, 1034, 10)
     datas = split_payload(payload, crc_hqx(payload, codec.crc_seed), 0)

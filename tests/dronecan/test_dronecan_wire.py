@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import pytest
 
 from veronte4x import dronecan
@@ -128,7 +130,7 @@ def test_restart_node_magic_numbers_on_the_wire() -> None:
 
 
 def test_frame_counts() -> None:
-    def count(message: object, **kwargs: int) -> int:
+    def count(message: object, **kwargs: Any) -> int:
         return len(dronecan.encode(message, source_node_id=1, transfer_id=0, **kwargs))
 
     assert count(dronecan.RawCommand((0,) * 4)) == 1
@@ -153,7 +155,7 @@ def test_frame_counts() -> None:
         ({"source_node_id": 1, "transfer_id": 0, "destination_node_id": 5}, "destination_node_id"),
     ],
 )
-def test_encode_checks_transport_fields(kwargs: dict[str, int], field: str) -> None:
+def test_encode_checks_transport_fields(kwargs: dict[str, Any], field: str) -> None:
     status = dronecan.NodeStatus(0, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
     with pytest.raises(dronecan.EncodeError) as info:
         dronecan.encode(status, **kwargs)
