@@ -9,7 +9,6 @@ re-encode to the very bytes it came from.
 
 from __future__ import annotations
 
-import re
 import struct
 from collections.abc import Callable, Iterable
 from typing import Any, NamedTuple
@@ -248,8 +247,9 @@ class Codec:
 
     def _compile_fast(self, checked: Callable[..., Message]) -> Callable[..., Message]:
         """Generate `decode`: optimistic bodies (`compiler.optimistic_decoder`) for the
-        arbitration frames, the checked bodies of PWM and opaque frames; any frame out of
-        the ordinary goes to ``checked``, which decides and raises the precise error."""
+        arbitration frames, one exact-size unpack for PWM frames, a slice for opaque ones;
+        any frame out of the ordinary goes to ``checked``, which decides and raises the
+        precise error."""
         namespace: dict[str, Any] = {
             "_checked": checked,
             "_check_types": _check_types,
@@ -258,12 +258,9 @@ class Codec:
             "_Sender": Sender,
             "_ARBITER": Sender.ARBITER,
             "_AUTOPILOT": Sender.AUTOPILOT,
-            "_is_pwm": tuple(c in PWM_COMMANDS.values() for c in range(256)),
             "_opaque": self._opaque_classes(),
             "_opaque_builder": builder(OpaqueMessage),
-            "_new": object.__new__,
             "_struct_error": struct.error,
-            "_errors": _Errors,
         }
         otherwise = "return _checked(data, sender=sender, allow_excess=allow_excess)"
 
@@ -275,9 +272,15 @@ class Codec:
             namespace.update(found[1])
             return found[0]
 
-        pwm, names = inline_decoder(layouts.PWM_SET[self.pwm_packing], "PwmSet", 16)
-        pwm = [re.sub(r"\bexcess\b", "allow_excess", line) for line in pwm]
-        namespace.update(names)
+        # PWM frames: one exact-size unpack and the packing's expressions (PWM_WORDS).
+        word_format, values = layouts.PWM_WORDS[self.pwm_packing]
+        namespace["_unpack_pwm"] = struct.Struct(word_format).unpack
+        namespace["_pwm_builder"] = builder(PwmSet)
+        namespace["_PwmSet"] = PwmSet
+        first_channel: list[int | None] = [None] * 256
+        for channel, command in PWM_COMMANDS.items():
+            first_channel[command] = channel
+        namespace["_first_channel"] = tuple(first_channel)
         lines = [
             "def decode(data, *, sender, allow_excess=False):",
             "    try:",
@@ -292,9 +295,15 @@ class Codec:
             *body(layouts.READY, 20, {"command", "header"}),
             *body(layouts.ARBITRATION_VARIABLE, 16, {"command"}),
             "        elif data.__class__ is _bytes and sender.__class__ is _Sender:",
+            "            first_channel = _first_channel[command]",
+            "            if first_channel is not None:",
+            "                _, h1, b3, h4, b6 = _unpack_pwm(data)",
+            "                o = _pwm_builder()",
+            "                o.first_channel = first_channel",
+            f"                o.values = {values}",
+            "                o.__class__ = _PwmSet",
+            "                return o",
             "            n = _len(data)",
-            "            if _is_pwm[command]:",
-            *pwm,
             "            cls = _opaque[command]",
             f"            if cls is not None and n <= {MAX_FRAME_BYTES}:",
             "                o = _opaque_builder()",
