@@ -195,7 +195,6 @@ class Codec:
             "_by_command": tuple(self._by_command),
             "_is_pwm": tuple(c in PWM_COMMANDS.values() for c in range(256)),
             "_errors": _Errors,
-            "_new": object.__new__,
         }
 
         def body(layout: FrameLayout, indent: int, shorter: Decoder | None = None) -> list[str]:
