@@ -221,3 +221,24 @@ def test_ordinary_messages_take_the_fast_paths(
     out = [r.feed(c, d, 0.1) for c, d in frames]
     assert out[-1] is not None
     assert out[-1].message == message
+
+
+@pytest.mark.parametrize("epoch", [0.0, 1.7e9])
+@pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
+def test_timeouts_at_any_epoch(epoch: float, kind: type) -> None:
+    """Capture timestamps are often seconds since 1970: only differences may count."""
+    r = dronecan.Reassembler()
+    frames = _frames(ESC, tid=3)
+    assert [r.feed(c, kind(d), epoch + 0.5 * i) for i, (c, d) in enumerate(frames)][-1]
+    late = _frames(ESC, tid=4)
+    assert r.feed(late[0][0], kind(late[0][1]), epoch + 10.0) is None
+    assert r.feed(late[1][0], kind(late[1][1]), epoch + 11.9) is None
+    assert r.feed(late[2][0], kind(late[2][1]), epoch + 12.1) is None  # 2.1 s after its start
+    assert r.counts[Problem.TIMEOUT] == 1
+    assert r.expire(epoch + 14.0) == 0  # the timed-out frame silences its transfer until then
+    assert r.expire(epoch + 14.2) == 1
+    again = _frames(ESC, tid=4)  # the same transfer id, long after: accepted
+    out = [r.feed(c, kind(d), epoch + 20.0) for c, d in again]
+    assert out[-1] is not None
+    assert out[-1].timestamp == epoch + 20.0
+    assert sum(r.counts.values()) == 1
