@@ -7,6 +7,8 @@ from binascii import crc_hqx
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from veronte4x import dronecan
 from veronte4x.dronecan import Problem, TransferKind
@@ -242,3 +244,83 @@ def test_timeouts_at_any_epoch(epoch: float, kind: type) -> None:
     assert out[-1] is not None
     assert out[-1].timestamp == epoch + 20.0
     assert sum(r.counts.values()) == 1
+
+
+_TRANSFERS = st.sampled_from(
+    [
+        dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7),
+        ESC,
+        dronecan.Temperature(3, 301.5, 0),
+        dronecan.RawCommand((1, -2, 3)),
+        dronecan.RawCommand(tuple(range(12))),
+        dronecan.GetNodeInfoRequest(),
+        dronecan.RestartNodeRequest(0xACCE551B1E),
+        dronecan.GetSetRequest(name=b"abc"),
+    ]
+)
+
+
+@st.composite
+def _damaged(draw: st.DrawFn) -> tuple[list[tuple[int, bytes]], float]:
+    """The frames of one transfer, perhaps with a changed CAN ID, tail, length or order."""
+    message = draw(_TRANSFERS)
+    service = not isinstance(
+        message,
+        (dronecan.NodeStatus, dronecan.EscStatus, dronecan.Temperature, dronecan.RawCommand),
+    )
+    frames = _frames(
+        message,
+        source=draw(st.integers(1, 127)),
+        tid=draw(st.integers(0, 31)),
+        priority=draw(st.integers(0, 31)),
+        destination_node_id=draw(st.integers(1, 127)) if service else None,
+    )
+    for _ in range(draw(st.integers(0, 2))):
+        index = draw(st.integers(0, len(frames) - 1))
+        can_id, data = frames[index]
+        change = draw(st.sampled_from(["id", "tail", "bit", "cut", "grow", "drop", "swap"]))
+        if change == "id":
+            can_id ^= 1 << draw(st.integers(0, 30))
+        elif change == "tail":
+            data = data[:-1] + bytes([draw(st.integers(0, 255))])
+        elif change == "bit":
+            bit = draw(st.integers(0, 8 * len(data) - 1))
+            data = bytes(b ^ (1 << bit % 8) if i == bit // 8 else b for i, b in enumerate(data))
+        elif change == "cut":
+            data = data[1:]
+        elif change == "grow":
+            data = b"\x00" + data
+        elif change == "drop" and len(frames) > 1:
+            del frames[index]
+            continue
+        elif change == "swap" and index + 1 < len(frames):
+            frames[index], frames[index + 1] = frames[index + 1], frames[index]
+            continue
+        frames[index] = (can_id, data)
+    return frames, draw(st.sampled_from([0.0, 1.5, 1.7e9]))
+
+
+def _decoded(function: Any, frames: Any, timestamp: float) -> Any:
+    try:
+        return function(frames, timestamp)
+    except dronecan.DecodeError as error:
+        return str(error)
+
+
+@settings(max_examples=500, deadline=None)
+@given(case=_damaged())
+def test_decode_frames_fast_path_agrees_with_the_checked_path(
+    case: tuple[list[tuple[int, bytes]], float],
+) -> None:
+    frames, timestamp = case
+    fast = _decoded(dronecan.decode_frames, frames, timestamp)
+    checked = _decoded(transfer_module._decode_frames_checked, frames, timestamp)
+    assert fast == checked
+
+
+@pytest.mark.parametrize("extra", [1 << 29, 1 << 30, 1 << 31, -(1 << 29)])
+@pytest.mark.parametrize("message", [ESC, dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7)])
+def test_decode_frames_refuses_can_ids_beyond_29_bits(extra: int, message: Any) -> None:
+    frames = [(can_id + extra, data) for can_id, data in _frames(message)]
+    with pytest.raises(dronecan.DecodeError, match="is not a 29-bit value"):
+        dronecan.decode_frames(frames)
