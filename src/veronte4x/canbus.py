@@ -187,12 +187,18 @@ def to_can_messages(
 class DecodingListener(can.Listener):
     """A ``can.Listener`` that decodes live traffic and hands each record to a callback.
 
+    Attach it to a bus with ``can.Notifier(bus, [DecodingListener(records.append)])``. Each
+    received message goes through `on_message_received`:
+
     Examples:
-        >>> import can
+        >>> from veronte4x import dronecan
         >>> records = []
-        >>> with can.Bus(interface="virtual", channel="demo") as bus:
-        ...     notifier = can.Notifier(bus, [DecodingListener(records.append)])
-        ...     notifier.stop()
+        >>> listener = DecodingListener(records.append)
+        >>> status = dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+        >>> for message in to_can_messages(status, source_node_id=10, transfer_id=0):
+        ...     listener.on_message_received(message)
+        >>> records[0].node_id, records[0].message.uptime_sec
+        (10, 5)
 
     Args:
         callback: Called with every record, in order.

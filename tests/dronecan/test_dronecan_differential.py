@@ -48,7 +48,7 @@ _F32 = st.floats(allow_infinity=False, allow_nan=False)
 
 
 def _value(numeric: bool) -> st.SearchStrategy[dict[str, Any]]:
-    members = [
+    members: list[st.SearchStrategy[dict[str, Any]]] = [
         st.just({"empty": {}}),
         _i(64).map(lambda v: {"integer_value": v}),
         _F32.map(lambda v: {"real_value": v}),
@@ -187,7 +187,7 @@ def test_frames_identical_and_cross_decoded(
     transfer_id = data.draw(st.integers(0, 31), label="transfer_id")
     priority = data.draw(st.integers(0, 31), label="priority")
 
-    message = dronecan.from_builtin(CLASS_OF[key], fields)
+    message: Any = dronecan.from_builtin(CLASS_OF[key], fields)
     ours = [
         (f.can_id, f.data)
         for f in dronecan.encode(

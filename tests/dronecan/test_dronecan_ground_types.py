@@ -48,7 +48,7 @@ def test_golden_frames_decode(vector: dict[str, Any]) -> None:
 @pytest.mark.parametrize("vector", VECTORS, ids=_ids)
 def test_golden_frames_encode(vector: dict[str, Any]) -> None:
     cls = CLASS_OF[(vector["type"], KINDS[vector["kind"]])]
-    message = dronecan.from_builtin(cls, vector["fields"])
+    message: Any = dronecan.from_builtin(cls, vector["fields"])
     frames = dronecan.encode(
         message,
         source_node_id=vector["source_node_id"],
