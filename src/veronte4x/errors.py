@@ -89,7 +89,7 @@ class LayoutError(Veronte4xError, ValueError):
 def argument_type_error(function: str, argument: str, expected: str, value: object) -> TypeError:
     """The `TypeError` for an argument of the wrong type, in one wording everywhere.
 
-    Example:
+    Examples:
         >>> str(argument_type_error("decode", "data", "bytes-like", "00ff"))
         'decode(): data must be bytes-like, not str'
     """
