@@ -61,16 +61,22 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
     """
     a = np.full(len(text) + 1 + _PAD, 10, np.uint8)
     a[: len(text)] = np.frombuffer(text, np.uint8)
-    size = len(text) + (not text.endswith(b"\n"))
+    return _parse(a, len(text) + (not text.endswith(b"\n")), first_line)[0]
+
+
+def _parse(a: npt.NDArray[np.uint8], size: int, first_line: int) -> tuple[FrameColumns | None, int]:
+    """`parse_text` of ``a[:size]``: whole lines, each ending in a line break, followed by
+    at least `_PAD` more line breaks. Also returns the number of lines."""
+    a = a[: size + _PAD]
     breaks = np.flatnonzero(a[:size] == 10)
     starts = np.empty(len(breaks), np.int64)
     starts[0] = 0
     starts[1:] = breaks[:-1] + 1
     ends = breaks.copy()
-    returns = np.flatnonzero(a == 13)
+    returns = np.flatnonzero(a[:size] == 13)
     if len(returns):
         if not (a[returns + 1] == 10).all():
-            return None
+            return None, len(breaks)
         ends[np.searchsorted(breaks, returns)] -= 1
     clean = _clean_lines(a, starts, ends)
     fast = _log_lines(a, starts, ends, clean)
@@ -88,13 +94,13 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
     columns = concat(parts)
     lines = np.flatnonzero(slow)
     if not len(lines):
-        return columns
+        return columns, len(breaks)
     items: list[tuple[int, Frame | BadLine]] = []
     for line in lines.tolist():
-        raw = text[starts[line] : ends[line]].decode("utf-8", "replace")
+        raw = a[starts[line] : ends[line]].tobytes().decode("utf-8", "replace")
         for item in parse_candump((raw,), first_line=first_line + line):
             items.append((first_line + line, item))
-    return concat([columns, from_frames(items)])
+    return concat([columns, from_frames(items)]), len(breaks)
 
 
 @dataclass
@@ -505,38 +511,84 @@ BLOCK = 1 << 22
 def parse_stream(stream: BinaryIO, workers: int | None = None) -> FrameColumns | None:
     """Parse candump text from a binary stream, block by block; see `parse_text`.
 
-    Blocks are parsed on ``workers`` threads (default: one per processor); NumPy releases
-    the interpreter lock in its loops, so they run side by side.
+    Blocks are read straight into the arrays the parser works on and parsed on ``workers``
+    threads (default: one per processor); NumPy releases the interpreter lock in its
+    loops, so they run side by side. Each block numbers its lines from 1; the numbers are
+    shifted once the blocks before it are counted.
     """
     workers = workers or os.cpu_count() or 1
-    parts: list[FrameColumns | None] = []
-    pending: deque[Future[FrameColumns | None]] = deque()
-    line = 1
+    parts: list[FrameColumns] = []
+    pending: deque[Future[tuple[FrameColumns | None, int]]] = deque()
+    line = 0
     with ThreadPoolExecutor(workers) as pool:
-        for block in _blocks(stream):
-            pending.append(pool.submit(parse_text, block, line))
-            line += block.count(b"\n") + (not block.endswith(b"\n"))
-            if len(pending) > 2 * workers:
-                parts.append(pending.popleft().result())
-        parts += [future.result() for future in pending]
-    if any(part is None for part in parts):
-        return None
-    return concat([p for p in parts if p is not None]) if parts else parse_text(b"")
+        for block, size in _blocks(stream):
+            pending.append(pool.submit(_parse, block, size, 1))
+            while pending and (len(pending) > 2 * workers or pending[0].done()):
+                columns, lines = pending.popleft().result()
+                if columns is None:
+                    return None
+                parts.append(_shifted(columns, line))
+                line += lines
+        for future in pending:
+            columns, lines = future.result()
+            if columns is None:
+                return None
+            parts.append(_shifted(columns, line))
+            line += lines
+    return concat(parts) if parts else parse_text(b"")
 
 
-def _blocks(stream: BinaryIO) -> Iterator[bytes]:
-    """Blocks of about `BLOCK` bytes that end at a line break (the last one may not)."""
-    rest = b""
+def _shifted(columns: FrameColumns, offset: int) -> FrameColumns:
+    """Columns numbered from line 1 renumbered from line ``offset + 1``."""
+    if offset:
+        columns.order += offset
+        columns.bad_lines = [
+            (order + offset, bad._replace(line_number=bad.line_number + offset))
+            for order, bad in columns.bad_lines
+        ]
+    return columns
+
+
+def _blocks(stream: BinaryIO) -> Iterator[tuple[npt.NDArray[np.uint8], int]]:
+    """Blocks of about `BLOCK` bytes of whole lines, read into arrays padded for `_parse`:
+    each comes as (array, size of its text)."""
+    carry = np.zeros(0, np.uint8)  # the start of a line the last block cut
     while True:
-        chunk = stream.read(BLOCK)
-        if not chunk:
-            if rest:
-                yield rest
+        a = np.empty(len(carry) + BLOCK + 1 + _PAD, np.uint8)
+        a[: len(carry)] = carry
+        end = len(carry) + _read_into(stream, a.data[len(carry) : len(carry) + BLOCK])
+        if end == len(carry):  # the end of the stream
+            if end:
+                a[end:] = 10  # a last line without a line break
+                yield a, end + 1
             return
-        block = rest + chunk
-        cut = block.rfind(b"\n")
+        cut = _last_break(a, end)
         if cut < 0:
-            rest = block
+            carry = a[:end].copy()
             continue
-        rest = block[cut + 1 :]
-        yield block[: cut + 1]
+        carry = a[cut + 1 : end].copy()
+        a[cut + 1 :] = 10
+        yield a, cut + 1
+
+
+def _read_into(stream: BinaryIO, view: memoryview) -> int:
+    """Fill ``view`` from the stream as far as it goes; return the bytes read."""
+    done = 0
+    while done < len(view):
+        got = stream.readinto(view[done:])  # type: ignore[attr-defined]
+        if not got:
+            break
+        done += got
+    return done
+
+
+def _last_break(a: npt.NDArray[np.uint8], end: int) -> int:
+    """The index of the last line break before ``end``, or -1."""
+    start = end
+    while start > 0:
+        start = max(0, start - (1 << 16))
+        found = a[start:end].tobytes().rfind(b"\n")
+        if found >= 0:
+            return start + found
+        end = start
+    return -1
