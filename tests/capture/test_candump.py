@@ -2,10 +2,9 @@
 
 from pathlib import Path
 
-from veronte4x.capture.source import open_frames
-
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers import parse_candump
+from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 T = 1436509052.0

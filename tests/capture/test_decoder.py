@@ -2,12 +2,11 @@
 
 from pathlib import Path
 
-from veronte4x.capture.source import open_frames
-
 from veronte4x import codec
 from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.records import Record
+from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"

@@ -456,6 +456,35 @@ class Reassembler:
             ),
         )
 
+    def resume(self, can_id: int, transfer_id: int, start: float, last: bytes) -> None:
+        """Set a session's state as it is just after a transfer came out whole.
+
+        For a stream whose earlier frames were reassembled elsewhere (the columnar engine
+        hands a session over this way): the session of ``can_id`` then expects the next
+        transfer id, times out from ``start`` and takes a repeat of ``last`` as a duplicate.
+
+        Args:
+            can_id: A CAN ID of the session (its priority bits are ignored).
+            transfer_id: The transfer id of the transfer that came out last.
+            start: The timestamp of that transfer's first frame.
+            last: The data of its last frame.
+        """
+        if can_id & 0x80:
+            codec = _SERVICES.get((can_id >> 15) & 0x1FF)
+        else:
+            codec = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+        if codec is None:
+            raise ValueError(f"no DroneCAN type for CAN ID {can_id:#x}")
+        session = self._sessions.get(can_id & 0xFFFFFF)
+        if session is None:
+            session = self._new_session(codec, can_id, start)
+        session.buffer = None
+        session.tid = (transfer_id + 1) & 0x1F
+        session.closed = transfer_id
+        session.start = start
+        session.last = last
+        session.toggle = 0
+
     def expire(self, timestamp: float) -> int:
         """Drop sessions idle past the transfer-ID timeout at ``timestamp``.
 
