@@ -9,7 +9,14 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.canbus") from None
 
 from veronte4x import codec, dronecan
 from veronte4x.capture.busmap import BusMap
@@ -120,7 +127,7 @@ def to_can_messages(
 class DecodingListener(can.Listener):
     """A ``can.Listener`` that decodes live traffic and hands each record to a callback.
 
-    Example:
+    Examples:
         >>> import can
         >>> records = []
         >>> with can.Bus(interface="virtual", channel="demo") as bus:

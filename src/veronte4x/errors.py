@@ -74,3 +74,25 @@ class EncodeError(Veronte4xError, ValueError):
 
 class LayoutError(Veronte4xError, ValueError):
     """A layout declaration that cannot describe a Veronte frame (too long, misplaced bytes)."""
+
+
+class SourceError(Veronte4xError, ValueError):
+    """A capture that cannot be read as one: a directory, or a format veronte4x does not know.
+
+    Its message names the path, what is wrong and what to do.
+    """
+
+
+class MissingExtraError(Veronte4xError, ImportError):
+    """An optional dependency is not installed; the message names the extra to install.
+
+    Attributes:
+        extra: The extra to install, as in ``pip install 'veronte4x[can]'``.
+    """
+
+    def __init__(self, module: str, extra: str, needed_for: str) -> None:
+        self.extra = extra
+        super().__init__(
+            f"{needed_for} needs the '{module}' package: pip install 'veronte4x[{extra}]'",
+            name=module,
+        )

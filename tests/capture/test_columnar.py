@@ -183,5 +183,40 @@ def test_missing_extra_names_it() -> None:
         [sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, check=True
     )
     assert done.stdout.strip() == (
-        "decoding into Arrow tables needs pyarrow: pip install 'veronte4x[arrow]'"
+        "decoding into Arrow tables needs the 'pyarrow' package: pip install 'veronte4x[arrow]'"
     )
+
+
+def test_truncated_gzip_ends_as_the_per_frame_path_ends(flight: Path, tmp_path: Path) -> None:
+    packed = gzip.compress(flight.read_bytes())
+    cut = tmp_path / "cut.log.gz"
+    cut.write_bytes(packed[: len(packed) // 2])
+    expected = capture.tables_from_records(capture.read(cut))
+    assert rows(expected["errors"])[-1]["error"] == "truncated"
+    assert_same_tables(capture.read_tables(cut), expected)
+
+
+def test_units_in_field_metadata_and_dataframe_attrs(flight: Path) -> None:
+    esc = capture.read_tables(flight)["EscStatus"].schema
+    assert esc.field("voltage").metadata == {b"unit": b"V"}
+    assert esc.field("temperature").metadata == {b"unit": b"K"}
+    assert esc.field("timestamp").metadata == {b"unit": b"s"}
+    assert esc.field("esc_index").metadata is None
+    for frame in (capture.to_dataframe(flight), capture.to_dataframe(capture.read(flight))):
+        units = frame.attrs["units"]
+        assert units["voltage"] == "V" and units["rpm"] == "rpm" and units["timestamp"] == "s"
+        assert "selected" not in units
+
+
+def test_relative_time(flight: Path) -> None:
+    absolute = capture.read_tables(flight)
+    relative = capture.read_tables(flight, relative_time=True)
+    first = min(t.column("timestamp")[0].as_py() for t in absolute.values())
+    for kind, table in absolute.items():
+        expected = [stamp - first for stamp in table.column("timestamp").to_pylist()]
+        assert relative[kind].column("timestamp").to_pylist() == expected, kind
+    assert min(t.column("timestamp")[0].as_py() for t in relative.values()) == 0.0
+    frame = capture.to_dataframe(flight, relative_time=True)
+    per_record = capture.to_dataframe(capture.read(flight), relative_time=True)
+    assert frame["timestamp"].tolist() == per_record["timestamp"].tolist()
+    assert frame["timestamp"].iloc[0] == 0.0

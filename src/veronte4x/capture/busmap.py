@@ -1,6 +1,6 @@
 """Which CAN IDs carry which Veronte role, and how the rest of a bus is read.
 
-Defaults are Embention's template IDs (notes/veronte-protocol.md, "Frame model"): AP1, AP2,
+Defaults are the IDs of Embention's manuals and configuration templates: AP1, AP2,
 AP3 and the external autopilot send on 8, 9, 10 and 11, the arbiter on 255, all with
 standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 
@@ -30,6 +30,7 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 from __future__ import annotations
 
 import enum
+import os
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -38,6 +39,7 @@ from typing import Any
 
 from veronte4x import codec
 from veronte4x.errors import Veronte4xError
+from veronte4x.extras import require
 
 AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external")
 """Autopilot names by index, as the Status message orders them."""
@@ -109,26 +111,22 @@ class BusMap:
         return codec.Codec(pwm_packing=self.pwm_packing, layouts=self.layouts)
 
     @classmethod
-    def from_toml(cls, path: str) -> BusMap:
+    def from_toml(cls, path: str | os.PathLike[str]) -> BusMap:
         """Read a bus map from a TOML file (see the module docstring for the keys).
 
         Raises:
             BusMapError: Unknown keys, wrong types or bad layouts.
+            MissingExtraError: Python 3.10 without tomli (the ``toml`` extra).
         """
         if sys.version_info >= (3, 11):
             import tomllib
         else:  # pragma: no cover - Python 3.10
-            try:
-                import tomli as tomllib
-            except ModuleNotFoundError:
-                raise BusMapError(
-                    "reading TOML on Python 3.10 needs tomli: pip install 'veronte4x[toml]'"
-                ) from None
+            tomllib = require("tomli", "toml", "reading TOML on Python 3.10")
         with open(path, "rb") as file:
             try:
                 document = tomllib.load(file)
             except tomllib.TOMLDecodeError as error:
-                raise BusMapError(f"{path}: {error}") from None
+                raise BusMapError(f"{os.fspath(path)}: {error}") from None
         return cls.from_dict(document)
 
     @classmethod

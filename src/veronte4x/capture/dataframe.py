@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.records import Record
+from veronte4x.units import unit
 
 if TYPE_CHECKING:
     import pandas
@@ -55,6 +56,7 @@ def to_dataframe(
     source: Iterable[Record] | str | os.PathLike[str],
     bus_map: BusMap | None = None,
     channel: str | None = None,
+    relative_time: bool = False,
 ) -> pandas.DataFrame:
     """One row per record, the record's columns then every message field as a column.
 
@@ -70,30 +72,43 @@ def to_dataframe(
     the tables' column names and Arrow-backed dtypes (enums as categories of names,
     RawCommand's ``cmd`` as a list); ``data`` is kept for errors only.
 
+    Either way, ``frame.attrs["units"]`` maps each column with a physical unit to its
+    symbol (``timestamp``: ``s``, ``voltage``: ``V``, ... see `veronte4x.units`).
+
     Args:
         source: Records, or a capture file (``bus_map`` and ``channel`` apply to a file).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+        relative_time: Timestamps in seconds from the first timestamped record, as
+            ``candump -t z`` and ``veronte4x decode --relative-time`` show them.
     """
     import pandas
 
     if isinstance(source, (str, os.PathLike)):
         from veronte4x.capture import _columnar
 
-        frame: pandas.DataFrame = _columnar().frame.dataframe(source, bus_map, channel)
+        frame: pandas.DataFrame = _columnar().frame.dataframe(
+            source, bus_map, channel, relative_time
+        )
         return frame
     records = source
+    units: dict[str, str] = {"timestamp": "s"}
+    start: float | None = None
 
     head: dict[str, list[Any]] = {name: [] for name in _HEAD_COLUMNS}
     columns: dict[str, list[Any]] = {}
     kinds: dict[str, set[type]] = {}
     rows = 0
     for record in records:
-        head["timestamp"].append(record.timestamp)
+        stamp = record.timestamp
+        if relative_time and stamp is not None:
+            start = stamp if start is None else start
+            stamp -= start
+        head["timestamp"].append(stamp)
         head["channel"].append(record.channel)
         head["can_id"].append(record.can_id)
         head["sender"].append(record.sender)
-        head["message"].append(None if record.error else type(record.message).__name__)
+        head["message"].append(None if record.message is None else type(record.message).__name__)
         head["error"].append(record.error)
         head["detail"].append(record.detail)
         head["data"].append(record.data.hex())
@@ -102,6 +117,9 @@ def to_dataframe(
             if column is None:
                 column = columns[name] = []
                 kinds[name] = set()
+                symbol = unit(type(record.message).__name__, name)
+                if symbol is not None:
+                    units[name] = symbol
             if len(column) < rows:  # rows whose message had no such field
                 column.extend([None] * (rows - len(column)))
             column.append(value)
@@ -112,7 +130,9 @@ def to_dataframe(
     for name, values in columns.items():
         values.extend([None] * (rows - len(values)))
         data[name] = pandas.array(values, dtype=_dtype(kinds[name]))
-    return pandas.DataFrame(data)
+    frame = pandas.DataFrame(data)
+    frame.attrs["units"] = units
+    return frame
 
 
 _HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")

@@ -10,12 +10,13 @@ import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.busmap import BusMap, Role
-from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.core import Dispatch
 from veronte4x.dronecan import ProblemReport, Reassembler
+from veronte4x.dronecan.reassembler import Problem
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 _new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
@@ -132,10 +133,7 @@ class CaptureDecoder:
         elif role is Role.DRONECAN and not frame.fd:
             yield from self._dronecan(frame)
         else:
-            kind = "29-bit" if frame.extended else "11-bit"
-            yield Record(
-                *base, "unknown id", f"no role for {kind} CAN ID {frame.can_id:#x}", frame.data
-            )
+            yield Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
 
     def _dronecan(self, frame: Frame) -> Iterator[Record]:
         """Feed a 29-bit frame to its channel's reassembler: a record per problem it reports,
@@ -183,13 +181,37 @@ class CaptureDecoder:
 
     @staticmethod
     def _bad_line(item: BadLine) -> Record:
+        if isinstance(item, Truncation):
+            return Record(None, "", 0, Role.UNKNOWN, None, None, None, "truncated", item.reason,
+                          b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
 
 
 def problem_record(report: ProblemReport, channel: str) -> Record:
-    """The record of a DroneCAN reassembly problem on a channel."""
+    """The record of a DroneCAN reassembly problem on a channel; a frame of a data type
+    with no codec is undecoded traffic (error None, `foreign_data_type` as its detail)."""
+    if report.problem is Problem.UNKNOWN_TYPE:
+        return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                      report.can_id & 0x7F or None, None, None, foreign_data_type(report.can_id),
+                      report.data)  # fmt: skip
     kind = report.problem.name.lower().replace("_", " ")
     detail = f"{report.problem.value} {report.detail}"
     return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
                   report.can_id & 0x7F or None, None, kind, detail, report.data)  # fmt: skip
+
+
+def foreign_id(can_id: int, extended: bool) -> str:
+    """The `Record.detail` of a frame on a CAN ID outside the bus map: ``11-bit CAN ID 0x123``."""
+    return f"{'29' if extended else '11'}-bit CAN ID {can_id:#x}"
+
+
+def foreign_data_type(can_id: int) -> str:
+    """The `Record.detail` of a DroneCAN frame of a type with no codec, from its CAN ID:
+    ``DroneCAN data type 1234``, ``DroneCAN service type 48`` or
+    ``DroneCAN anonymous data type 2`` (only the type id's low 2 bits are on the wire)."""
+    if can_id & 0x80:
+        return f"DroneCAN service type {(can_id >> 16) & 0xFF}"
+    if can_id & 0x7F:
+        return f"DroneCAN data type {(can_id >> 8) & 0xFFFF}"
+    return f"DroneCAN anonymous data type {(can_id >> 8) & 0x3}"

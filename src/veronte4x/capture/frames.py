@@ -44,3 +44,13 @@ class BadLine(NamedTuple):
     line_number: int
     text: str
     reason: str
+
+
+class Truncation(BadLine):
+    """Input that ends early, such as a truncated gzip file: the last item of its stream.
+
+    A `BadLine` of its own kind, so that a reader counts it (error ``truncated``) and a
+    person is told: the frames before it were read.
+    """
+
+    __slots__ = ()

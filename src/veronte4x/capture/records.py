@@ -1,4 +1,5 @@
-"""The decoded record: one per frame, per DroneCAN transfer, or per problem."""
+"""The decoded record: one per frame, per DroneCAN transfer, per undecoded frame, or per
+problem."""
 
 from __future__ import annotations
 
@@ -8,7 +9,11 @@ from veronte4x.capture.busmap import AUTOPILOT_NAMES, Role
 
 
 class Record(NamedTuple):
-    """One decoded frame or transfer, or the error that stopped it.
+    """One decoded frame or transfer, an undecoded one, or the error that stopped it.
+
+    Three cases: decoded (`message` set), undecoded foreign traffic (`message` and `error`
+    None: a CAN ID outside the bus map, a DroneCAN data type with no codec; normal on a
+    shared bus, not an error) and errors (`error` set).
 
     A named tuple rather than a dataclass: a capture makes one per frame, and a tuple is
     the cheapest immutable record Python builds.
@@ -20,11 +25,12 @@ class Record(NamedTuple):
         role: Arbiter, autopilot, DroneCAN or unknown, from the bus map.
         autopilot: 0 = AP1, 1 = AP2, 2 = AP3, 3 = external, for an autopilot's frame.
         node_id: DroneCAN source node id.
-        message: The decoded message, or None when `error` is set.
+        message: The decoded message, or None when undecoded or `error` is set.
         error: What stopped decoding, in a few words (``decode error``, ``unknown command``,
-            ``unknown id``, ``bad line``, ``error frame``, ``remote frame``, or a DroneCAN
-            reassembly problem such as ``CRC mismatch``), or None.
-        detail: The error's full text, or "".
+            ``bad line``, ``error frame``, ``remote frame``, or a DroneCAN reassembly problem
+            such as ``crc mismatch``), or None.
+        detail: The error's full text; for undecoded traffic, what it was
+            (``11-bit CAN ID 0x123``, ``DroneCAN data type 1234``); or "".
         data: The raw bytes: the frame's data, or the transfer's payload.
         destination_node_id: DroneCAN destination node id of a service transfer.
     """
@@ -52,7 +58,9 @@ class Record(NamedTuple):
 
     @property
     def kind(self) -> str:
-        """The message class name, or ``error: <error>``."""
+        """The message class name, ``unknown`` for undecoded traffic, or ``error: <error>``."""
         if self.error is not None:
             return f"error: {self.error}"
+        if self.message is None:
+            return "unknown"
         return type(self.message).__name__

@@ -2,7 +2,13 @@
 
 EXIT_OK = 0
 """Success; bad frames skipped or kept are not failures."""
-EXIT_BAD_FRAME = 1
+EXIT_FINDINGS = 1
+"""The capture failed a check: ``--on-error raise`` met a bad frame, or ``replay`` found the
+recorded arbiter disagreeing with the model."""
+EXIT_BAD_FRAME = EXIT_FINDINGS
 """``--on-error raise`` met a bad frame."""
 EXIT_USAGE = 2
-"""A usage error, or an input that cannot be opened (missing file, bad bus map)."""
+"""A usage error, or an input that cannot be opened (missing file, bad bus map, unknown
+format, missing extra)."""
+EXIT_INTERRUPTED = 130
+"""Interrupted by Ctrl-C (SIGINT), as shells report it."""

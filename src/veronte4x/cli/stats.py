@@ -8,6 +8,7 @@ from typing import Any
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK
+from veronte4x.cli.notices import tell_truncation
 from veronte4x.cli.options import add_capture_options
 
 
@@ -21,5 +22,6 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Print the counts of the capture."""
-    print(capture.stats(capture.read(args.file, bus_map, args.channel)).report())
+    records = tell_truncation(capture.read(args.file, bus_map, args.channel))
+    print(capture.stats(records).report())
     return EXIT_OK

@@ -1,8 +1,8 @@
 """The eight DroneCAN types as data: fields in wire order, ids, signatures.
 
-Field lists are those of the DSDL files in ``shared/dsdl`` (``dronecan/DSDL`` b4653c7);
-ids, 64-bit data type signatures and CRC seeds are those of notes/dronecan-wire.md
-"Types". The seeds are recomputed from the signatures at import time. The serializers
+Field lists are those of the DSDL files of the public ``dronecan/DSDL`` repository (b4653c7);
+ids, 64-bit data type signatures and CRC seeds are those of as libcanard and the dronecan package
+implement it. The CRC seeds are recomputed from the signatures at import time. The serializers
 run from these definitions; the docs tables are generated from them too.
 """
 
@@ -240,7 +240,7 @@ DATA_TYPES: tuple[DataType, ...] = (
         BEGIN_FIRMWARE_UPDATE_RESPONSE,
     ),
 )
-"""Every top-level type, in the order of seed 004."""
+"""Every top-level type, in the order of Vertiq's DroneCAN support document."""
 
 NESTED_SIGNATURES: dict[str, int] = {
     "uavcan.protocol.SoftwareVersion": 0xDD46FD376527FEA1,

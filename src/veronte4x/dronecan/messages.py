@@ -1,7 +1,7 @@
 """The eight DroneCAN types used by Vertiq ESCs, as frozen, slotted dataclasses.
 
-Field names are exactly those of the DSDL files (``dronecan/DSDL``, copied in
-``shared/dsdl``); each class docstring names its file. DSDL constants are class attributes
+Field names are exactly those of the DSDL files (the public ``dronecan/DSDL``
+repository); each class docstring names its file. DSDL constants are class attributes
 or enums. Constructors do not validate, so decoding stays cheap; `encode` checks every
 field and raises `EncodeError`. uint8 arrays are ``bytes``,
 the int14 array of RawCommand a tuple of ints.
@@ -101,7 +101,8 @@ class NodeStatus:
 class EscStatus:
     """``uavcan.equipment.esc.Status``, message 1034 (``equipment/esc/1034.Status.uavcan``).
 
-    Vertiq (seed 004 section 1.2): temperature of the motor coils in kelvin,
+    Vertiq (Vertiq's DroneCAN support document, section 1.2): temperature of the motor coils in
+    kelvin,
     power_rating_pct is the PWM duty cycle, esc_index the sender's ESC index.
     """
 
@@ -118,7 +119,8 @@ class EscStatus:
 class Temperature:
     """``uavcan.equipment.device.Temperature``, message 1110 (``1110.Temperature.uavcan``).
 
-    Vertiq (seed 004 section 1.3): device_id is the ESC index, temperature that of the
+    Vertiq (Vertiq's DroneCAN support document, section 1.3): device_id is the ESC index,
+    temperature that of the
     microcontroller in kelvin. ``error_flags`` bits: `TemperatureErrorFlag`.
     """
 
@@ -179,7 +181,8 @@ class GetNodeInfoRequest:
 class GetNodeInfoResponse:
     """``uavcan.protocol.GetNodeInfo`` response, service 1 (``1.GetNodeInfo.uavcan``).
 
-    ``name`` is at most 80 bytes; Vertiq nodes answer ``iq_motion.esc`` (seed 004 2.1).
+    ``name`` is at most 80 bytes; Vertiq nodes answer ``iq_motion.esc`` (Vertiq's DroneCAN support,
+    2.1).
     """
 
     status: NodeStatus

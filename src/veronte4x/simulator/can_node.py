@@ -44,7 +44,7 @@ class EscNode:
         esc: The simulated ESC.
         clock: Seconds from any monotonic source; the only clock the simulator sees.
 
-    Example:
+    Examples:
         >>> import can
         >>> from veronte4x.simulator import SimulatedEsc
         >>> with can.Bus(interface="virtual", channel="doc-esc") as bus, can.Bus(

@@ -1,13 +1,13 @@
 """`SimulatedEsc`: a sans-IO Vertiq ESC node that takes frames and gives frames.
 
-Behaviour from seed 004 ("Vertiq Standard DroneCAN Support"): NodeStatus at 1 Hz with
+Behaviour from Vertiq's "Standard DroneCAN Support" document: NodeStatus at 1 Hz with
 health OK, mode OPERATIONAL, no sub-mode or vendor code (1.1); esc.Status and
 device.Temperature at ``telem_frequency`` Hz, none at 0 (1.2, 1.3, 3.5); the RawCommand
 entry at ``esc_index`` (1.4, 3.3) with ``zero_behavior`` for a zero setpoint (3.4);
 GetNodeInfo with the name ``iq_motion.esc`` (2.1); GetSet by name and by index (2.2, 3);
 RestartNode with the normal and the bootloader magic numbers (2.3); BeginFirmwareUpdate,
 answered INVALID_MODE by modules without DroneCAN firmware updates (2.4). Responses reuse
-the request's transfer id and priority (spec 4.1; notes/dronecan-wire.md).
+the request's transfer id and priority (spec 4.1; as libcanard and the dronecan package do).
 
 Nothing here reads a clock: every time is a ``timestamp`` argument.
 """
@@ -57,12 +57,12 @@ from veronte4x.simulator.motor import DEFAULT_MODEL, MotorModel, MotorState
 from veronte4x.simulator.schedule import Periodic
 
 NODE_STATUS_FREQUENCY = 1.0
-"""NodeStatus rate in Hz (seed 004 1.1)."""
+"""NodeStatus rate in Hz (Vertiq's DroneCAN support, 1.1)."""
 
 SOFTWARE_VERSION = SoftwareVersion(
     major=1, minor=0, optional_field_flags=0, vcs_commit=0, image_crc=0
 )
-"""The simulator's GetNodeInfo software version (the seed gives none for real modules)."""
+"""The simulator's GetNodeInfo software version (the document gives none for real modules)."""
 
 HARDWARE_VERSION_MAJOR = 1
 """The simulator's GetNodeInfo hardware version, major (minor is 0)."""
@@ -127,11 +127,11 @@ class SimulatedEsc:
         node_id: DroneCAN node id, 1..127 (also the ``uavcan_node_id`` default).
         esc_index: Which RawCommand entry it reads, 0..19.
         telem_frequency: esc.Status and device.Temperature rate in Hz, a whole number
-            (the parameter is an integer, seed 004 3.5), 0 for none.
+            (the parameter is an integer, Vertiq's DroneCAN support, 3.5), 0 for none.
         zero_behavior: What a zero setpoint does (`ZeroBehavior` or its int value).
         bit_rate: The ``bit_rate`` parameter, bit/s (stored and reported only).
         supports_firmware_update: False for modules such as the 81-08 that answer
-            BeginFirmwareUpdate with INVALID_MODE (seed 004 2.4).
+            BeginFirmwareUpdate with INVALID_MODE (Vertiq's DroneCAN support, 2.4).
         start_time: Power-on time: frames before it are ignored, NodeStatus and telemetry
             start at it.
         priority: CAN priority of the messages it publishes, 0 (highest) to 31.

@@ -35,6 +35,7 @@ from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
+from veronte4x.units import unit
 
 SENDERS: tuple[str, ...] = (
     "arbiter",
@@ -54,7 +55,7 @@ SENDER = pa.dictionary(pa.int16(), pa.string())
 ERROR = pa.dictionary(pa.int16(), pa.string())
 
 HEAD = (
-    pa.field("timestamp", pa.float64()),
+    pa.field("timestamp", pa.float64(), metadata={"unit": "s"}),
     pa.field("channel", CHANNEL),
     pa.field("can_id", pa.uint32()),
     pa.field("sender", SENDER),
@@ -103,8 +104,15 @@ class TableSpec:
 
     @property
     def schema(self) -> pa.Schema:
-        """The table's Arrow schema."""
-        return pa.schema([*self.head, *(pa.field(c.name, c.type) for c in self.columns)])
+        """The table's Arrow schema; fields with a physical unit carry it in their metadata
+        (``unit``: ``V``, ``A``, ``K``, ``rpm``, ``%``, ``s``)."""
+        fields = [pa.field(c.name, c.type, metadata=_unit(self.kind, c.name)) for c in self.columns]
+        return pa.schema([*self.head, *fields])
+
+
+def _unit(kind: str, name: str) -> dict[str, str] | None:
+    symbol = unit(kind, name)
+    return None if symbol is None else {"unit": symbol}
 
 
 def integer_type(low: int, high: int) -> pa.DataType:

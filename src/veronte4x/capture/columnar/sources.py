@@ -12,6 +12,8 @@ import gzip
 import io
 import os
 import sys
+import zlib
+from collections.abc import Iterable
 from typing import Any, BinaryIO
 
 import numpy as np
@@ -20,7 +22,7 @@ from veronte4x.capture.columnar.candump import parse_stream, parse_text
 from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns, concat, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
-from veronte4x.capture.source import Format, Source, resolve
+from veronte4x.capture.source import Format, Source, Truncated, open_lines, resolve
 
 
 def read_frames(path: str | os.PathLike[str]) -> FrameColumns:
@@ -45,13 +47,19 @@ def read_frames(path: str | os.PathLike[str]) -> FrameColumns:
 def _candump(source: Source) -> FrameColumns:
     if source.is_stdin:
         text = sys.stdin.buffer.read()
-        return parse_text(text) or _line_by_line(text)
-    with _open_binary(source) as stream:
-        columns = parse_stream(stream)
+        columns = parse_text(text)
+        if columns is not None:
+            return columns
+        return _line_by_line(io.TextIOWrapper(io.BytesIO(text), "utf-8", "replace"), "-")
+    try:
+        with _open_binary(source) as stream:
+            columns = parse_stream(stream)
+    except (EOFError, gzip.BadGzipFile, zlib.error):
+        columns = None  # a truncated gzip file: where it ends is the per-frame reader's call
     if columns is not None:
         return columns
-    with _open_binary(source) as stream:
-        return _line_by_line(stream.read())
+    with open_lines(source) as lines:
+        return _line_by_line(lines, source.path)
 
 
 def _open_binary(source: Source) -> BinaryIO:
@@ -60,13 +68,15 @@ def _open_binary(source: Source) -> BinaryIO:
     return open(source.path, "rb")
 
 
-def _line_by_line(text: bytes) -> FrameColumns:
-    """Text the column parser does not split as the per-frame reader does (lone carriage
-    returns): parse it line by line with that reader's line breaks."""
-    lines = io.TextIOWrapper(io.BytesIO(text), encoding="utf-8", errors="replace")
+def _line_by_line(lines: Iterable[str], path: str) -> FrameColumns:
+    """Text the column parser does not read as the per-frame reader does (lone carriage
+    returns, a truncated gzip file): parse it line by line, with that reader's lines."""
     items: list[tuple[int, Frame | BadLine]] = []
-    for number, line in enumerate(lines, 1):
-        items += [(number, item) for item in parse_candump((line,), first_line=number)]
+    try:
+        for number, line in enumerate(lines, 1):
+            items += [(number, item) for item in parse_candump((line,), first_line=number)]
+    except Truncated as cut:
+        items.append((cut.line_number, cut.bad_line()))
     return from_frames(items)
 
 

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
+import pyarrow.compute as pc
 
 from veronte4x.capture.columnar.schema import (
     ERRORS,
@@ -148,6 +149,23 @@ class Tables:
                 columns.append(column)
             out[kind] = pa.Table.from_arrays(columns, schema=spec.schema), keys[order]
         return out
+
+
+def relative_time(tables: dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]) -> None:
+    """Make every table's timestamps relative to the capture's first timestamped row (the
+    one with the smallest key), in place."""
+    first: tuple[int, float] | None = None
+    for table, keys in tables.values():
+        stamps = table.column("timestamp")
+        valid = np.flatnonzero(~np.asarray(stamps.is_null()))
+        if len(valid) and (first is None or keys[valid[0]] < first[0]):
+            first = int(keys[valid[0]]), stamps[int(valid[0])].as_py()
+    if first is None:
+        return
+    for kind, (table, keys) in tables.items():
+        index = table.schema.get_field_index("timestamp")
+        shifted = pc.subtract(table.column("timestamp"), first[1])
+        tables[kind] = table.set_column(index, table.schema.field(index), shifted), keys
 
 
 def _dictionary(codes: np.ndarray, type_: pa.DataType, names: pa.Array) -> pa.Array:

@@ -9,9 +9,10 @@ Log form (``candump -L``, can-utils ``lib.c`` ``snprintf_canframe``)::
     (1436509052.249713) can0 20000080#0000000000000000 error frame (CAN_ERR_FLAG set)
     (1436509052.249713) can0 123#1122334455667788_E    classic frame with a raw DLC
 
-Human view (``candump can0``, with or without ``-t`` timestamps)::
+Human view (``candump can0``, with or without ``-t`` timestamps and ``-a`` ASCII)::
 
     (1436509052.249713)  can0  0FF   [6]  00 FF 81 77 FF FF
+    (2015-07-10 08:17:32.249713)  can0  0FF   [2]  23 41   '#A'
       can0  123   [2]  remote request
       can0  20000004   [8]  00 04 00 00 00 00 00 00   ERRORFRAME
 
@@ -81,7 +82,9 @@ def parse_line(line: str, number: int, parts: list[str] | None = None) -> Frame 
     if parts is None:
         parts = line.split()
     try:
-        if parts[0][0] == "(" and "#" in line:
+        # The shape decides, not a '#' anywhere: the human view's ASCII column (candump -a)
+        # may hold one. The log form's third token is ID#DATA; the human view's is an ID.
+        if parts[0][0] == "(" and len(parts) > 2 and "#" in parts[2]:
             result = _log_line(parts)
         else:
             result = _human_line(parts, line)

@@ -1,6 +1,6 @@
 """Markdown for the docs, generated from the model's own definitions.
 
-Each function is named in a ``<!-- generate: veronte4x.arbiter.docs:function -->`` marker of
+Each function is named in a ``<!-- generate: docgen.arbiter:function -->`` marker of
 a docs page; the docs hook puts its result there.
 """
 
@@ -63,7 +63,7 @@ def seed_example() -> str:
     totals = compute_scores(SEED_EXAMPLE_VALUES, SEED_EXAMPLE_VARIABLES)
     lines = [
         "| Autopilot | Var. | Variable | Type | Value | Mean | Deviation | Weight "
-        "| Contribution | Total score | Seed's total |",
+        "| Contribution | Total score | Manual's total |",
         "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for row in rows:

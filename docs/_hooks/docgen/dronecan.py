@@ -1,6 +1,6 @@
 """Markdown tables for the docs, generated from the code's own definitions.
 
-Each function returns Markdown for a ``<!-- generate: veronte4x.dronecan.docs:name -->``
+Each function returns Markdown for a ``<!-- generate: docgen.dronecan:name -->``
 line of a docs page (see ``docs/_hooks/generate.py``).
 """
 
@@ -14,6 +14,7 @@ from veronte4x.dronecan.definitions import DATA_TYPES, NESTED_SIGNATURES, NUMERI
 from veronte4x.dronecan.reassembler import TRANSFER_PROBLEMS, Problem
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union, max_bits, min_bits, uses_tao
 from veronte4x.dronecan.tail import END_OF_TRANSFER, START_OF_TRANSFER, TOGGLE
+from veronte4x.units import unit
 
 
 def _table(header: tuple[str, ...], rows: Sequence[tuple[object, ...]]) -> str:
@@ -95,14 +96,19 @@ def _describe(t: Scalar | Array | Struct | Union, tao: bool) -> str:
 
 
 def _rows(
-    s: Struct, prefix: str, offset: int | None, tao: bool, rows: list[tuple[object, ...]]
+    s: Struct,
+    prefix: str,
+    offset: int | None,
+    tao: bool,
+    rows: list[tuple[object, ...]],
+    top: str = "",
 ) -> int | None:
     last = len(s.fields) - 1
     for i, f in enumerate(s.fields):
         t = f.type
         name = f"{prefix}{f.name}" if f.name else "(void)"
         if isinstance(t, Struct):
-            offset = _rows(t, f"{name}.", offset, tao and i == last, rows)
+            offset = _rows(t, f"{name}.", offset, tao and i == last, rows, top)
             continue
         where = "variable" if offset is None else str(offset)
         dsdl = t.dsdl if not isinstance(t, Union) else f"`{t.name.split('.')[-1]}` union"
@@ -112,17 +118,17 @@ def _rows(
         note = _describe(t, tao and i == last)
         if f.enum is not None:
             note = f"`{f.enum.__name__}`"
-        rows.append((where, size, dsdl, f"`{name}`", note))
+        rows.append((where, size, dsdl, f"`{name}`", unit(top, name) or "", note))
         offset = offset + width if offset is not None and fixed else None
     return offset
 
 
 def type_tables() -> str:
-    """One bit-layout table per top-level type: offset, width, DSDL type, field, notes."""
+    """One bit-layout table per top-level type: offset, width, DSDL type, field, unit, notes."""
     out = []
     for t in DATA_TYPES:
         rows: list[tuple[object, ...]] = []
-        _rows(t.schema, "", 0, True, rows)
+        _rows(t.schema, "", 0, True, rows, t.schema.cls.__name__)
         title = f"### {t.schema.name} ({t.kind.name.lower()} {t.data_type_id})\n\n"
         title += f"Class `{t.schema.cls.__name__}`. "
         if not rows:
@@ -130,8 +136,8 @@ def type_tables() -> str:
             continue
         out.append(
             title + "Offsets in bits from the payload start; fields wider than a byte go as "
-            "little-endian bytes, each MSB first.\n\n"
-            + _table(("offset", "bits", "DSDL", "field", "notes"), rows)
+            "little-endian bytes, each MSB first. Units as the DSDL definitions give them.\n\n"
+            + _table(("offset", "bits", "DSDL", "field", "unit", "notes"), rows)
         )
     return "\n".join(out)
 

@@ -1,6 +1,6 @@
 """Markdown tables of the variable lists, for ``docs/veronte/variables.md``.
 
-The docs page calls these through ``<!-- generate: veronte4x.variables.docs:... -->``
+The docs page calls these through ``<!-- generate: docgen.variables:... -->``
 markers, so the published tables are the package's own data.
 """
 
@@ -72,7 +72,7 @@ def pdi_error_table() -> str:
         [e.code, str(e.number), e.explanation, "inferred" if e.inferred else "legible"]
         for e in PDI_ERRORS
     ]
-    return _table(["Code", "Number", "Explanation", "Number in the seed"], rows)
+    return _table(["Code", "Number", "Explanation", "Number as printed"], rows)
 
 
 def _bit_names(numbers: Iterable[int]) -> str:
@@ -97,4 +97,4 @@ def correction_list() -> str:
         for var in variables
         if var.correction is not None
     ]
-    return _table(["Kind", "ID", "Name", "Seed printed / reading"], rows)
+    return _table(["Kind", "ID", "Name", "Printed / reading"], rows)

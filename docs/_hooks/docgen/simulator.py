@@ -1,6 +1,6 @@
 """Markdown tables for the "Simulated ESC" docs page, from the simulator's own definitions.
 
-Each function returns Markdown for a ``<!-- generate: veronte4x.simulator.docs:name -->``
+Each function returns Markdown for a ``<!-- generate: docgen.simulator:name -->``
 line (see ``docs/_hooks/generate.py``).
 """
 
