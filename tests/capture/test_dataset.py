@@ -127,5 +127,5 @@ def test_progress_bar_on_request(tmp_path: Path, capsys: Any) -> None:
 def test_standard_input_and_missing_files_are_refused(tmp_path: Path) -> None:
     with pytest.raises(ValueError, match="not -"):
         capture.to_parquet("-", tmp_path)
-    with pytest.raises(FileNotFoundError, match="nothing.log"):
+    with pytest.raises(FileNotFoundError, match=r"nothing\.log"):
         capture.to_parquet([FLIGHT, tmp_path / "nothing.log"], tmp_path)
