@@ -20,11 +20,11 @@ from collections.abc import Sequence
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import decode, replay, stats
+from veronte4x.cli import convert, decode, replay, stats
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.errors import SourceError
 
-COMMANDS = (decode, stats, replay)
+COMMANDS = (decode, stats, replay, convert)
 """The command modules, in the order ``--help`` lists them."""
 
 

@@ -34,6 +34,7 @@ from veronte4x.capture.columnar.batches import BATCH_BYTES, read_batches
 from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.source import STDIN
+from veronte4x.errors import SourceError
 
 SOURCE = pa.field("source", pa.dictionary(pa.int32(), pa.string()))
 """The column naming the capture a row comes from."""
@@ -95,11 +96,11 @@ def convert_file(
     """Decode one capture batch by batch into the dataset at ``out_dir``.
 
     Raises:
-        ValueError: The path is standard input (a dataset names its files).
+        SourceError: The path is standard input (a dataset names its files).
     """
     name = os.fspath(path)
     if name == STDIN:
-        raise ValueError("a dataset is written from files: give a capture file, not -")
+        raise SourceError("a dataset is written from files: give a capture file, not -")
     started = time.perf_counter()
     per_frame: list[str] = []
     while True:  # once more per channel with more DroneCAN sessions than a table holds
@@ -251,7 +252,7 @@ def sources(source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -
     names = [os.fspath(p) for p in paths]
     for name in names:
         if name == STDIN:
-            raise ValueError("a dataset is written from files: give a capture file, not -")
+            raise SourceError("a dataset is written from files: give a capture file, not -")
         if not os.path.exists(name):
             raise FileNotFoundError(f"{name}: no such file")
     return names
