@@ -28,7 +28,7 @@ from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
 from veronte4x.capture.source import Format, Source, Truncated, open_lines, resolve
 
-BATCH_BYTES = 1 << 24
+BATCH_BYTES = 1 << 22
 """Bytes of candump text decoded at once."""
 BATCH_FRAMES = 1 << 18
 """Frames of other formats decoded at once."""

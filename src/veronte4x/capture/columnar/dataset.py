@@ -16,11 +16,13 @@ has).
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 import re
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -30,7 +32,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar.batches import BATCH_BYTES, read_batches
+from veronte4x.capture.columnar.batches import BATCH_BYTES, Batch, read_batches
 from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.source import STDIN
@@ -108,7 +110,7 @@ def convert_file(
         decoder = StreamDecoder(bus_map, channel, per_frame)
         frames = 0
         try:
-            for batch in read_batches(name, batch_bytes):
+            for batch in _ahead(read_batches(name, batch_bytes)):
                 frames += len(batch.frames)
                 for kind, table in decoder.feed(batch.frames).items():
                     writer.write(kind, table)
@@ -134,7 +136,11 @@ def file_name(source: str) -> str:
 
 
 class _Writer:
-    """The files of one capture: written under temporary names, renamed on `commit`."""
+    """The files of one capture: written under temporary names, renamed on `commit`.
+
+    Row groups are compressed and written on a thread of their own, one at a time, while
+    the next batch is decoded.
+    """
 
     def __init__(self, out_dir: Path, source: str) -> None:
         self.out_dir = out_dir
@@ -143,6 +149,8 @@ class _Writer:
         self._writers: dict[str, pq.ParquetWriter] = {}
         self._buffers: dict[str, list[pa.Table]] = {}
         self.counts: dict[str, int] = {}
+        self._thread = ThreadPoolExecutor(1)
+        self._writing: Future[None] | None = None
 
     def _paths(self, kind: str) -> tuple[Path, Path]:
         folder = self.out_dir / f"message={kind}"
@@ -157,8 +165,16 @@ class _Writer:
 
     def _flush(self, kind: str) -> None:
         buffer = self._buffers.pop(kind, [])
-        if not buffer:
-            return
+        if buffer:
+            self._wait()
+            self._writing = self._thread.submit(self._write, kind, buffer)
+
+    def _wait(self) -> None:
+        if self._writing is not None:
+            writing, self._writing = self._writing, None
+            writing.result()
+
+    def _write(self, kind: str, buffer: list[pa.Table]) -> None:
         table = pa.concat_tables(buffer).unify_dictionaries().combine_chunks()
         source = pa.DictionaryArray.from_arrays(
             pa.array(np.zeros(len(table), np.int32)), pa.array([self.source], pa.string())
@@ -175,6 +191,8 @@ class _Writer:
         """Finish every file and put it in place; return the rows written per table."""
         for kind in list(self._buffers):
             self._flush(kind)
+        self._wait()
+        self._thread.shutdown()
         for writer in self._writers.values():
             writer.close()
         for stale in self.out_dir.glob(f"message=*/{self.name}"):
@@ -187,11 +205,32 @@ class _Writer:
 
     def abort(self) -> None:
         """Drop the files being written."""
+        with contextlib.suppress(Exception):
+            self._wait()
+        self._thread.shutdown()
         for kind, writer in self._writers.items():
             writer.close()
             self._paths(kind)[0].unlink(missing_ok=True)
         self._writers.clear()
         self._buffers.clear()
+
+
+def _ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
+    """The batches, each read on a thread while the one before it is decoded."""
+    with ThreadPoolExecutor(1) as thread:
+        try:
+            coming = thread.submit(next, batches, None)
+            while (batch := coming.result()) is not None:
+                coming = thread.submit(next, batches, None)
+                yield batch
+        finally:
+            coming.cancel()
+            wait([coming])
+            with contextlib.suppress(Exception):
+                coming.result()
+            close = getattr(batches, "close", None)
+            if close is not None:
+                close()
 
 
 def to_parquet(
