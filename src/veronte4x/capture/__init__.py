@@ -177,7 +177,8 @@ def to_parquet(
     extra with ``client``).
 
     Args:
-        source: A capture file or a list of them (not standard input).
+        source: A capture file or a list of them (not standard input; a path given twice
+            is converted once).
         out_dir: The dataset's directory (created if missing).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         client: A ``dask.distributed.Client``: the files are converted on its workers,

@@ -286,9 +286,9 @@ def _convert_here(
 
 
 def sources(source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -> list[str]:
-    """The capture paths of a `to_parquet` call, checked to exist."""
+    """The capture paths of a `to_parquet` call, checked to exist, each once."""
     paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
-    names = [os.fspath(p) for p in paths]
+    names = list(dict.fromkeys(os.fspath(p) for p in paths))  # each capture once
     for name in names:
         if name == STDIN:
             raise SourceError("a dataset is written from files: give a capture file, not -")
