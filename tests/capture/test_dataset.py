@@ -129,3 +129,30 @@ def test_standard_input_and_missing_files_are_refused(tmp_path: Path) -> None:
         capture.to_parquet("-", tmp_path)
     with pytest.raises(FileNotFoundError, match=r"nothing\.log"):
         capture.to_parquet([FLIGHT, tmp_path / "nothing.log"], tmp_path)
+
+
+@pytest.mark.parametrize("suffix", [".asc", ".blf", ".mf4"])
+def test_python_can_formats_in_batches(tmp_path: Path, suffix: str) -> None:
+    import can
+
+    whole = read_frames(FLIGHT)
+    path = tmp_path / f"capture{suffix}"
+    with can.Logger(str(path)) as logger:
+        for row in range(len(whole)):
+            frame = whole.frame(row)
+            logger(
+                can.Message(
+                    timestamp=frame.timestamp or 0.0,
+                    arbitration_id=frame.can_id,
+                    is_extended_id=frame.extended,
+                    data=frame.data,
+                    channel=0,
+                )
+            )
+    expected = read_frames(path)
+    joined = concat([b.frames for b in read_batches(path, batch_frames=5)])
+    assert joined.order.tolist() == expected.order.tolist()
+    assert joined.data.tolist() == expected.data.tolist()
+    out = tmp_path / "data"
+    dataset.to_parquet(path, out, progress=False)
+    assert_same_tables(read_back(out), capture.read_tables(path))
