@@ -42,6 +42,8 @@ SOURCE = pa.field("source", pa.dictionary(pa.int32(), pa.string()))
 """The column naming the capture a row comes from."""
 ROW_GROUP = 1 << 17
 """Rows of a table gathered before they are written as one row group."""
+BUFFERED = 1 << 25
+"""Bytes of rows all tables may hold back together; past it the largest is written."""
 
 Progress = Callable[[int], None]
 """Told the bytes of a capture read so far."""
@@ -148,6 +150,7 @@ class _Writer:
         self.name = file_name(source)
         self._writers: dict[str, pq.ParquetWriter] = {}
         self._buffers: dict[str, list[pa.Table]] = {}
+        self._bytes: dict[str, int] = {}
         self.counts: dict[str, int] = {}
         self._thread = ThreadPoolExecutor(1)
         self._writing: Future[None] | None = None
@@ -160,11 +163,15 @@ class _Writer:
         buffer = self._buffers.setdefault(kind, [])
         buffer.append(table)
         self.counts[kind] = self.counts.get(kind, 0) + len(table)
+        self._bytes[kind] = self._bytes.get(kind, 0) + table.nbytes
         if sum(len(t) for t in buffer) >= ROW_GROUP:
             self._flush(kind)
+        elif sum(self._bytes.values()) > BUFFERED:
+            self._flush(max(self._bytes, key=self._bytes.__getitem__))
 
     def _flush(self, kind: str) -> None:
         buffer = self._buffers.pop(kind, [])
+        self._bytes.pop(kind, None)
         if buffer:
             self._wait()
             self._writing = self._thread.submit(self._write, kind, buffer)
