@@ -14,10 +14,11 @@ import dask
 import distributed
 import pytest
 
-from tests.capture.columnar_support import assert_same_tables, write
+from tests.capture.columnar_support import DECLARED, assert_same_tables, write
 from tests.capture.test_dataset import FLIGHT, read_back
 from tests.capture.test_stream import _interleaved_flight
 from veronte4x import capture
+from veronte4x.capture import BusMap
 from veronte4x.errors import SourceError
 
 
@@ -79,3 +80,14 @@ def test_cli_on_the_scheduler(
     assert result.stderr.startswith("veronte4x: 3 files, ")
     for path in fleet:
         assert_same_tables(read_back(out, str(path)), capture.read_tables(path))
+
+
+def test_declared_layouts_travel_to_the_workers(client: distributed.Client, tmp_path: Path) -> None:
+    bus_map = BusMap(layouts=(DECLARED,), allow_excess=True)
+    message = DECLARED.message_class(50.0, -3, 25.5)
+    data = DECLARED.encode(message).hex().upper()
+    path = write(tmp_path / "declared.log", [f"({t}.0) can0 008#{data}" for t in range(5)])
+    capture.to_parquet(path, tmp_path / "data", bus_map, client=client, progress=False)
+    expected = capture.read_tables(path, bus_map)
+    assert len(expected["ScorpionTelemetry"]) == 5
+    assert_same_tables(read_back(tmp_path / "data"), expected)
