@@ -104,7 +104,13 @@ def _ours(make: Callable[[], Any]) -> tuple[Callable[[], Any], ...]:
         return out
 
     assert decode() == [message] * STREAM
-    return encode, build_and_encode, decode
+    frames = [(f.can_id, f.data) for f in v4.encode(message, source_node_id=42, transfer_id=7)]
+
+    def decode_frames() -> Any:
+        return v4.decode_frames(frames).message
+
+    assert decode_frames() == message
+    return encode, build_and_encode, decode, decode_frames
 
 
 def _reference(make: Callable[[], Any]) -> tuple[Any, ...]:
@@ -144,7 +150,65 @@ def _reference(make: Callable[[], Any]) -> tuple[Any, ...]:
         return out
 
     assert len(decode()) == STREAM
-    return encode, build_and_encode, decode, frames
+
+    def decode_frames() -> Any:
+        t = transport.Transfer()
+        t.from_frames(frames)
+        return t.payload
+
+    decode_frames()
+    return encode, build_and_encode, decode, decode_frames, frames
+
+
+SESSION_TABLE_SIZES = (1_000, 16_000)
+"""Distinct sessions in the session-table rows; the reassembler keeps 1,024 by default."""
+
+
+def _session_streams(sessions: int) -> tuple[list[Any], list[Any]]:
+    """GetNodeInfo requests between ``sessions`` node pairs, round robin, transfer ids
+    running on: the same frames for both libraries (ours with timestamps, 1 us apart)."""
+    pairs = [(s, d) for s in range(1, 128) for d in range(1, 128) if s != d]
+    pairs = pairs[:: len(pairs) // sessions][:sessions]
+    ours, theirs = [], []
+    for n in range(max(2, 32_000 // sessions)):
+        for source, destination in pairs:
+            (frame,) = v4.encode(
+                v4.GetNodeInfoRequest(),
+                source_node_id=source,
+                destination_node_id=destination,
+                transfer_id=n % 32,
+            )
+            ours.append((frame.can_id, frame.data, len(ours) * 1e-6))
+            theirs.append(
+                transport.Frame(frame.can_id, bytearray(frame.data), ts_monotonic=len(ours) * 1e-6)
+            )
+    return ours, theirs
+
+
+def _session_rows(seconds: float) -> dict[int, float]:
+    """Frames per second decoded through a Reassembler, and through the dronecan package's
+    TransferManager plus Transfer.from_frames (which keeps every session), per table size."""
+    ours_rate = {}
+    for sessions in SESSION_TABLE_SIZES:
+        ours, theirs = _session_streams(sessions)
+
+        def mine(stream: list[Any] = ours) -> None:
+            feed = v4.Reassembler().feed
+            for can_id, data, timestamp in stream:
+                feed(can_id, data, timestamp)
+
+        def reference(stream: list[Any] = theirs) -> None:
+            receive = transport.TransferManager().receive_frame
+            for frame in stream:
+                complete = receive(frame)
+                if complete:
+                    transport.Transfer().from_frames(complete)
+
+        a, b = _rates(mine, reference, len(ours), seconds)
+        ours_rate[sessions] = a
+        name = f"{sessions:,} sessions"
+        print(f"{name:22} {'feed frames':13} {a:12,.0f} {b:11,.0f} {a / b:6.1f}x")
+    return ours_rate
 
 
 def main() -> None:
@@ -155,8 +219,8 @@ def main() -> None:
     print(f"{'case':22} {'op':13} {'veronte4x/s':>12} {'dronecan/s':>11} {'ratio':>7}")
     lowest: dict[str, float] = {}
     for name, (ours, make) in CASES.items():
-        our_encode, our_build, our_decode = _ours(ours)
-        ref_encode, ref_build, ref_decode, ref_frames = _reference(make)
+        our_encode, our_build, our_decode, our_frames = _ours(ours)
+        ref_encode, ref_build, ref_decode, ref_frames_decode, ref_frames = _reference(make)
         assert [(f.can_id, f.data) for f in our_encode()] == [
             (f.message_id, bytes(f.bytes)) for f in ref_frames
         ], name
@@ -164,12 +228,19 @@ def main() -> None:
             ("encode", our_encode, ref_encode),
             ("build+encode", our_build, ref_build),
             ("decode", our_decode, ref_decode),
+            ("decode_frames", our_frames, ref_frames_decode),
         ):
             items = STREAM if op == "decode" else 1
             a, b = _rates(mine, theirs, items, args.seconds)
             lowest[op] = min(lowest.get(op, float("inf")), a / b)
             print(f"{name:22} {op:13} {a:12,.0f} {b:11,.0f} {a / b:6.1f}x")
+    rates = _session_rows(args.seconds)
     print("lowest ratio: " + ", ".join(f"{op} {r:.1f}x" for op, r in lowest.items()))
+    small, large = rates[SESSION_TABLE_SIZES[0]], rates[SESSION_TABLE_SIZES[-1]]
+    print(
+        f"session table: {large:,.0f} frames/s at {SESSION_TABLE_SIZES[-1]:,} sessions, "
+        f"{small / large:.2f}x slower than at {SESSION_TABLE_SIZES[0]:,} (default limit 1,024)"
+    )
     sys.exit(0)
 
 

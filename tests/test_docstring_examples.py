@@ -16,7 +16,7 @@ def _docstrings(path: Path) -> list[tuple[str, str]]:
     nodes = [tree, *(n for n in ast.walk(tree) if isinstance(n, (ast.ClassDef, ast.FunctionDef)))]
     found = []
     for node in nodes:
-        text = ast.get_docstring(node)  # type: ignore[arg-type]
+        text = ast.get_docstring(node)
         if text:
             found.append((getattr(node, "name", path.stem), text))
     return found

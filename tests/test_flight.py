@@ -71,10 +71,12 @@ def test_replay_reports_an_injected_disagreement(flight: Path) -> None:
     config = load_config(str(EXAMPLES / "arbiter.toml"))
     records = [r for r in capture.read(str(flight)) if r.error is None and r.node_id is None]
     start = records[0].timestamp
+    assert start is not None
     frames = []
     injected = None
     for record in records:
         message = record.message
+        assert record.timestamp is not None
         late = record.timestamp > start + 5.0
         if injected is None and late and isinstance(message, codec.Status):
             assert message.selected == 1

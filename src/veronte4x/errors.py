@@ -3,9 +3,19 @@
 Every error the library raises on purpose derives from :class:`Veronte4xError`.
 :class:`DecodeError` and :class:`EncodeError` also derive from :class:`ValueError`, so
 code written for the standard library's conventions keeps working.
+
+Arguments of the wrong type are a caller's mistake, not bad data: every public entry point
+raises :class:`TypeError` for them, naming the argument and the type expected (see
+:func:`argument_type_error`). Bad bytes from a bus or a file give a :class:`DecodeError`
+(or, in the reassembler, a counted problem), never a :class:`TypeError`.
 """
 
 from __future__ import annotations
+
+from typing import Union
+
+BytesLike = Union[bytes, bytearray, memoryview]  # noqa: UP007  (a run-time alias on 3.10)
+"""What the codecs accept as data: bytes, bytearray or memoryview."""
 
 
 class Veronte4xError(Exception):
@@ -27,12 +37,12 @@ class DecodeError(Veronte4xError, ValueError):
         self,
         message_type: str | None,
         reason: str,
-        data: bytes,
+        data: BytesLike,
         field: str | None = None,
     ) -> None:
         self.message_type = message_type
         self.reason = reason
-        self.data = bytes(data)
+        self.data = bytes(data) if isinstance(data, (bytes, bytearray, memoryview)) else b""
         self.field = field
         where = message_type or "frame"
         if field is not None:
@@ -47,7 +57,7 @@ class UnknownCommandError(DecodeError):
         command: The command byte (byte 0) of the frame.
     """
 
-    def __init__(self, command: int, data: bytes, reason: str = "") -> None:
+    def __init__(self, command: int, data: BytesLike, reason: str = "") -> None:
         self.command = command
         super().__init__(
             None, reason or f"command byte {command} is reserved or unknown", data, "command"
@@ -74,6 +84,16 @@ class EncodeError(Veronte4xError, ValueError):
 
 class LayoutError(Veronte4xError, ValueError):
     """A layout declaration that cannot describe a Veronte frame (too long, misplaced bytes)."""
+
+
+def argument_type_error(function: str, argument: str, expected: str, value: object) -> TypeError:
+    """The `TypeError` for an argument of the wrong type, in one wording everywhere.
+
+    Examples:
+        >>> str(argument_type_error("decode", "data", "bytes-like", "00ff"))
+        'decode(): data must be bytes-like, not str'
+    """
+    return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
 
 
 class SourceError(Veronte4xError, ValueError):

@@ -59,3 +59,23 @@ def test_timestamps_of_any_shape_agree(lines: list[tuple[str, str]]) -> None:
         expected = capture.tables_from_records(capture.read(path))
         got = capture.read_tables(path)
     assert_same_tables(got, expected)
+
+
+human_stamps = st.one_of(
+    st.datetimes().map(lambda moment: moment.strftime("%Y-%m-%d %H:%M:%S.%f")),
+    st.from_regex(r"\A[0-9]{4}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2}:[0-9]{2}\.[0-9]{6}\Z"),
+    stamps,
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(human_stamps, st.booleans()), min_size=1, max_size=12))
+def test_human_view_times_agree(lines: list[tuple[str, bool]]) -> None:
+    frame = ["0FF   [3]  00 FF 01", "1004060A   [8]  00 00 00 00 00 00 00 C0"]
+    text = "".join(f"({stamp})  can0  {frame[long]}\n" for stamp, long in lines)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "capture.log"
+        path.write_text(text)
+        expected = capture.tables_from_records(capture.read(path))
+        got = capture.read_tables(path)
+    assert_same_tables(got, expected)

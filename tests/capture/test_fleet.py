@@ -26,10 +26,10 @@ from veronte4x.errors import SourceError
 def client() -> Iterator[distributed.Client]:
     with (
         dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": 1 << 25}),
-        distributed.LocalCluster(
+        distributed.LocalCluster(  # type: ignore[no-untyped-call]
             n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
         ) as cluster,
-        distributed.Client(cluster) as client,
+        distributed.Client(cluster) as client,  # type: ignore[no-untyped-call]
     ):
         yield client
 
@@ -70,7 +70,7 @@ def test_cli_on_the_scheduler(
     client: distributed.Client, fleet: list[Path], tmp_path: Path
 ) -> None:
     out = tmp_path / "data"
-    address = client.scheduler.address
+    address = str(client.scheduler_info()["address"])
     result = subprocess.run(
         [sys.executable, "-m", "veronte4x", "convert", *map(str, fleet), "--to", "parquet",
          str(out), "--scheduler", address],

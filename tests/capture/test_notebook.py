@@ -4,6 +4,7 @@ import math
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 import pytest
 
 from veronte4x import capture, codec
@@ -51,7 +52,7 @@ def test_plot_draws_scores_and_selection() -> None:
     figure = arbitration_timeline(capture.read(EXAMPLE))
     top, bottom = figure.axes
     assert [line.get_label() for line in top.get_lines()] == ["AP1", "AP2", "AP3"]
-    assert list(bottom.get_lines()[0].get_ydata()) == [1, 1]
+    assert np.asarray(bottom.get_lines()[0].get_ydata()).tolist() == [1, 1]
 
 
 def _status(stamp: float, alive: tuple[bool, bool, bool, bool], selected: int) -> Record:
@@ -92,4 +93,4 @@ def test_absent_is_absent_and_a_dead_score_line_ends_at_death() -> None:
     figure = arbitration_timeline(records)
     top, bottom = figure.axes
     assert len(bottom.patches) == 1  # AP2's dead span only, nothing for the external one
-    assert list(top.get_lines()[1].get_xdata()) == [0.5, 1.5, 2.0, 2.0]
+    assert np.asarray(top.get_lines()[1].get_xdata()).tolist() == [0.5, 1.5, 2.0, 2.0]

@@ -2,11 +2,13 @@
 
 import dataclasses
 import math
+from typing import Any
 
 import pytest
 
 from veronte4x import codec
 from veronte4x.codec import ByteOrder, Linear
+from veronte4x.codec.compiler import FrameLayout
 
 ESC = codec.Layout(
     5,
@@ -24,8 +26,8 @@ def test_generated_class_is_a_frozen_slotted_message() -> None:
     cls = ESC.message_class
     assert cls.__name__ == "EscTelemetry"
     assert cls.COMMAND == 5
-    assert issubclass(cls, codec.DeclaredMessage)
-    assert issubclass(cls, codec.Message)
+    assert codec.DeclaredMessage in cls.__mro__
+    assert codec.Message in cls.__mro__
     assert [f.name for f in dataclasses.fields(cls)] == ["throttle", "current", "voltage"]
     msg = cls(throttle=50.0, current=-3, voltage=12.5)
     assert not hasattr(msg, "__dict__")
@@ -117,3 +119,36 @@ def test_public_commands_cannot_be_redeclared(args: tuple, message: str) -> None
 def test_bad_layouts(fields: list[codec.Field], message: str) -> None:
     with pytest.raises(codec.LayoutError, match=message):
         codec.Layout(5, "Bad", fields)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        ((5, "Bad", [codec.unsigned("a", 8, scale=codec.Linear(3, 3, 0.0, 1.0))]), "empty compr"),
+        ((5, "Bad", [codec.Field(codec.Kind.BOOL, 1, "a")]), "field a cannot be declared"),
+        ((5, "Bad", [codec.Field(codec.Kind.UNSIGNED, 8, "a", 0)]), "cannot be declared"),
+        ((5, "_x y", []), "'_x y' is not a valid class name"),
+        ((5, "class", []), "'class' is not a valid class name"),
+        ((256, "Bad", []), "command 256 is not a byte"),
+        ((-1, "Bad", []), "command -1 is not a byte"),
+        ((5, "Bad", [codec.unsigned("_a", 8)]), "'_a' is not a valid field name"),
+        ((5, "Bad", [codec.unsigned("a", 28), codec.signed("b", 29)]), "do not fit"),
+    ],
+)
+def test_layout_validation_errors(args: tuple[Any, ...], message: str) -> None:
+    with pytest.raises(codec.LayoutError, match=message):
+        codec.Layout(*args)
+
+
+def test_frame_layout_checks() -> None:
+    """The checks of the layout compiler itself, on layouts only the built-ins can make."""
+    Kind, Field = codec.Kind, codec.Field
+    for fields, message in (
+        ((Field(Kind.FLOAT32, 16, "score"),), "float32 field score must have 32 bits"),
+        ((Field(Kind.MAPPED, 2, "ready", mapping=((4, True),)),), "does not fit"),
+        ((Field(Kind.BYTES, 8, "ready"), Field(Kind.BOOL, 1, "ready")), "must come last"),
+        ((Field(Kind.BOOL, 1, "ready"), Field(Kind.BYTES, 8, "ready")), "byte-aligned"),
+        ((Field(Kind.UNSIGNED, 8, "ready"), Field(Kind.BYTES, 64, "ready")), "overflow"),
+    ):
+        with pytest.raises(codec.LayoutError, match=message):
+            FrameLayout(codec.Ready, fields).check()

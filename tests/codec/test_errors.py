@@ -98,7 +98,7 @@ def test_short_frames_never_decode_even_with_allow_excess() -> None:
             "ArbitrationVariable.number = 32: expected an int in 0..31",
         ),
         (
-            codec.ArbitrationVariable(number=True, value=0.0),  # type: ignore[arg-type]
+            codec.ArbitrationVariable(number=True, value=0.0),
             "ArbitrationVariable.number = True: expected an int in 0..31",
         ),
         (codec.Ready(ready=1), "Ready.ready = 1: expected a bool"),  # type: ignore[arg-type]
@@ -135,8 +135,11 @@ def test_encode_errors(message: codec.Message, error: str) -> None:
 
 
 def test_encoding_a_foreign_object() -> None:
-    with pytest.raises(codec.EncodeError, match=r"^str\.message = 'x': expected a veronte4x"):
+    with pytest.raises(TypeError, match=r"^encode\(\): message must be a Veronte message, not str"):
         codec.encode("x")  # type: ignore[arg-type]
+    declared = codec.Layout(20, "Other", [codec.unsigned("a", 8)])
+    with pytest.raises(codec.EncodeError, match=r"^Other\.message = "):
+        codec.encode(declared.message_class(a=1))
 
 
 def test_infinities_and_nans_are_float32_values() -> None:

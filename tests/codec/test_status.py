@@ -1,6 +1,7 @@
 """Status frames: every bit of the 6-byte 4x form and of the 4-byte CEX form, one by one."""
 
 import dataclasses
+from typing import Any
 
 import pytest
 
@@ -40,7 +41,8 @@ def test_flag_order_matches_the_seed_table() -> None:
 def test_each_byte_4_5_flag(position: int) -> None:
     body = [0, 0, 0, 0]
     body[2 + position // 8] = 1 << (position % 8)
-    expected = dataclasses.replace(ALL_CLEAR, **{FLAG_NAMES[position]: True})
+    changes: dict[str, Any] = {FLAG_NAMES[position]: True}
+    expected = dataclasses.replace(ALL_CLEAR, **changes)
     _roundtrip(_frame(*body), expected)
 
 
@@ -66,7 +68,8 @@ def test_alive_and_ready_bits(bit: int, form: str) -> None:
     tail = [0, 0] if form == "4x" else []
     flags = tuple(i == bit % 4 for i in range(4))
     field = "alive" if bit < 4 else "ready"
-    _roundtrip(_frame(0, 1 << bit, *tail), dataclasses.replace(base, **{field: flags}))
+    changes: dict[str, Any] = {field: flags}
+    _roundtrip(_frame(0, 1 << bit, *tail), dataclasses.replace(base, **changes))
 
 
 def test_cex_form_has_no_flags() -> None:

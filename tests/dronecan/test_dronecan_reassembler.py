@@ -302,34 +302,3 @@ def test_arbitrary_frames_never_raise(frames: list[tuple[int, bytes, float]]) ->
         with contextlib.suppress(dronecan.DecodeError):
             dronecan.decode_frames([(can_id, data)])
     assert r.session_count <= r.max_sessions
-
-
-@settings(max_examples=150, deadline=None)
-@given(
-    _MESSAGES,
-    st.integers(0, 31),
-    st.lists(
-        st.tuples(_MESSAGES, st.integers(0, 31), st.sampled_from([0.0, 0.5, 2.5]), st.booleans()),
-        max_size=6,
-    ),
-)
-def test_resume_continues_as_if_the_transfer_had_been_fed(
-    first: Any, tid: int, rest: list[tuple[Any, int, float, bool]]
-) -> None:
-    """A session resumed after a transfer takes what follows as one fed that transfer does:
-    the next transfers, repeats, timeouts and lost frames alike."""
-    fed, resumed = dronecan.Reassembler(), dronecan.Reassembler()
-    frames = _frames(first, 20, tid)
-    for can_id, data in frames:
-        fed.feed(can_id, data, 1.0 + 0.001 * len(data))
-    before = fed.reported
-    resumed.resume(frames[-1][0], tid, 1.0 + 0.001 * len(frames[0][1]), frames[-1][1])
-    stamp = 1.0
-    for message, next_tid, gap, drop in rest:
-        stamp += gap
-        later = _frames(message, 20, next_tid)
-        if drop and len(later) > 1:
-            del later[0]
-        for can_id, data in later:
-            assert fed.feed(can_id, data, stamp) == resumed.feed(can_id, data, stamp)
-    assert list(fed.problems)[before:] == list(resumed.problems)

@@ -77,8 +77,8 @@ def test_too_many_frames_is_a_decode_error() -> None:
         dronecan.decode_frames([])
 
 
-def test_unknown_class_is_an_encode_error() -> None:
-    with pytest.raises(dronecan.EncodeError):
+def test_unknown_class_is_a_type_error_and_unknown_type_id_a_decode_error() -> None:
+    with pytest.raises(TypeError, match=r"^encode\(\): message must be a DroneCAN message"):
         dronecan.encode(object(), source_node_id=1, transfer_id=0)
     with pytest.raises(dronecan.DecodeError):
         dronecan.decode_payload(dronecan.TransferKind.MESSAGE, 7, b"")

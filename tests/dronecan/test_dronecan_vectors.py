@@ -96,7 +96,7 @@ def test_payload_decodes_on_both_paths(vector: dict[str, Any]) -> None:
 )
 def test_encode_frame_by_frame(vector: dict[str, Any]) -> None:
     cls = CLASS_OF[(vector["type"], KINDS[vector["kind"]])]
-    message = dronecan.from_builtin(cls, vector["fields"])
+    message: Any = dronecan.from_builtin(cls, vector["fields"])
     frames = _encode(vector, message)
     if _has_infinity(vector["fields"]):
         # The documented difference: dronecan clamps infinity to the largest finite value,
@@ -164,7 +164,7 @@ def test_out_of_range_raises_by_default_and_saturates_on_request(vector: dict[st
         with pytest.raises(dronecan.EncodeError):
             dronecan.from_builtin(cls, vector["fields"])
         return
-    message = dronecan.from_builtin(cls, vector["fields"])
+    message: Any = dronecan.from_builtin(cls, vector["fields"])
     if "decoded" in vector:
         with pytest.raises(dronecan.EncodeError):
             _encode(vector, message)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import pytest
 
 from veronte4x import dronecan
@@ -24,6 +26,9 @@ def test_crc_check_value_and_seeds() -> None:
         "uavcan.protocol.param.GetSet": 0xFB10,
         "uavcan.protocol.RestartNode": 0x1F7F,
         "uavcan.protocol.file.BeginFirmwareUpdate": 0x729E,
+        "uavcan.protocol.param.ExecuteOpcode": 0xD7D4,
+        "uavcan.protocol.file.GetInfo": 0x14B9,
+        "uavcan.protocol.file.Read": 0x2F12,
     }
 
 
@@ -65,9 +70,15 @@ def test_can_id_ranges(function: object, args: tuple[object, ...]) -> None:
         function(*args)  # type: ignore[operator]
 
 
-@pytest.mark.parametrize("can_id", [-1, 1 << 29, "x"])
-def test_parse_rejects_non_29_bit_ids(can_id: object) -> None:
+@pytest.mark.parametrize("can_id", [-1, 1 << 29])
+def test_parse_rejects_non_29_bit_ids(can_id: int) -> None:
     with pytest.raises(dronecan.DecodeError):
+        dronecan.parse_can_id(can_id)
+
+
+@pytest.mark.parametrize("can_id", ["x", 1.0, True, None])
+def test_parse_refuses_a_can_id_that_is_not_an_int(can_id: object) -> None:
+    with pytest.raises(TypeError, match=r"^parse_can_id\(\): can_id must be an int, not "):
         dronecan.parse_can_id(can_id)  # type: ignore[arg-type]
 
 
@@ -122,7 +133,7 @@ def test_restart_node_magic_numbers_on_the_wire() -> None:
 
 
 def test_frame_counts() -> None:
-    def count(message: object, **kwargs: int) -> int:
+    def count(message: object, **kwargs: Any) -> int:
         return len(dronecan.encode(message, source_node_id=1, transfer_id=0, **kwargs))
 
     assert count(dronecan.RawCommand((0,) * 4)) == 1
@@ -147,7 +158,7 @@ def test_frame_counts() -> None:
         ({"source_node_id": 1, "transfer_id": 0, "destination_node_id": 5}, "destination_node_id"),
     ],
 )
-def test_encode_checks_transport_fields(kwargs: dict[str, int], field: str) -> None:
+def test_encode_checks_transport_fields(kwargs: dict[str, Any], field: str) -> None:
     status = dronecan.NodeStatus(0, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
     with pytest.raises(dronecan.EncodeError) as info:
         dronecan.encode(status, **kwargs)

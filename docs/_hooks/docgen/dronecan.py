@@ -49,7 +49,7 @@ def tail_byte_table() -> str:
 
 
 def types_table() -> str:
-    """The eight types: id, kind, signature, CRC seed, payload sizes."""
+    """The types: id, kind, signature, CRC seed, payload sizes."""
     rows = []
     for t in DATA_TYPES:
         low = (min_bits(t.schema) - _prefixes_dropped(t.schema) + 7) // 8

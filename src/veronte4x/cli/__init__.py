@@ -5,7 +5,8 @@ naming what was wrong and what to do, never a traceback. Exit codes (`exit_codes
 success (bad frames skipped or kept are not failures), 1 when the capture failed a check
 (``--on-error raise`` met a bad frame, ``replay`` found disagreements), 2 for a usage error or
 an input that cannot be read (missing file, directory, unknown format, bad bus map, missing
-extra), 130 when interrupted by Ctrl-C.
+extra, a CAN bus that cannot be opened), 3 when a DroneCAN node did not answer and 4 when it
+refused (``esc``), 130 when interrupted by Ctrl-C.
 
 Each command lives in its own module with an ``add_parser`` function that registers it.
 """
@@ -20,11 +21,12 @@ from collections.abc import Sequence
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import convert, decode, replay, stats
+from veronte4x.cli import convert, decode, esc, monitor, plot, replay, simulate, stats
+from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.errors import SourceError
 
-COMMANDS = (decode, stats, replay, convert)
+COMMANDS = (decode, stats, replay, monitor, plot, list_command, esc, simulate, convert)
 """The command modules, in the order ``--help`` lists them."""
 
 

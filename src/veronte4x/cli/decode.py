@@ -21,7 +21,8 @@ from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.notices import tell_truncation
-from veronte4x.cli.options import add_capture_options
+from veronte4x.cli.options import add_capture_options, add_live_options, open_records
+from veronte4x.cli.options import live as live_bus
 from veronte4x.times import format_time
 
 HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
@@ -50,20 +51,21 @@ def add_parser(commands: Any) -> None:
         help="times in seconds since the first frame (default: as captured; ISO 8601 in text)",
     )
     add_capture_options(parser)
+    add_live_options(parser)
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
-    records = counts.counted(tell_truncation(capture.read(args.file, bus_map, args.channel)))
+    records = counts.counted(tell_truncation(open_records(args, bus_map)))
     out = sys.stdout
     clock = _Clock(args.relative_time)
     if args.output == "csv":
         write, close = _csv_writer(out, clock, _csv_columns(args, bus_map))
     else:
         write, close = {"text": _text_writer, "jsonl": _jsonl_writer}[args.output](out, clock)
-    live = args.file == "-"
+    live = args.file == "-" or live_bus(args)
     status = EXIT_OK
     try:
         for record in records:

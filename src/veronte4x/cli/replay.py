@@ -8,9 +8,8 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
-from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK
-from veronte4x.cli.options import add_capture_options
+from veronte4x.cli.options import add_capture_options, add_live_options, open_frame_source
 from veronte4x.times import format_time
 
 
@@ -19,7 +18,7 @@ def add_parser(commands: Any) -> None:
     parser = commands.add_parser(
         "replay", help="run the arbiter model on a capture; explain switches and disagreements"
     )
-    parser.add_argument("file", help="capture file, or - for stdin")
+    parser.add_argument("file", nargs="?", help="capture file, or - for stdin")
     parser.add_argument(
         "--config",
         metavar="FILE",
@@ -32,6 +31,7 @@ def add_parser(commands: Any) -> None:
         help="times in seconds since the first frame (default: ISO 8601 for Unix time)",
     )
     add_capture_options(parser)
+    add_live_options(parser)
     parser.set_defaults(run=run)
 
 
@@ -54,7 +54,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     clock = _Clock(args.relative_time)
     frames = (
         (clock.see(frame.timestamp), frame.can_id, frame.data)
-        for frame in open_frames(args.file, args.channel)
+        for frame in open_frame_source(args)
         if isinstance(frame, Frame)
         and frame.timestamp is not None
         and not (frame.error or frame.remote or frame.fd)

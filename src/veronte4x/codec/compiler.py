@@ -10,6 +10,7 @@ dataclasses and attrs generate their methods. The generated source can be read w
 from __future__ import annotations
 
 import dataclasses
+import re
 import struct
 import types
 from collections.abc import Callable
@@ -148,6 +149,20 @@ class FrameLayout:
         exec(compile(encode_src, f"<encode {self.name}>", "exec"), namespace)
         return namespace["decode"], namespace["encode"]
 
+    def decoder_with_shorter(self, shorter: Decoder) -> Decoder:
+        """A decoder that hands frames shorter than the layout to ``shorter``.
+
+        For a message with two forms of different lengths (Status: 6 bytes from the 4x
+        arbiter, 4 from the CEX one), without a dispatching call in front of the longer.
+        """
+        self.check()
+        namespace = _namespace(self)
+        namespace["_shorter"] = shorter
+        source = _decode_source(self, shorter=True)
+        exec(compile(source, f"<decode {self.name}>", "exec"), namespace)
+        decode: Decoder = namespace["decode"]
+        return decode
+
     def decode(self, data: bytes, allow_excess: bool = False) -> Message:
         """Decode one frame with this layout; see `veronte4x.codec.Codec.decode`."""
         return self.functions[0](data, allow_excess)
@@ -201,15 +216,122 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         namespace[f"_implied_{attr}"] = value
     for f in layout.fields:
         if f.kind is Kind.MAPPED:
-            namespace[f"_from_wire_{f.attr}"] = dict(f.mapping)
+            # Indexed by the wire value: a tuple is cheaper to index than a dict to query.
+            table: list[Any] = [None] * (1 << f.bits)
+            for wire, value in f.mapping:
+                table[wire] = value
+            namespace[f"_from_wire_{f.attr}"] = tuple(table)
             namespace[f"_to_wire_{f.attr}"] = {value: wire for wire, value in f.mapping}
     plan = _struct_plan(layout)
     if plan is not None:
         namespace["_unpack"] = struct.Struct(plan[0]).unpack_from
         namespace["_pack"] = struct.Struct(plan[0]).pack
-    for dc_field in dataclasses.fields(layout.message):
+    for dc_field in _dataclass_fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
+    if plan is not None:
+        namespace["_unpack_exact"] = struct.Struct(plan[0]).unpack
+    namespace["_builder"] = builder(layout.message)
     return namespace
+
+
+_PER_LAYOUT = re.compile(
+    r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
+    r"|_implied_\w+|_from_wire_\w+|_to_wire_\w+|_set_\w+)\b"
+)
+"""The names of a decoder's namespace that belong to its layout (the rest are shared)."""
+
+
+def inline_decoder(
+    layout: FrameLayout, suffix: str, indent: int, shorter: Decoder | None = None
+) -> tuple[list[str], dict[str, Any]]:
+    """The body of a layout's decoder, to inline into a dispatching function.
+
+    The body reads ``data``, ``n`` (its length) and ``excess`` and ends in ``return`` or
+    ``raise``; the names of its layout get ``_<suffix>`` so that several bodies share one
+    namespace.
+
+    Returns:
+        The body's lines, indented by ``indent`` spaces, and the names it needs.
+    """
+    layout.check()
+    namespace = _namespace(layout)
+    if shorter is not None:
+        namespace["_shorter"] = shorter
+    source = _decode_source(layout, shorter=shorter is not None)
+    pad = " " * (indent - 4)
+    # Skip the def line and ``n = _len(data)``: the dispatching function has ``n`` already.
+    lines = [
+        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[2:] if line
+    ]
+    renamed = {
+        (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
+        for key, value in namespace.items()
+    }
+    return lines, renamed
+
+
+def optimistic_decoder(
+    layout: FrameLayout,
+    suffix: str,
+    indent: int,
+    otherwise: str,
+    assume: frozenset[str] = frozenset(),
+) -> tuple[list[str], dict[str, Any]] | None:
+    """The body of an optimistic decoder, to inline like `inline_decoder`, or None.
+
+    Only for layouts that one `struct` unpack reads whole (no raw-bytes tail). The body
+    unpacks exactly the layout's bytes (a frame of another length raises `struct.error`)
+    and, wherever the checked decoder would raise, runs ``otherwise`` instead, which must
+    hand the frame to the checked decoder. Fields are decoded exactly as there, except the
+    constants whose labels are in ``assume``: the caller has checked those.
+    """
+    if _struct_plan(layout) is None or layout.tail is not None:
+        return None
+    layout.check()
+    namespace = _namespace(layout)
+    source = _decode_source(layout, otherwise=otherwise, assume=assume)
+    pad = " " * (indent - 4)
+    lines = [
+        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[1:] if line
+    ]
+    renamed = {
+        (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
+        for key, value in namespace.items()
+    }
+    return lines, renamed
+
+
+def builder(cls: type[Message]) -> type | None:
+    """A plain class with the same slots as ``cls``, or None if none fits.
+
+    An instance of it is filled by plain slot stores (no frozen ``__setattr__``, no call)
+    and then given the message class by ``__class__`` assignment, which Python allows
+    between classes of identical layout. The result is an ordinary instance of ``cls``,
+    built several times faster than through the slots' setters or the frozen ``__init__``.
+    The builder derives from the base under the class that declares the slots, which must
+    be a plain slotted class (`Message`, `DeclaredMessage`); otherwise None (the slots'
+    setters are used).
+    """
+    declaring: type = cls
+    while not declaring.__dict__.get("__slots__") and declaring.__base__ not in (None, object):
+        declaring = declaring.__base__
+    base: Any = declaring.__base__
+    if base is None or base.__setattr__ is not object.__setattr__:
+        return None
+    slots = declaring.__dict__.get("__slots__", ())
+    made = type(f"_{cls.__name__}Builder", (base,), {"__slots__": tuple(slots)})
+    try:
+        probe: Any = object.__new__(made)
+        probe.__class__ = cls
+    except TypeError:
+        return None
+    return made
+
+
+def _dataclass_fields(cls: type[Message]) -> tuple[dataclasses.Field[Any], ...]:
+    """The fields of a message class (every concrete message is a dataclass)."""
+    message_class: Any = cls
+    return dataclasses.fields(message_class)
 
 
 def _slot_setter(cls: type[Message], attr: str) -> Callable[[Message, Any], None]:
@@ -228,7 +350,7 @@ def _values(layout: FrameLayout) -> list[tuple[str, str]]:
             by_attr.setdefault(f.attr, []).append((f.index or 0, f"f{number}"))
     implied = {attr for attr, _ in layout.implied}
     values = []
-    for dc_field in dataclasses.fields(layout.message):
+    for dc_field in _dataclass_fields(layout.message):
         attr = dc_field.name
         if attr in implied:
             values.append((attr, f"_implied_{attr}"))
@@ -243,12 +365,28 @@ def _values(layout: FrameLayout) -> list[tuple[str, str]]:
     return values
 
 
-def _decode_source(layout: FrameLayout) -> str:
+def _decode_source(
+    layout: FrameLayout,
+    shorter: bool = False,
+    otherwise: str | None = None,
+    assume: frozenset[str] = frozenset(),
+) -> str:
+    """The source of a layout's decoder.
+
+    With ``otherwise``, an optimistic decoder instead: no length check (its one `struct`
+    unpack takes exactly the layout's bytes and raises `struct.error` otherwise), no check
+    of the constants labelled in ``assume`` (the caller checked them) and, where the
+    checked decoder raises, the statement ``otherwise``.
+    """
     size = layout.fixed_size
     lines = ["def decode(data, excess):", "    n = _len(data)"]
-    if layout.tail is None:
+    if otherwise is not None:
+        lines = ["def decode(data, excess):"]
+    elif layout.tail is None:
+        lines += [f"    if n != {size}:"]
+        if shorter:
+            lines += [f"        if n < {size}:", "            return _shorter(data, excess)"]
         lines += [
-            f"    if n != {size}:",
             f"        if n < {size} or not excess:",
             f"            raise _derr('{{}} bytes; the layout has {size}'.format(n), data)",
             f"        data = data[:{size}]",
@@ -264,7 +402,8 @@ def _decode_source(layout: FrameLayout) -> str:
     if plan is not None:
         # Every field lies within one byte or is an aligned float32: one unpack reads them all.
         fmt, names = plan
-        lines.append(f"    {', '.join(names)}, = _unpack(data)  # struct {fmt!r}")
+        unpack = "_unpack" if otherwise is None else "_unpack_exact"
+        lines.append(f"    {', '.join(names)}, = {unpack}(data)  # struct {fmt!r}")
     flag_bytes = _flag_bytes(layout)
     for index, numbers in flag_bytes.items():
         byte = f"b{index}" if plan is not None else f"data[{index}]"
@@ -272,19 +411,34 @@ def _decode_source(layout: FrameLayout) -> str:
     grouped = {n for numbers in flag_bytes.values() for n in numbers}
     needs_word = False
     for number, p in enumerate(layout.placed):
+        if p.field.kind is Kind.CONSTANT and p.field.label in assume:
+            continue
         if number not in grouped:
             body += _decode_field(layout, number, p, plan is not None)
             needs_word |= _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING
     needs_word &= plan is None
-    if needs_word:
-        lines.append(f"    w = _from_bytes(data[:{size}], '{layout.byte_order.value}')")
+    if needs_word:  # without a tail, data has exactly `size` bytes here
+        word = f"data[:{size}]" if layout.tail is not None else "data"
+        lines.append(f"    w = _from_bytes({word}, '{layout.byte_order.value}')")
     lines += body
     if layout.tail is not None:
         lines.append(f"    f{len(layout.fields) - 1} = _bytes(data[{size}:])")
     # Fill the slots directly: a frozen dataclass's __init__ costs far more (docs/performance.md).
-    lines.append("    o = _new(_cls)")
-    lines += [f"    _set_{attr}(o, {value})" for attr, value in _values(layout)]
+    if builder(layout.message) is not None:
+        lines.append("    o = _builder()")
+        lines += [f"    o.{attr} = {value}" for attr, value in _values(layout)]
+        lines.append("    o.__class__ = _cls")
+    else:
+        lines.append("    o = _new(_cls)")
+        lines += [f"    _set_{attr}(o, {value})" for attr, value in _values(layout)]
     lines.append("    return o")
+    if otherwise is not None:
+        lines = [
+            line[: len(line) - len(line.lstrip())] + otherwise
+            if line.lstrip().startswith("raise _derr(")
+            else line
+            for line in lines
+        ]
     return "\n".join(lines) + "\n"
 
 
@@ -357,7 +511,7 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -
     if f.kind is Kind.MAPPED:
         wires = ", ".join(str(wire) for wire, _ in f.mapping)
         return [
-            f"    {var} = _from_wire_{f.attr}.get({raw})",
+            f"    {var} = _from_wire_{f.attr}[{raw}]",
             f"    if {var} is None:",
             f"        raise _derr('{{}} is none of {wires}'.format({raw}), data, '{label}')",
         ]

@@ -9,15 +9,31 @@ re-encode to the very bytes it came from.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from typing import NamedTuple
+import struct
+from collections.abc import Callable, Iterable
+from typing import Any, NamedTuple
 
 from veronte4x.codec import layouts
-from veronte4x.codec.compiler import MAX_FRAME_BYTES, Decoder, Encoder
+from veronte4x.codec.compiler import (
+    MAX_FRAME_BYTES,
+    Decoder,
+    Encoder,
+    FrameLayout,
+    builder,
+    inline_decoder,
+    optimistic_decoder,
+)
 from veronte4x.codec.declared import Layout
-from veronte4x.codec.messages import Message, PwmSet, Sender, Status
+from veronte4x.codec.messages import Message, OpaqueMessage, PwmSet, Sender, Status
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
-from veronte4x.errors import DecodeError, EncodeError, LayoutError, UnknownCommandError
+from veronte4x.errors import (
+    BytesLike,
+    DecodeError,
+    EncodeError,
+    LayoutError,
+    UnknownCommandError,
+    argument_type_error,
+)
 
 _ARBITER = Sender.ARBITER
 
@@ -39,6 +55,41 @@ class Dispatch(NamedTuple):
 _AUTOPILOT = Sender.AUTOPILOT
 
 
+def _as_bytes(data: object) -> bytes:
+    """``data`` as bytes if it is bytes-like, else the `TypeError` of the policy."""
+    if isinstance(data, (bytes, bytearray, memoryview)):
+        return bytes(data)
+    raise argument_type_error("decode", "data", "bytes-like", data)
+
+
+def _check_types(data: object, sender: object) -> None:
+    """Raise the `TypeError` of the policy if ``data`` or ``sender`` has the wrong type."""
+    if not isinstance(data, (bytes, bytearray, memoryview)):
+        raise argument_type_error("decode", "data", "bytes-like", data)
+    if not isinstance(sender, Sender):
+        raise argument_type_error("decode", "sender", "a Sender", sender)
+
+
+class _Errors:
+    """The errors the generated `Codec.decode` raises, built out of its hot path."""
+
+    @staticmethod
+    def empty(data: bytes) -> DecodeError:
+        return DecodeError(None, f"0 bytes; a frame has 1 to {MAX_FRAME_BYTES}", data)
+
+    @staticmethod
+    def short(data: bytes) -> DecodeError:
+        return DecodeError(None, "an arbitration frame has at least 2 bytes", data)
+
+    @staticmethod
+    def unknown(command: int, data: bytes) -> UnknownCommandError:
+        return UnknownCommandError(command, data)
+
+    @staticmethod
+    def sender(sender: object) -> TypeError:
+        return argument_type_error("decode", "sender", "a Sender", sender)
+
+
 class Codec:
     """Encoder and decoder for Veronte 4x frames, with the open choices made explicit.
 
@@ -54,13 +105,22 @@ class Codec:
         pwm_packing: PwmPacking = PwmPacking.LSB_FIRST,
         layouts: Iterable[Layout] = (),
     ) -> None:
+        if not isinstance(pwm_packing, PwmPacking):
+            raise argument_type_error("Codec", "pwm_packing", "a PwmPacking", pwm_packing)
         self.pwm_packing = pwm_packing
         self.layouts = tuple(layouts)
+        for declared in self.layouts:
+            if not isinstance(declared, Layout):
+                raise argument_type_error("Codec", "layouts", "Layout objects", declared)
         self._by_command: list[Decoder | None] = [None] * 256
         self._encoders: dict[type[Message], Encoder] = {}
         self._install_built_in()
         for declared in self.layouts:
             self._install_declared(declared)
+        # An instance attribute over the method below: generated functions with the
+        # arbitration, PWM and opaque layouts inlined, so a frame costs one Python call.
+        self._checked = self._compile_checked()
+        self.__dict__["decode"] = self._compile_fast(self._checked)
 
     def _install_built_in(self) -> None:
         status_4x, encode_4x = layouts.STATUS_4X.functions
@@ -88,7 +148,9 @@ class Codec:
         def decode_version(data: bytes, excess: bool) -> Message:
             return request(data, excess) if len(data) == 1 else response(data, excess)
 
-        self._status = decode_status
+        # The 6-byte form is decoded first; shorter frames go on to decode_status.
+        self._status = layouts.STATUS_4X.decoder_with_shorter(decode_status)
+        self._status_short = decode_status
         self._by_command[1] = decode_version
         self._encoders.update(
             {
@@ -119,7 +181,158 @@ class Codec:
         self._by_command[command] = decode
         self._encoders[declared.message_class] = encode
 
-    def decode(self, data: bytes, *, sender: Sender, allow_excess: bool = False) -> Message:
+    def _compile_checked(self) -> Callable[..., Message]:
+        """Generate the checked `decode`: every check and the dispatch of the method below,
+        with the bodies of the arbitration, PWM and opaque decoders inlined
+        (`compiler.inline_decoder`)."""
+        namespace: dict[str, Any] = {
+            "_bytes": bytes,
+            "_as_bytes": _as_bytes,
+            "_len": len,
+            "_Sender": Sender,
+            "_ARBITER": Sender.ARBITER,
+            "_AUTOPILOT": Sender.AUTOPILOT,
+            "_by_command": tuple(self._by_command),
+            "_is_pwm": tuple(c in PWM_COMMANDS.values() for c in range(256)),
+            "_errors": _Errors,
+        }
+
+        def body(layout: FrameLayout, indent: int, shorter: Decoder | None = None) -> list[str]:
+            lines, names = inline_decoder(layout, layout.message.__name__, indent, shorter)
+            namespace.update(names)
+            return lines
+
+        namespace["_opaque"] = self._opaque_classes()
+        namespace["_opaque_builder"] = builder(OpaqueMessage)
+        lines = [
+            "def decode(data, *, sender, allow_excess=False):",
+            "    if data.__class__ is not _bytes:",
+            "        data = _as_bytes(data)",
+            "    excess = allow_excess",
+            "    n = _len(data)",
+            "    if not n:",
+            "        raise _errors.empty(data)",
+            "    command = data[0]",
+            "    if command:",
+            "        if sender.__class__ is not _Sender:",
+            "            raise _errors.sender(sender)",
+            "        if _is_pwm[command]:",
+            *body(layouts.PWM_SET[self.pwm_packing], 12),
+            "        cls = _opaque[command]",
+            f"        if cls is not None and n <= {MAX_FRAME_BYTES}:",
+            "            o = _opaque_builder()",
+            "            o.payload = data[1:]",
+            "            o.__class__ = cls",
+            "            return o",
+            "        decoder = _by_command[command]",
+            "        if decoder is None:",
+            "            raise _errors.unknown(command, data)",
+            "        return decoder(data, excess)",
+            "    if n < 2:",
+            "        raise _errors.short(data)",
+            "    if sender is _ARBITER:",
+            "        if data[1] == 0xFF:",
+            *body(layouts.STATUS_4X, 12, self._status_short),
+            *body(layouts.SCORE, 8),
+            "    if sender is not _AUTOPILOT:",
+            "        raise _errors.sender(sender)",
+            "    if data[1] == 0xFF:",
+            *body(layouts.READY, 8),
+            *body(layouts.ARBITRATION_VARIABLE, 4),
+        ]
+        exec(compile("\n".join(lines) + "\n", "<decode Codec>", "exec"), namespace)
+        decode: Callable[..., Message] = namespace["decode"]
+        return decode
+
+    def _compile_fast(self, checked: Callable[..., Message]) -> Callable[..., Message]:
+        """Generate `decode`: optimistic bodies (`compiler.optimistic_decoder`) for the
+        arbitration frames, one exact-size unpack for PWM frames, a slice for opaque ones;
+        any frame out of the ordinary goes to ``checked``, which decides and raises the
+        precise error."""
+        namespace: dict[str, Any] = {
+            "_checked": checked,
+            "_check_types": _check_types,
+            "_bytes": bytes,
+            "_len": len,
+            "_Sender": Sender,
+            "_ARBITER": Sender.ARBITER,
+            "_AUTOPILOT": Sender.AUTOPILOT,
+            "_opaque": self._opaque_classes(),
+            "_opaque_builder": builder(OpaqueMessage),
+            "_struct_error": struct.error,
+        }
+        otherwise = "return _checked(data, sender=sender, allow_excess=allow_excess)"
+
+        def body(layout: FrameLayout, indent: int, assume: set[str]) -> list[str]:
+            found = optimistic_decoder(
+                layout, layout.message.__name__, indent, otherwise, frozenset(assume)
+            )
+            assert found is not None, layout.name
+            namespace.update(found[1])
+            return found[0]
+
+        # PWM frames: one exact-size unpack and the packing's expressions (PWM_WORDS).
+        word_format, values = layouts.PWM_WORDS[self.pwm_packing]
+        namespace["_unpack_pwm"] = struct.Struct(word_format).unpack
+        namespace["_pwm_builder"] = builder(PwmSet)
+        namespace["_PwmSet"] = PwmSet
+        first_channel: list[int | None] = [None] * 256
+        for channel, command in PWM_COMMANDS.items():
+            first_channel[command] = channel
+        namespace["_first_channel"] = tuple(first_channel)
+        lines = [
+            "def decode(data, *, sender, allow_excess=False):",
+            "    try:",
+            "        command = data[0]",
+            "        if not command:",
+            "            if sender is _ARBITER:",
+            "                if data[1] == 0xFF:",
+            *body(layouts.STATUS_4X, 20, {"command", "header"}),
+            *body(layouts.SCORE, 16, {"command"}),
+            "            if sender is _AUTOPILOT:",
+            "                if data[1] == 0xFF:",
+            *body(layouts.READY, 20, {"command", "header"}),
+            *body(layouts.ARBITRATION_VARIABLE, 16, {"command"}),
+            "        elif data.__class__ is _bytes and sender.__class__ is _Sender:",
+            "            first_channel = _first_channel[command]",
+            "            if first_channel is not None:",
+            "                _, h1, b3, h4, b6 = _unpack_pwm(data)",
+            "                o = _pwm_builder()",
+            "                o.first_channel = first_channel",
+            f"                o.values = {values}",
+            "                o.__class__ = _PwmSet",
+            "                return o",
+            "            n = _len(data)",
+            "            cls = _opaque[command]",
+            f"            if cls is not None and n <= {MAX_FRAME_BYTES}:",
+            "                o = _opaque_builder()",
+            "                o.payload = data[1:]",
+            "                o.__class__ = cls",
+            "                return o",
+            "    except (IndexError, _struct_error):",
+            "        pass",
+            "    except TypeError:",
+            "        _check_types(data, sender)",
+            "        raise",
+            "    return _checked(data, sender=sender, allow_excess=allow_excess)",
+        ]
+        exec(compile("\n".join(lines) + "\n", "<decode Codec fast>", "exec"), namespace)
+        decode: Callable[..., Message] = namespace["decode"]
+        return decode
+
+    def _opaque_classes(self) -> tuple[type[Message] | None, ...]:
+        """The class of each command decoded as an opaque payload, else None.
+
+        Opaque commands share one layout (a payload after the command byte), so one
+        builder fills them all, unless a declared layout took the command over.
+        """
+        opaque: list[type[Message] | None] = [None] * 256
+        for command, layout in layouts.OPAQUE.items():
+            if self._by_command[command] is layout.functions[0]:
+                opaque[command] = layout.message
+        return tuple(opaque)
+
+    def decode(self, data: BytesLike, *, sender: Sender, allow_excess: bool = False) -> Message:
         """Decode one Veronte frame's data bytes.
 
         Args:
@@ -136,29 +349,24 @@ class Codec:
             UnknownCommandError: The command byte is reserved or unknown (and no layout was
                 declared for it); the error carries the command byte and the data.
             DecodeError: The frame is empty, too short, too long, or a field is out of range.
+            TypeError: ``data`` is not bytes-like, or ``sender`` is not a `Sender`.
         """
-        if not data:
-            raise DecodeError(None, f"0 bytes; a frame has 1 to {MAX_FRAME_BYTES}", data)
-        command = data[0]
-        if command:
-            decode = self._by_command[command]
-            if decode is None:
-                raise UnknownCommandError(command, data)
-            return decode(data, allow_excess)
-        if len(data) < 2:
-            raise DecodeError(None, "an arbitration frame has at least 2 bytes", data)
-        if sender is _ARBITER:
-            return (self._status if data[1] == 0xFF else self._score)(data, allow_excess)
-        if sender is _AUTOPILOT:
-            return (self._ready if data[1] == 0xFF else self._variable)(data, allow_excess)
-        raise TypeError(f"sender must be a Sender, not {sender!r}")
+        # Each instance holds its generated decoder under this name (see __init__); this
+        # method is reached only through the class, as in ``Codec.decode(codec, ...)``.
+        generated: Callable[..., Message] = self.__dict__["decode"]
+        return generated(data, sender=sender, allow_excess=allow_excess)
 
     def dispatch(self, sender: Sender) -> Dispatch:
         """The decoders `decode` chooses from for one sender, for loops that inline dispatch.
 
         Each decoder is called as ``decoder(data, allow_excess)``; a missing one (None) is
         where `decode` raises `UnknownCommandError`.
+
+        Raises:
+            TypeError: ``sender`` is not a `Sender`.
         """
+        if not isinstance(sender, Sender):
+            raise argument_type_error("dispatch", "sender", "a Sender", sender)
         if sender is _ARBITER:
             return Dispatch(tuple(self._by_command), self._status, self._score)
         return Dispatch(tuple(self._by_command), self._ready, self._variable)
@@ -169,10 +377,13 @@ class Codec:
         Raises:
             EncodeError: A field is out of range or of the wrong kind (the error names the
                 message type, the field, the value and what is allowed), or the message is
-                not a Veronte message this codec knows.
+                of a declared class this codec does not hold.
+            TypeError: ``message`` is not a Veronte message at all.
         """
         encode = self._encoders.get(type(message))
         if encode is None:
+            if not isinstance(message, Message):
+                raise argument_type_error("encode", "message", "a Veronte message", message)
             raise EncodeError(
                 type(message).__name__, "message", message, "a veronte4x.codec message"
             )

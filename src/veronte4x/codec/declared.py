@@ -17,14 +17,15 @@ from typing import Any
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant
 from veronte4x.codec.messages import Message
-from veronte4x.errors import LayoutError
+from veronte4x.errors import BytesLike, LayoutError, argument_type_error
 
 _DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
 
 
-@dataclasses.dataclass(frozen=True, slots=True)
 class DeclaredMessage(Message):
-    """Base class of the message classes that `Layout` generates."""
+    """Base class of the message classes that `Layout` generates (frozen dataclasses)."""
+
+    __slots__ = ()
 
 
 class Layout:
@@ -56,7 +57,24 @@ class Layout:
         fields: Sequence[Field],
         byte_order: ByteOrder = ByteOrder.LITTLE,
     ) -> None:
-        if not isinstance(command, int) or not 0 <= command <= 255:
+        """See the class docstring.
+
+        Raises:
+            LayoutError: A layout that cannot describe a Veronte frame.
+            TypeError: An argument of the wrong type.
+        """
+        for argument, value, expected, kind in (
+            ("command", command, "an int", int),
+            ("name", name, "a str", str),
+            ("byte_order", byte_order, "a ByteOrder", ByteOrder),
+        ):
+            if not isinstance(value, kind) or isinstance(value, bool):
+                raise argument_type_error("Layout", argument, expected, value)
+        fields = tuple(fields)
+        for f in fields:
+            if not isinstance(f, Field):
+                raise argument_type_error("Layout", "fields", "Field objects", f)
+        if not 0 <= command <= 255:
             raise LayoutError(f"{name}: command {command!r} is not a byte")
         if not name.isidentifier() or keyword.iskeyword(name):
             raise LayoutError(f"{name!r} is not a valid class name")
@@ -64,7 +82,7 @@ class Layout:
         self.name = name
         self.fields = tuple(fields)
         self.byte_order = byte_order
-        self.message_class = self._make_class()
+        self.message_class: type[Any] = self._make_class()
         self.frame = FrameLayout(
             self.message_class,
             (constant(command, 8, "message type", "command"), *self.fields),
@@ -97,12 +115,20 @@ class Layout:
         )
         return cls
 
-    def decode(self, data: bytes, allow_excess: bool = False) -> Message:
+    def decode(self, data: BytesLike, allow_excess: bool = False) -> Any:
         """Decode one frame (command byte included) with this layout.
+
+        Returns:
+            An instance of `message_class` (typed Any: its fields are declared at run time).
 
         Raises:
             DecodeError: Wrong length, wrong command byte or constant.
+            TypeError: ``data`` is not bytes-like.
         """
+        if data.__class__ is not bytes:
+            if not isinstance(data, (bytearray, memoryview)):
+                raise argument_type_error("Layout.decode", "data", "bytes-like", data)
+            data = bytes(data)
         return self.frame.decode(data, allow_excess)
 
     def encode(self, message: Message) -> bytes:
@@ -110,7 +136,12 @@ class Layout:
 
         Raises:
             EncodeError: A field is out of range or of the wrong kind.
+            TypeError: ``message`` is not an instance of this layout's class.
         """
+        if not isinstance(message, self.message_class):
+            raise argument_type_error(
+                "Layout.encode", "message", f"a {self.message_class.__name__}", message
+            )
         return self.frame.encode(message)
 
     def __repr__(self) -> str:

@@ -156,6 +156,19 @@ def _pwm(packing: PwmPacking) -> FrameLayout:
 PWM_SET: dict[PwmPacking, FrameLayout] = {packing: _pwm(packing) for packing in PwmPacking}
 """The PWM set layout of each packing; one layout serves the five PWM commands."""
 
+PWM_WORDS: dict[PwmPacking, tuple[str, str]] = {
+    PwmPacking.LSB_FIRST: (
+        "<BHBHB",
+        "(h1 & 0xFFF, h1 >> 12 | b3 << 4, h4 & 0xFFF, h4 >> 12 | b6 << 4)",
+    ),
+    PwmPacking.MSB_FIRST: (
+        ">BHBHB",
+        "(h1 >> 4, (h1 & 0xF) << 8 | b3, h4 >> 4, (h4 & 0xF) << 8 | b6)",
+    ),
+}
+"""The four values of each packing from a 7-byte frame read as ``_, h1, b3, h4, b6`` by the
+`struct` format: the same values as `PWM_SET`, for the codec's fast path."""
+
 OPAQUE_CLASSES: tuple[type[m.OpaqueMessage], ...] = (
     m.ScorpionEscTelemetry,
     m.JetiEscTelemetry,

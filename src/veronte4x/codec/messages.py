@@ -23,14 +23,18 @@ class Sender(enum.Enum):
     AUTOPILOT = "autopilot"
 
 
-@dataclass(frozen=True, slots=True)
 class Message:
-    """Base class of every Veronte 4x message.
+    """Base class of every Veronte 4x message; each message is a frozen, slotted dataclass.
+
+    The base itself holds nothing: a plain slotted class, so that the decoders can build
+    messages through a class of identical layout (see `veronte4x.codec.compiler`).
 
     Attributes:
         COMMAND: The message type (byte 0 of the frame), or ``None`` where it depends
             on a field (PwmSet).
     """
+
+    __slots__ = ()
 
     COMMAND: ClassVar[int | None] = None
 

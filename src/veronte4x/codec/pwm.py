@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import enum
 
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, argument_type_error
 
 PWM_MAX = 4095
 """The largest normalised PWM value: "12 bits all with ones"."""
@@ -37,11 +37,25 @@ class PwmPacking(enum.Enum):
     MSB_FIRST = "msb_first"
 
 
+def _check_number(function: str, argument: str, value: object) -> None:
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        raise argument_type_error(function, argument, "a number", value)
+
+
 def to_microseconds(
     value: int, min_us: float = DEFAULT_MIN_US, max_us: float = DEFAULT_MAX_US
 ) -> float:
-    """Convert a normalised PWM value (0..4095) to a pulse width in microseconds."""
-    if not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= PWM_MAX:
+    """Convert a normalised PWM value (0..4095) to a pulse width in microseconds.
+
+    Raises:
+        EncodeError: ``value`` out of 0..4095.
+        TypeError: ``value`` not an int, or a bound not a number.
+    """
+    _check_number("to_microseconds", "min_us", min_us)
+    _check_number("to_microseconds", "max_us", max_us)
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise argument_type_error("to_microseconds", "value", "an int", value)
+    if not 0 <= value <= PWM_MAX:
         raise EncodeError("PwmSet", "values", value, f"an int in 0..{PWM_MAX}")
     return min_us + (max_us - min_us) * value / PWM_MAX
 
@@ -53,7 +67,10 @@ def from_microseconds(
 
     Raises:
         EncodeError: The pulse lies outside min_us..max_us.
+        TypeError: An argument that is not a number.
     """
+    for argument, number in (("pulse_us", pulse_us), ("min_us", min_us), ("max_us", max_us)):
+        _check_number("from_microseconds", argument, number)
     low, high = sorted((min_us, max_us))
     if not low <= pulse_us <= high:
         raise EncodeError("PwmSet", "values", pulse_us, f"a pulse in {low}..{high} us")

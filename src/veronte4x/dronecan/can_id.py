@@ -12,7 +12,7 @@ from __future__ import annotations
 import enum
 from typing import NamedTuple
 
-from veronte4x.errors import DecodeError, EncodeError
+from veronte4x.errors import DecodeError, EncodeError, argument_type_error
 
 CAN_ID_MASK = 0x1FFFFFFF
 """The 29 bits of an extended CAN ID."""
@@ -72,24 +72,36 @@ class CanId(NamedTuple):
     discriminator: int | None
 
 
-def _check(name: str, value: int, low: int, high: int) -> None:
-    if not isinstance(value, int) or not low <= value <= high:
+def _check(function: str, name: str, value: int, low: int, high: int) -> None:
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise argument_type_error(function, name, "an int", value)
+    if not low <= value <= high:
         raise EncodeError("CanId", name, value, f"an int in {low}..{high}")
 
 
 def message_can_id(priority: int, data_type_id: int, source_node_id: int) -> int:
-    """CAN ID of a message frame from node ``source_node_id`` (1..127)."""
-    _check("priority", priority, 0, 31)
-    _check("data_type_id", data_type_id, 0, 0xFFFF)
-    _check("source_node_id", source_node_id, 1, 127)
+    """CAN ID of a message frame from node ``source_node_id`` (1..127).
+
+    Raises:
+        EncodeError: A value out of range.
+        TypeError: An argument that is not an int.
+    """
+    _check("message_can_id", "priority", priority, 0, 31)
+    _check("message_can_id", "data_type_id", data_type_id, 0, 0xFFFF)
+    _check("message_can_id", "source_node_id", source_node_id, 1, 127)
     return priority << 24 | data_type_id << 8 | source_node_id
 
 
 def anonymous_can_id(priority: int, data_type_id: int, discriminator: int) -> int:
-    """CAN ID of an anonymous message frame (type ids 0..3, single frame only)."""
-    _check("priority", priority, 0, 31)
-    _check("data_type_id", data_type_id, 0, 3)
-    _check("discriminator", discriminator, 0, 0x3FFF)
+    """CAN ID of an anonymous message frame (type ids 0..3, single frame only).
+
+    Raises:
+        EncodeError: A value out of range.
+        TypeError: An argument that is not an int.
+    """
+    _check("anonymous_can_id", "priority", priority, 0, 31)
+    _check("anonymous_can_id", "data_type_id", data_type_id, 0, 3)
+    _check("anonymous_can_id", "discriminator", discriminator, 0, 0x3FFF)
     return priority << 24 | discriminator << 10 | data_type_id << 8
 
 
@@ -100,15 +112,22 @@ def service_can_id(
     source_node_id: int,
     destination_node_id: int,
 ) -> int:
-    """CAN ID of a service request (``request=True``) or response frame."""
-    _check("priority", priority, 0, 31)
-    _check("data_type_id", data_type_id, 0, 0xFF)
-    _check("source_node_id", source_node_id, 1, 127)
-    _check("destination_node_id", destination_node_id, 1, 127)
+    """CAN ID of a service request (``request=True``) or response frame.
+
+    Raises:
+        EncodeError: A value out of range.
+        TypeError: ``request`` not a bool, or another argument that is not an int.
+    """
+    _check("service_can_id", "priority", priority, 0, 31)
+    _check("service_can_id", "data_type_id", data_type_id, 0, 0xFF)
+    if not isinstance(request, bool):
+        raise argument_type_error("service_can_id", "request", "a bool", request)
+    _check("service_can_id", "source_node_id", source_node_id, 1, 127)
+    _check("service_can_id", "destination_node_id", destination_node_id, 1, 127)
     return (
         priority << 24
         | data_type_id << 16
-        | int(bool(request)) << 15
+        | request << 15
         | destination_node_id << 8
         | 0x80
         | source_node_id
@@ -120,8 +139,11 @@ def parse_can_id(can_id: int) -> CanId:
 
     Raises:
         DecodeError: ``can_id`` is not a 29-bit value.
+        TypeError: ``can_id`` is not an int.
     """
-    if not isinstance(can_id, int) or not 0 <= can_id <= CAN_ID_MASK:
+    if not isinstance(can_id, int) or isinstance(can_id, bool):
+        raise argument_type_error("parse_can_id", "can_id", "an int", can_id)
+    if not 0 <= can_id <= CAN_ID_MASK:
         raise DecodeError("CanId", f"CAN ID {can_id!r} is not a 29-bit value", b"", "can_id")
     priority = can_id >> 24
     source = can_id & 0x7F

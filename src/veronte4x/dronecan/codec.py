@@ -1,4 +1,4 @@
-"""Payload encoding and decoding for each of the eight types, fast path first.
+"""Payload encoding and decoding for each of the types, fast path first.
 
 Each top-level type gets the generated fast functions of
 `compiled` where its layout allows, and the generic
@@ -14,6 +14,7 @@ from typing import Any
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.compiled import (
+    ENCODE_FALLBACK,
     FastPaths,
     SlowPath,
     Transport,
@@ -23,7 +24,7 @@ from veronte4x.dronecan.compiled import (
 from veronte4x.dronecan.definitions import DATA_TYPES, DataType
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.serializer import Serializer
-from veronte4x.errors import DecodeError
+from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 
 @dataclass(frozen=True)
@@ -77,7 +78,7 @@ def _codec(data_type: DataType) -> Codec:
             if not saturate:
                 try:
                     return fast_payload(message)
-                except Exception:
+                except ENCODE_FALLBACK:
                     pass
             return generic.encode(message, saturate)
 
@@ -102,12 +103,20 @@ BY_ID: dict[tuple[TransferKind, int], Codec] = {
 """Codec of each (kind, data type id)."""
 
 
-def decode_payload(kind: TransferKind, data_type_id: int, payload: bytes) -> Any:
+def decode_payload(kind: TransferKind, data_type_id: int, payload: BytesLike) -> Any:
     """Decode the payload of one complete transfer (without CRC and tail bytes).
 
     Raises:
         DecodeError: Unknown (kind, type id), or a payload that does not fit the type.
+        TypeError: ``kind`` not a `TransferKind`, ``data_type_id`` not an int, or
+            ``payload`` not bytes-like.
     """
+    if not isinstance(kind, TransferKind):
+        raise argument_type_error("decode_payload", "kind", "a TransferKind", kind)
+    if not isinstance(data_type_id, int) or isinstance(data_type_id, bool):
+        raise argument_type_error("decode_payload", "data_type_id", "an int", data_type_id)
+    if not isinstance(payload, (bytes, bytearray, memoryview)):
+        raise argument_type_error("decode_payload", "payload", "bytes-like", payload)
     codec = BY_ID.get((kind, data_type_id))
     if codec is None:
         raise DecodeError(

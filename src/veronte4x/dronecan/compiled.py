@@ -52,6 +52,12 @@ class SlowPath(Exception):
     """Raised by generated code when the generic serializer must take over."""
 
 
+ENCODE_FALLBACK = (SlowPath, TypeError, IndexError, OverflowError, struct.error)
+"""What the generated encoders raise on values they do not handle (out of range, of
+another type, of another length): the generic serializer then decides. Nothing else is
+caught, so a fault in the generated code itself is not hidden."""
+
+
 class FastPaths(NamedTuple):
     """The generated functions of one type.
 
@@ -353,7 +359,7 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
         src.lines.append(
             f"    {names}= {unpacker}.unpack(buf)" if groups else f"    {unpacker}.unpack(buf)"
         )
-        src.lines.append(f"    o = new({builder})")
+        src.lines.append(f"    o = {builder}()")
         for k, group in enumerate(groups):
             if not _direct(group, scalars) and group.bits not in _STRUCT_CODES:
                 src.lines.append(f"    g{k} = from_bytes(g{k}, 'little')")
@@ -435,7 +441,7 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
             src.lines += [
                 f"def {function}(buf):",
                 f"    x = from_bytes(buf, 'big'){drop}",
-                f"    o = new({builder})",
+                f"    o = {builder}()",
                 f"    o.{name} = ({items})",
                 f"    o.__class__ = {cls}",
                 "    return o",

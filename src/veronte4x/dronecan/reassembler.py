@@ -2,29 +2,38 @@
 
 One receiver state ("session") per transfer descriptor: source node, destination node,
 data type and kind, i.e. the CAN ID without its priority bits. The state update follows
-the non-redundant pseudocode of spec 4.1 "Reception": a start frame restarts the session
-when it is uninitialised, when the transfer-ID timeout (2 s after the first frame of the
-last transfer, by the frames' own timestamps) has passed, or when its transfer id is
-neither the expected one nor the previous one; frames with the wrong toggle or transfer id
-are ignored. Time comes only from the ``timestamp`` argument; nothing reads a clock.
+spec 4.1 "Reception" for a single interface, with one rule on top: every transfer whose
+frames all arrive, once, in order and uncorrupted, with no other frame of its session in
+between and within the transfer-ID timeout, is delivered, unless it repeats the transfer
+id delivered last in its session within the timeout (2 s after the first frame of that
+transfer, by the frames' own timestamps). So a stray frame never makes the next intact
+transfer look like a repeat. Time comes only from the ``timestamp`` argument; nothing
+reads a clock.
 
-Problems never raise. Each is counted in `counts` and recorded as a
-`ProblemReport` in the bounded `problems`. A transfer that
-started or was seen but never came out is counted exactly once, under the first problem
-that broke it; the rest of its frames are dropped silently.
+Bus data never raises. Each problem is counted in `counts` and recorded as a
+`ProblemReport` in the bounded `problems`. A transfer that started or was seen but never
+came out is counted exactly once, under the first problem that broke it; the rest of its
+frames are dropped silently. Arguments of the wrong type are caller mistakes, not bus
+data: they raise `TypeError` (see `Reassembler.feed`).
+
+The sessions are kept in the order their latest transfer began, so expiring idle sessions
+and evicting the oldest one cost O(1) amortised, whatever the size of the table.
 """
 
 from __future__ import annotations
 
 import enum
+import math
+import struct
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
-from collections import deque
+from collections import OrderedDict, deque
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
+from veronte4x.dronecan.compiled import SlowPath
 from veronte4x.dronecan.transfer import Transfer
-from veronte4x.errors import DecodeError
+from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 TRANSFER_ID_TIMEOUT = 2.0
 """Transfer-ID timeout in seconds (spec 4.1 "State variables")."""
@@ -43,7 +52,7 @@ class Problem(enum.Enum):
         "service with node id 0, a multi-frame anonymous frame, or a frame other than the "
         "last of a transfer with fewer than 8 bytes (which also loses that transfer)."
     )
-    UNKNOWN_TYPE = "A frame of none of the eight types (counted per frame)."
+    UNKNOWN_TYPE = "A frame of none of the supported types (counted per frame)."
     MISSED_START = "A frame of a transfer whose first frame was not seen."
     TOGGLE_ERROR = (
         "A toggle bit out of sequence that is not a repeat: a frame was lost or reordered; "
@@ -51,8 +60,8 @@ class Problem(enum.Enum):
     )
     DUPLICATE_FRAME = "A repeat of the frame accepted just before; ignored."
     UNEXPECTED_TRANSFER_ID = (
-        "A first frame with a transfer id already handled (a replayed transfer, or the late "
-        "first frame of a transfer counted as MISSED_START); ignored."
+        "A first frame repeating the transfer id delivered last in its session, within the "
+        "transfer-ID timeout, with other content (a replayed transfer); ignored."
     )
     CRC_MISMATCH = "The transfer CRC does not match the payload."
     TIMEOUT = "A transfer still incomplete after the transfer-ID timeout."
@@ -87,6 +96,11 @@ class ProblemReport(NamedTuple):
     detail: str
 
 
+_NEVER = -math.inf
+_LOST = 32
+"""Added to a transfer id in `_Session.closed` when that transfer was lost (not delivered)."""
+
+
 class _Session:
     """Receiver state of one transfer descriptor (spec 4.1 "State variables").
 
@@ -97,7 +111,9 @@ class _Session:
     __slots__ = (
         "buffer",
         "closed",
+        "closed_at",
         "codec",
+        "counted",
         "crc_seed",
         "data_type_id",
         "decode_frame",
@@ -111,30 +127,71 @@ class _Session:
         "toggle",
     )
 
-    def __init__(self, codec: Codec, can_id: int) -> None:
-        self.codec = codec
-        self.kind = codec.data_type.kind
-        self.data_type_id = codec.data_type.data_type_id
+    def __init__(self, shared: tuple[Any, ...], can_id: int) -> None:
+        self.codec: Any = None
+        self.reset(shared, can_id)
+
+    def reset(self, shared: tuple[Any, ...], can_id: int) -> None:
+        """Make this the fresh state of the session of ``can_id`` (of the type ``shared``)."""
+        if self.codec is not shared[0]:
+            (
+                self.codec,
+                self.kind,
+                self.data_type_id,
+                self.decode_frame,
+                self.decode_payload,
+                self.crc_seed,
+                self.limit,
+            ) = shared
         self.destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
-        self.decode_frame = codec.fast.decode_frame if codec.fast else None
-        self.decode_payload = codec.fast.decode if codec.fast else codec.decode
-        self.crc_seed = codec.crc_seed
-        self.limit = codec.max_payload + 3  # CRC and tail byte included
-        self.tid = 0  # transfer id expected next, or in progress
+        # The transfer id the fast path of `feed` takes: the one in progress, or the one
+        # after the transfer delivered last; -1 sends every frame through the full update.
+        self.tid = -1
         self.toggle = 0  # expected toggle bit (0 or 0x20)
-        self.start = -float("inf")  # timestamp of the first frame of the latest transfer
+        self.start = _NEVER  # timestamp of the first frame of the latest transfer
         self.buffer: bytearray | None = None  # payload so far (CRC first), None when idle
         self.last = b""  # the frame accepted last
-        self.closed = -1  # transfer id of the transfer that ended last, or -1
+        # The transfer that ended last: its id if it was delivered (then it began at
+        # `start`), its id + _LOST if it was lost or counted as MISSED_START (then its frames
+        # are silent until `closed_at` + timeout), -1 if none.
+        self.closed = -1
+        self.closed_at = _NEVER
+        self.counted = False  # the transfer in progress was already counted as lost
+
+
+def _shared(codec: Codec) -> tuple[Any, ...]:
+    """What every session of a type holds, in the order `_Session` takes it."""
+    return (
+        codec,
+        codec.data_type.kind,
+        codec.data_type.data_type_id,
+        codec.fast.decode_frame if codec.fast else None,
+        codec.fast.decode if codec.fast else codec.decode,
+        codec.crc_seed,
+        codec.max_payload + 3,  # CRC and tail byte included
+    )
 
 
 _new_tuple = tuple.__new__
-_MESSAGES = {dtid: c for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
+_MESSAGES = {dtid: _shared(c) for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
 _SERVICES = {
-    dtid << 1 | (kind is TransferKind.REQUEST): c
+    dtid << 1 | (kind is TransferKind.REQUEST): _shared(c)
     for (kind, dtid), c in BY_ID.items()
     if kind is not TransferKind.MESSAGE
 }
+_BYTES_LIKE = (bytes, bytearray, memoryview)
+_FRAME_ERRORS = (struct.error, SlowPath)  # what a generated single-frame decoder raises
+
+
+def _check_arguments(can_id: object, data: object, timestamp: object) -> bytes:
+    """Refuse arguments of the wrong type (`TypeError`); return the data as bytes."""
+    if not isinstance(can_id, int) or isinstance(can_id, bool):
+        raise argument_type_error("Reassembler.feed", "can_id", "an int", can_id)
+    if not isinstance(data, _BYTES_LIKE):
+        raise argument_type_error("Reassembler.feed", "data", "bytes-like", data)
+    if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
+        raise argument_type_error("Reassembler.feed", "timestamp", "a float", timestamp)
+    return bytes(data)
 
 
 class Reassembler:
@@ -144,7 +201,8 @@ class Reassembler:
         transfer_id_timeout: Seconds after the first frame of a transfer after which its
             session restarts (spec: 2 s).
         max_sessions: Most receiver states kept; beyond, timed-out sessions are dropped,
-            then the oldest. Memory is bounded by this times the largest payload (378 B).
+            then the one whose latest transfer began first. Memory is bounded by this times
+            the largest payload (378 B).
         max_reports: How many recent `ProblemReport` entries `problems` keeps.
 
     Attributes:
@@ -161,13 +219,29 @@ class Reassembler:
         max_sessions: int = 1024,
         max_reports: int = 256,
     ) -> None:
+        if not isinstance(transfer_id_timeout, (int, float)) or isinstance(
+            transfer_id_timeout, bool
+        ):
+            raise argument_type_error(
+                "Reassembler", "transfer_id_timeout", "a float", transfer_id_timeout
+            )
+        for name, value in (("max_sessions", max_sessions), ("max_reports", max_reports)):
+            if not isinstance(value, int) or isinstance(value, bool):
+                raise argument_type_error("Reassembler", name, "an int", value)
+            if value < 1:
+                raise ValueError(f"Reassembler: {name} must be at least 1, not {value}")
         self.timeout = transfer_id_timeout
         self.max_sessions = max_sessions
         self.counts: dict[Problem, int] = dict.fromkeys(Problem, 0)
         self.problems: deque[ProblemReport] = deque(maxlen=max_reports)
         self.reported = 0
         self.transfers = 0
-        self._sessions: dict[int, _Session] = {}
+        self._sessions: dict[int, _Session] = {}  # for lookups: a plain dict is fastest
+        # The same sessions, oldest first: in the order their latest transfer began (or
+        # their latest lost frame came). Only the front is ever examined for expiry.
+        self._age: OrderedDict[int, _Session] = OrderedDict()
+        self._touch = self._age.move_to_end
+        self._get = self._sessions.get
 
     @property
     def session_count(self) -> int:
@@ -181,36 +255,52 @@ class Reassembler:
         self.reported += 1
         self.problems.append(ProblemReport(problem, can_id, bytes(data), timestamp, detail))
 
-    def feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
+    def feed(self, can_id: int, data: BytesLike, timestamp: float) -> Transfer | None:
         """Take one frame; return the transfer it completes, else None.
+
+        Whatever the frame holds, bad bus data never raises: it is counted in `counts`
+        and reported in `problems`.
 
         Args:
             can_id: The 29-bit extended CAN ID.
-            data: The frame's data bytes, tail byte last.
+            data: The frame's data bytes, tail byte last (bytes, bytearray or memoryview).
             timestamp: Reception time in seconds, from any monotonic source.
+
+        Raises:
+            TypeError: An argument of the wrong type (a caller mistake, not bus data):
+                ``can_id`` not an int, ``data`` not bytes-like, ``timestamp`` not a number.
         """
         # Fast paths: the next frame of a known session, in order, nothing unusual. Any
         # other case goes to _feed, which redoes the full state update (nothing changed yet).
         # Frame lengths: decode_frame checks a single frame's exact length itself.
         try:
-            session = self._sessions[can_id & 0xFFFFFF]
+            key = can_id & 0xFFFFFF
+            session = self._get(key)
+            if session is None:
+                return self._open(can_id, data, timestamp)
             tail = data[-1]
             tid = tail & 0x1F
-        except (KeyError, TypeError, IndexError):  # new session, not an int, no tail byte
-            return self._feed(can_id, data, timestamp)
-        if can_id >> 29 or tid != session.tid or timestamp - session.start > self.timeout:
+            if (
+                data.__class__ is not bytes
+                or can_id >> 29
+                or tid != session.tid
+                or timestamp - session.start > self.timeout
+            ):
+                return self._feed(can_id, data, timestamp)
+        except (TypeError, IndexError):  # wrong type, no tail byte
             return self._feed(can_id, data, timestamp)
         buffer = session.buffer
         if buffer is None:
             if tail & 0xE0 == 0xC0 and session.decode_frame is not None:  # single frame
                 try:
                     message = session.decode_frame(data)
-                except Exception:
+                except _FRAME_ERRORS:  # wrong length: the checked path reports it
                     return self._feed(can_id, data, timestamp)
                 session.tid = (tid + 1) & 0x1F
                 session.closed = tid
                 session.start = timestamp
                 session.last = data
+                self._touch(key)
                 self.transfers += 1
                 return _new_tuple(
                     Transfer,
@@ -230,6 +320,7 @@ class Reassembler:
                 session.toggle = 0x20
                 session.start = timestamp
                 session.last = data
+                self._touch(key)
                 return None
         elif (
             tail & 0xA0 == session.toggle
@@ -244,30 +335,30 @@ class Reassembler:
             return self._complete(session, can_id, data, tid)
         return self._feed(can_id, data, timestamp)
 
-    def _feed(self, can_id: int, data: bytes, timestamp: float) -> Transfer | None:
+    def _feed(self, can_id: int, data: Any, timestamp: float) -> Transfer | None:
         """The full state update of spec 4.1 with every check."""
-        try:
-            size = len(data)
-            if not 0 < size <= 8 or not 0 <= can_id <= 0x1FFFFFFF:
-                self._report(
-                    Problem.MALFORMED_FRAME,
-                    can_id,
-                    data[:64],
-                    timestamp,
-                    f"{size} data bytes, CAN ID {can_id!r}",
-                )
-                return None
-            tail = data[-1]
-        except TypeError:
-            self._report(Problem.MALFORMED_FRAME, -1, b"", timestamp, "not a frame")
+        if data.__class__ is not bytes or can_id.__class__ is not int:
+            data = _check_arguments(can_id, data, timestamp)
+        elif timestamp.__class__ is not float:
+            _check_arguments(can_id, data, timestamp)
+        size = len(data)
+        if not 0 < size <= 8 or not 0 <= can_id <= 0x1FFFFFFF:
+            self._report(
+                Problem.MALFORMED_FRAME,
+                can_id,
+                data[:64],
+                timestamp,
+                f"{size} data bytes, CAN ID {can_id:#x}",
+            )
             return None
+        tail = data[-1]
         if can_id & 0x80:
-            codec = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
             if not can_id & 0x7F or not can_id & 0x7F00:
                 self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
                 return None
         elif can_id & 0x7F:
-            codec = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
         else:
             if tail & 0xC0 != 0xC0:
                 self._report(
@@ -276,143 +367,238 @@ class Reassembler:
             else:
                 self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "anonymous message")
             return None
-        if codec is None:
+        if shared is None:
             self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "unknown data type")
             return None
         session = self._sessions.get(can_id & 0xFFFFFF)
         if session is None:
-            session = self._new_session(codec, can_id, timestamp)
-        tid = tail & 0x1F
-        timed_out = timestamp - session.start > self.timeout
-        if timed_out or (tail & 0x80 and (session.tid - tid) & 0x1F > 1):
-            late_start = not timed_out and tid == session.closed
-            if session.buffer is not None:
-                problem = Problem.TIMEOUT if timed_out else Problem.INTERRUPTED
-                self._abandon(session, problem, can_id, data, timestamp)
-            if late_start:  # the first frame of a transfer already counted as MISSED_START
-                session.closed = tid
-                session.tid = (tid + 1) & 0x1F
-                self._report(
-                    Problem.UNEXPECTED_TRANSFER_ID, can_id, data, timestamp, "late first frame"
-                )
-                return None
-            session.tid = tid
-            session.toggle = 0
+            session = self._new_session(shared, can_id, timestamp)
         if tail & 0x80:
-            return self._start(session, codec, can_id, data, tail, timestamp)
-        return self._continue(session, codec, can_id, data, tail, timestamp)
+            return self._start(session, can_id, data, tail, timestamp)
+        return self._continue(session, can_id, data, tail, timestamp)
 
-    def _new_session(self, codec: Codec, can_id: int, timestamp: float) -> _Session:
-        if len(self._sessions) >= self.max_sessions:
-            self.expire(timestamp)
-            if len(self._sessions) >= self.max_sessions:
-                oldest = min(self._sessions, key=lambda k: self._sessions[k].start)
-                dropped = self._sessions.pop(oldest)
-                if dropped.buffer is not None:
-                    self._report(Problem.EVICTED, oldest, b"", timestamp, "session table full")
-        session = self._sessions[can_id & 0xFFFFFF] = _Session(codec, can_id)
+    def _open(self, can_id: int, data: Any, timestamp: float) -> Transfer | None:
+        """The first frame of a session not in the table: a lean path for a valid single
+        frame of a type with a generated decoder; anything else goes through `_feed`."""
+        if (
+            data.__class__ is not bytes
+            or can_id.__class__ is not int
+            or not 0 < len(data) <= 8
+            or not 0 < can_id <= 0x1FFFFFFF
+        ):
+            return self._feed(can_id, data, timestamp)
+        tail = data[-1]
+        if can_id & 0x80:
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            destination: int | None = (can_id >> 8) & 0x7F
+            if not destination or not can_id & 0x7F:
+                return self._feed(can_id, data, timestamp)
+        elif can_id & 0x7F:
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            destination = None
+        else:
+            return self._feed(can_id, data, timestamp)
+        if shared is None or tail & 0xE0 != 0xC0 or shared[3] is None:
+            return self._feed(can_id, data, timestamp)
+        try:
+            message = shared[3](data)
+        except _FRAME_ERRORS:  # wrong length: the checked path reports it
+            return self._feed(can_id, data, timestamp)
+        session = self._new_session(shared, can_id, timestamp)
+        tid = tail & 0x1F
+        session.tid = (tid + 1) & 0x1F
+        session.closed = tid
+        session.start = timestamp
+        session.last = data
+        self.transfers += 1
+        return _new_tuple(
+            Transfer,
+            (
+                message,
+                can_id & 0x7F,
+                destination,
+                can_id >> 24,
+                tid,
+                timestamp,
+                shared[1],
+                shared[2],
+            ),
+        )
+
+    def _new_session(self, shared: tuple[Any, ...], can_id: int, timestamp: float) -> _Session:
+        """Add a session, first making room if the table is full.
+
+        The front of the age order is the session whose latest transfer began first; if
+        any session is idle past the timeout, that one is. It is dropped (its incomplete
+        transfer counted as TIMEOUT if it timed out, else as EVICTED).
+        """
+        sessions = self._sessions
+        if len(sessions) < self.max_sessions:
+            session = _Session(shared, can_id)
+        else:
+            key, session = self._age.popitem(last=False)
+            del sessions[key]
+            if session.buffer is not None and not session.counted:
+                if timestamp - max(session.start, session.closed_at) > self.timeout:
+                    problem, detail = Problem.TIMEOUT, f"transfer id {session.tid}"
+                else:
+                    problem, detail = Problem.EVICTED, "session table full"
+                self._report(problem, key, b"", timestamp, detail)
+            session.reset(shared, can_id)  # the dropped state, reused
+        key = can_id & 0xFFFFFF
+        sessions[key] = self._age[key] = session
         return session
 
-    def _abandon(
-        self, session: _Session, problem: Problem, can_id: int, data: Any, timestamp: float
-    ) -> None:
-        self._report(problem, can_id, data, timestamp, f"transfer id {session.tid}")
+    def _lost(self, session: _Session, can_id: int, tid: int, timestamp: float) -> None:
+        """Remember transfer ``tid`` as lost: its other frames are now silent."""
         session.buffer = None
-        session.closed = session.tid
+        session.counted = False
+        session.closed = tid + _LOST
+        session.closed_at = timestamp
+        session.tid = -1
+        self._touch(can_id & 0xFFFFFF)
+
+    def _abandon(
+        self,
+        session: _Session,
+        problem: Problem,
+        can_id: int,
+        data: Any,
+        timestamp: float,
+        silent_from: float | None = None,
+    ) -> None:
+        """Drop the transfer in progress, counting it unless it was counted already.
+
+        Its remaining frames are silent for a timeout from ``silent_from`` (default: now).
+        """
+        if not session.counted:
+            self._report(problem, can_id, data, timestamp, f"transfer id {session.tid}")
+        at = timestamp if silent_from is None else silent_from
+        self._lost(session, can_id, session.tid, at)
+
+    def _recent(self, session: _Session, tid: int, timestamp: float) -> bool:
+        """Whether transfer ``tid`` ended (delivered or lost) within the timeout."""
+        if session.closed == tid:
+            return timestamp - session.start <= self.timeout
+        if session.closed == tid + _LOST:
+            return timestamp - session.closed_at <= self.timeout
+        return False
 
     def _start(
-        self, session: _Session, codec: Codec, can_id: int, data: Any, tail: int, ts: float
+        self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
     ) -> Transfer | None:
+        """A first frame: close what is in progress, then begin a transfer unless the
+        frame repeats the transfer delivered last."""
         tid = tail & 0x1F
-        if tid != session.tid:  # the previous transfer id: a repeat
-            problem = (
-                Problem.DUPLICATE_FRAME
-                if data == session.last
-                else (Problem.UNEXPECTED_TRANSFER_ID)
-            )
-            self._report(problem, can_id, data, ts, f"transfer id {tid} again")
-            return None
-        if session.buffer is not None:
+        if session.buffer is not None and ts - session.start > self.timeout:
+            # Dated from its own first frame: a new transfer with its id is not counted.
+            self._abandon(session, Problem.TIMEOUT, can_id, data, ts, session.start)
+        if session.closed == tid and ts - session.start <= self.timeout:
             if data == session.last:
+                self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
+            else:
+                self._report(
+                    Problem.UNEXPECTED_TRANSFER_ID, can_id, data, ts, f"transfer id {tid} again"
+                )
+            return None
+        # The late first frame of a transfer already counted lost begins it "counted": if
+        # it fails, it is not counted again; if it completes (the frame counted was not
+        # its own), it is delivered.
+        counted = self._recent(session, tid, ts)
+        if session.buffer is not None:
+            if data == session.last:  # the same first frame: its buffer is unchanged
                 self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "first frame again")
+                session.start = ts  # a transfer is dated by the last copy of its first frame
+                self._touch(can_id & 0xFFFFFF)
                 return None
             self._abandon(session, Problem.INTERRUPTED, can_id, data, ts)
         if tail & 0x20:
-            session.closed = tid
-            self._report(Problem.TOGGLE_ERROR, can_id, data, ts, "toggle set on first frame")
+            if not counted:
+                self._report(Problem.TOGGLE_ERROR, can_id, data, ts, "toggle set on first frame")
+            self._lost(session, can_id, tid, ts)
+            return None
+        if not tail & 0x40 and len(data) != 8:
+            if not counted:
+                self._report(Problem.MALFORMED_FRAME, can_id, data, ts, "short first frame")
+            self._lost(session, can_id, tid, ts)
             return None
         session.start = ts
         session.last = data
+        self._touch(can_id & 0xFFFFFF)
         if tail & 0x40:  # single-frame transfer
-            session.tid = (tid + 1) & 0x1F
-            session.closed = tid
-            return self._deliver(codec, can_id, data[:-1], tid, ts)
-        if len(data) != 8:
-            session.closed = tid
-            self._report(Problem.MALFORMED_FRAME, can_id, data, ts, "short first frame")
-            return None
+            return self._deliver(session, can_id, data[:-1], tid, ts, counted)
+        session.tid = tid
+        session.counted = counted
         session.buffer = bytearray(data[:-1])
         session.toggle = 0x20
         return None
 
     def _continue(
-        self, session: _Session, codec: Codec, can_id: int, data: Any, tail: int, ts: float
+        self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
     ) -> Transfer | None:
+        """A frame other than the first: the next of the transfer in progress, or a stray."""
         tid = tail & 0x1F
         buffer = session.buffer
-        if buffer is None or tid != session.tid:
-            if data == session.last:
-                self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-            elif tid != session.closed:
-                session.closed = tid
-                if buffer is None:
-                    # Spec: skip to the next transfer id. The timeout counts from this
-                    # frame, so the late first frame of this transfer is not taken as new.
-                    session.tid = (tid + 1) & 0x1F
-                    session.start = ts
-                self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
-            return None
-        if tail & 0x20 != session.toggle:
-            if data == session.last:
-                self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-            else:
-                self._abandon(session, Problem.TOGGLE_ERROR, can_id, data, ts)
-            return None
-        if not tail & 0x40 and len(data) != 8:
-            self._abandon(session, Problem.MALFORMED_FRAME, can_id, data, ts)
-            return None
-        buffer += data[:-1]
-        if len(buffer) > codec.max_payload + 2:
-            self._abandon(session, Problem.PAYLOAD_TOO_LONG, can_id, data, ts)
-            return None
-        session.last = data
-        if not tail & 0x40:
-            session.toggle ^= 0x20
-            return None
-        return self._complete(session, can_id, data, tid)
+        if buffer is not None and tid == session.tid:
+            if ts - session.start > self.timeout:
+                self._abandon(session, Problem.TIMEOUT, can_id, data, ts)
+                return None
+            if tail & 0x20 != session.toggle:
+                if data == session.last:
+                    self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
+                else:
+                    self._abandon(session, Problem.TOGGLE_ERROR, can_id, data, ts)
+                return None
+            if not tail & 0x40 and len(data) != 8:
+                self._abandon(session, Problem.MALFORMED_FRAME, can_id, data, ts)
+                return None
+            if len(buffer) + len(data) > session.limit:
+                self._abandon(session, Problem.PAYLOAD_TOO_LONG, can_id, data, ts)
+                return None
+            buffer += data[:-1]
+            session.last = data
+            if not tail & 0x40:
+                session.toggle ^= 0x20
+                return None
+            return self._complete(session, can_id, data, tid)
+        if data == session.last:
+            self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
+        elif not self._recent(session, tid, ts):
+            # A frame of a transfer whose first frame was not seen. Only this transfer id
+            # is remembered; it does not change which transfer ids are accepted next.
+            self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
+            session.closed = tid + _LOST
+            session.closed_at = ts
+            if buffer is None:
+                session.tid = -1
+            self._touch(can_id & 0xFFFFFF)
+        return None
 
     def _complete(self, session: _Session, can_id: int, data: Any, tid: int) -> Transfer | None:
         """The last frame of a multi-frame transfer arrived: check the CRC and decode."""
         buffer = session.buffer
         assert buffer is not None
-        session.buffer = None
-        session.closed = tid
-        session.tid = (tid + 1) & 0x1F
         payload = bytes(buffer[2:])
         crc = crc_hqx(payload, session.crc_seed)
         if crc != buffer[0] | buffer[1] << 8:
-            self._report(
-                Problem.CRC_MISMATCH,
-                can_id,
-                data,
-                session.start,
-                f"CRC {buffer[0] | buffer[1] << 8:#06x}, computed {crc:#06x}",
-            )
+            if not session.counted:
+                self._report(
+                    Problem.CRC_MISMATCH,
+                    can_id,
+                    data,
+                    session.start,
+                    f"CRC {buffer[0] | buffer[1] << 8:#06x}, computed {crc:#06x}",
+                )
+            self._lost(session, can_id, tid, session.start)
             return None
+        session.buffer = None
         try:
             message = session.decode_payload(payload)
-        except Exception:  # odd length or bad content: the checked path decides
-            return self._deliver(session.codec, can_id, payload, tid, session.start)
+        except (SlowPath, DecodeError):  # odd length or bad content: the checked path decides
+            return self._deliver(session, can_id, payload, tid, session.start, session.counted)
+        session.closed = tid
+        session.tid = (tid + 1) & 0x1F
+        session.counted = False
         self.transfers += 1
         return _new_tuple(
             Transfer,
@@ -429,74 +615,63 @@ class Reassembler:
         )
 
     def _deliver(
-        self, codec: Codec, can_id: int, payload: Any, tid: int, ts: float
+        self, session: _Session, can_id: int, payload: Any, tid: int, ts: float, counted: bool
     ) -> Transfer | None:
+        """Decode a complete payload through the checked path and deliver it."""
         try:
-            message = codec.decode(payload)
+            message = session.codec.decode(payload)
         except DecodeError as error:
-            self._report(Problem.BAD_PAYLOAD, can_id, payload, ts, str(error))
+            if not counted:
+                self._report(Problem.BAD_PAYLOAD, can_id, payload, ts, str(error))
+            self._lost(session, can_id, tid, ts)
             return None
+        session.buffer = None
+        session.counted = False
+        session.closed = tid
+        session.tid = (tid + 1) & 0x1F
         self.transfers += 1
-        data_type = codec.data_type
-        if can_id & 0x80:
-            destination: int | None = (can_id >> 8) & 0x7F
-        else:
-            destination = None
         return _new_tuple(
             Transfer,
             (
                 message,
                 can_id & 0x7F,
-                destination,
+                session.destination,
                 can_id >> 24,
                 tid,
                 ts,
-                data_type.kind,
-                data_type.data_type_id,
+                session.kind,
+                session.data_type_id,
             ),
         )
-
-    def resume(self, can_id: int, transfer_id: int, start: float, last: bytes) -> None:
-        """Set a session's state as it is just after a transfer came out whole.
-
-        For a stream whose earlier frames were reassembled elsewhere (the columnar engine
-        hands a session over this way): the session of ``can_id`` then expects the next
-        transfer id, times out from ``start`` and takes a repeat of ``last`` as a duplicate.
-
-        Args:
-            can_id: A CAN ID of the session (its priority bits are ignored).
-            transfer_id: The transfer id of the transfer that came out last.
-            start: The timestamp of that transfer's first frame.
-            last: The data of its last frame.
-        """
-        if can_id & 0x80:
-            codec = _SERVICES.get((can_id >> 15) & 0x1FF)
-        else:
-            codec = _MESSAGES.get((can_id >> 8) & 0xFFFF)
-        if codec is None:
-            raise ValueError(f"no DroneCAN type for CAN ID {can_id:#x}")
-        session = self._sessions.get(can_id & 0xFFFFFF)
-        if session is None:
-            session = self._new_session(codec, can_id, start)
-        session.buffer = None
-        session.tid = (transfer_id + 1) & 0x1F
-        session.closed = transfer_id
-        session.start = start
-        session.last = last
-        session.toggle = 0
 
     def expire(self, timestamp: float) -> int:
         """Drop sessions idle past the transfer-ID timeout at ``timestamp``.
 
-        Incomplete transfers among them are counted as `TIMEOUT`. Call it
-        now and then on a quiet bus to report transfers whose end never came.
+        Incomplete transfers among them are counted as `TIMEOUT`. Call it now and then on
+        a quiet bus to report transfers whose end never came. Sessions are examined
+        oldest first and the examination stops at the first one still active, so it
+        costs O(1) per session dropped; with timestamps that go backwards, a session may
+        be dropped later than its own timestamps would allow.
 
         Returns:
             The number of sessions dropped.
+
+        Raises:
+            TypeError: ``timestamp`` is not a number.
         """
-        stale = [k for k, s in self._sessions.items() if timestamp - s.start > self.timeout]
-        for key in stale:
-            session = self._sessions.pop(key)
-            if session.buffer is not None:
+        if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
+            raise argument_type_error("Reassembler.expire", "timestamp", "a float", timestamp)
+        return self._expire(timestamp)
+
+    def _expire(self, timestamp: float) -> int:
+        age, timeout, dropped = self._age, self.timeout, 0
+        while age:
+            key = next(iter(age))
+            session = age[key]
+            if timestamp - max(session.start, session.closed_at) <= timeout:
+                break
+            del age[key], self._sessions[key]
+            dropped += 1
+            if session.buffer is not None and not session.counted:
                 self._report(Problem.TIMEOUT, key, b"", timestamp, f"transfer id {session.tid}")
-        return len(stale)
+        return dropped

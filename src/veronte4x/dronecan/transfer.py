@@ -8,15 +8,18 @@ receiver for a stream of frames is
 
 from __future__ import annotations
 
+import struct
+from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections.abc import Iterable
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
 from veronte4x.dronecan.codec import BY_CLASS, BY_ID, Codec, can_id_base
+from veronte4x.dronecan.compiled import ENCODE_FALLBACK, SlowPath
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
-from veronte4x.errors import DecodeError, EncodeError
+from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
 
 DEFAULT_PRIORITY = 16
 """Priority used when none is given: the middle of 0 (highest) to 31, libcanard's
@@ -73,16 +76,18 @@ def encode(
             cast) instead of raising.
 
     Raises:
-        EncodeError: Unknown class, a field the type cannot hold, or bad transport fields.
+        EncodeError: A field the type cannot hold, or a transport field out of range.
+        TypeError: ``message`` not an instance of a DroneCAN message, request or response
+            class, or a transport argument that is not an int.
     """
     if not saturate:
         # Generated fast path; on anything unusual the checked path raises the precise error.
-        try:
-            return _FAST[message.__class__](
-                message, source_node_id, transfer_id, priority, destination_node_id
-            )
-        except Exception:
-            pass
+        fast = _FAST.get(message.__class__)
+        if fast is not None:
+            try:
+                return fast(message, source_node_id, transfer_id, priority, destination_node_id)
+            except ENCODE_FALLBACK:
+                pass
     return _encode_checked(
         message, source_node_id, transfer_id, priority, destination_node_id, saturate
     )
@@ -99,7 +104,9 @@ def _encode_checked(
     """`encode` through the generic serializer, checking every argument."""
     codec = BY_CLASS.get(type(message))
     if codec is None:
-        raise EncodeError("encode", "message", message, "a DroneCAN message class")
+        raise argument_type_error(
+            "encode", "message", "a DroneCAN message, request or response", message
+        )
     if not (
         type(source_node_id) is int
         and type(transfer_id) is int
@@ -111,7 +118,13 @@ def _encode_checked(
         _check_transport(codec, source_node_id, transfer_id, priority)
     can_id = priority << 24 | can_id_base(codec.data_type) | source_node_id
     if can_id & 0x80:
-        if type(destination_node_id) is not int or not 1 <= destination_node_id <= 127:
+        if destination_node_id is not None and (
+            not isinstance(destination_node_id, int) or isinstance(destination_node_id, bool)
+        ):
+            raise argument_type_error(
+                "encode", "destination_node_id", "an int", destination_node_id
+            )
+        if destination_node_id is None or not 1 <= destination_node_id <= 127:
             raise EncodeError(
                 codec.data_type.full_name, "destination_node_id", destination_node_id, "1..127"
             )
@@ -134,20 +147,163 @@ def _check_transport(codec: Codec, source: object, tid: object, priority: object
         ("transfer_id", tid, 0, 31),
         ("priority", priority, 0, 31),
     ):
-        if type(value) is not int or not low <= value <= high:
+        if not isinstance(value, int) or isinstance(value, bool):
+            raise argument_type_error("encode", field, "an int", value)
+        if not low <= value <= high:
             raise EncodeError(name, field, value, f"an int in {low}..{high}")
 
 
-def decode_frames(frames: Iterable[tuple[int, bytes]], timestamp: float = 0.0) -> Transfer:
+_Single = tuple[Any, TransferKind, int, Any, Any, int]
+"""What the fast `decode_frames` needs of a type: codec, kind, type id, decode_frame, the
+generated payload decoder and the CRC seed."""
+
+
+def _fast_types() -> dict[int, _Single]:
+    """Types with generated decoders, by `_type_key` of their CAN IDs."""
+    out: dict[int, _Single] = {}
+    for (kind, dtid), codec in BY_ID.items():
+        if codec.fast is None:
+            continue
+        key = (
+            dtid
+            if kind is TransferKind.MESSAGE
+            else 0x10000 | dtid << 1 | (kind is TransferKind.REQUEST)
+        )
+        out[key] = (codec, kind, dtid, codec.fast.decode_frame, codec.fast.decode, codec.crc_seed)
+    return out
+
+
+_FAST_TYPES = _fast_types()
+_FAST_ERRORS = (SlowPath, struct.error)  # what the generated decoders raise
+_BYTES_LIKE = (bytes, bytearray, memoryview)
+
+
+def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.0) -> Transfer:
     """Decode the frames of exactly one transfer, in order, checking everything.
 
     Checks the CAN IDs (all equal), the tail bytes (start, end, toggle, transfer id), the
     frame lengths, the CRC of a multi-frame transfer and the payload.
 
+    Args:
+        frames: ``(can_id, data)`` pairs: an int CAN ID and bytes-like data, tail byte last.
+        timestamp: Returned as the transfer's timestamp.
+
     Raises:
-        DecodeError: Any inconsistency.
+        DecodeError: Any inconsistency in the frames.
+        TypeError: ``frames`` is not an iterable of ``(int, bytes-like)`` pairs, or
+            ``timestamp`` is not a number.
     """
-    items = [(can_id, bytes(data)) for can_id, data in frames]
+    # Fast path: frames of a type with generated decoders, everything as expected. On
+    # anything else the checked path below decides, and raises the precise error.
+    if frames.__class__ is list and timestamp.__class__ is float:
+        count = len(frames)
+        first = frames[0] if count else None
+        if first.__class__ is tuple and len(first) == 2:
+            can_id, data = first
+            if (
+                can_id.__class__ is int
+                and data.__class__ is bytes
+                and data
+                and 0 < can_id >> 7 < 1 << 22
+            ):
+                service = can_id & 0x80
+                fast = _FAST_TYPES.get(
+                    0x10000 | (can_id >> 15) & 0x1FF if service else (can_id >> 8) & 0xFFFF
+                )
+                if fast is not None and can_id & 0x7F and (not service or can_id & 0x7F00):
+                    try:
+                        if count == 1:
+                            message = _fast_single(fast, data)
+                        else:
+                            message = _fast_multi(fast, frames, can_id, count)
+                    except _FAST_ERRORS:
+                        message = None
+                    if message is not None:
+                        return _new_tuple(
+                            Transfer,
+                            (
+                                message,
+                                can_id & 0x7F,
+                                (can_id >> 8) & 0x7F if service else None,
+                                can_id >> 24,
+                                data[-1] & 0x1F,
+                                timestamp,
+                                fast[1],
+                                fast[2],
+                            ),
+                        )
+    return _decode_frames_checked(_frame_list(frames), _check_timestamp(timestamp))
+
+
+_new_tuple = tuple.__new__
+
+
+def _fast_single(fast: _Single, data: bytes) -> Any:
+    """The message of a single frame, or None to let the checked path decide."""
+    if data[-1] & 0xE0 != 0xC0 or fast[3] is None:
+        return None
+    return fast[3](data)  # checks the exact length itself
+
+
+def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
+    """The message of a multi-frame transfer, or None to let the checked path decide."""
+    if count >= len(MULTI_FRAME_TAILS[0]):
+        return None
+    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]
+    body = bytearray()
+    last = count - 1
+    for index, frame in enumerate(frames):
+        if frame.__class__ is not tuple or len(frame) != 2:
+            return None
+        frame_id, data = frame
+        if (
+            frame_id != can_id
+            or data.__class__ is not bytes
+            or data[-1:] != _TAIL_BYTES[tails[index]]
+            or (len(data) != 8 and (index != last or len(data) > 8))
+        ):
+            return None
+        body += data[:-1]
+    payload = bytes(body[2:])
+    if crc_hqx(payload, fast[5]) != body[0] | body[1] << 8:
+        return None
+    return fast[4](payload)
+
+
+_TAIL_BYTES = tuple(bytes((tail,)) for tail in range(256))
+
+
+def _frame_list(frames: object) -> list[tuple[int, bytes]]:
+    """``frames`` as a list of (int, bytes) pairs; TypeError for anything else."""
+    try:
+        items = list(frames)  # type: ignore[call-overload]
+    except TypeError:
+        raise argument_type_error(
+            "decode_frames", "frames", "an iterable of (can_id, data) pairs", frames
+        ) from None
+    out = []
+    for index, item in enumerate(items):
+        if not isinstance(item, (tuple, list)) or len(item) != 2:
+            raise argument_type_error(
+                "decode_frames", f"frames[{index}]", "a (can_id, data) pair", item
+            )
+        can_id, data = item
+        if not isinstance(can_id, int) or isinstance(can_id, bool):
+            raise argument_type_error("decode_frames", f"frames[{index}][0]", "an int", can_id)
+        if not isinstance(data, _BYTES_LIKE):
+            raise argument_type_error("decode_frames", f"frames[{index}][1]", "bytes-like", data)
+        out.append((can_id, bytes(data)))
+    return out
+
+
+def _check_timestamp(timestamp: object) -> float:
+    if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
+        raise argument_type_error("decode_frames", "timestamp", "a float", timestamp)
+    return timestamp
+
+
+def _decode_frames_checked(items: list[tuple[int, bytes]], timestamp: float) -> Transfer:
+    """`decode_frames` through the generic path, checking every field in turn."""
     if not 0 < len(items) < len(MULTI_FRAME_TAILS[0]):
         raise DecodeError(None, f"{len(items)} frames, not 1..{len(MULTI_FRAME_TAILS[0]) - 1}", b"")
     can_id = items[0][0]

@@ -2,9 +2,9 @@
 motor model.
 
 `SimulatedEsc` takes the frames seen on a bus with their timestamps (`SimulatedEsc.receive`)
-and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can adapter and a
-small client are in `veronte4x.simulator.can_node` and `veronte4x.simulator.client` (the
-``can`` extra).
+and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can adapters are in
+`veronte4x.simulator.can_node` (the ``can`` extra); the client that talks to it is
+`veronte4x.client`.
 
 Examples:
     >>> from veronte4x import dronecan

@@ -206,8 +206,10 @@ def _human_lines(
     ends: npt.NDArray[np.int64],
     lines: npt.NDArray[np.int64],
 ) -> _LogLines:
-    """The plain human-view lines: ``[(seconds)] interface ID [n] XX XX ...``, a classic
-    data frame and nothing after its bytes (lines with "#" are left to `parse_line`)."""
+    """The plain human-view lines: ``[(time)] interface ID [n] XX XX ...``, a classic data
+    frame and nothing after its bytes (lines with "#" are left to `parse_line`). The time is
+    seconds (``candump -t a``, ``-t d``, ``-t z``) or ``YYYY-MM-DD HH:MM:SS.ffffff``
+    (``-t A``)."""
     body = a[: ends[-1] + 1]
     separator = (body == 32) | (body == 10) | (body == 13)
     begins = ~separator
@@ -220,6 +222,11 @@ def _human_lines(
     first = np.searchsorted(token_start, starts[lines])
     count = np.searchsorted(token_start, ends[lines]) - first
     stamped = (a[token_start[first]] == 40) & (count > 0)  # "("
+    date_end = token_end[first]
+    dated = stamped & (date_end - token_start[first] == 11) & (a[date_end - 3] == 45)  # "-"
+    dated &= token_start[np.minimum(first + 1, last)] == date_end + 1
+    dated &= token_end[np.minimum(first + 1, last)] == date_end + 17
+    stamped = stamped.astype(np.int64) + dated  # tokens the time takes
     head = first + stamped  # the interface's token
     size_token = np.minimum(head + 2, last)
     size_at = token_start[size_token]
@@ -244,12 +251,16 @@ def _human_lines(
     can_id, extended, good = _identifiers(words[token_start[ident]], id_size)
     good &= ((id_size == 3) | (id_size == 8)) & (iface_size <= _INTERFACE)
     stamp = np.zeros(len(lines))
-    if stamped.any():
-        timed = np.flatnonzero(stamped)
+    timed = np.flatnonzero(stamped == 1)
+    if len(timed):
         at, end = token_start[first[timed]], token_end[first[timed]]
         good[timed] &= a[end - 1] == 41  # ")"
         stamp[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
         good[timed] &= timed_ok & (end - at - 2 > 0) & (end - at - 2 <= _STAMP)
+    dated_rows = np.flatnonzero(stamped == 2)
+    if len(dated_rows):
+        stamp[dated_rows], dated_ok = _date_stamps(a, token_start[first[dated_rows]] + 1)
+        good[dated_rows] &= dated_ok
     # The data bytes: one two-character token each.
     owner = np.repeat(np.arange(len(lines)), size)
     position = np.arange(len(owner)) - np.repeat(np.cumsum(size) - size, size)
@@ -276,8 +287,51 @@ def _human_lines(
         extended[keep],
         size[keep],
         data[keep],
-        stamped[keep],
+        stamped[keep] > 0,
     )
+
+
+_DAYS_IN_MONTH = np.array([0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31], np.int64)
+
+
+def _date_stamps(
+    a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, np.ndarray]:
+    """``YYYY-MM-DD HH:MM:SS.ffffff)`` at ``at`` to seconds since the epoch (UTC), exactly as
+    ``datetime.strptime(...).replace(tzinfo=utc).timestamp()`` gives them: whole
+    microseconds divided once by a million. Dates ``datetime`` refuses are not good."""
+    digits = {k: a[at + k].astype(np.int64) - 48 for k in (*range(4), 5, 6, 8, 9)}
+    digits.update({k: a[at + k].astype(np.int64) - 48 for k in (11, 12, 14, 15, 17, 18)})
+    digits.update({k: a[at + k].astype(np.int64) - 48 for k in range(20, 26)})
+    good = np.ones(len(at), np.bool_)
+    for value in digits.values():
+        good &= (value >= 0) & (value <= 9)
+    for k, char in ((4, 45), (7, 45), (10, 32), (13, 58), (16, 58), (19, 46), (26, 41)):
+        good &= a[at + k] == char
+
+    def number(*places: int) -> np.ndarray:
+        total = np.zeros(len(at), np.int64)
+        for k in places:
+            total = total * 10 + digits[k]
+        return total
+
+    year, month, day = number(0, 1, 2, 3), number(5, 6), number(8, 9)
+    hour, minute, second = number(11, 12), number(14, 15), number(17, 18)
+    micro = number(20, 21, 22, 23, 24, 25)
+    leap = (year % 4 == 0) & ((year % 100 != 0) | (year % 400 == 0))
+    month_ok = (month >= 1) & (month <= 12)
+    length = _DAYS_IN_MONTH[np.where(month_ok, month, 0)] + (leap & (month == 2))
+    good &= (year >= 1) & month_ok & (day >= 1) & (day <= length)
+    good &= (hour <= 23) & (minute <= 59) & (second <= 59)
+    # Days since 1970-01-01 of a proleptic Gregorian date (H. Hinnant's days_from_civil).
+    shifted = year - (month <= 2)
+    era = shifted // 400
+    of_era = shifted - era * 400
+    of_year = (153 * (month + np.where(month > 2, -3, 9)) + 2) // 5 + day - 1
+    days = era * 146097 + of_era * 365 + of_era // 4 - of_era // 100 + of_year - 719468
+    total = ((days * 86400 + hour * 3600 + minute * 60 + second) * 1_000_000) + micro
+    good &= np.abs(total) < _EXACT
+    return total.astype(np.float64) / 1e6, good
 
 
 def _words(a: npt.NDArray[np.uint8]) -> npt.NDArray[np.uint64]:

@@ -22,7 +22,7 @@ import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 from operator import attrgetter
-from typing import Any
+from typing import Any, cast
 
 import pyarrow as pa
 
@@ -144,7 +144,7 @@ def veronte_spec(kind: str, variants: list[FrameLayout]) -> TableSpec:
             if f.attr is not None:
                 by_attr.setdefault(f.attr, []).append(f)
     columns: list[Column] = []
-    for dc_field in dataclasses.fields(variants[0].message):
+    for dc_field in dataclasses.fields(cast(Any, variants[0].message)):
         attr = dc_field.name
         fields = sorted({f.index or 0: f for f in by_attr[attr]}.items())
         for index, f in fields:

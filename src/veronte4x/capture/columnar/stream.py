@@ -15,9 +15,11 @@ frame or column by column with no state between batches, except the DroneCAN rea
   the new frames, never decoded twice), and so are the frames of a transfer still open at
   the end of a batch, provided they are a flawless beginning: then the reassembler would
   report nothing on them either, whatever follows.
-- A session found irregular leaves the column path for good: its reassembler session is
-  set as its last whole transfer left it (`veronte4x.dronecan.Reassembler.resume`) and
-  takes its frames from there on.
+- A session found irregular leaves the column path for good: its last whole transfer is fed
+  to the reassembler again (the result dropped: it came out in the batch before), which
+  leaves the session's state as that transfer left it in one piece (a session's state after
+  a transfer depends on that transfer only, while its sessions never fill the table), and
+  the reassembler takes the session's frames from there on.
 - A channel with more sessions than the reassembler's table goes to the per-frame decoder
   whole; the batches seen so far are then wrong, and `TooManySessions` says to start over
   with that channel in ``per_frame_channels``.
@@ -148,7 +150,7 @@ class StreamDecoder:
         )
         regular = np.empty(len(rows), np.bool_)
         regular[order] = in_order
-        self._leave_column_path(frames, rows, keys, tail, stamp, context, ~regular & opens)
+        self._leave_column_path(frames, rows, keys, stamp, context, ~regular & opens)
         decoded = regular & ~carried
         engine.decode_transfers(frames, rows[decoded], types, stamp, tables, skip=context)
         taken[rows[regular]] = True
@@ -183,13 +185,13 @@ class StreamDecoder:
         frames: FrameColumns,
         rows: npt.NDArray[np.int64],
         keys: npt.NDArray[np.int64],
-        tail: npt.NDArray[np.uint8],
         stamp: npt.NDArray[np.float64],
         context: npt.NDArray[np.bool_],
         newly_irregular: npt.NDArray[np.bool_],
     ) -> None:
-        """Hand irregular sessions to the per-frame decoder for good, each reassembler
-        session set as the session's last whole transfer (its context) left it."""
+        """Hand irregular sessions to the per-frame decoder for good, each session's last
+        whole transfer (its context) fed to the reassembler first, its result dropped (it
+        was decoded in the batch before), so that the session is as that transfer left it."""
         starts = np.flatnonzero(newly_irregular)
         if not len(starts):
             return
@@ -197,20 +199,16 @@ class StreamDecoder:
         for start in starts.tolist():
             if not context[rows[start]]:
                 continue  # the session starts in this batch: the reassembler starts fresh
-            last = start
-            while last + 1 < len(rows) and context[rows[last + 1]]:
-                last += 1
-            first_row, last_row = int(rows[start]), int(rows[last])
-            name = frames.channels[frames.channel[last_row]]
+            name = frames.channels[frames.channel[rows[start]]]
             reassembler = self.decoder.reassemblers.get(name)
             if reassembler is None:
                 reassembler = self.decoder.reassemblers[name] = Reassembler()
-            reassembler.resume(
-                int(frames.can_id[last_row]),
-                int(tail[last]) & 0x1F,
-                float(stamp[first_row]),
-                frames.data[last_row, : frames.length[last_row]].tobytes(),
-            )
+            at = start
+            while at < len(rows) and context[rows[at]]:  # the last whole transfer, again
+                row = int(rows[at])
+                data = frames.data[row, : frames.length[row]].tobytes()
+                reassembler.feed(int(frames.can_id[row]), data, float(stamp[row]))
+                at += 1
 
     def _carry(
         self,

@@ -1,0 +1,326 @@
+"""The reassembler's and the codecs' less travelled paths, each pinned to exact outcomes,
+and proof that the generated fast paths are the ones taken for ordinary input."""
+
+from __future__ import annotations
+
+from binascii import crc_hqx
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from veronte4x import dronecan
+from veronte4x.dronecan import Problem, TransferKind
+from veronte4x.dronecan import codec as dronecan_codec
+from veronte4x.dronecan import transfer as transfer_module
+from veronte4x.dronecan.float16 import float16_bits
+from veronte4x.dronecan.serializer import Serializer
+from veronte4x.dronecan.tail import split_payload
+
+OK = dronecan.Health.OK
+OPERATIONAL = dronecan.Mode.OPERATIONAL
+ESC = dronecan.EscStatus(3, 24.5, 12.25, 310.0, 4321, 55, 2)
+
+
+def _frames(message: Any, source: int = 10, tid: int = 0, **kwargs: Any) -> list[tuple[int, bytes]]:
+    return [
+        (f.can_id, f.data)
+        for f in dronecan.encode(message, source_node_id=source, transfer_id=tid, **kwargs)
+    ]
+
+
+def _lost(r: dronecan.Reassembler) -> int:
+    return sum(r.counts[p] for p in dronecan.TRANSFER_PROBLEMS)
+
+
+def test_a_short_first_frame_loses_its_transfer_once() -> None:
+    r = dronecan.Reassembler()
+    (c, first), *rest = _frames(ESC)
+    assert r.feed(c, first[:5] + first[-1:], 0.0) is None
+    assert [r.feed(c, d, 0.0) for c, d in rest] == [None, None]  # silent, not MISSED_START
+    assert r.counts[Problem.MALFORMED_FRAME] == 1
+    assert _lost(r) == 0
+    assert r.problems[-1].detail == "short first frame"
+    assert r.feed(*_frames(ESC, tid=1)[0], 0.1) is None  # the next transfer is fine
+    assert [r.feed(c, d, 0.1) for c, d in _frames(ESC, tid=1)[1:]][-1] is not None
+
+
+def test_a_short_middle_frame_loses_its_transfer_once() -> None:
+    r = dronecan.Reassembler()
+    frames = _frames(ESC)
+    c, middle = frames[1]
+    assert r.feed(*frames[0], 0.0) is None
+    assert r.feed(c, middle[:3] + middle[-1:], 0.0) is None
+    assert r.feed(*frames[2], 0.0) is None
+    assert r.counts[Problem.MALFORMED_FRAME] == 1
+    assert sum(r.counts.values()) == 1
+
+
+@pytest.mark.parametrize("size", [9, 10])
+def test_a_last_frame_of_more_than_8_bytes_is_refused(size: int) -> None:
+    r = dronecan.Reassembler()
+    frames = _frames(ESC)
+    c, last = frames[-1]
+    for frame in frames[:-1]:
+        assert r.feed(*frame, 0.0) is None
+    long_last = last[:-1] + bytes(size - len(last)) + last[-1:]
+    assert r.feed(c, long_last, 0.0) is None
+    assert r.counts[Problem.MALFORMED_FRAME] == 1
+    assert r.transfers == 0
+
+
+def test_a_first_frame_interrupts_the_transfer_in_progress() -> None:
+    r = dronecan.Reassembler()
+    first = _frames(ESC, tid=4)
+    second = _frames(dronecan.EscStatus(1, 1.0, 2.0, 3.0, 4, 5, 6), tid=5)
+    assert r.feed(*first[0], 0.0) is None
+    assert r.feed(*first[1], 0.0) is None
+    out = [r.feed(c, d, 0.01) for c, d in second]
+    assert r.counts[Problem.INTERRUPTED] == 1
+    assert r.problems[-1].detail == "transfer id 4"
+    assert out[-1] is not None
+    assert out[-1].message.error_count == 1
+    assert out[-1].timestamp == 0.01
+
+
+def test_the_checked_path_delivers_exactly_like_the_fast_one() -> None:
+    """bytearray frames take the full state update for every frame."""
+    slow, fast = dronecan.Reassembler(), dronecan.Reassembler()
+    for tid in range(40):
+        for c, d in _frames(ESC, tid=tid % 32) + _frames(
+            dronecan.RawCommand(tuple(range(tid % 20))), tid=tid % 32
+        ):
+            a = slow.feed(c, bytearray(d), tid * 0.01)
+            b = fast.feed(c, d, tid * 0.01)
+            assert a == b
+    assert slow.transfers == fast.transfers == 80
+    assert sum(slow.counts.values()) == 0
+
+
+def test_a_payload_the_generated_decoder_refuses_goes_to_the_checked_decoder() -> None:
+    """A 3-frame transfer of esc.Status one byte short: the checked decoder decides."""
+    codec = dronecan_codec.BY_CLASS[dronecan.EscStatus]
+    payload = codec.encode(ESC, False)[:-1]
+    can_id = dronecan.message_can_id(16, 1034, 10)
+    datas = split_payload(payload, crc_hqx(payload, codec.crc_seed), 0)
+    r = dronecan.Reassembler()
+    assert [r.feed(can_id, d, 0.0) for d in datas] == [None] * len(datas)
+    assert r.counts[Problem.BAD_PAYLOAD] == 1
+    with pytest.raises(dronecan.DecodeError) as error:
+        dronecan.decode_payload(TransferKind.MESSAGE, 1034, payload)
+    assert r.problems[-1].detail == str(error.value)
+
+
+def test_the_session_whose_latest_transfer_began_first_is_evicted() -> None:
+    r = dronecan.Reassembler(max_sessions=2)
+    a, b, c = (_frames(ESC, source=s) for s in (1, 2, 3))
+    assert r.feed(*a[0], 0.0) is None
+    assert r.feed(*b[0], 0.1) is None
+    a_next = _frames(ESC, source=1, tid=1)
+    assert r.feed(*a_next[0], 0.2) is None  # interrupts a's transfer 0: a is now the newer
+    assert r.counts[Problem.INTERRUPTED] == 1
+    assert r.feed(*c[0], 0.3) is None  # the table is full: b goes
+    assert r.counts[Problem.EVICTED] == 1
+    assert r.problems[-1].can_id == b[0][0] & 0xFFFFFF
+    assert [r.feed(cid, d, 0.3) for cid, d in a_next[1:]][-1] is not None
+    assert [r.feed(cid, d, 0.3) for cid, d in c[1:]][-1] is not None
+    assert r.session_count == 2
+
+
+def test_a_timed_out_session_is_dropped_before_an_active_one_and_counted_as_timeout() -> None:
+    r = dronecan.Reassembler(max_sessions=2)
+    old, fresh, new = (_frames(ESC, source=s) for s in (1, 2, 3))
+    r.feed(*old[0], 0.0)
+    r.feed(*fresh[0], 2.5)
+    r.feed(*new[0], 3.0)  # old (idle since 0.0) goes, as a timeout
+    assert r.counts[Problem.TIMEOUT] == 1
+    assert r.counts[Problem.EVICTED] == 0
+    assert [r.feed(c, d, 3.0) for c, d in fresh[1:]][-1] is not None
+
+
+def test_anonymous_can_id_refuses_priority_32() -> None:
+    assert dronecan.anonymous_can_id(31, 3, 0x3FFF) == 0x1FFFFF00
+    with pytest.raises(dronecan.EncodeError):
+        dronecan.anonymous_can_id(32, 0, 0)
+    for args in ((0, 4, 0), (0, 0, 1 << 14), (-1, 0, 0)):
+        with pytest.raises(dronecan.EncodeError):
+            dronecan.anonymous_can_id(*args)
+
+
+@pytest.mark.parametrize("priority", [0, 7, 31])
+def test_decode_frames_returns_source_destination_and_priority(priority: int) -> None:
+    for message, destination in (
+        (dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 0), None),
+        (ESC, None),
+        (dronecan.GetNodeInfoRequest(), 99),
+        (dronecan.GetSetRequest(name=b"x" * 20), 98),
+    ):
+        frames = _frames(
+            message, source=77, tid=9, priority=priority, destination_node_id=destination
+        )
+        t = dronecan.decode_frames(frames, timestamp=1.5)
+        assert t.message == message
+        assert t.source_node_id == 77
+        assert t.destination_node_id == destination
+        assert t.priority == priority
+        assert t.transfer_id == 9
+        assert t.timestamp == 1.5
+        checked = transfer_module._decode_frames_checked(frames, 1.5)
+        assert t == checked
+
+
+@pytest.mark.parametrize(
+    ("units", "bits"),
+    [
+        (2.5, 0x0003),  # a tie rounds away from zero
+        (2.5 - 2**-16, 0x0002),  # just below the tie rounds down
+        (3.5 - 2**-16, 0x0003),
+        (0.5, 0x0001),  # half the smallest subnormal rounds up
+        (0.5 - 2**-16, 0x0000),  # just below it underflows
+        (1023.5 - 2**-12, 0x03FF),  # the largest subnormal, just below the tie
+        (1023.5, 0x0400),  # the tie rounds up into the normal range
+    ],
+)
+def test_float16_subnormals_round_just_below_a_tie(units: float, bits: int) -> None:
+    value = units * 2**-24
+    assert float16_bits(value) == bits
+    assert float16_bits(-value) == bits | 0x8000
+    # The generated encoder of Temperature gives the same bits.
+    message = dronecan.Temperature(1, value, 0)
+    ((_, data),) = _frames(message)
+    assert int.from_bytes(data[2:4], "little") == bits
+
+
+def _refuse(*args: Any, **kwargs: Any) -> Any:
+    raise AssertionError("the checked path was called")
+
+
+FAST_MESSAGES = [
+    dronecan.NodeStatus(123456, OK, OPERATIONAL, 0, 0),
+    ESC,
+    dronecan.Temperature(3, 301.5, 0),
+    dronecan.RawCommand((1000, -2000, 8191, 0)),
+    dronecan.RawCommand(tuple(range(20))),
+]
+
+
+@pytest.mark.parametrize("message", FAST_MESSAGES, ids=lambda m: type(m).__name__)
+def test_ordinary_messages_take_the_fast_paths(
+    message: Any, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    frames = _frames(message)
+    r = dronecan.Reassembler()
+    first = [r.feed(c, d, 0.0) for c, d in frames]  # opens the session
+    assert first[-1] is not None
+    monkeypatch.setattr(transfer_module, "_encode_checked", _refuse)
+    monkeypatch.setattr(transfer_module, "_decode_frames_checked", _refuse)
+    monkeypatch.setattr(Serializer, "decode", _refuse)
+    monkeypatch.setattr(Serializer, "encode", _refuse)
+    monkeypatch.setattr(r, "_feed", _refuse)
+    frames = _frames(message, tid=1)
+    assert dronecan.decode_frames(frames).message == message
+    out = [r.feed(c, d, 0.1) for c, d in frames]
+    assert out[-1] is not None
+    assert out[-1].message == message
+
+
+@pytest.mark.parametrize("epoch", [0.0, 1.7e9])
+@pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
+def test_timeouts_at_any_epoch(epoch: float, kind: type) -> None:
+    """Capture timestamps are often seconds since 1970: only differences may count."""
+    r = dronecan.Reassembler()
+    frames = _frames(ESC, tid=3)
+    assert [r.feed(c, kind(d), epoch + 0.5 * i) for i, (c, d) in enumerate(frames)][-1]
+    late = _frames(ESC, tid=4)
+    assert r.feed(late[0][0], kind(late[0][1]), epoch + 10.0) is None
+    assert r.feed(late[1][0], kind(late[1][1]), epoch + 11.9) is None
+    assert r.feed(late[2][0], kind(late[2][1]), epoch + 12.1) is None  # 2.1 s after its start
+    assert r.counts[Problem.TIMEOUT] == 1
+    assert r.expire(epoch + 14.0) == 0  # the timed-out frame silences its transfer until then
+    assert r.expire(epoch + 14.2) == 1
+    again = _frames(ESC, tid=4)  # the same transfer id, long after: accepted
+    out = [r.feed(c, kind(d), epoch + 20.0) for c, d in again]
+    assert out[-1] is not None
+    assert out[-1].timestamp == epoch + 20.0
+    assert sum(r.counts.values()) == 1
+
+
+_TRANSFERS = st.sampled_from(
+    [
+        dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7),
+        ESC,
+        dronecan.Temperature(3, 301.5, 0),
+        dronecan.RawCommand((1, -2, 3)),
+        dronecan.RawCommand(tuple(range(12))),
+        dronecan.GetNodeInfoRequest(),
+        dronecan.RestartNodeRequest(0xACCE551B1E),
+        dronecan.GetSetRequest(name=b"abc"),
+    ]
+)
+
+
+@st.composite
+def _damaged(draw: st.DrawFn) -> tuple[list[tuple[int, bytes]], float]:
+    """The frames of one transfer, perhaps with a changed CAN ID, tail, length or order."""
+    message = draw(_TRANSFERS)
+    service = not isinstance(
+        message,
+        (dronecan.NodeStatus, dronecan.EscStatus, dronecan.Temperature, dronecan.RawCommand),
+    )
+    frames = _frames(
+        message,
+        source=draw(st.integers(1, 127)),
+        tid=draw(st.integers(0, 31)),
+        priority=draw(st.integers(0, 31)),
+        destination_node_id=draw(st.integers(1, 127)) if service else None,
+    )
+    for _ in range(draw(st.integers(0, 2))):
+        index = draw(st.integers(0, len(frames) - 1))
+        can_id, data = frames[index]
+        change = draw(st.sampled_from(["id", "tail", "bit", "cut", "grow", "drop", "swap"]))
+        if change == "id":
+            can_id ^= 1 << draw(st.integers(0, 30))
+        elif change == "tail":
+            data = data[:-1] + bytes([draw(st.integers(0, 255))])
+        elif change == "bit":
+            bit = draw(st.integers(0, 8 * len(data) - 1))
+            data = bytes(b ^ (1 << bit % 8) if i == bit // 8 else b for i, b in enumerate(data))
+        elif change == "cut":
+            data = data[1:]
+        elif change == "grow":
+            data = b"\x00" + data
+        elif change == "drop" and len(frames) > 1:
+            del frames[index]
+            continue
+        elif change == "swap" and index + 1 < len(frames):
+            frames[index], frames[index + 1] = frames[index + 1], frames[index]
+            continue
+        frames[index] = (can_id, data)
+    return frames, draw(st.sampled_from([0.0, 1.5, 1.7e9]))
+
+
+def _decoded(function: Any, frames: Any, timestamp: float) -> Any:
+    try:
+        return function(frames, timestamp)
+    except dronecan.DecodeError as error:
+        return str(error)
+
+
+@settings(max_examples=500, deadline=None)
+@given(case=_damaged())
+def test_decode_frames_fast_path_agrees_with_the_checked_path(
+    case: tuple[list[tuple[int, bytes]], float],
+) -> None:
+    frames, timestamp = case
+    fast = _decoded(dronecan.decode_frames, frames, timestamp)
+    checked = _decoded(transfer_module._decode_frames_checked, frames, timestamp)
+    assert fast == checked
+
+
+@pytest.mark.parametrize("extra", [1 << 29, 1 << 30, 1 << 31, -(1 << 29)])
+@pytest.mark.parametrize("message", [ESC, dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7)])
+def test_decode_frames_refuses_can_ids_beyond_29_bits(extra: int, message: Any) -> None:
+    frames = [(can_id + extra, data) for can_id, data in _frames(message)]
+    with pytest.raises(dronecan.DecodeError, match="is not a 29-bit value"):
+        dronecan.decode_frames(frames)
