@@ -17,6 +17,11 @@ one run it times, best of ``--repeat`` runs each:
   first ``--per-frame`` frames only (it is slow);
 - veronte4x `read_tables` (every frame decoded, DroneCAN reassembled and CRC-checked) on
   ``--small`` and ``--frames`` frames, to show the time is linear in the file's size.
+
+Then `capture.to_parquet` (a Parquet dataset, decoded in batches): time and peak memory
+(each in a fresh process) on the same two files, to show the memory flat and the time
+linear; and ``--files`` copies of the small file converted in one process against a Dask
+`LocalCluster` of two worker processes.
 """
 
 from __future__ import annotations
@@ -24,6 +29,9 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import shutil
+import subprocess
+import sys
 import tempfile
 import time
 from collections.abc import Callable
@@ -104,6 +112,76 @@ def columnar_tables(path: Path) -> int:
     return sum(table.num_rows for table in capture.read_tables(path).values())
 
 
+CONVERT = """
+import re, sys, time
+from pathlib import Path
+from veronte4x import capture
+import veronte4x.capture.columnar.dataset  # imported before the clock starts
+start = time.perf_counter()
+summary = capture.to_parquet(sys.argv[1], sys.argv[2], progress=False)
+seconds = time.perf_counter() - start
+peak = re.search(r"VmHWM:\\s+(\\d+) kB", Path("/proc/self/status").read_text())[1]
+print(summary.frames, seconds, peak)
+"""
+"""Peak memory from the kernel's high-water mark of the process (ru_maxrss would count the
+parent's memory at the fork)."""
+
+
+def converted(path: Path, out: Path) -> tuple[int, float, float]:
+    """`to_parquet` of one file in a fresh process: frames, seconds, peak memory in MB."""
+    result = subprocess.run(
+        [sys.executable, "-c", CONVERT, str(path), str(out)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    frames, seconds, peak_kb = result.stdout.split()
+    shutil.rmtree(out)
+    return int(frames), float(seconds), int(peak_kb) / 1024
+
+
+def fleet_rows(small: Path, root: Path, files: int, repeat: int) -> list[tuple[str, int, float]]:
+    """Several files converted in this process, then on a local cluster of 2 workers."""
+    import dask
+    from dask.distributed import Client, LocalCluster
+
+    paths = []
+    for index in range(files):
+        paths.append(root / f"copy{index}.log")
+        shutil.copy(small, paths[-1])
+    frames = files * sum(1 for _ in small.open())
+
+    def convert(client: Client | None) -> int:
+        out = root / "fleet"
+        summary = capture.to_parquet(paths, out, client=client, progress=False)
+        shutil.rmtree(out)
+        return summary.frames
+
+    rows = [
+        (f"to_parquet, {files} files, one process", frames, _timed(lambda: convert(None), repeat))
+    ]
+    for name, environ in (
+        ("LocalCluster 2 workers", {}),
+        ("2 workers, mmap 32 MB", {"MALLOC_MMAP_THRESHOLD_": 1 << 25}),
+    ):
+        with (
+            dask.config.set(
+                {f"distributed.nanny.pre-spawn-environ.{k}": v for k, v in environ.items()}
+            ),
+            LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster,
+            Client(cluster) as client,
+        ):
+            convert(client)  # the workers import veronte4x once
+            rows.append(
+                (
+                    f"to_parquet, {files} files, {name}",
+                    frames,
+                    _timed(lambda: convert(client), repeat),
+                )
+            )
+    return rows
+
+
 def _timed(function: Callable[[], int], repeat: int) -> float:
     """The best of ``repeat`` runs, in seconds."""
     best = float("inf")
@@ -126,6 +204,7 @@ def main() -> None:
     parser.add_argument("--small", type=int, default=1_000_000, help="frames of the small file")
     parser.add_argument("--per-frame", type=int, default=200_000, help="frames for the old path")
     parser.add_argument("--repeat", type=int, default=2, help="runs of each reader (best kept)")
+    parser.add_argument("--files", type=int, default=4, help="files for the cluster rows")
     args = parser.parse_args()
     repeat = args.repeat
     with tempfile.TemporaryDirectory() as folder:
@@ -177,6 +256,20 @@ def main() -> None:
             print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {ratio:14.2f}x")
         hour = 63_000_000 / ours
         print(f"one hour of two 1 Mbit/s buses (63 M frames) at this rate: {hour:.0f} s")
+
+        header = f"{'frames/s':>12} {'seconds':>8} {'peak MB':>8}"
+        print(f"\n{'to_parquet (fresh process each)':48} {header}")
+        for path in (small, big):
+            frames, seconds, peak = converted(path, root / "dataset")
+            name = f"to_parquet, {frames} frames"
+            print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {peak:8.0f}")
+        hour = 63_000_000 * seconds / frames
+        print(f"one hour of two buses (63 M frames) at this rate: {hour:.0f} s, same peak memory")
+        rows = fleet_rows(small, root, args.files, repeat)
+        print(f"\n{'several files':48} {'frames/s':>12} {'seconds':>8} {'speed-up':>8}")
+        for name, frames, seconds in rows:
+            speedup = rows[0][2] / seconds
+            print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {speedup:7.2f}x")
 
 
 if __name__ == "__main__":

@@ -89,8 +89,8 @@ def test_flight_agrees_and_takes_the_fast_paths(
         taken.append(len(rows))  # type: ignore[arg-type]
         return original(frames, rows, decoder)  # type: ignore[arg-type]
 
-    original = engine._per_frame
-    monkeypatch.setattr(engine, "_per_frame", per_frame)
+    original = engine.per_frame
+    monkeypatch.setattr(engine, "per_frame", per_frame)
     assert_same_tables(capture.read_tables(flight), expected)
     assert taken == [0]  # every frame of a clean flight decoded column-wise
 
@@ -108,13 +108,13 @@ def test_human_view_is_parsed_column_wise(
             out.write(f"{stamp}can0  {ident}   [{len(message.data)}]  {data}\n")
     expected = capture.tables_from_records(capture.read(human))
     taken = []
-    original = engine._per_frame
+    original = engine.per_frame
 
     def per_frame(frames: object, rows: object, decoder: object) -> object:
         taken.append(len(rows))  # type: ignore[arg-type]
         return original(frames, rows, decoder)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(engine, "_per_frame", per_frame)
+    monkeypatch.setattr(engine, "per_frame", per_frame)
     assert_same_tables(capture.read_tables(human), expected)
     ready = expected["Ready"]
     assert ready.column("timestamp").null_count == (0 if stamped else ready.num_rows)

@@ -30,6 +30,8 @@ from veronte4x.extras import require
 if TYPE_CHECKING:
     import pyarrow
 
+    from veronte4x.capture.columnar.dataset import Summary
+
 __all__ = [
     "BadLine",
     "BusMap",
@@ -46,6 +48,7 @@ __all__ = [
     "stats",
     "tables_from_records",
     "to_dataframe",
+    "to_parquet",
 ]
 
 
@@ -149,6 +152,55 @@ def tables_from_records(
     """
     tables: dict[str, pyarrow.Table] = _columnar().tables_from_records(records, bus_map)
     return tables
+
+
+def to_parquet(
+    source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
+    out_dir: str | os.PathLike[str],
+    bus_map: BusMap | None = None,
+    client: Any = None,
+    progress: bool | None = None,
+    channel: str | None = None,
+) -> Summary:
+    """Decode captures into a Parquet dataset, in memory that does not grow with a file.
+
+    The dataset holds the tables of `read_tables`, partitioned by table in Hive style: the
+    rows of capture ``flight1.log`` for table ``EscStatus`` go to
+    ``out_dir/message=EscStatus/flight1.log-<digest>.parquet`` (``message=errors`` and
+    ``message=unknown`` for those tables), with the table's schema and a last column
+    ``source``, the capture's path as given. Each capture is decoded in batches of
+    frames, DroneCAN transfers reassembled across the batch boundaries exactly as in one
+    piece, so that the rows read back equal those of `read_tables`, in capture order.
+    Files are written under hidden temporary names and renamed once whole, so an
+    interrupted run never leaves a file a reader would take; running again over the same
+    directory replaces each capture's files. Needs the ``parquet`` extra (the ``dask``
+    extra with ``client``).
+
+    Args:
+        source: A capture file or a list of them (not standard input; a path given twice
+            is converted once).
+        out_dir: The dataset's directory (created if missing).
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        client: A ``dask.distributed.Client``: the files are converted on its workers,
+            each file by one worker, into ``out_dir``, which they must all see.
+        progress: Show a progress bar (tqdm's, in a terminal or a notebook); None shows
+            it when standard error is a terminal or in a notebook.
+        channel: Keep only this interface's frames.
+
+    Returns:
+        A ``Summary``: files, frames, rows per table, errors and seconds.
+
+    Raises:
+        FileNotFoundError: A capture does not exist.
+        SourceError: A path is a directory or a file in no format veronte4x knows.
+        MissingExtraError: An extra it needs is not installed; the message names it.
+    """
+    _columnar()
+    require("pyarrow.parquet", "parquet", "writing Parquet")
+    from veronte4x.capture.columnar.dataset import to_parquet as convert
+
+    summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
+    return summary
 
 
 def _columnar() -> Any:

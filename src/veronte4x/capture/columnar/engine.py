@@ -45,9 +45,26 @@ def decode_into(
     """Decode a capture's frames into tables still being built (their rows keyed)."""
     bus_map = bus_map or BusMap()
     if channel is not None:
-        frames = _only_channel(frames, channel)
+        frames = only_channel(frames, channel)
+    tables = Tables(all_specs(bus_map.codec()), list(frames.channels))
+    done, candidates = decode_veronte(frames, bus_map, tables)
+    if bus_map.dronecan:
+        done[_decode_dronecan(frames, candidates, tables)] = True
+    decoder = CaptureDecoder(bus_map)
+    tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
+    return tables
+
+
+def decode_veronte(
+    frames: FrameColumns, bus_map: BusMap, tables: Tables
+) -> tuple[npt.NDArray[np.bool_], npt.NDArray[np.int64]]:
+    """Decode the Veronte frames column-wise into ``tables``.
+
+    Returns:
+        Which rows are decoded, and the rows that may be DroneCAN (plain 29-bit frames on
+        no Veronte ID), in capture order.
+    """
     codec = bus_map.codec()
-    tables = Tables(all_specs(codec), list(frames.channels))
     plain = ~(frames.remote | frames.fd | frames.error) & (frames.length <= 8)
     if frames.long_data:
         plain[list(frames.long_data)] = False
@@ -64,16 +81,11 @@ def decode_into(
     ):
         taken = _decode_veronte(frames, rows, codec, sender, sender_code, bus_map, tables)
         done[taken] = True
-    veronte_rows = sender_code >= 0
-    if bus_map.dronecan:
-        candidates = np.flatnonzero(plain & frames.extended & ~veronte_rows)
-        done[_decode_dronecan(frames, candidates, tables)] = True
-    decoder = CaptureDecoder(bus_map)
-    tables.add_records(_per_frame(frames, np.flatnonzero(~done), decoder))
-    return tables
+    return done, np.flatnonzero(plain & frames.extended & (sender_code < 0))
 
 
-def _only_channel(frames: FrameColumns, channel: str) -> FrameColumns:
+def only_channel(frames: FrameColumns, channel: str) -> FrameColumns:
+    """The frames of one interface (and every bad line)."""
     if channel not in frames.channels:
         return frames.take(np.zeros(0, np.int64))
     return frames.take(np.flatnonzero(frames.channel == frames.channels.index(channel)))
@@ -124,23 +136,47 @@ def _decode_dronecan(
     frames: FrameColumns, rows: npt.NDArray[np.int64], tables: Tables
 ) -> npt.NDArray[np.int64]:
     """Reassemble and decode the regular sessions column-wise; return the rows taken."""
-    types = np.full(len(frames), -1, np.int16)
-    types[rows] = dronecan.type_index(frames.can_id[rows])
-    length = frames.length
-    rows = rows[(types[rows] >= 0) & (length[rows] >= 1)]
+    rows, types, stamp = dronecan_inputs(frames, rows)
     if not len(rows):
         return rows
+    tail = frames.data[rows, frames.length[rows] - 1]
+    order, regular = dronecan.regular_sessions(
+        frames.channel[rows], frames.can_id[rows], stamp[rows], frames.length[rows], tail,
+        types[rows],
+    )  # fmt: skip
+    taken = rows[order[regular]]
+    decode_transfers(frames, taken, types, stamp, tables)
+    return taken
+
+
+def dronecan_inputs(
+    frames: FrameColumns, rows: npt.NDArray[np.int64]
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int16], npt.NDArray[np.float64]]:
+    """The candidate rows the reassembler may take (a known type, a tail byte), with each
+    frame's type index and the timestamp the reassembler is fed (0.0 for none)."""
+    types = np.full(len(frames), -1, np.int16)
+    types[rows] = dronecan.type_index(frames.can_id[rows])
+    rows = rows[(types[rows] >= 0) & (frames.length[rows] >= 1)]
     stamp = np.zeros(len(frames))
     stamp[rows] = np.where(frames.has_time[rows], frames.timestamp[rows], 0.0)
-    tail = frames.data[rows, length[rows] - 1]
-    order, regular = dronecan.regular_sessions(
-        frames.channel[rows], frames.can_id[rows], stamp[rows], length[rows], tail, types[rows]
-    )
-    taken = rows[order[regular]]
-    found = dronecan.transfers(taken, frames.data, length, types)
+    return rows, types, stamp
+
+
+def decode_transfers(
+    frames: FrameColumns,
+    taken: npt.NDArray[np.int64],
+    types: npt.NDArray[np.int16],
+    stamp: npt.NDArray[np.float64],
+    tables: Tables,
+    skip: npt.NDArray[np.bool_] | None = None,
+) -> None:
+    """Decode the transfers of ``taken`` (whole transfers of regular sessions, in session
+    order) into ``tables``, leaving out those whose last frame is a ``skip`` row."""
+    found = dronecan.transfers(taken, frames.data, frames.length, types)
+    keep = np.ones(len(found.last), np.bool_) if skip is None else ~skip[found.last]
     records: list[tuple[int, Record]] = []
-    for index in np.unique(found.type_index).tolist():
-        which = np.flatnonzero(found.type_index == index)
+    for index in np.unique(found.type_index[keep]).tolist():
+        which = np.flatnonzero((found.type_index == index) & keep)
         multi = which[found.crc[which] >= 0]
         computed = dronecan.crc_ok(found, multi)
         wrong = multi[computed != found.crc[multi]]
@@ -152,7 +188,6 @@ def _decode_dronecan(
         good = which[intact[which]]
         records += _decode_type(frames, found, index, good, stamp, tables)
     tables.add_records(records)
-    return taken
 
 
 def _crc_mismatches(
@@ -266,10 +301,10 @@ def _one_transfer(
     return [(key, record)]
 
 
-def _per_frame(
+def per_frame(
     frames: FrameColumns, rows: npt.NDArray[np.int64], decoder: CaptureDecoder
 ) -> Iterator[tuple[int, Record]]:
-    """The records of the rows and bad lines left to the per-frame decoder, in order."""
+    """The records of ``rows`` and the bad lines, through the per-frame decoder, in order."""
     items: list[tuple[int, Frame | BadLine]] = [
         (int(frames.order[row]), frames.frame(row)) for row in rows.tolist()
     ]

@@ -1,0 +1,304 @@
+"""Captures into a Parquet dataset, one file per capture and message type.
+
+The layout (Hive partitioning, one directory per table of `read_tables`)::
+
+    out_dir/message=Status/flight1-3f2a9c01d2e4.parquet
+    out_dir/message=EscStatus/flight1-3f2a9c01d2e4.parquet
+    out_dir/message=errors/flight1-3f2a9c01d2e4.parquet
+
+Each file holds the rows one capture gives for one table, in capture order, with the
+table's fixed schema and a last column ``source``: the capture's path as given. A file is
+written under a hidden temporary name (``.name.tmp``, which Parquet readers skip) and
+renamed when the whole capture is decoded, so a reader never takes a half-written file;
+converting a capture again replaces its files (and removes those of tables it no longer
+has).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import os
+import re
+import time
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import Future, ThreadPoolExecutor, wait
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.columnar.batches import BATCH_BYTES, Batch, read_batches
+from veronte4x.capture.columnar.progress import Bar
+from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
+from veronte4x.capture.source import STDIN
+from veronte4x.errors import SourceError
+
+SOURCE = pa.field("source", pa.dictionary(pa.int32(), pa.string()))
+"""The column naming the capture a row comes from."""
+ROW_GROUP = 1 << 17
+"""Rows of a table gathered before they are written as one row group."""
+BUFFERED = 1 << 25
+"""Bytes of rows all tables may hold back together; past it the largest is written."""
+
+Progress = Callable[[int], None]
+"""Told the bytes of a capture read so far."""
+
+
+@dataclass
+class Summary:
+    """What a conversion wrote.
+
+    Attributes:
+        files: Captures converted.
+        frames: Frames read (bad lines not counted).
+        records: Rows written per table.
+        seconds: Wall time.
+    """
+
+    files: int = 0
+    frames: int = 0
+    records: dict[str, int] = field(default_factory=dict)
+    seconds: float = 0.0
+
+    @property
+    def errors(self) -> int:
+        """Rows of the ``errors`` table."""
+        return self.records.get("errors", 0)
+
+    def add(self, other: Summary) -> None:
+        """Count another conversion's files, frames and rows in this one (not its time)."""
+        self.files += other.files
+        self.frames += other.frames
+        for kind, count in other.records.items():
+            self.records[kind] = self.records.get(kind, 0) + count
+
+    def line(self) -> str:
+        """One line for a person: files, frames, records per table, errors and time."""
+        kinds = sorted((k for k in self.records if k != "errors"), key=lambda k: -self.records[k])
+        total = sum(self.records[k] for k in kinds)
+        per_kind = ", ".join(f"{kind} {self.records[kind]}" for kind in kinds)
+        return (
+            f"{self.files} files, {self.frames} frames, {total} records"
+            + (f" ({per_kind})" if per_kind else "")
+            + f", {self.errors} errors, {self.seconds:.3g} s"
+        )
+
+
+def convert_file(
+    path: str | os.PathLike[str],
+    out_dir: str | os.PathLike[str],
+    bus_map: BusMap | None = None,
+    channel: str | None = None,
+    batch_bytes: int = BATCH_BYTES,
+    progress: Progress | None = None,
+) -> Summary:
+    """Decode one capture batch by batch into the dataset at ``out_dir``.
+
+    Raises:
+        SourceError: The path is standard input (a dataset names its files).
+    """
+    name = os.fspath(path)
+    if name == STDIN:
+        raise SourceError("a dataset is written from files: give a capture file, not -")
+    started = time.perf_counter()
+    per_frame: list[str] = []
+    while True:  # once more per channel with more DroneCAN sessions than a table holds
+        writer = _Writer(Path(out_dir), name)
+        decoder = StreamDecoder(bus_map, channel, per_frame)
+        frames = 0
+        try:
+            for batch in _ahead(read_batches(name, batch_bytes)):
+                frames += len(batch.frames)
+                for kind, table in decoder.feed(batch.frames).items():
+                    writer.write(kind, table)
+                if progress is not None and batch.position is not None:
+                    progress(batch.position)
+        except TooManySessions as signal:
+            writer.abort()
+            per_frame.append(signal.channel)
+            continue
+        except BaseException:
+            writer.abort()
+            raise
+        records = writer.commit()
+        return Summary(1, frames, records, time.perf_counter() - started)
+
+
+def file_name(source: str) -> str:
+    """The name of a capture's files in the dataset: its base name (characters other than
+    letters, digits, ``.``, ``_`` and ``-`` replaced) and a digest of its path as given."""
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)) or "capture"
+    digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
+    return f"{stem}-{digest}.parquet"
+
+
+class _Writer:
+    """The files of one capture: written under temporary names, renamed on `commit`.
+
+    Row groups are compressed and written on a thread of their own, one at a time, while
+    the next batch is decoded.
+    """
+
+    def __init__(self, out_dir: Path, source: str) -> None:
+        self.out_dir = out_dir
+        self.source = source
+        self.name = file_name(source)
+        self._writers: dict[str, pq.ParquetWriter] = {}
+        self._buffers: dict[str, list[pa.Table]] = {}
+        self._bytes: dict[str, int] = {}
+        self.counts: dict[str, int] = {}
+        self._thread = ThreadPoolExecutor(1)
+        self._writing: Future[None] | None = None
+
+    def _paths(self, kind: str) -> tuple[Path, Path]:
+        folder = self.out_dir / f"message={kind}"
+        return folder / f".{self.name}.tmp", folder / self.name
+
+    def write(self, kind: str, table: pa.Table) -> None:
+        buffer = self._buffers.setdefault(kind, [])
+        buffer.append(table)
+        self.counts[kind] = self.counts.get(kind, 0) + len(table)
+        self._bytes[kind] = self._bytes.get(kind, 0) + table.nbytes
+        if sum(len(t) for t in buffer) >= ROW_GROUP:
+            self._flush(kind)
+        elif sum(self._bytes.values()) > BUFFERED:
+            self._flush(max(self._bytes, key=self._bytes.__getitem__))
+
+    def _flush(self, kind: str) -> None:
+        buffer = self._buffers.pop(kind, [])
+        self._bytes.pop(kind, None)
+        if buffer:
+            self._wait()
+            self._writing = self._thread.submit(self._write, kind, buffer)
+
+    def _wait(self) -> None:
+        if self._writing is not None:
+            writing, self._writing = self._writing, None
+            writing.result()
+
+    def _write(self, kind: str, buffer: list[pa.Table]) -> None:
+        table = pa.concat_tables(buffer).unify_dictionaries().combine_chunks()
+        source = pa.DictionaryArray.from_arrays(
+            pa.array(np.zeros(len(table), np.int32)), pa.array([self.source], pa.string())
+        )
+        table = table.append_column(SOURCE, source)
+        writer = self._writers.get(kind)
+        if writer is None:
+            temporary, _ = self._paths(kind)
+            temporary.parent.mkdir(parents=True, exist_ok=True)
+            writer = self._writers[kind] = pq.ParquetWriter(temporary, table.schema)
+        writer.write_table(table, row_group_size=max(len(table), 1))
+
+    def commit(self) -> dict[str, int]:
+        """Finish every file and put it in place; return the rows written per table."""
+        for kind in list(self._buffers):
+            self._flush(kind)
+        self._wait()
+        self._thread.shutdown()
+        for writer in self._writers.values():
+            writer.close()
+        for stale in self.out_dir.glob(f"message=*/{self.name}"):
+            if stale.parent.name.removeprefix("message=") not in self._writers:
+                stale.unlink()
+        for kind in self._writers:
+            temporary, final = self._paths(kind)
+            os.replace(temporary, final)
+        return {kind: self.counts[kind] for kind in self._writers}
+
+    def abort(self) -> None:
+        """Drop the files being written."""
+        with contextlib.suppress(Exception):
+            self._wait()
+        self._thread.shutdown()
+        for kind, writer in self._writers.items():
+            writer.close()
+            self._paths(kind)[0].unlink(missing_ok=True)
+        self._writers.clear()
+        self._buffers.clear()
+
+
+def _ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
+    """The batches, each read on a thread while the one before it is decoded."""
+    with ThreadPoolExecutor(1) as thread:
+        try:
+            coming = thread.submit(next, batches, None)
+            while (batch := coming.result()) is not None:
+                coming = thread.submit(next, batches, None)
+                yield batch
+        finally:
+            coming.cancel()
+            wait([coming])
+            with contextlib.suppress(Exception):
+                coming.result()
+            close = getattr(batches, "close", None)
+            if close is not None:
+                close()
+
+
+def to_parquet(
+    source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
+    out_dir: str | os.PathLike[str],
+    bus_map: BusMap | None = None,
+    client: Any = None,
+    progress: bool | None = None,
+    channel: str | None = None,
+    batch_bytes: int = BATCH_BYTES,
+) -> Summary:
+    """See `veronte4x.capture.to_parquet`."""
+    started = time.perf_counter()
+    paths = sources(source)
+    if client is not None:
+        from veronte4x.capture.columnar.fleet import convert_on
+
+        parts = convert_on(client, paths, out_dir, bus_map, channel, batch_bytes, progress)
+    else:
+        parts = _convert_here(paths, out_dir, bus_map, channel, batch_bytes, progress)
+    total = Summary()
+    for part in parts:
+        total.add(part)
+    total.seconds = time.perf_counter() - started
+    return total
+
+
+def _convert_here(
+    paths: list[str],
+    out_dir: str | os.PathLike[str],
+    bus_map: BusMap | None,
+    channel: str | None,
+    batch_bytes: int,
+    progress: bool | None,
+) -> list[Summary]:
+    """Convert the captures one after the other in this process."""
+    sizes = [os.path.getsize(p) for p in paths]
+    bar = Bar(progress, sum(sizes), "B", "converting")
+    parts = []
+    try:
+        for path, size in zip(paths, sizes, strict=True):
+            read = [0]
+
+            def advance(position: int, read: list[int] = read) -> None:
+                bar.update(position - read[0])
+                read[0] = position
+
+            parts.append(convert_file(path, out_dir, bus_map, channel, batch_bytes, advance))
+            bar.update(size - read[0])
+    finally:
+        bar.close()
+    return parts
+
+
+def sources(source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -> list[str]:
+    """The capture paths of a `to_parquet` call, checked to exist, each once."""
+    paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
+    names = list(dict.fromkeys(os.fspath(p) for p in paths))  # each capture once
+    for name in names:
+        if name == STDIN:
+            raise SourceError("a dataset is written from files: give a capture file, not -")
+        if not os.path.exists(name):
+            raise FileNotFoundError(f"{name}: no such file")
+    return names

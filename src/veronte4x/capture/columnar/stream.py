@@ -1,0 +1,255 @@
+"""Decode a capture batch by batch, in memory that does not grow with it.
+
+`StreamDecoder` takes the frames of a capture in consecutive batches and gives, for each,
+the rows of `veronte4x.capture.read_tables` that batch completes, in capture order: the
+batches' tables, one after the other, are those of the whole capture.
+
+Veronte frames, bad lines and everything the per-frame decoder takes are decoded frame by
+frame or column by column with no state between batches, except the DroneCAN reassembly:
+
+- One per-frame `CaptureDecoder` serves the whole capture, so its reassemblers keep their
+  sessions from one batch to the next.
+- A DroneCAN session (a channel and a CAN ID without its priority bits) stays on the
+  column-wise path while its frames are regular (see `veronte4x.capture.columnar.dronecan`).
+  Its last whole transfer is carried into the next batch as *context* (checked again with
+  the new frames, never decoded twice), and so are the frames of a transfer still open at
+  the end of a batch, provided they are a flawless beginning: then the reassembler would
+  report nothing on them either, whatever follows.
+- A session found irregular leaves the column path for good: its last whole transfer is fed
+  to the reassembler again (the result dropped: it came out in the batch before), which
+  leaves the session's state as that transfer left it in one piece (a session's state after
+  a transfer depends on that transfer only, while its sessions never fill the table), and
+  the reassembler takes the session's frames from there on.
+- A channel with more sessions than the reassembler's table goes to the per-frame decoder
+  whole; the batches seen so far are then wrong, and `TooManySessions` says to start over
+  with that channel in ``per_frame_channels``.
+
+Records always belong to a frame of the batch that completes them, so rows never go back
+in capture order across batches.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+import numpy as np
+import numpy.typing as npt
+import pyarrow as pa
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.columnar import dronecan, engine
+from veronte4x.capture.columnar.frames import FrameColumns, concat
+from veronte4x.capture.columnar.schema import all_specs
+from veronte4x.capture.columnar.tables import Tables
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.dronecan.reassembler import Reassembler
+
+_END = 0x40
+_START = 0x80
+
+
+class TooManySessions(Exception):
+    """A channel has more DroneCAN sessions than the reassembler's table: decode the capture
+    again with this channel in ``per_frame_channels``."""
+
+    def __init__(self, channel: str) -> None:
+        super().__init__(f"more than {dronecan.MAX_SESSIONS} DroneCAN sessions on {channel}")
+        self.channel = channel
+
+
+class StreamDecoder:
+    """Decode one capture's frames batch by batch into the tables of `read_tables`.
+
+    Args:
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
+        per_frame_channels: Channels whose DroneCAN frames all go to the per-frame decoder.
+    """
+
+    def __init__(
+        self,
+        bus_map: BusMap | None = None,
+        channel: str | None = None,
+        per_frame_channels: Iterable[str] = (),
+    ) -> None:
+        self.bus_map = bus_map or BusMap()
+        self.channel = channel
+        self.per_frame_channels = frozenset(per_frame_channels)
+        self.decoder = CaptureDecoder(self.bus_map)
+        self._specs = all_specs(self.bus_map.codec())
+        self._pending: FrameColumns | None = None
+        self._context = np.zeros(0, np.bool_)
+        self._channel_ids: dict[str, int] = {}
+        self._irregular = np.zeros(0, np.int64)
+        self._seen: dict[str, set[int]] = {}
+
+    def feed(self, frames: FrameColumns) -> dict[str, pa.Table]:
+        """The rows the next batch completes, by kind (kinds without rows left out).
+
+        Raises:
+            TooManySessions: Start over with the channel it names decoded frame by frame.
+        """
+        if self.channel is not None:
+            frames = engine.only_channel(frames, self.channel)
+        pending = self._pending
+        if pending is not None and len(pending):
+            joined = concat([pending, frames])
+            context = np.concatenate([self._context, np.zeros(len(frames), np.bool_)])
+        else:
+            joined, context = frames, np.zeros(len(frames), np.bool_)
+        tables = Tables(self._specs, list(joined.channels))
+        done, candidates = engine.decode_veronte(joined, self.bus_map, tables)
+        self._pending, self._context = None, np.zeros(0, np.bool_)
+        if self.bus_map.dronecan:
+            done |= self._dronecan(joined, candidates, context, tables)
+        done |= context
+        tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
+        return tables.finish()
+
+    def _dronecan(
+        self,
+        frames: FrameColumns,
+        candidates: npt.NDArray[np.int64],
+        context: npt.NDArray[np.bool_],
+        tables: Tables,
+    ) -> npt.NDArray[np.bool_]:
+        """Decode the regular sessions, carry what the next batch needs; return the rows
+        taken (decoded or carried)."""
+        taken = np.zeros(len(frames), np.bool_)
+        rows, types, stamp = engine.dronecan_inputs(frames, candidates)
+        if not len(rows):
+            return taken
+        keys = self._keys(frames, rows)
+        self._count_sessions(frames, rows, keys)
+        column = ~np.isin(keys, self._irregular)
+        if self.per_frame_channels:
+            names = np.array([c in self.per_frame_channels for c in frames.channels], np.bool_)
+            column &= ~names[frames.channel[rows]]
+        rows, keys = rows[column], keys[column]
+        if not len(rows):
+            return taken
+        by_session = np.argsort(keys, kind="stable")
+        rows, keys = rows[by_session], keys[by_session]
+        length = frames.length[rows]
+        tail = frames.data[rows, length - 1]
+        opens = np.ones(len(rows), np.bool_)
+        opens[1:] = keys[1:] != keys[:-1]
+        session = np.cumsum(opens) - 1
+        ends = np.append(np.flatnonzero(opens)[1:] - 1, len(rows) - 1)
+        # Transfers left open at the batch end: checked as if they ended there, carried.
+        group = np.maximum.accumulate(np.where((tail & _START) != 0, np.arange(len(rows)), -1))
+        open_end = ends[((tail[ends] & _END) == 0) & (group[ends] >= 0) & (length[ends] == 8)]
+        open_end = open_end[group[open_end] >= np.flatnonzero(opens)[session[open_end]]]
+        carried = np.zeros(len(rows), np.bool_)
+        for end in open_end.tolist():
+            carried[group[end] : end + 1] = True
+        checked = tail.copy()
+        checked[open_end] |= _END
+        order, in_order = dronecan.regular_sessions(
+            frames.channel[rows], frames.can_id[rows], stamp[rows], length, checked, types[rows]
+        )
+        regular = np.empty(len(rows), np.bool_)
+        regular[order] = in_order
+        self._leave_column_path(frames, rows, keys, stamp, context, ~regular & opens)
+        decoded = regular & ~carried
+        engine.decode_transfers(frames, rows[decoded], types, stamp, tables, skip=context)
+        taken[rows[regular]] = True
+        self._carry(frames, rows[regular], tail[regular], carried[regular])
+        return taken
+
+    def _keys(self, frames: FrameColumns, rows: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
+        """Session keys that hold across batches: a channel number of this decoder's and the
+        CAN ID without its priority bits."""
+        codes = np.array(
+            [self._channel_ids.setdefault(c, len(self._channel_ids)) for c in frames.channels]
+            or [0],
+            np.int64,
+        )
+        channel = codes[frames.channel[rows]]
+        keys: npt.NDArray[np.int64] = channel << 24 | (frames.can_id[rows] & 0xFFFFFF)
+        return keys
+
+    def _count_sessions(
+        self, frames: FrameColumns, rows: npt.NDArray[np.int64], keys: npt.NDArray[np.int64]
+    ) -> None:
+        unique, first = np.unique(keys, return_index=True)
+        for key, row in zip(unique.tolist(), rows[first].tolist(), strict=True):
+            name = frames.channels[frames.channel[row]]
+            seen = self._seen.setdefault(name, set())
+            seen.add(key)
+            if len(seen) > dronecan.MAX_SESSIONS and name not in self.per_frame_channels:
+                raise TooManySessions(name)
+
+    def _leave_column_path(
+        self,
+        frames: FrameColumns,
+        rows: npt.NDArray[np.int64],
+        keys: npt.NDArray[np.int64],
+        stamp: npt.NDArray[np.float64],
+        context: npt.NDArray[np.bool_],
+        newly_irregular: npt.NDArray[np.bool_],
+    ) -> None:
+        """Hand irregular sessions to the per-frame decoder for good, each session's last
+        whole transfer (its context) fed to the reassembler first, its result dropped (it
+        was decoded in the batch before), so that the session is as that transfer left it."""
+        starts = np.flatnonzero(newly_irregular)
+        if not len(starts):
+            return
+        self._irregular = np.union1d(self._irregular, keys[starts])
+        for start in starts.tolist():
+            if not context[rows[start]]:
+                continue  # the session starts in this batch: the reassembler starts fresh
+            name = frames.channels[frames.channel[rows[start]]]
+            reassembler = self.decoder.reassemblers.get(name)
+            if reassembler is None:
+                reassembler = self.decoder.reassemblers[name] = Reassembler()
+            at = start
+            while at < len(rows) and context[rows[at]]:  # the last whole transfer, again
+                row = int(rows[at])
+                data = frames.data[row, : frames.length[row]].tobytes()
+                reassembler.feed(int(frames.can_id[row]), data, float(stamp[row]))
+                at += 1
+
+    def _carry(
+        self,
+        frames: FrameColumns,
+        rows: npt.NDArray[np.int64],
+        tail: npt.NDArray[np.uint8],
+        carried: npt.NDArray[np.bool_],
+    ) -> None:
+        """Keep for the next batch each regular session's open transfer and the whole
+        transfer before it (``rows`` in session order, each session opening a transfer)."""
+        transfer = np.cumsum((tail & _START) != 0)
+        whole = np.flatnonzero(~carried)
+        channel = frames.channel[rows[whole]]
+        can_id = frames.can_id[rows[whole]] & 0xFFFFFF
+        last = np.ones(len(whole), np.bool_)
+        last[:-1] = (channel[1:] != channel[:-1]) | (can_id[1:] != can_id[:-1])
+        context = np.isin(transfer, transfer[whole[last]])
+        keep = np.flatnonzero(context | carried)
+        by_order = np.argsort(rows[keep], kind="stable")
+        pending = frames.take(rows[keep][by_order])
+        pending.bad_lines = []
+        self._pending = pending
+        self._context = context[keep][by_order]
+
+
+def split(frames: FrameColumns, sizes: Iterable[int]) -> Iterator[FrameColumns]:
+    """Cut whole-capture columns into consecutive batches of ``sizes`` frames (the rest in a
+    last batch), each with the bad lines before its frames and after the previous batch's."""
+    bad = frames.bad_lines
+    at = taken = 0
+    for size in [*sizes, len(frames)]:
+        stop = min(at + size, len(frames))
+        upto = len(bad)
+        if stop < len(frames):
+            next_order = int(frames.order[stop])
+            upto = taken
+            while upto < len(bad) and bad[upto][0] < next_order:
+                upto += 1
+        part = frames.take(np.arange(at, stop))
+        part.bad_lines = bad[taken:upto]
+        yield part
+        taken, at = upto, stop
+        if stop == len(frames):
+            return

@@ -1,0 +1,62 @@
+"""``veronte4x convert``: captures into a Parquet dataset, on this machine or a Dask cluster."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from veronte4x import capture
+from veronte4x.capture.busmap import BusMap
+from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.options import add_capture_options
+from veronte4x.extras import require
+
+FORMATS = ("parquet",)
+"""What ``--to`` writes."""
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser(
+        "convert",
+        help="convert captures into a Parquet dataset, one directory per message type",
+    )
+    parser.add_argument("files", nargs="+", metavar="IN", help="capture files")
+    parser.add_argument(
+        "--to",
+        nargs=2,
+        required=True,
+        metavar=("FORMAT", "OUT_DIR"),
+        help="the format (parquet) and the dataset's directory",
+    )
+    parser.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="convert on the workers of this Dask scheduler (tcp://host:8786; "
+        "needs veronte4x[dask]); OUT_DIR must be a directory every worker sees",
+    )
+    add_capture_options(parser)
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Convert the captures; progress and a one-line summary go to standard error."""
+    format_, out_dir = args.to
+    if format_ not in FORMATS:
+        print(
+            f"veronte4x: cannot convert to {format_!r}: the formats are {', '.join(FORMATS)}",
+            file=sys.stderr,
+        )
+        return EXIT_USAGE
+    client = None
+    if args.scheduler:
+        distributed = require("distributed", "dask", "--scheduler")
+        client = distributed.Client(args.scheduler, timeout="10s")
+    try:
+        summary = capture.to_parquet(args.files, out_dir, bus_map, client, None, args.channel)
+    finally:
+        if client is not None:
+            client.close()
+    print(f"veronte4x: {summary.line()}, dataset in {out_dir}", file=sys.stderr)
+    return EXIT_OK

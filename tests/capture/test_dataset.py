@@ -1,0 +1,158 @@
+"""Parquet datasets: read back, they equal `read_tables`, whatever the batches; files are
+whole or absent; a second run replaces the first."""
+
+from __future__ import annotations
+
+import gzip
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.dataset as ds
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
+from tests.capture.test_stream import _interleaved_flight
+from veronte4x import capture
+from veronte4x.capture import BusMap
+from veronte4x.capture.columnar import dataset
+from veronte4x.capture.columnar.batches import read_batches
+from veronte4x.capture.columnar.frames import concat
+from veronte4x.capture.columnar.sources import read_frames
+
+FLIGHT = Path(__file__).parents[2] / "examples" / "capture.log"
+
+
+def read_back(out: Path, source: str | None = None) -> dict[str, pa.Table]:
+    """Every table of a dataset (one capture's rows if ``source``), ``source`` dropped."""
+    tables = {}
+    for folder in sorted(out.glob("message=*")):
+        table = ds.dataset(folder, format="parquet").to_table()
+        if source is not None:
+            table = table.filter(pa.compute.equal(table["source"].cast(pa.string()), source))
+        if len(table):
+            kind = folder.name.removeprefix("message=")
+            tables[kind] = table.drop_columns(["source"]).unify_dictionaries()
+    return tables
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]), st.integers(1, 400))
+def test_dataset_equals_read_tables(
+    data: st.DataObject, bus_map: BusMap, channel: str | None, batch_bytes: int
+) -> None:
+    lines = data.draw(captures(bus_map))
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "capture.log", lines)
+        out = Path(folder) / "out"
+        summary = dataset.to_parquet(
+            path, out, bus_map, channel=channel, progress=False, batch_bytes=batch_bytes
+        )
+        expected = capture.read_tables(path, bus_map, channel)
+        got = read_back(out)
+    assert_same_tables(got, expected)
+    assert summary.records == {kind: len(table) for kind, table in expected.items()}
+
+
+def test_batches_join_to_the_whole_file(tmp_path: Path) -> None:
+    text = "".join(line + "\n" for line in _interleaved_flight())
+    odd = text.replace("\n", "\r", 3).encode() + b"(1.0) can0 123#R\r\n(2.0) can0 1"
+    cases = {"plain.log": text.encode(), "odd.log": odd}
+    for name, content in cases.items():
+        (tmp_path / name).write_bytes(content)
+        (tmp_path / f"{name}.gz").write_bytes(gzip.compress(content))
+    truncated = gzip.compress(text.encode())
+    (tmp_path / "cut.log.gz").write_bytes(truncated[: len(truncated) // 2])
+    for path in sorted(tmp_path.iterdir()):
+        whole = read_frames(path)
+        for size in (1, 100, 1 << 20):
+            joined = concat([b.frames for b in read_batches(path, size, 7)])
+            assert len(joined) == len(whole), path
+            for name in ("order", "timestamp", "can_id", "length", "data"):
+                got, expected = getattr(joined, name), getattr(whole, name)
+                assert np.array_equal(got, expected, equal_nan=name == "timestamp"), path
+            assert joined.bad_lines == whole.bad_lines, path
+
+
+def test_several_captures_and_a_second_run(tmp_path: Path) -> None:
+    flight = write(tmp_path / "flight.log", _interleaved_flight())
+    paths = [FLIGHT, flight]
+    out = tmp_path / "data"
+    first = dataset.to_parquet(paths, out, progress=False, batch_bytes=300)
+    second = capture.to_parquet(paths, out, progress=False)
+    assert first.records == second.records
+    assert first.files == second.files == 2
+    for path in paths:
+        assert_same_tables(read_back(out, str(path)), capture.read_tables(path))
+    names = {p.name for p in out.glob("message=*/*")}
+    assert names == {dataset.file_name(str(p)) for p in paths}
+
+
+def test_an_interrupted_run_leaves_no_file_a_reader_takes(tmp_path: Path) -> None:
+    out = tmp_path / "data"
+    stop = KeyboardInterrupt()
+
+    def interrupt(position: int) -> None:
+        raise stop
+
+    with pytest.raises(KeyboardInterrupt):
+        dataset.convert_file(FLIGHT, out, batch_bytes=200, progress=interrupt)
+    assert not [p for p in out.rglob("*") if p.is_file()]
+    # A run killed outright leaves its temporary files: readers skip them.
+    folder = out / "message=Status"
+    folder.mkdir(parents=True)
+    (folder / f".{dataset.file_name(str(FLIGHT))}.tmp").write_bytes(b"PAR1 half")
+    capture.to_parquet(FLIGHT, out, progress=False)
+    assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+
+
+def test_a_second_run_removes_tables_the_capture_no_longer_has(tmp_path: Path) -> None:
+    out = tmp_path / "data"
+    capture.to_parquet(FLIGHT, out, progress=False)
+    capture.to_parquet(FLIGHT, out, progress=False, channel="no-such-bus")
+    assert not list(out.glob("message=*/*.parquet"))
+
+
+def test_progress_bar_on_request(tmp_path: Path, capsys: Any) -> None:
+    capture.to_parquet(FLIGHT, tmp_path / "data", progress=True)
+    assert "converting" in capsys.readouterr().err
+    capture.to_parquet(FLIGHT, tmp_path / "data", progress=False)
+    assert capsys.readouterr().err == ""
+
+
+def test_standard_input_and_missing_files_are_refused(tmp_path: Path) -> None:
+    with pytest.raises(ValueError, match="not -"):
+        capture.to_parquet("-", tmp_path)
+    with pytest.raises(FileNotFoundError, match=r"nothing\.log"):
+        capture.to_parquet([FLIGHT, tmp_path / "nothing.log"], tmp_path)
+
+
+@pytest.mark.parametrize("suffix", [".asc", ".blf", ".mf4"])
+def test_python_can_formats_in_batches(tmp_path: Path, suffix: str) -> None:
+    import can
+
+    whole = read_frames(FLIGHT)
+    path = tmp_path / f"capture{suffix}"
+    with can.Logger(str(path)) as logger:
+        for row in range(len(whole)):
+            frame = whole.frame(row)
+            logger(
+                can.Message(
+                    timestamp=frame.timestamp or 0.0,
+                    arbitration_id=frame.can_id,
+                    is_extended_id=frame.extended,
+                    data=frame.data,
+                    channel=0,
+                )
+            )
+    expected = read_frames(path)
+    joined = concat([b.frames for b in read_batches(path, batch_frames=5)])
+    assert joined.order.tolist() == expected.order.tolist()
+    assert joined.data.tolist() == expected.data.tolist()
+    out = tmp_path / "data"
+    dataset.to_parquet(path, out, progress=False)
+    assert_same_tables(read_back(out), capture.read_tables(path))
