@@ -3,7 +3,7 @@
 Usage: python examples/decode_frames.py examples/capture.log
 
 Lines look like ``(1700000000.000000) can0 0FF#00FF8177FFFF`` (read with
-`veronte4x.readers.read_candump`). CAN IDs follow Embention's
+`veronte4x.capture.open_frames`). CAN IDs follow Embention's
 defaults: AP1, AP2, AP3 and the external autopilot send on 8, 9, 10, 11; the arbiter sends
 on 255. A frame that does not decode is printed with its error and counted, never fatal.
 """
@@ -14,8 +14,8 @@ import sys
 from pathlib import Path
 
 from veronte4x import codec
-from veronte4x.frames import BadLine
-from veronte4x.readers import read_candump
+from veronte4x.capture import open_frames
+from veronte4x.capture.frames import BadLine
 
 ARBITER_ID = 255
 AUTOPILOT_IDS = {8: "AP1", 9: "AP2", 10: "AP3", 11: "external AP"}
@@ -24,7 +24,7 @@ AUTOPILOT_IDS = {8: "AP1", 9: "AP2", 10: "AP3", 11: "external AP"}
 def main(path: str) -> int:
     """Decode every frame of the capture at `path`; return the number of bad frames."""
     bad = 0
-    for frame in read_candump(path):
+    for frame in open_frames(path):
         if isinstance(frame, BadLine):
             print(f"line {frame.line_number}: {frame.reason}")
             bad += 1

@@ -16,10 +16,11 @@ from collections.abc import Callable
 import can
 
 from veronte4x import dronecan
+from veronte4x.client import NoResponseError
+from veronte4x.client.bus import BusClient
 from veronte4x.dronecan import vertiq
 from veronte4x.simulator import SimulatedEsc
 from veronte4x.simulator.can_node import EscNode
-from veronte4x.simulator.client import DroneCanClient
 
 ESC_NODE = 20
 CLIENT_NODE = 10
@@ -37,19 +38,21 @@ def main(clock: Callable[[], float] = time.monotonic, channel: str = "esc-demo")
     ):
         esc = SimulatedEsc(ESC_NODE, esc_index=0, telem_frequency=20, start_time=clock())
         node = EscNode(esc_bus, esc, clock=clock)
-        client = DroneCanClient(client_bus, CLIENT_NODE, clock=clock)
+        client = BusClient(
+            client_bus, CLIENT_NODE, clock=clock, timeout=0.5, while_waiting=node.step
+        )
 
         def ask(request: object) -> object:
-            reply = client.request(request, ESC_NODE, timeout=0.5, while_waiting=node.step)
-            if reply is None:
-                raise SystemExit(f"no reply to {request}")
-            return reply.message
+            try:
+                return client.call(request, ESC_NODE)
+            except NoResponseError as error:
+                raise SystemExit(str(error)) from None
 
         info = ask(dronecan.GetNodeInfoRequest())
         assert isinstance(info, dronecan.GetNodeInfoResponse)
         print(f"node {ESC_NODE}: {info.name.decode()}, mode {info.status.mode.name}")
 
-        heard = client.listen(0.5, while_waiting=node.step)
+        heard = client.listen(0.5)
         counts: dict[str, int] = {}
         for transfer in heard:
             name = type(transfer.message).__name__
@@ -83,8 +86,8 @@ def main(clock: Callable[[], float] = time.monotonic, channel: str = "esc-demo")
         command = vertiq.raw_command({2: 0.6})
         spin: list[dronecan.EscStatus] = []
         for _ in range(10):
-            client.send(command)
-            spin += _esc_status(client.listen(0.1, while_waiting=node.step))
+            client.broadcast(command)
+            spin += _esc_status(client.listen(0.1))
         rpm = [s.rpm for s in spin]
         print(
             f"RawCommand 60 % at index 2: rpm {rpm[0]} -> {rpm[-1]}, esc_index {spin[-1].esc_index}"
@@ -93,9 +96,7 @@ def main(clock: Callable[[], float] = time.monotonic, channel: str = "esc-demo")
         reply = ask(vertiq.restart(bootloader=True))
         assert isinstance(reply, dronecan.RestartNodeResponse)
         print(f"reboot into bootloader: ok={reply.ok}")
-        after = [
-            t for t in client.listen(1.2, while_waiting=node.step) if t.source_node_id == ESC_NODE
-        ]
+        after = [t for t in client.listen(1.2) if t.source_node_id == ESC_NODE]
         print(f"frames from node {ESC_NODE} in the next 1.2 s: {len(after)}")
         return 0 if reply.ok and not after and rpm[-1] > rpm[0] else 1
 

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 from veronte4x import capture
-from veronte4x.plot import arbitration_timeline
+from veronte4x.capture.plot import arbitration_timeline
 
 HERE = Path(__file__).parent
 

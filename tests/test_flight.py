@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import csv
 import dataclasses
+import io
+import json
+import re
 import runpy
 import subprocess
 import sys
@@ -101,3 +105,71 @@ def test_notebook_example(flight: Path, tmp_path: Path) -> None:
     assert str(status.selected.dtype) == "Int64"
     assert set(status.selected.dropna()) == {1, 2}
     assert str(status.alive_1.dtype) == "boolean"
+
+
+def test_replay_without_config_says_what_it_assumed_and_fails_on_disagreements(
+    flight: Path,
+) -> None:
+    result = run("replay", str(flight))
+    assert result.returncode == 1
+    first, last = result.stderr.splitlines()
+    assert first.startswith("veronte4x: no --config: assuming the default arbiter configuration")
+    assert first.endswith("pass the vehicle's arbiter configuration with --config FILE")
+    assert re.fullmatch(r"veronte4x: \d+ decisions, [1-9]\d* disagreements, 0 bad frames", last)
+
+
+def test_decode_output_people_read(flight: Path) -> None:
+    """Enums by name, node names as text, shortest floats, units, in text, JSONL and CSV."""
+    text = run("decode", str(flight)).stdout.splitlines()
+    esc = next(line for line in text if "EscStatus(" in line)
+    assert re.search(
+        r"voltage=[\d.]+ V, current=[\d.]+ A, temperature=[\d.]+ K, rpm=-?\d+ rpm", esc
+    )
+    node = next(line for line in text if "GetNodeInfoResponse(" in line)
+    assert "health=OK, mode=OPERATIONAL" in node and "name='iq_motion.esc'" in node
+    assert text[0].startswith("2025-11-21T15:00:00.")
+    rows = [
+        json.loads(line)
+        for line in run("decode", str(flight), "--output", "jsonl").stdout.splitlines()
+    ]
+    info = next(row for row in rows if row["message"] == "GetNodeInfoResponse")
+    assert (info["name"], info["status.health"], info["status.mode"]) == (
+        "iq_motion.esc",
+        "OK",
+        "OPERATIONAL",
+    )
+    for row in rows:
+        for name in ("value", "score", "voltage", "current", "temperature"):
+            if isinstance(row.get(name), float):
+                digits = repr(abs(row[name])).split("e")[0].replace(".", "").strip("0")
+                assert len(digits) <= 9, row  # a float32 needs 9 significant digits at most
+    table = list(csv.DictReader(io.StringIO(run("decode", str(flight), "--output", "csv").stdout)))
+    info_row = next(row for row in table if row["message"] == "GetNodeInfoResponse")
+    assert (info_row["name"], info_row["status.health"]) == ("iq_motion.esc", "OK")
+    info_message = next(
+        r.message for r in capture.read(flight) if type(r.message).__name__ == "GetNodeInfoResponse"
+    )
+    assert set(capture.fields(info_message)) <= set(info_row)  # one column per field
+
+
+def test_replay_times_iso_or_relative(flight: Path) -> None:
+    config = str(EXAMPLES / "arbiter.toml")
+    iso = run("replay", str(flight), "--config", config).stdout.splitlines()
+    assert iso[0] == "2025-11-21T15:00:00.000000Z  mode        boot: Idle, checking the system"
+    relative = run("replay", str(flight), "--config", config, "--relative-time").stdout
+    assert relative.splitlines()[0] == "0.000000  mode        boot: Idle, checking the system"
+    switch = next(line for line in relative.splitlines() if "switch      AP2 -> AP3" in line)
+    assert switch.startswith("15.08")  # AP2 falls silent at 15 s
+
+
+def test_tables_example(flight: Path, tmp_path: Path) -> None:
+    plot = tmp_path / "tables.png"
+    result = subprocess.run(
+        [sys.executable, str(EXAMPLES / "tables.py"), str(flight), str(plot)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "ESC node 20, 5-15 s from the start: 100 rows" in result.stdout
+    assert "AP3" in result.stdout.split("Selected autopilot changes")[1]
+    assert plot.stat().st_size > 10_000

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
-
 from veronte4x.errors import (
     DecodeError,
     EncodeError,
@@ -12,10 +10,21 @@ from veronte4x.errors import (
     Veronte4xError,
 )
 
-try:
-    __version__ = version("veronte4x")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0+unknown"
+
+def __getattr__(name: str) -> str:
+    """``__version__``, looked up in the package metadata on first use only: the lookup
+    costs as much as importing the codec, which most imports never need it for."""
+    if name != "__version__":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        found = version("veronte4x")
+    except PackageNotFoundError:  # pragma: no cover - running from a source tree
+        found = "0+unknown"
+    globals()["__version__"] = found
+    return found
+
 
 __all__ = [
     "DecodeError",

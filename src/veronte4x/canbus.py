@@ -1,26 +1,82 @@
 """python-can in and out: decode ``can.Message`` objects, make them, listen to a live bus.
 
 Needs the ``can`` extra (``pip install "veronte4x[can]"``). This is the thin I/O adapter;
-decoding itself stays sans-IO in `veronte4x.decoder`.
+decoding itself stays sans-IO in `veronte4x.capture.decoder`.
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from typing import Any
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.canbus") from None
 
 from veronte4x import codec, dronecan
-from veronte4x.busmap import BusMap
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.readers.pythoncan import frame_from_message
-from veronte4x.records import Record
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.readers.pythoncan import frame_from_message
+from veronte4x.capture.records import Record
+from veronte4x.errors import Veronte4xError
+
+
+class BusOpenError(Veronte4xError, OSError):
+    """A CAN bus that cannot be opened; the message says which and why."""
+
+
+def open_bus(
+    interface: str | None = None,
+    channel: str | None = None,
+    bitrate: int | None = None,
+    config_file: str | None = None,
+    options: dict[str, Any] | None = None,
+) -> can.BusABC:
+    """Open a python-can bus from python-can's own settings.
+
+    Args:
+        interface: python-can interface name (``socketcan``, ``pcan``, ``udp_multicast``...);
+            None lets python-can take it from its configuration.
+        channel: The interface's channel.
+        bitrate: Bit rate in bit/s.
+        config_file: A python-can configuration file, read before the other arguments.
+        options: More keyword arguments of the bus (e.g. ``{"port": 43113}``).
+
+    Raises:
+        BusOpenError: python-can could not open it (the message names interface and
+            channel, and python-can's reason).
+    """
+    settings: dict[str, Any] = {}
+    if config_file is not None:
+        if not os.path.isfile(config_file):
+            raise BusOpenError(f"python-can configuration file {config_file!r} not found")
+        settings.update(can.util.load_file_config(config_file))
+    given = {"interface": interface, "channel": channel, "bitrate": bitrate}
+    settings.update({k: v for k, v in given.items() if v is not None})
+    settings.update(options or {})
+    where = ", ".join(f"{k} {settings[k]}" for k in ("interface", "channel") if k in settings)
+    try:
+        return can.Bus(**settings)
+    except (can.CanError, ValueError, TypeError, OSError, ImportError) as error:
+        reason = str(error) or type(error).__name__
+        raise BusOpenError(
+            f"cannot open the CAN bus ({where or 'python-can defaults'}): {reason}"
+        ) from None
+
 
 __all__ = [
+    "BusOpenError",
     "DecodingListener",
     "decode_can_message",
     "frame_to_message",
+    "is_dronecan_frame",
+    "open_bus",
     "to_can_message",
     "to_can_messages",
 ]
@@ -78,6 +134,17 @@ def to_can_message(
     )
 
 
+def is_dronecan_frame(message: can.Message) -> bool:
+    """Whether a bus message can be a DroneCAN frame: extended ID, data, classic CAN."""
+    return (
+        message.is_extended_id
+        and not message.is_remote_frame
+        and not message.is_error_frame
+        and not message.is_fd
+        and 0 < message.dlc <= 8
+    )
+
+
 def frame_to_message(
     frame: dronecan.Frame, timestamp: float = 0.0, channel: str | None = None
 ) -> can.Message:
@@ -123,7 +190,7 @@ class DecodingListener(can.Listener):
     Attach it to a bus with ``can.Notifier(bus, [DecodingListener(records.append)])``. Each
     received message goes through `on_message_received`:
 
-    Example:
+    Examples:
         >>> from veronte4x import dronecan
         >>> records = []
         >>> listener = DecodingListener(records.append)

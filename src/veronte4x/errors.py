@@ -89,8 +89,30 @@ class LayoutError(Veronte4xError, ValueError):
 def argument_type_error(function: str, argument: str, expected: str, value: object) -> TypeError:
     """The `TypeError` for an argument of the wrong type, in one wording everywhere.
 
-    Example:
+    Examples:
         >>> str(argument_type_error("decode", "data", "bytes-like", "00ff"))
         'decode(): data must be bytes-like, not str'
     """
     return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
+
+
+class SourceError(Veronte4xError, ValueError):
+    """A capture that cannot be read as one: a directory, or a format veronte4x does not know.
+
+    Its message names the path, what is wrong and what to do.
+    """
+
+
+class MissingExtraError(Veronte4xError, ImportError):
+    """An optional dependency is not installed; the message names the extra to install.
+
+    Attributes:
+        extra: The extra to install, as in ``pip install 'veronte4x[can]'``.
+    """
+
+    def __init__(self, module: str, extra: str, needed_for: str) -> None:
+        self.extra = extra
+        super().__init__(
+            f"{needed_for} needs the '{module}' package: pip install 'veronte4x[{extra}]'",
+            name=module,
+        )

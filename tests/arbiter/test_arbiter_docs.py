@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from veronte4x.arbiter import AUTOPILOT_TRANSITIONS, TRANSITIONS, docs
+from docgen import arbiter as docs
+
+from veronte4x.arbiter import AUTOPILOT_TRANSITIONS, TRANSITIONS
 
 
 def test_state_diagram_has_every_transition() -> None:

@@ -22,8 +22,8 @@ from veronte4x.arbiter import (
     SystemChecks,
     replay,
 )
-from veronte4x.frames import Frame
-from veronte4x.readers import open_frames
+from veronte4x.capture import open_frames
+from veronte4x.capture.frames import Frame
 
 CONFIG = ArbiterConfig(variables=SEED_VARIABLES)
 

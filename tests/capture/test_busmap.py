@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from veronte4x import codec
-from veronte4x.busmap import BusMap, BusMapError, Role
+from veronte4x.capture.busmap import BusMap, BusMapError, Role
 
 
 def test_defaults_are_embentions_template_ids() -> None:

@@ -4,15 +4,15 @@ import can
 import pytest
 
 from veronte4x import codec
-from veronte4x.busmap import BusMap
 from veronte4x.canbus import (
     DecodingListener,
     decode_can_message,
     to_can_message,
     to_can_messages,
 )
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.records import Record
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.records import Record
 
 
 def test_to_can_message_picks_the_ids_of_the_bus_map() -> None:

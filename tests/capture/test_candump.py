@@ -2,15 +2,19 @@
 
 from pathlib import Path
 
-from veronte4x.frames import BadLine, Frame
-from veronte4x.readers import parse_candump, read_candump
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers import parse_candump
+from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 T = 1436509052.0
 
 
 def test_every_line_of_the_odd_capture() -> None:
-    items = list(read_candump(str(ODD)))
+    items = list(open_frames(ODD))
     assert items == [
         Frame(T + 0.249713, "can0", 0xFF, bytes.fromhex("00ff8177ffff")),
         Frame(T + 0.25, "can0", 0x1004D42A, b"\xc0", extended=True),
@@ -52,4 +56,40 @@ def test_gzip(tmp_path: Path) -> None:
 
     packed = tmp_path / "capture.log.gz"
     packed.write_bytes(gzip.compress(b"(1.5) can0 0FF#01\n"))
-    assert list(read_candump(str(packed))) == [Frame(1.5, "can0", 0xFF, b"\x01")]
+    assert list(open_frames(packed)) == [Frame(1.5, "can0", 0xFF, b"\x01")]
+
+
+def _ascii(data: bytes) -> str:
+    """candump -a's ASCII column: printable bytes as themselves, the rest as dots."""
+    return "".join(chr(b) if 0x1F < b < 0x7F else "." for b in data)
+
+
+@settings(max_examples=300)
+@given(
+    st.binary(min_size=0, max_size=8),
+    st.integers(0, 0x7FF),
+    st.sampled_from(["(1436509052.249713)  ", "(2015-07-10 08:17:32.249713)  ", ""]),
+)
+def test_human_view_with_any_bytes_in_the_ascii_column(data: bytes, ident: int, stamp: str) -> None:
+    """A '#' (or anything else) in candump -a's ASCII column does not make a line a log line."""
+    hexbytes = " ".join(f"{b:02X}" for b in data)
+    line = f"{stamp}can0  {ident:03X}   [{len(data)}]  {hexbytes}   '{_ascii(data)}'\n"
+    [frame] = parse_candump([line])
+    assert isinstance(frame, Frame)
+    assert (frame.can_id, frame.data) == (ident, data)
+    assert frame.timestamp == {"(1436509052.249713)  ": T + 0.249713, "": None}.get(
+        stamp, 1436516252.249713
+    )
+
+
+def test_uavcan_file_read_transfer_with_hash_in_ascii_column() -> None:
+    """A DroneCAN uavcan.protocol.file.Read response whose bytes include 0x23 ('#')."""
+    lines = [
+        "(1600000000.000100)  can0  1030427F   [8]  00 00 00 00 00 23 2F 88   '.....#/.'",
+        "(1600000000.000200)  can0  1030427F   [3]  23 23 48   '##H'",
+    ]
+    frames = list(parse_candump(lines))
+    assert frames == [
+        Frame(1600000000.0001, "can0", 0x1030427F, bytes.fromhex("0000000000232f88"), True),
+        Frame(1600000000.0002, "can0", 0x1030427F, bytes.fromhex("232348"), True),
+    ]

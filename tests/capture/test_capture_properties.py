@@ -3,9 +3,10 @@
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.frames import Frame
-from veronte4x.readers import parse_candump
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import Frame
+from veronte4x.capture.readers import parse_candump
+from veronte4x.capture.records import Record
 
 hex_digits = st.text("0123456789ABCDEFabcdef", max_size=20)
 candump_like = st.builds(
@@ -27,7 +28,7 @@ def test_any_text_gives_records(text: list[str], channel: str | None) -> None:
     fused = list(decoder.decode_candump(text, channel))
     two_stage = list(CaptureDecoder().decode(parse_candump(text, channel)))
     assert fused == two_stage
-    assert all(r.message is not None or r.error is not None for r in fused)
+    assert all(_well_formed(r) for r in fused)
 
 
 frames = st.builds(
@@ -47,4 +48,15 @@ frames = st.builds(
 @given(st.lists(frames, max_size=40))
 def test_any_frames_give_records(stream: list[Frame]) -> None:
     records = list(CaptureDecoder().decode(stream))
-    assert all(r.message is not None or r.error is not None for r in records)
+    assert all(_well_formed(r) for r in records)
+
+
+def _well_formed(record: Record) -> bool:
+    """Decoded, undecoded foreign traffic naming what it was, or an error: one of the three."""
+    if record.error is not None:
+        return record.message is None and record.kind == f"error: {record.error}"
+    if record.message is None:
+        return record.kind == "unknown" and record.detail.startswith(
+            ("11-bit", "29-bit", "DroneCAN")
+        )
+    return record.kind == type(record.message).__name__

@@ -3,10 +3,10 @@
 from pathlib import Path
 
 from veronte4x import codec
-from veronte4x.busmap import BusMap, Role
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.readers import read_candump
-from veronte4x.records import Record
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.records import Record
+from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
@@ -17,16 +17,16 @@ def _kinds(records: list[Record]) -> list[tuple[str, str]]:
 
 
 def test_odd_capture_gives_one_record_per_frame_or_bad_line() -> None:
-    records = list(CaptureDecoder().decode(read_candump(str(ODD))))
+    records = list(CaptureDecoder().decode(open_frames(ODD)))
     assert _kinds(records) == [
         ("arbiter", "Status"),
-        ("node 42", "error: unknown type"),
+        ("node 42", "unknown"),
         ("unknown", "error: remote frame"),
         ("unknown", "error: remote frame"),
-        ("unknown", "error: unknown id"),
+        ("unknown", "unknown"),
         ("dronecan", "error: error frame"),
         ("AP1", "Ready"),
-        ("unknown", "error: unknown id"),
+        ("unknown", "unknown"),
         ("arbiter", "Status"),
         ("AP2", "Ready"),
         ("unknown", "error: remote frame"),
@@ -51,11 +51,11 @@ def test_fused_candump_path_equals_the_two_stage_path() -> None:
     for path in (ODD, EXAMPLE):
         with path.open() as lines:
             fused = list(decoder.decode_candump(lines))
-        assert fused == list(decoder.decode(read_candump(str(path))))
+        assert fused == list(decoder.decode(open_frames(path)))
 
 
 def test_records_carry_role_autopilot_and_raw_bytes() -> None:
-    records = list(CaptureDecoder().decode(read_candump(str(EXAMPLE))))
+    records = list(CaptureDecoder().decode(open_frames(EXAMPLE)))
     ready = records[2]
     assert ready == Record(
         1763737200.01, "can0", 8, Role.AUTOPILOT, 0, None, codec.Ready(ready=True), None, "",
@@ -87,3 +87,36 @@ def test_extended_veronte_ids() -> None:
     records = list(CaptureDecoder(bus).decode_candump(["(1.0) can0 00000001#00FF01"]))
     assert records[0].message == codec.Ready(ready=True)
     assert records[0].sender == "AP1"
+
+
+def test_foreign_traffic_is_undecoded_and_counted_apart() -> None:
+    """CAN IDs outside the bus map and DroneCAN types without a codec are not errors."""
+    from veronte4x.capture.stats import Stats
+    from veronte4x.dronecan import can_id
+
+    lines = [
+        "(1.0) can0 123#0102",
+        "(1.1) can0 01ABCDEF#",
+        f"(2.0) can0 {can_id.message_can_id(16, 1234, 42):08X}#C0",
+        f"(2.1) can0 {can_id.service_can_id(16, 49, True, 7, 42):08X}#C1",
+        f"(2.2) can0 {can_id.anonymous_can_id(16, 2, 99):08X}#C2",
+        "(3.0) can0 008#0400",
+    ]
+    records = list(CaptureDecoder(BusMap(dronecan=False)).decode_candump(lines[:2]))
+    records += list(CaptureDecoder().decode_candump(lines[2:]))
+    assert [(r.kind, r.error, r.message, r.detail, r.data) for r in records[:5]] == [
+        ("unknown", None, None, "11-bit CAN ID 0x123", b"\x01\x02"),
+        ("unknown", None, None, "29-bit CAN ID 0x1abcdef", b""),
+        ("unknown", None, None, "DroneCAN data type 1234", b"\xc0"),
+        ("unknown", None, None, "DroneCAN service type 49", b"\xc1"),
+        ("unknown", None, None, "DroneCAN anonymous data type 2", b"\xc2"),
+    ]
+    assert records[2].node_id == 42 and records[3].node_id == 7
+    counts = Stats()
+    for record in records:
+        counts.add(record)
+    assert counts.unknown["DroneCAN data type 1234"] == 1
+    assert sum(counts.unknown.values()) == 5
+    assert counts.errors == {"unknown command": 1}
+    assert "Record" not in counts.by_type and sum(counts.by_type.values()) == 0
+    assert "records: 6, undecoded: 5, errors: 1" in counts.report()

@@ -1,9 +1,9 @@
 """DroneCAN frames in a capture: one record per transfer, one per reassembly problem."""
 
 from veronte4x import dronecan
-from veronte4x.busmap import Role
-from veronte4x.decoder import CaptureDecoder
-from veronte4x.frames import Frame
+from veronte4x.capture.busmap import Role
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import Frame
 
 STATUS = dronecan.EscStatus(
     error_count=1, voltage=24.0, current=3.5, temperature=300.0, rpm=1200,

@@ -1,12 +1,15 @@
 """The notebook API: records, stats, DataFrame columns and values, the plot."""
 
+import math
 from pathlib import Path
 
 import matplotlib
 import pytest
 
 from veronte4x import capture, codec
-from veronte4x.plot import arbitration_timeline
+from veronte4x.capture.busmap import Role
+from veronte4x.capture.plot import arbitration_timeline, timeline
+from veronte4x.capture.records import Record
 
 matplotlib.use("Agg")
 EXAMPLE = str(Path(__file__).resolve().parents[2] / "examples" / "capture.log")
@@ -49,3 +52,44 @@ def test_plot_draws_scores_and_selection() -> None:
     top, bottom = figure.axes
     assert [line.get_label() for line in top.get_lines()] == ["AP1", "AP2", "AP3"]
     assert list(bottom.get_lines()[0].get_ydata()) == [1, 1]
+
+
+def _status(stamp: float, alive: tuple[bool, bool, bool, bool], selected: int) -> Record:
+    status = codec.Status(
+        selected=selected, arbitrating=True, alive=alive, ready=alive, **STATUS_FLAGS
+    )
+    return Record(stamp, "can0", 255, Role.ARBITER, None, None, status, None, "", b"")
+
+
+def _score(stamp: float, ap: int, score: float) -> Record:
+    message = codec.Score(autopilot=ap, score=score)
+    return Record(stamp, "can0", 255, Role.ARBITER, None, None, message, None, "", b"")
+
+
+STATUS_FLAGS = {name: True for name in (
+    "cbit_ok", "pbit_ok", "pdi_ok", "memory_ok", "can_a_ok", "can_b_ok", "cio_low_ok",
+    "cio_high_ok", "power_ok", "bus_a_voltage_ok", "bus_b_voltage_ok", "arbiter_voltage_ok",
+    "ap1_voltage_ok", "ap2_voltage_ok", "ap3_voltage_ok", "normal_mode",
+)}  # fmt: skip
+
+
+def test_absent_is_absent_and_a_dead_score_line_ends_at_death() -> None:
+    """The external autopilot never appears: no dead shading. AP2 dies at 2.0: its score
+    line ends there, though the arbiter goes on reporting its last score."""
+    up, ap2_dead = (True, True, True, False), (True, False, True, False)
+    records = [
+        _status(0.0, up, 1), _score(0.5, 1, 0.2), _score(0.5, 0, 0.3),
+        _status(1.0, up, 1), _score(1.5, 1, 0.25),
+        _status(2.0, ap2_dead, 0), _score(2.5, 1, 0.25), _score(2.5, 0, 0.35),
+        _status(3.0, ap2_dead, 0), _score(3.5, 1, 0.25),
+    ]  # fmt: skip
+    data = timeline(records)
+    assert data.dead == {1: [(2.0, 3.5)]}
+    times, values = data.scores[1]
+    assert times == [0.5, 1.5, 2.0, 2.0]
+    assert values[:3] == [0.2, 0.25, 0.25] and math.isnan(values[3])
+    assert data.scores[0] == ([0.5, 2.5], [0.3, 0.35])
+    figure = arbitration_timeline(records)
+    top, bottom = figure.axes
+    assert len(bottom.patches) == 1  # AP2's dead span only, nothing for the external one
+    assert list(top.get_lines()[1].get_xdata()) == [0.5, 1.5, 2.0, 2.0]

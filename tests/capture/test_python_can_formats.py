@@ -6,8 +6,8 @@ import can
 import pytest
 
 from veronte4x import capture, codec, dronecan
-from veronte4x.frames import Frame
-from veronte4x.readers import open_frames
+from veronte4x.capture import open_frames
+from veronte4x.capture.frames import Frame
 
 STATUS = dronecan.NodeStatus(
     uptime_sec=7, health=dronecan.Health.OK, mode=dronecan.Mode.OPERATIONAL, sub_mode=0,

@@ -135,6 +135,28 @@ STRATEGIES: dict[tuple[str, dronecan.TransferKind], st.SearchStrategy[dict[str, 
     ("uavcan.protocol.file.BeginFirmwareUpdate", K.RESPONSE): st.fixed_dictionaries(
         {"error": _u(8), "optional_error_message": _bytes(127)}
     ),
+    ("uavcan.protocol.param.ExecuteOpcode", K.REQUEST): st.fixed_dictionaries(
+        {"opcode": _u(8), "argument": _i(48)}
+    ),
+    ("uavcan.protocol.param.ExecuteOpcode", K.RESPONSE): st.fixed_dictionaries(
+        {"argument": _i(48), "ok": st.booleans()}
+    ),
+    ("uavcan.protocol.file.GetInfo", K.REQUEST): st.fixed_dictionaries(
+        {"path": st.fixed_dictionaries({"path": _bytes(200)})}
+    ),
+    ("uavcan.protocol.file.GetInfo", K.RESPONSE): st.fixed_dictionaries(
+        {
+            "size": _u(40),
+            "error": st.fixed_dictionaries({"value": _i(16)}),
+            "entry_type": st.fixed_dictionaries({"flags": _u(8)}),
+        }
+    ),
+    ("uavcan.protocol.file.Read", K.REQUEST): st.fixed_dictionaries(
+        {"offset": _u(40), "path": st.fixed_dictionaries({"path": _bytes(200)})}
+    ),
+    ("uavcan.protocol.file.Read", K.RESPONSE): st.fixed_dictionaries(
+        {"error": st.fixed_dictionaries({"value": _i(16)}), "data": _bytes(256)}
+    ),
 }
 
 

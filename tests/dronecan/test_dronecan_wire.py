@@ -26,6 +26,9 @@ def test_crc_check_value_and_seeds() -> None:
         "uavcan.protocol.param.GetSet": 0xFB10,
         "uavcan.protocol.RestartNode": 0x1F7F,
         "uavcan.protocol.file.BeginFirmwareUpdate": 0x729E,
+        "uavcan.protocol.param.ExecuteOpcode": 0xD7D4,
+        "uavcan.protocol.file.GetInfo": 0x14B9,
+        "uavcan.protocol.file.Read": 0x2F12,
     }
 
 

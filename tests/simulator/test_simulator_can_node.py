@@ -1,4 +1,4 @@
-"""The python-can adapter and client on the virtual bus, with clocks the tests drive."""
+"""The python-can adapter and the client on the virtual bus, with clocks the tests drive."""
 
 from __future__ import annotations
 
@@ -9,10 +9,11 @@ import can
 import pytest
 
 from veronte4x import dronecan
+from veronte4x.client import NoResponseError
+from veronte4x.client.bus import BusClient
 from veronte4x.dronecan import vertiq
 from veronte4x.simulator import SimulatedEsc
 from veronte4x.simulator.can_node import EscNode, to_message, wanted
-from veronte4x.simulator.client import DroneCanClient
 
 from .support import ESC, StepClock
 
@@ -75,33 +76,37 @@ def test_client_requests_and_the_node_answers(buses: tuple[can.BusABC, can.BusAB
     clock = StepClock(0.001)
     esc = SimulatedEsc(ESC, telem_frequency=0)
     node = EscNode(esc_bus, esc, clock=clock)
-    client = DroneCanClient(client_bus, 10, clock=clock, priority=24)
-    reply = client.request(
-        vertiq.set_parameter("esc_index", 2), ESC, timeout=0.1, while_waiting=node.step
+    client = BusClient(
+        client_bus, 10, clock=clock, priority=24, timeout=0.1, while_waiting=node.step
     )
-    assert reply is not None
-    assert reply.message.value == dronecan.IntegerValue(2)
-    assert (reply.transfer_id, reply.priority, reply.source_node_id) == (0, 24, ESC)
-    again = client.request(
-        vertiq.get_parameter("esc_index"), ESC, timeout=0.1, while_waiting=node.step
-    )
-    assert again is not None and again.transfer_id == 1
-    info = client.request(dronecan.GetNodeInfoRequest(), ESC, while_waiting=node.step)
-    assert info is not None and info.message.name == b"iq_motion.esc"
-    assert info.transfer_id == 0  # counted per service type and destination
+    reply = client.call(vertiq.set_parameter("esc_index", 2), ESC)
+    assert reply.value == dronecan.IntegerValue(2)
+    again = client.call(vertiq.get_parameter("esc_index"), ESC)
+    assert again.value == dronecan.IntegerValue(2)
+    info = client.call(dronecan.GetNodeInfoRequest(), ESC)
+    assert info.name == b"iq_motion.esc"
+    ids = client.protocol.transfer_ids
+    # counted per (kind, data type, destination): GetSet twice, GetNodeInfo once
+    assert ids.next(dronecan.TransferKind.REQUEST, 11, ESC) == 2
+    assert ids.next(dronecan.TransferKind.REQUEST, 1, ESC) == 1
     assert esc.esc_index == 2
-    client.send(vertiq.raw_command([0.0, 0.0, 0.5]))
+    client.broadcast(vertiq.raw_command([0.0, 0.0, 0.5]))
     node.step()
     assert esc.state.throttle == vertiq.raw_to_throttle(4096)
-    heard = client.listen(0.01, while_waiting=node.step)
-    assert [type(t.message).__name__ for t in heard] == ["NodeStatus"]
+    heard = client.listen(1.0)
+    assert [type(t.message).__name__ for t in heard] == ["NodeStatus"]  # 1 Hz, no telemetry
 
 
 def test_request_times_out_by_the_clock(buses: tuple[can.BusABC, can.BusABC]) -> None:
     _, client_bus = buses
     clock = StepClock(0.004)
-    client = DroneCanClient(client_bus, 10, clock=clock)
-    assert client.request(dronecan.GetNodeInfoRequest(), ESC, timeout=0.01) is None
+    client = BusClient(client_bus, 10, clock=clock, timeout=0.01, retries=1)
+    with pytest.raises(NoResponseError) as error:
+        client.call(dronecan.GetNodeInfoRequest(), ESC)
+    assert str(error.value) == (
+        f"node {ESC} did not answer uavcan.protocol.GetNodeInfo (sent 2 times, 0.01 s each); "
+        "check the node id, the bus and the bit rate"
+    )
     assert client.listen(0.01) == []
 
 
@@ -109,8 +114,8 @@ def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.Bus
     esc_bus, client_bus = buses
     clock = StepClock(0.01)
     node = EscNode(esc_bus, SimulatedEsc(ESC, telem_frequency=10, start_time=0.0), clock=clock)
-    other = DroneCanClient(client_bus, 10, clock=clock)
-    other.send(vertiq.raw_command([0.2]))
+    other = BusClient(client_bus, 10, clock=clock)
+    other.broadcast(vertiq.raw_command([0.2]))
     node.run(1.5, max_wait=0.001)  # real seconds blocked per wait on the empty bus
     assert node.esc.state.throttle == vertiq.raw_to_throttle(1638)
     heard = [type(t.message).__name__ for t in other.listen(0.0)]

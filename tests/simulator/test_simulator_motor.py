@@ -104,7 +104,7 @@ def test_custom_model_constants() -> None:
 
 
 def test_docs_tables_describe_every_constant_and_parameter() -> None:
-    from veronte4x.simulator import docs
+    from docgen import simulator as docs
 
     constants = docs.model_constants_table().splitlines()
     assert len(constants) == 2 + len(fields(MotorModel))
@@ -113,7 +113,7 @@ def test_docs_tables_describe_every_constant_and_parameter() -> None:
         == "| `max_rpm` | 10000.0 | rpm | Speed at full throttle (RawCommand 8191), rpm. |"
     )
     assert docs.parameters_table().splitlines()[2:] == [
-        "| 0 | `uavcan_node_id` | 1 | 127 | after a restart (seed 004 3.1) |",
+        "| 0 | `uavcan_node_id` | 1 | 127 | after a restart (Vertiq document, 3.1) |",
         "| 1 | `bit_rate` | 10000 | 1000000 | at once, stored only: the simulator has no wire |",
         "| 2 | `esc_index` | 0 | 19 | at once: the next RawCommand |",
         "| 3 | `zero_behavior` | 0 | 2 | at once: the next zero setpoint |",

@@ -232,7 +232,12 @@ def test_begin_firmware_update_enters_software_update_mode() -> None:
     assert not esc.motor.driven
     feed(esc, vertiq.raw_command([0.5]), 0.3)
     assert esc.state.throttle == 0.0  # commands are ignored during an update
-    assert decode(esc.poll(1.0))[0].message.mode == dronecan.Mode.SOFTWARE_UPDATE
+    sent = decode(esc.poll(1.0))
+    # It asks the file server (node 1, the caller) about the image, then keeps reporting.
+    assert sent[0].message == dronecan.FileGetInfoRequest(dronecan.Path(b"fw/esc.bin"))
+    assert sent[0].destination_node_id == 1
+    statuses = [t.message for t in sent if isinstance(t.message, dronecan.NodeStatus)]
+    assert statuses[0].mode == dronecan.Mode.SOFTWARE_UPDATE
     again = ask(esc, _firmware(7), 1.1)
     assert again.message.error == dronecan.FirmwareUpdateError.IN_PROGRESS
     ask(esc, vertiq.restart(), 1.2)

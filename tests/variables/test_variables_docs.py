@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from veronte4x.variables import BIT_VARIABLES, INTEGER_VARIABLES, PDI_ERRORS, REAL_VARIABLES, docs
+from docgen import variables as docs
+
+from veronte4x.variables import BIT_VARIABLES, INTEGER_VARIABLES, PDI_ERRORS, REAL_VARIABLES
 
 
 def _rows(markdown: str) -> list[str]:

@@ -158,8 +158,8 @@ def test_selected_entries_in_full() -> None:
         "OK. This bit is initialized with 1. When it is set as 0, it cannot recover until 1x "
         "is restarted",
         deprecated=True,
-        correction='the name cell also reads "Warning: Deprecated variable" (OCR "Varning", '
-        '"Vyriable"), kept as deprecated=True; name OCR variants "114X CAN failed", '
+        correction='the name cell also reads "Warning: Deprecated variable" (printed "Varning", '
+        '"Vyriable"), kept as deprecated=True; name printed variously as "114X CAN failed", '
         '"AY CAN foiled", "4A CAN lalled" (lines 131-143)',
     )
     assert BIT_VARIABLES[8] == Variable(

@@ -1,6 +1,6 @@
 """A sans-IO model of the Veronte 4x arbiter: scores, selection, status management, replay.
 
-Example:
+Examples:
     >>> from veronte4x import arbiter
     >>> variables = [arbiter.VariableConfig(weight=1.0, absolute=False),
     ...              arbiter.VariableConfig(weight=1.0, absolute=False),

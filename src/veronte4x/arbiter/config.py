@@ -1,11 +1,12 @@
 """Arbiter configuration: the 4x PDI Builder's Config menu and CAN setup.
 
-Source: seed 003 ("Config menu": preferred, method, holding CAP time, hysteresis, external
+Source: 4x PDI Builder manual, Arbitration ("Config menu": preferred, method, holding CAP time,
+hysteresis, external
 autopilot, per-variable max error, weight and absolute flag, at most 32 variables; "CAN
 Setup": status and score sending and periods, status message ID, autopilot IDs, extended
-flag). Defaults follow Embention's templates (notes/veronte-protocol.md, "Frame model" and
-"Timing"): autopilots on IDs 8, 9, 10, 11, arbiter on 255, standard IDs, Status every 0.25 s,
-Score every 3 s. Where the seeds are silent the field is an option with a documented default
+flag). Defaults follow Embention's manuals and configuration templates: autopilots on IDs 8, 9, 10,
+11, arbiter on 255, standard IDs, Status every 0.25 s,
+Score every 3 s. Where the manuals are silent the field is an option with a documented default
 (see the arbiter decisions page).
 """
 
@@ -18,11 +19,12 @@ from dataclasses import dataclass
 
 from veronte4x.arbiter.errors import ConfigError
 
-#: Autopilot numbers as the Status and Score messages use them (seed 000 section 3.1.1).
+#: Autopilot numbers as the Status and Score messages use them (4x Software Manual, section 3.1.1).
 AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external AP")
 #: Index of the external autopilot.
 EXTERNAL = 3
-#: "Currently, the maximum amount of arbitration variables supported is 32." (seed 003)
+#: "Currently, the maximum amount of arbitration variables supported is 32." (4x PDI Builder
+#: manual, Arbitration)
 MAX_VARIABLES = 32
 _STANDARD_ID_MAX = 0x7FF
 _EXTENDED_ID_MAX = 0x1FFF_FFFF
@@ -34,7 +36,7 @@ def autopilot_name(autopilot: int) -> str:
 
 
 class Method(enum.Enum):
-    """Arbitration method (seed 003, Config menu, item 2)."""
+    """Arbitration method (4x PDI Builder manual, Arbitration, Config menu, item 2)."""
 
     ALWAYS_BEST = "always best"
     CHANGE_IF_WORST = "change if worst"
@@ -54,7 +56,8 @@ _FIXED = {Method.FIXED_0: 0, Method.FIXED_1: 1, Method.FIXED_2: 2}
 
 
 class MaxErrorMode(enum.Enum):
-    """What a variable's max error does (seed 003 only says "Arbitration maximum error").
+    """What a variable's max error does (the 4x PDI Builder manual only says "Arbitration maximum
+    error").
 
     Attributes:
         IGNORE: Kept as configuration, no effect on scores (default).
@@ -94,7 +97,7 @@ class Failover(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class VariableConfig:
-    """One arbitration variable (seed 003, Config menu, items 6 to 8).
+    """One arbitration variable (4x PDI Builder manual, Arbitration, Config menu, items 6 to 8).
 
     Its number on the wire is its position in `ArbiterConfig.variables`.
 

@@ -25,6 +25,7 @@ Keys are the `ArbiterConfig` attribute names; enum options take their value stri
 from __future__ import annotations
 
 import dataclasses
+import os
 import sys
 from collections.abc import Mapping
 from typing import Any
@@ -38,6 +39,7 @@ from veronte4x.arbiter.config import (
     VariableConfig,
 )
 from veronte4x.arbiter.errors import ConfigError
+from veronte4x.extras import require
 
 _ENUMS: dict[str, type[Any]] = {
     "method": Method,
@@ -80,20 +82,21 @@ def config_from_dict(document: Mapping[str, Any]) -> ArbiterConfig:
         raise ConfigError("(file)", table, str(error)) from None
 
 
-def load_config(path: str) -> ArbiterConfig:
+def load_config(path: str | os.PathLike[str]) -> ArbiterConfig:
     """Read an `ArbiterConfig` from a TOML file.
 
     Raises:
         ConfigError: Unknown keys or values the configuration does not allow.
+        MissingExtraError: Python 3.10 without tomli (the ``toml`` extra).
         OSError: The file cannot be read.
     """
     if sys.version_info >= (3, 11):
         import tomllib
     else:  # pragma: no cover - Python 3.10
-        import tomli as tomllib
+        tomllib = require("tomli", "toml", "reading TOML on Python 3.10")
     with open(path, "rb") as file:
         try:
             document = tomllib.load(file)
         except tomllib.TOMLDecodeError as error:
-            raise ConfigError("(file)", path, f"valid TOML ({error})") from None
+            raise ConfigError("(file)", os.fspath(path), f"valid TOML ({error})") from None
     return config_from_dict(document)

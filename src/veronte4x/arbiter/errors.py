@@ -6,7 +6,7 @@ from veronte4x.errors import Veronte4xError
 
 
 class ConfigError(Veronte4xError, ValueError):
-    """An arbiter configuration that the seeds do not allow.
+    """An arbiter configuration that the manuals do not allow.
 
     Attributes:
         field: The offending field of `ArbiterConfig` or `VariableConfig`.

@@ -1,6 +1,6 @@
 """The status-management state machines, as explicit transition tables.
 
-Source: seed 002 and seed 000 chapter 4 ("Status management"): boot into Idle, Normal when
+Source: the 4x Software Manual, section 4 ("Status management"): boot into Idle, Normal when
 the checks pass, Maintenance when errors persist 30 s or on the maintenance command,
 arbitration once every autopilot is Ready, Alive to Dead for good. The model looks every
 transition up here, and the docs draw their state diagrams from these same tables.
@@ -61,7 +61,7 @@ class AutopilotEvent(enum.Enum):
 
 
 #: (phase, event) -> next phase; an event not listed for a phase leaves it unchanged.
-#: Nothing leaves DEAD: "The Dead status is not reversible" (seed 002).
+#: Nothing leaves DEAD: "The Dead status is not reversible" (4x Software Manual, section 4).
 AUTOPILOT_TRANSITIONS: dict[tuple[AutopilotPhase, AutopilotEvent], AutopilotPhase] = {
     (AutopilotPhase.WAITING, AutopilotEvent.READY): AutopilotPhase.READY,
     (AutopilotPhase.READY, AutopilotEvent.NOT_READY): AutopilotPhase.WAITING,

@@ -1,9 +1,10 @@
 """The Arbiter: a sans-IO model of the Veronte 4x arbiter.
 
 Frames and inputs come in with their timestamps; the model never reads a clock. Status
-management follows seed 002 and seed 000 chapter 4 (through the tables of
-`veronte4x.arbiter.machine`), scores seed 003 (`veronte4x.arbiter.scores`), selection seed
-003's Config menu (`veronte4x.arbiter.selection`). Frames are decoded and encoded by
+management follows the 4x Software Manual, section 4 (through the tables of
+`veronte4x.arbiter.machine`), scores the 4x PDI Builder manual, Arbitration
+(`veronte4x.arbiter.scores`), selection its
+Config menu (`veronte4x.arbiter.selection`). Frames are decoded and encoded by
 `veronte4x.codec`.
 """
 
@@ -130,11 +131,13 @@ class Arbiter:
             self._checks_pass(timestamp)
 
     def set_fts(self, timestamp: float, autopilot: int, ok: bool) -> None:
-        """Report an autopilot's FTS signal: not OK means "System Not OK" (seed 002)."""
+        """Report an autopilot's FTS signal: not OK means "System Not OK" (4x Software Manual,
+        section 4)."""
         self._set_signal(self._fts_ok, AutopilotEvent.FTS_BAD, timestamp, autopilot, ok)
 
     def set_watchdog(self, timestamp: float, autopilot: int, ok: bool) -> None:
-        """Report an autopilot's watchdog signal (seed 002: "The watchdog signal ... is
+        """Report an autopilot's watchdog signal (4x Software Manual, section 4: "The watchdog
+        signal ... is
         not ok" kills it)."""
         self._set_signal(self._watchdog_ok, AutopilotEvent.WATCHDOG_BAD, timestamp, autopilot, ok)
 
@@ -172,7 +175,7 @@ class Arbiter:
         Status every ``status_period`` in Normal mode when ``send_status`` is set, and
         always in Maintenance; one Score per taking-part autopilot with a score every
         ``score_period`` in Normal mode when ``send_score`` is set; nothing while Idle
-        (seed 002, "Status message"). A late poll sends each message once.
+        (4x Software Manual, section 4, "Status message"). A late poll sends each message once.
         """
         self.advance(timestamp)
         frames: list[Frame] = []
@@ -192,7 +195,7 @@ class Arbiter:
         """The Status message for the current state, in its 6-byte 4x form.
 
         Bytes 4-5 come from the system checks; CBIT also fails when arbitration runs with
-        no autopilot alive (seed 000 section 2.1: "There is not any autopilot alive.").
+        no autopilot alive (4x Software Manual, section 2.1: "There is not any autopilot alive.").
         """
         checks = self._checks
         alive = self._flags(AutopilotPhase.ALIVE)

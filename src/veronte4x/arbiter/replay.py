@@ -7,7 +7,7 @@ the capture (on ``config.arbiter_id``) are compared with the model at their time
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from veronte4x import codec
@@ -16,6 +16,7 @@ from veronte4x.arbiter.machine import Phase
 from veronte4x.arbiter.model import Arbiter
 from veronte4x.arbiter.state import ArbiterState, Decision, SystemChecks
 from veronte4x.errors import DecodeError
+from veronte4x.numbers import shortest
 
 #: One captured frame: (timestamp in s, CAN ID, data bytes).
 CapturedFrame = tuple[float, int, bytes]
@@ -47,10 +48,15 @@ class Disagreement:
 
     def __str__(self) -> str:
         span = f"{self.start:.3f}-{self.end:.3f} s, {self.frames} frame(s)"
-        return (
-            f"{self.start:10.3f} s  DISAGREES   {self.field}: recorded "
-            f"{_show(self.field, self.recorded)}, model {_show(self.field, self.modelled)} ({span})"
-        )
+        return f"{self.start:10.3f} s  {self._what()} ({span})"
+
+    def body(self, when: Callable[[float], str]) -> str:
+        """The disagreement without its start time; ``when`` formats its end time."""
+        return f"{self._what()} (until {when(self.end)}, {self.frames} frame(s))"
+
+    def _what(self) -> str:
+        recorded, modelled = _show(self.field, self.recorded), _show(self.field, self.modelled)
+        return f"DISAGREES   {self.field}: recorded {recorded}, model {modelled}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,7 +76,11 @@ class FrameError:
     error: str
 
     def __str__(self) -> str:
-        return f"{self.time:10.3f} s  BAD FRAME   id {self.can_id}: {self.error}"
+        return f"{self.time:10.3f} s  {self.body()}"
+
+    def body(self) -> str:
+        """The bad frame without its time."""
+        return f"BAD FRAME   id {self.can_id}: {self.error}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,13 +99,28 @@ class ReplayResult:
     errors: tuple[FrameError, ...]
     state: ArbiterState
 
-    def timeline(self) -> str:
-        """Decisions, disagreements and bad frames as text, one a line, in time order."""
-        entries: list[tuple[float, int, str]] = [
-            (item.time, 0, str(item)) for item in self.decisions
-        ]
-        entries += [(item.start, 1, str(item)) for item in self.disagreements]
-        entries += [(item.time, 2, str(item)) for item in self.errors]
+    def timeline(self, when: Callable[[float], str] | None = None) -> str:
+        """Decisions, disagreements and bad frames as text, one a line, in time order.
+
+        Args:
+            when: Formats a time, such as `veronte4x.times.format_time` (ISO 8601 for Unix
+                time); by default seconds with milliseconds, ``12.345 s``.
+        """
+        if when is None:
+            entries: list[tuple[float, int, str]] = [
+                (item.time, 0, str(item)) for item in self.decisions
+            ]
+            entries += [(item.start, 1, str(item)) for item in self.disagreements]
+            entries += [(item.time, 2, str(item)) for item in self.errors]
+        else:
+            entries = [
+                (item.time, 0, f"{when(item.time)}  {item.body()}") for item in self.decisions
+            ]
+            entries += [
+                (item.start, 1, f"{when(item.start)}  {item.body(when)}")
+                for item in self.disagreements
+            ]
+            entries += [(item.time, 2, f"{when(item.time)}  {item.body()}") for item in self.errors]
         return "\n".join(line for _, _, line in sorted(entries, key=lambda e: (e[0], e[1])))
 
 
@@ -103,7 +128,7 @@ def _show(field: str, value: Value) -> str:
     if field == "selected" and isinstance(value, int):
         return autopilot_name(value)
     if isinstance(value, float):
-        return f"{value:.6g}"
+        return repr(shortest(value, 32))
     return str(value)
 
 

@@ -1,9 +1,11 @@
-"""Scores from arbitration variables (seed 003, "Arbitration" to "Arbitration Example").
+"""Scores from arbitration variables (4x PDI Builder manual, Arbitration, "Arbitration" to
+"Arbitration Example").
 
 "After receiving the value, each variable is multiplied by their respective arbitration
 weight, and then it is used to compute the score for their respective unit." Absolute
 variables "are added directly to the score"; a relative variable contributes "its Deviation
-from the Average of the same variable from each autopilot". Lower is better. Seed 002: "If
+from the Average of the same variable from each autopilot". Lower is better. 4x Software Manual,
+section 4: "If
 the number of Alive autopilots is 2 or less, relative arbitration variables are disabled".
 """
 
@@ -16,7 +18,8 @@ from dataclasses import dataclass
 from veronte4x.arbiter.config import MaxErrorMode, VariableConfig
 from veronte4x.arbiter.errors import InputError
 
-#: Relative variables need at least this many alive autopilots (seed 002, "Alive status").
+#: Relative variables need at least this many alive autopilots (4x Software Manual, section 4,
+#: "Alive status").
 MIN_AUTOPILOTS_FOR_RELATIVE = 3
 
 
@@ -68,7 +71,7 @@ def _rows(
         relative = len(pool) >= MIN_AUTOPILOTS_FOR_RELATIVE
     clamp = max_error_mode is MaxErrorMode.CLAMP
     # Per variable: mean (None for absolute ones), weight, max error, enabled.
-    # Weighting first and taking the deviation of the weighted values, as the seed words
+    # Weighting first and taking the deviation of the weighted values, as the manual words
     # it, equals weighting the deviation: |w*v - mean(w*v)| = |w| * |v - mean(v)|.
     plan: list[tuple[float | None, float, float, bool]] = []
     for number, variable in enumerate(variables):
@@ -124,9 +127,9 @@ def compute_scores(
 ) -> dict[int, float]:
     """The score of each autopilot of ``values``: the sum of its contributions.
 
-    Takes the arguments of `explain_scores`. For the seed's example,
+    Takes the arguments of `explain_scores`. For the manual's example,
     ``compute_scores({0: [0.12, 0.30, 1.7], 1: [0.10, 0.28, 1.9], 2: [0.07, 0.27, 1.5]},
-    variables)`` gives about ``{0: 0.057, 1: 0.026, 2: 0.055}`` (the seed rounds each term
+    variables)`` gives about ``{0: 0.057, 1: 0.026, 2: 0.055}`` (the manual rounds each term
     to 0.058, 0.026, 0.054).
     """
     scores = dict.fromkeys(values, 0.0)

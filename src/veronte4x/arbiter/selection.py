@@ -1,9 +1,12 @@
-"""Which autopilot to select: the methods of seed 003 and the alive rules of seed 002.
+"""Which autopilot to select: the methods of the 4x PDI Builder manual
+(Arbitration) and the alive rules of the 4x Software Manual, section 4.
 
-Seed 003, Config menu: "Preferred. The preferred autopilot will be chosen in case of a
+4x PDI Builder manual, Arbitration, Config menu: "Preferred. The preferred autopilot will be chosen
+in case of a
 score draw."; the methods Always best, Change if worst, Round robin, Fixed 0/1/2, Fixed while
 ok; "Hysteresis ... the difference between them needs to be bigger than this proportional
-value ... proportional to the score of the selected autopilot". Seed 002: "A Dead autopilot
+value ... proportional to the score of the selected autopilot". 4x Software Manual, section 4: "A
+Dead autopilot
 can never be selected again", "If only one autopilot is Alive, it will be selected no matter
 the score.", "If all autopilots are Dead, the Preferred autopilot will be selected."
 """
@@ -46,7 +49,7 @@ def rank(score: float) -> float:
 def beats(offered: float, current: float, hysteresis: float) -> bool:
     """Whether ``offered`` is lower than ``current`` by more than ``hysteresis x |current|``.
 
-    For the seed's non-negative scores this is ``offered < current x (1 - hysteresis)``.
+    For the manual's non-negative scores this is ``offered < current x (1 - hysteresis)``.
     """
     offered, current = rank(offered), rank(current)
     if math.isinf(current):

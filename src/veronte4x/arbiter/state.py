@@ -12,7 +12,8 @@ Flags4 = tuple[bool, bool, bool, bool]
 
 
 class Mode(enum.Enum):
-    """The arbiter's mode (seed 002): Idle after boot, then Normal or Maintenance."""
+    """The arbiter's mode (4x Software Manual, section 4): Idle after boot, then Normal or
+    Maintenance."""
 
     IDLE = "Idle"
     NORMAL = "Normal"
@@ -31,8 +32,9 @@ MODE_OF_PHASE = {
 class SystemChecks:
     """The arbiter's own built-in checks: an input of the model, all OK by default.
 
-    They fill bytes 4 and 5 of the Status message (seed 000 section 3.1.1). The boot
-    checks pass when every item is OK (seed 002: "If all checks success, the Arbiter will
+    They fill bytes 4 and 5 of the Status message (4x Software Manual, section 3.1.1). The boot
+    checks pass when every item is OK (4x Software Manual, section 4: "If all checks success, the
+    Arbiter will
     enter Normal mode"). CBIT and "power OK" are derived, not inputs.
 
     Attributes:
@@ -67,7 +69,8 @@ class SystemChecks:
 
     @property
     def power_ok(self) -> bool:
-        """ "Power OK. All power indicators are OK." (seed 000 section 3.1.1, byte 5 bit 0)."""
+        """ "Power OK. All power indicators are OK." (4x Software Manual, section 3.1.1, byte 5 bit
+        0)."""
         return (
             self.bus_a_voltage_ok
             and self.bus_b_voltage_ok
@@ -116,7 +119,11 @@ class Decision:
     reason: str
 
     def __str__(self) -> str:
-        return f"{self.time:10.3f} s  {self.kind.value:<11} {self.reason}"
+        return f"{self.time:10.3f} s  {self.body()}"
+
+    def body(self) -> str:
+        """The decision without its time."""
+        return f"{self.kind.value:<11} {self.reason}"
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,6 +1,9 @@
-"""Encode and decode the Veronte 4x CAN messages (seed manual, chapter "CAN Bus protocol").
+"""Encode and decode the Veronte 4x CAN messages.
 
-Example:
+The messages are those of the Veronte Autopilot 4x Software Manual, section 3 "CAN Bus
+protocol".
+
+Examples:
     >>> from veronte4x import codec
     >>> codec.decode(b"\\x00\\xff\\x01", sender=codec.Sender.AUTOPILOT)
     Ready(ready=True)

@@ -27,7 +27,8 @@ Decoder = Callable[[bytes, bool], Message]
 Encoder = Callable[[Message], bytes]
 
 MAX_FRAME_BYTES = 8
-"""Classic CAN: byte 0 is the message type, up to 7 data bytes follow (seed 000, chapter 3)."""
+"""Classic CAN: byte 0 is the message type, up to 7 data bytes follow (4x Software Manual, section
+3)."""
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
 """Layouts that a user declares for the commands whose payload layout is not public.
 
-No public source gives the payload of commands 5-10 and 16-19 (notes/veronte-protocol.md,
-"Message types"); the layout comes from each installation's PDI configuration. A user who
+No public source gives the payload of commands 5-10 and 16-19 (not in Embention's
+public manuals); the layout comes from each installation's PDI configuration. A user who
 knows it declares it in Veronte's own terms (ordered constants, skips, integers with an
 optional linear compression, float32; little or big endian) and gets a frozen dataclass
 with named fields, which encodes as well as it decodes.
@@ -39,7 +39,7 @@ class Layout:
         byte_order: Little endian (first field in the low bits, the default) or big endian
             (first field in the high bits).
 
-    Example:
+    Examples:
         >>> from veronte4x import codec
         >>> esc = codec.Layout(5, "EscTelemetry", [
         ...     codec.unsigned("rpm", 16),

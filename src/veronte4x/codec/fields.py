@@ -1,14 +1,14 @@
 """The field model that every Veronte layout is written in, built-in or declared.
 
-It follows Veronte's own model for custom CAN messages (notes/veronte-protocol.md,
-"Message types"): an ordered list of fields, each a constant ("matcher"), a skip
+It follows Veronte's own model for custom CAN messages (the 4x PDI
+Builder's custom messages): an ordered list of fields, each a constant ("matcher"), a skip
 (padding), an unsigned or signed integer of N bits with an optional linear compression,
 or a float32, laid out one after the other in little or big endian. Built-in layouts add
 booleans and a trailing run of raw bytes.
 
 Positions are sequential. In a little-endian layout the frame is read as one
 little-endian integer and the first field takes its least significant bits (bit 0 is the
-LSB of byte 0, as the seed numbers bits). In a big-endian layout the frame is read as one
+LSB of byte 0, as the manual numbers bits). In a big-endian layout the frame is read as one
 big-endian integer and the first field takes its most significant bits.
 """
 

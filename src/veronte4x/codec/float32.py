@@ -1,6 +1,7 @@
 """IEEE-754 binary32 conversions that keep every bit pattern, NaN payloads included.
 
-Veronte floats are little-endian binary32 (notes/veronte-protocol.md, "Frame model").
+Veronte floats are little-endian binary32 ("Endianness is Little Endian for all messages",
+Embention's manuals).
 CPython's ``struct`` quiets signalling NaNs on the way through a C ``float``, so a frame
 carrying one would not re-encode to the same bytes. These helpers route NaNs through their
 bit patterns instead; every other value goes through ``struct``.

@@ -1,7 +1,7 @@
 """The built-in Veronte 4x layouts, written once as data.
 
-Sources: the seed manual (seeds/000, 4x Software Manual 6.12, chapter 3 "CAN Bus
-protocol": message-type table, sections 3.1.1-3.1.4) and notes/veronte-protocol.md (byte
+Sources: the Veronte Autopilot 4x Software Manual (release 6.12), section 3 "CAN Bus
+protocol": message-type table, sections 3.1.1-3.1.4; and Embention's public manuals (byte
 order little-endian, bit 0 = least significant bit, PWM encoding, version request). The
 codec compiles these layouts into its decode and encode functions, and the docs render
 their tables from them.
@@ -58,7 +58,7 @@ STATUS_FLAGS: tuple[tuple[str, str], ...] = (
     ("ap3_voltage_ok", "AP3 voltage OK"),
     ("normal_mode", "arbiter mode: 1 = Normal, 0 = Maintenance"),
 )
-"""The flags of Status bytes 4 and 5, bit 0 first (seed 000, section 3.1.1)."""
+"""The flags of Status bytes 4 and 5, bit 0 first (4x Software Manual, section 3.1.1)."""
 
 STATUS_4X = FrameLayout(
     m.Status,
@@ -203,4 +203,4 @@ OPAQUE: dict[int, FrameLayout] = {
 """Layouts of the commands whose payload is kept as raw bytes, by command byte."""
 
 RESERVED_COMMANDS = frozenset({4, 14, 15})
-"""Reserved in the seed's message-type table."""
+"""Reserved in the Software Manual's message-type table."""

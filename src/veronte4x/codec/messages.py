@@ -1,7 +1,8 @@
 """The Veronte 4x CAN messages as frozen, slotted dataclasses.
 
-One class per message of the seed manual's CAN table (4x Software Manual 6.12, chapter
-"CAN Bus protocol"). Constructors do not validate, so decoding stays cheap; `encode`
+One class per message of the CAN table of the Veronte Autopilot 4x Software Manual
+(release 6.12, section 3 "CAN Bus protocol"). Constructors do not validate, so decoding stays
+cheap; `encode`
 validates every field and raises `EncodeError`. The wire layouts live in
 `veronte4x.codec.layouts`.
 """
@@ -40,7 +41,7 @@ class Message:
 
 @dataclass(frozen=True, slots=True)
 class Status(Message):
-    """Status, arbiter to autopilots (cmd 0, header 0xFF; seed 000 section 3.1.1).
+    """Status, arbiter to autopilots (cmd 0, header 0xFF; 4x Software Manual, section 3.1.1).
 
     The 4x arbiter sends 6 bytes; the CEX arbiter only bytes 0-3, so for that form every
     flag of bytes 4-5 is ``None``. Flags are True when the item is OK.
@@ -94,7 +95,7 @@ class Status(Message):
 
 @dataclass(frozen=True, slots=True)
 class Score(Message):
-    """Score of one autopilot, arbiter to autopilots (cmd 0; seed 000 section 3.1.2).
+    """Score of one autopilot, arbiter to autopilots (cmd 0; 4x Software Manual, section 3.1.2).
 
     Attributes:
         autopilot: 0 = AP1, 1 = AP2, 2 = AP3, 3 = external.
@@ -109,7 +110,8 @@ class Score(Message):
 
 @dataclass(frozen=True, slots=True)
 class Ready(Message):
-    """Ready or Not Ready, autopilot to arbiter (cmd 0, header 0xFF; seed 000 section 3.1.3).
+    """Ready or Not Ready, autopilot to arbiter (cmd 0, header 0xFF; 4x Software Manual, section
+    3.1.3).
 
     Attributes:
         ready: True for Ready, False for Not Ready.
@@ -122,7 +124,7 @@ class Ready(Message):
 
 @dataclass(frozen=True, slots=True)
 class ArbitrationVariable(Message):
-    """One arbitration variable, autopilot to arbiter (cmd 0; seed 000 section 3.1.4).
+    """One arbitration variable, autopilot to arbiter (cmd 0; 4x Software Manual, section 3.1.4).
 
     Attributes:
         number: Variable number, 0..31.

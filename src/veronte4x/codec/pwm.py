@@ -1,8 +1,8 @@
 """PWM set frames: the open packing order, and the value/microsecond helpers.
 
-The seed's CAN table gives commands 2, 3, 11, 12, 13 (t_pwm_0_3_set .. t_pwm_16_19_set);
-Embention's manuals give four 12-bit normalised values 0..4095 per frame
-(notes/veronte-protocol.md, "Message types"). The order in which the four fields are packed
+The Software Manual's CAN table gives commands 2, 3, 11, 12, 13 (t_pwm_0_3_set .. t_pwm_16_19_set);
+Embention's manuals give four 12-bit normalised values 0..4095 per frame. The order in which the
+four fields are packed
 is not public, hence `PwmPacking`. The microsecond mapping lives in the receiving device
 (template default 900..2100 us), so it is a helper, not part of the wire format.
 """
@@ -20,7 +20,7 @@ DEFAULT_MIN_US = 900.0
 DEFAULT_MAX_US = 2100.0
 
 PWM_COMMANDS: dict[int, int] = {0: 2, 4: 3, 8: 11, 12: 12, 16: 13}
-"""First channel to command byte (seed 000, CAN message-type table)."""
+"""First channel to command byte (Software Manual, section 3, message-type table)."""
 
 
 class PwmPacking(enum.Enum):

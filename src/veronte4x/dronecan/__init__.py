@@ -1,4 +1,5 @@
-"""DroneCAN (UAVCAN v0) for Vertiq ESCs: CAN IDs, transfers, reassembly and eight types."""
+"""DroneCAN (UAVCAN v0) for Vertiq ESCs: CAN IDs, transfers, reassembly and the types of Vertiq ESCs
+and their ground station."""
 
 from __future__ import annotations
 
@@ -19,8 +20,17 @@ from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateResponse,
     BooleanValue,
     Empty,
+    EntryType,
+    EntryTypeFlag,
     EscStatus,
+    ExecuteOpcodeRequest,
+    ExecuteOpcodeResponse,
     FileError,
+    FileErrorCode,
+    FileGetInfoRequest,
+    FileGetInfoResponse,
+    FileReadRequest,
+    FileReadResponse,
     FirmwareUpdateError,
     GetNodeInfoRequest,
     GetNodeInfoResponse,
@@ -33,6 +43,7 @@ from veronte4x.dronecan.messages import (
     Mode,
     NodeStatus,
     NumericValue,
+    Opcode,
     Path,
     RawCommand,
     RealValue,
@@ -66,8 +77,17 @@ __all__ = [
     "DecodeError",
     "Empty",
     "EncodeError",
+    "EntryType",
+    "EntryTypeFlag",
     "EscStatus",
+    "ExecuteOpcodeRequest",
+    "ExecuteOpcodeResponse",
     "FileError",
+    "FileErrorCode",
+    "FileGetInfoRequest",
+    "FileGetInfoResponse",
+    "FileReadRequest",
+    "FileReadResponse",
     "FirmwareUpdateError",
     "Frame",
     "GetNodeInfoRequest",
@@ -81,6 +101,7 @@ __all__ = [
     "Mode",
     "NodeStatus",
     "NumericValue",
+    "Opcode",
     "Path",
     "Problem",
     "ProblemReport",

@@ -1,6 +1,6 @@
 """The 29-bit CAN ID of DroneCAN frames: build and parse.
 
-Layouts (spec 4.1 "ID field"; notes/dronecan-wire.md "Transport rules"), bit 28 first:
+Layouts (spec 4.1 "ID field"), bit 28 first:
 
 - message:   priority(5) | type id(16) | service=0 (1) | source node(7), source 1..127
 - anonymous: priority(5) | discriminator(14) | type id low bits(2) | service=0 | source=0

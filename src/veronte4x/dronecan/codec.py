@@ -1,4 +1,4 @@
-"""Payload encoding and decoding for each of the eight types, fast path first.
+"""Payload encoding and decoding for each of the types, fast path first.
 
 Each top-level type gets the generated fast functions of
 `compiled` where its layout allows, and the generic

@@ -9,7 +9,7 @@ How the code stays cheap:
 
 - The fields are cut into byte-aligned groups, packed and unpacked by one
   `struct.Struct`. A whole uint8/16/32/64 field is a group of its own: under the v0 bit
-  order (notes/dronecan-wire.md "Serialization rules") its bytes are simply little-endian.
+  order its bytes are simply little-endian.
   Any other group is the little-endian int of its fields' bit runs, which `bit_runs`
   derives bit by bit from the rule, merging neighbours.
 - RawCommand's int14 items go through two tables instead (value to its 14 stream bits and

@@ -1,7 +1,7 @@
 """Transfer CRC of multi-frame DroneCAN transfers.
 
 CRC-16-CCITT-FALSE: poly 0x1021, init 0xFFFF, no reflection, xorout 0, check 0x29B1 for
-``b"123456789"`` (spec 4.1 "Transfer CRC"; notes/dronecan-wire.md "Transfer CRC"). The CRC
+``b"123456789"`` (spec 4.1 "Transfer CRC"). The CRC
 runs over the 8-byte little-endian data type signature and then the payload, so the
 signature part is precomputed once per type as a seed.
 

@@ -1,8 +1,8 @@
-"""The eight DroneCAN types as data: fields in wire order, ids, signatures.
+"""The DroneCAN types as data: fields in wire order, ids, signatures.
 
-Field lists are those of the DSDL files in ``shared/dsdl`` (``dronecan/DSDL`` b4653c7);
-ids, 64-bit data type signatures and CRC seeds are those of notes/dronecan-wire.md
-"Types". The seeds are recomputed from the signatures at import time. The serializers
+Field lists are those of the DSDL files of the public ``dronecan/DSDL`` repository (b4653c7);
+ids, 64-bit data type signatures and CRC seeds are those of as libcanard and the dronecan package
+implement it. The CRC seeds are recomputed from the signatures at import time. The serializers
 run from these definitions; the docs tables are generated from them too.
 """
 
@@ -178,6 +178,44 @@ BEGIN_FIRMWARE_UPDATE_RESPONSE = Struct(
     ),
 )
 
+EXECUTE_OPCODE_REQUEST = Struct(
+    "uavcan.protocol.param.ExecuteOpcode.Request",
+    m.ExecuteOpcodeRequest,
+    (Field("opcode", _U8, m.Opcode), Field("argument", _i(48))),
+)
+
+EXECUTE_OPCODE_RESPONSE = Struct(
+    "uavcan.protocol.param.ExecuteOpcode.Response",
+    m.ExecuteOpcodeResponse,
+    (Field("argument", _i(48)), Field("ok", Scalar("bool", 1))),
+)
+
+FILE_ERROR = Struct("uavcan.protocol.file.Error", m.FileErrorCode, (Field("value", _i(16)),))
+
+ENTRY_TYPE = Struct("uavcan.protocol.file.EntryType", m.EntryType, (Field("flags", _U8),))
+
+FILE_GET_INFO_REQUEST = Struct(
+    "uavcan.protocol.file.GetInfo.Request", m.FileGetInfoRequest, (Field("path", PATH),)
+)
+
+FILE_GET_INFO_RESPONSE = Struct(
+    "uavcan.protocol.file.GetInfo.Response",
+    m.FileGetInfoResponse,
+    (Field("size", _u(40)), Field("error", FILE_ERROR), Field("entry_type", ENTRY_TYPE)),
+)
+
+FILE_READ_REQUEST = Struct(
+    "uavcan.protocol.file.Read.Request",
+    m.FileReadRequest,
+    (Field("offset", _u(40)), Field("path", PATH)),
+)
+
+FILE_READ_RESPONSE = Struct(
+    "uavcan.protocol.file.Read.Response",
+    m.FileReadResponse,
+    (Field("error", FILE_ERROR), Field("data", Array(_U8, 256, dynamic=True))),
+)
+
 
 @dataclass(frozen=True)
 class DataType:
@@ -239,8 +277,27 @@ DATA_TYPES: tuple[DataType, ...] = (
         0xB7D725DF72724126,
         BEGIN_FIRMWARE_UPDATE_RESPONSE,
     ),
+    DataType(
+        "uavcan.protocol.param.ExecuteOpcode",
+        _REQ,
+        10,
+        0x3B131AC5EB69D2CD,
+        EXECUTE_OPCODE_REQUEST,
+    ),
+    DataType(
+        "uavcan.protocol.param.ExecuteOpcode",
+        _RESP,
+        10,
+        0x3B131AC5EB69D2CD,
+        EXECUTE_OPCODE_RESPONSE,
+    ),
+    DataType("uavcan.protocol.file.GetInfo", _REQ, 45, 0x5004891EE8A27531, FILE_GET_INFO_REQUEST),
+    DataType("uavcan.protocol.file.GetInfo", _RESP, 45, 0x5004891EE8A27531, FILE_GET_INFO_RESPONSE),
+    DataType("uavcan.protocol.file.Read", _REQ, 48, 0x8DCDCA939F33F678, FILE_READ_REQUEST),
+    DataType("uavcan.protocol.file.Read", _RESP, 48, 0x8DCDCA939F33F678, FILE_READ_RESPONSE),
 )
-"""Every top-level type, in the order of seed 004."""
+"""Every top-level type: those of Vertiq's DroneCAN support document in its order, then
+the ground station's (ExecuteOpcode, file.GetInfo, file.Read)."""
 
 NESTED_SIGNATURES: dict[str, int] = {
     "uavcan.protocol.SoftwareVersion": 0xDD46FD376527FEA1,
@@ -249,6 +306,8 @@ NESTED_SIGNATURES: dict[str, int] = {
     "uavcan.protocol.param.NumericValue": 0x0DA6D6FEA22E3587,
     "uavcan.protocol.param.Empty": 0x6C4D0E8EF37361DF,
     "uavcan.protocol.file.Path": 0x12AEFC50878A43E2,
+    "uavcan.protocol.file.Error": 0xA83071FFEA4FAE15,
+    "uavcan.protocol.file.EntryType": 0x6924572FBB2086E5,
 }
 """Signatures of the nested types (documentation only: they do not appear on the wire)."""
 

@@ -1,8 +1,8 @@
 """IEEE binary16 and binary32 bit patterns as DroneCAN writes them.
 
 Rounding follows libcanard and the ``dronecan`` package: the value is first rounded to
-float32 (ties to even), then to float16 with round to nearest, ties away from zero
-(notes/dronecan-wire.md "Float16 and saturation"). Out-of-range values follow the spec's
+float32 (ties to even), then to float16 with round to nearest, ties away from zero. Out-of-range
+values follow the spec's
 saturated cast mode (spec 3 "Cast mode"): a finite value beyond the largest finite
 float16 (65504) becomes +-65504, while infinity and NaN are kept. NaN is written as
 0x7FFF (0xFFFF with the sign bit set), as both reference implementations do.

@@ -1,7 +1,10 @@
-"""The eight DroneCAN types used by Vertiq ESCs, as frozen, slotted dataclasses.
+"""The DroneCAN types of Vertiq ESCs and of their ground station, as frozen, slotted dataclasses.
 
-Field names are exactly those of the DSDL files (``dronecan/DSDL``, copied in
-``shared/dsdl``); each class docstring names its file. DSDL constants are class attributes
+The eight types of the Vertiq document, plus the services a ground station needs to
+configure and update them: ``param.ExecuteOpcode``, ``file.GetInfo`` and ``file.Read``.
+
+Field names are exactly those of the DSDL files (the public ``dronecan/DSDL``
+repository); each class docstring names its file. DSDL constants are class attributes
 or enums. Constructors do not validate, so decoding stays cheap; `encode` checks every
 field and raises `EncodeError`. uint8 arrays are ``bytes``,
 the int14 array of RawCommand a tuple of ints.
@@ -52,8 +55,8 @@ class FirmwareUpdateError(enum.IntEnum):
 class FileError(enum.IntEnum):
     """``uavcan.protocol.file.Error`` result codes (``file/Error.uavcan``, int16 ``value``).
 
-    None of the eight types carries this nested type; it is here for the file services a
-    firmware update over DroneCAN goes on to use.
+    The ``value`` of `FileErrorCode`, the nested type that ``file.GetInfo`` and
+    ``file.Read`` responses carry.
     """
 
     OK = 0
@@ -66,6 +69,25 @@ class FileError(enum.IntEnum):
     FILE_TOO_LARGE = 27
     OUT_OF_SPACE = 28
     NOT_IMPLEMENTED = 38
+
+
+class Opcode(enum.IntEnum):
+    """``param.ExecuteOpcode`` request ``opcode`` (DSDL constants ``OPCODE_*``)."""
+
+    SAVE = 0
+    """Save every parameter to non-volatile storage."""
+    ERASE = 1
+    """Clear the non-volatile storage; parameters go back to their defaults."""
+
+
+class EntryTypeFlag(enum.IntFlag):
+    """Bits of ``file.EntryType.flags`` (DSDL constants ``FLAG_*``)."""
+
+    FILE = 1
+    DIRECTORY = 2
+    SYMLINK = 4
+    READABLE = 8
+    WRITEABLE = 16
 
 
 class TemperatureErrorFlag(enum.IntFlag):
@@ -101,7 +123,8 @@ class NodeStatus:
 class EscStatus:
     """``uavcan.equipment.esc.Status``, message 1034 (``equipment/esc/1034.Status.uavcan``).
 
-    Vertiq (seed 004 section 1.2): temperature of the motor coils in kelvin,
+    Vertiq (Vertiq's DroneCAN support document, section 1.2): temperature of the motor coils in
+    kelvin,
     power_rating_pct is the PWM duty cycle, esc_index the sender's ESC index.
     """
 
@@ -118,7 +141,8 @@ class EscStatus:
 class Temperature:
     """``uavcan.equipment.device.Temperature``, message 1110 (``1110.Temperature.uavcan``).
 
-    Vertiq (seed 004 section 1.3): device_id is the ESC index, temperature that of the
+    Vertiq (Vertiq's DroneCAN support document, section 1.3): device_id is the ESC index,
+    temperature that of the
     microcontroller in kelvin. ``error_flags`` bits: `TemperatureErrorFlag`.
     """
 
@@ -179,7 +203,8 @@ class GetNodeInfoRequest:
 class GetNodeInfoResponse:
     """``uavcan.protocol.GetNodeInfo`` response, service 1 (``1.GetNodeInfo.uavcan``).
 
-    ``name`` is at most 80 bytes; Vertiq nodes answer ``iq_motion.esc`` (seed 004 2.1).
+    ``name`` is at most 80 bytes; Vertiq nodes answer ``iq_motion.esc`` (Vertiq's DroneCAN support,
+    2.1).
     """
 
     status: NodeStatus
@@ -302,6 +327,89 @@ class BeginFirmwareUpdateResponse:
     optional_error_message: bytes = b""
 
 
+@dataclass(frozen=True, slots=True)
+class ExecuteOpcodeRequest:
+    """``uavcan.protocol.param.ExecuteOpcode`` request, service 10.
+
+    (``param/10.ExecuteOpcode.uavcan``) ``opcode`` is an `Opcode`; ``argument`` is reserved
+    and kept zero.
+    """
+
+    opcode: Opcode | int
+    argument: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class ExecuteOpcodeResponse:
+    """``uavcan.protocol.param.ExecuteOpcode`` response, service 10.
+
+    ``ok`` when the operation was performed; otherwise ``argument`` may hold an error code.
+    """
+
+    argument: int
+    ok: bool
+
+
+@dataclass(frozen=True, slots=True)
+class FileErrorCode:
+    """``uavcan.protocol.file.Error`` (nested; ``file/Error.uavcan``): an int16 result code.
+
+    ``value`` compares equal to the `FileError` members.
+    """
+
+    value: int
+
+
+@dataclass(frozen=True, slots=True)
+class EntryType:
+    """``uavcan.protocol.file.EntryType`` (nested; ``file/EntryType.uavcan``).
+
+    ``flags`` bits: `EntryTypeFlag`; zero when the entry does not exist.
+    """
+
+    flags: int
+
+
+@dataclass(frozen=True, slots=True)
+class FileGetInfoRequest:
+    """``uavcan.protocol.file.GetInfo`` request, service 45 (``file/45.GetInfo.uavcan``)."""
+
+    path: Path
+
+
+@dataclass(frozen=True, slots=True)
+class FileGetInfoResponse:
+    """``uavcan.protocol.file.GetInfo`` response, service 45: size in bytes (uint40)."""
+
+    size: int
+    error: FileErrorCode
+    entry_type: EntryType
+
+
+@dataclass(frozen=True, slots=True)
+class FileReadRequest:
+    """``uavcan.protocol.file.Read`` request, service 48 (``file/48.Read.uavcan``).
+
+    Reads up to 256 bytes at ``offset`` (uint40) of the file at ``path``.
+    """
+
+    offset: int
+    path: Path
+
+
+@dataclass(frozen=True, slots=True)
+class FileReadResponse:
+    """``uavcan.protocol.file.Read`` response, service 48: at most 256 bytes of ``data``.
+
+    Fewer than 256 bytes (possibly none) means the end of the file was reached.
+    """
+
+    MAX_DATA: ClassVar[int] = 256
+
+    error: FileErrorCode
+    data: bytes = b""
+
+
 Message: TypeAlias = (
     NodeStatus
     | EscStatus
@@ -315,5 +423,11 @@ Message: TypeAlias = (
     | RestartNodeResponse
     | BeginFirmwareUpdateRequest
     | BeginFirmwareUpdateResponse
+    | ExecuteOpcodeRequest
+    | ExecuteOpcodeResponse
+    | FileGetInfoRequest
+    | FileGetInfoResponse
+    | FileReadRequest
+    | FileReadResponse
 )
 """Any top-level message, request or response class of this package."""

@@ -2,8 +2,8 @@
 
 The type definitions themselves are in `definitions`; the
 serializers in `serializer` and `compiled`
-run from them. Bit lengths and the tail array optimisation follow spec 3 (DSDL) as
-summarised in notes/dronecan-wire.md "Serialization rules".
+run from them. Bit lengths and the tail array optimisation follow spec 3 (DSDL) as libcanard and
+the dronecan package implement it.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Generic DSDL v0 serializer: runs any `schema` definition.
 
-Bit order (notes/dronecan-wire.md "Serialization rules"): fields follow each other with no
+Bit order: fields follow each other with no
 alignment, each byte filled from its MSB. A scalar wider than 8 bits is cut into
 little-endian bytes; the full low bytes go first, each MSB first, then the remaining
 ``bits % 8`` top bits. Dynamic arrays carry a ``max_size.bit_length()``-bit length prefix,

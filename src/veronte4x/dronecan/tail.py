@@ -3,8 +3,7 @@
 Tail byte, the last data byte of every frame: bit 7 start of transfer, bit 6 end of
 transfer, bit 5 toggle, bits 4..0 transfer id. A payload of at most 7 bytes goes in one
 frame with tail ``0xC0 | transfer_id``. A longer payload is prefixed with the transfer CRC
-(little-endian) and cut into 7-byte chunks; the toggle starts at 0 and alternates
-(notes/dronecan-wire.md "Transport rules").
+(little-endian) and cut into 7-byte chunks; the toggle starts at 0 and alternates.
 """
 
 from __future__ import annotations

@@ -1,8 +1,8 @@
 """Frames and transfers: `encode` a message, `decode_frames` one transfer.
 
 A transfer of at most 7 payload bytes is one frame; a longer one is prefixed with the
-transfer CRC seeded with the type signature and cut into 7-byte chunks (spec 4.1;
-notes/dronecan-wire.md "Transport rules"). The stateful receiver for a stream of frames is
+transfer CRC seeded with the type signature and cut into 7-byte chunks (spec 4.1). The stateful
+receiver for a stream of frames is
 `Reassembler`.
 """
 

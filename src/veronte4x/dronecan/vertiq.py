@@ -1,4 +1,4 @@
-"""Vertiq ESC specifics (seed 004, "Vertiq Standard DroneCAN Support").
+"""Vertiq ESC specifics (Vertiq's "Standard DroneCAN Support" document).
 
 Parameter names and types (section 3), the zero-behaviour values (3.4), the RestartNode
 magic numbers (2.3), the node name (2.1), GetSet requests by name and by index (2.2) and
@@ -27,17 +27,20 @@ from veronte4x.dronecan.messages import (
 from veronte4x.errors import EncodeError
 
 NODE_NAME = "iq_motion.esc"
-"""The GetNodeInfo ``name`` of Vertiq modules (seed 004 section 2.1)."""
+"""The GetNodeInfo ``name`` of Vertiq modules (Vertiq's DroneCAN support document, section 2.1)."""
 
 RESTART_MAGIC = 0xACCE551B1E
-"""RestartNode magic number of a normal reboot (seed 004 2.3; the DSDL MAGIC_NUMBER)."""
+"""RestartNode magic number of a normal reboot (Vertiq's DroneCAN support, 2.3; the DSDL
+MAGIC_NUMBER)."""
 
 BOOTLOADER_MAGIC = 0xBEEFCAFE
-"""Vertiq's RestartNode magic number that reboots into the ST bootloader (seed 004 2.3)."""
+"""Vertiq's RestartNode magic number that reboots into the ST bootloader (Vertiq's DroneCAN
+support, 2.3)."""
 
 
 class Parameter(str, enum.Enum):
-    """Configuration parameters of Vertiq modules (seed 004 section 3), all integers.
+    """Configuration parameters of Vertiq modules (Vertiq's DroneCAN support document, section 3),
+    all integers.
 
     Not every module supports every parameter; access them by name, not by index.
     """
@@ -55,7 +58,8 @@ class Parameter(str, enum.Enum):
 
 
 class ZeroBehavior(enum.IntEnum):
-    """Values of the ``zero_behavior`` parameter (seed 004 section 3.4)."""
+    """Values of the ``zero_behavior`` parameter (Vertiq's DroneCAN support document, section
+    3.4)."""
 
     COAST = 0
     """Stop driving the motor and let it coast to a stop."""
@@ -66,9 +70,9 @@ class ZeroBehavior(enum.IntEnum):
 
 
 RAW_COMMAND_MIN = -8192
-"""Full speed in reverse (seed 004 1.4)."""
+"""Full speed in reverse (Vertiq's DroneCAN support, 1.4)."""
 RAW_COMMAND_MAX = 8191
-"""Full speed forward (seed 004 1.4)."""
+"""Full speed forward (Vertiq's DroneCAN support, 1.4)."""
 MAX_ESCS = 20
 """Most entries of a RawCommand (DSDL ``int14[<=20] cmd``)."""
 
@@ -98,7 +102,8 @@ def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
 
 
 def get_parameter(name: str | Parameter) -> GetSetRequest:
-    """A GetSet request reading parameter ``name`` (the recommended access, seed 004 2.2)."""
+    """A GetSet request reading parameter ``name`` (the recommended access, Vertiq's DroneCAN
+    support, 2.2)."""
     return GetSetRequest(index=0, value=Empty(), name=_name(name))
 
 
@@ -114,7 +119,8 @@ def set_parameter(
 
 
 def get_parameter_by_index(index: int) -> GetSetRequest:
-    """A GetSet request reading the parameter at ``index`` (for discovery only, seed 004 3)."""
+    """A GetSet request reading the parameter at ``index`` (for discovery only, Vertiq's DroneCAN
+    support, 3)."""
     return GetSetRequest(index=index, value=Empty(), name=b"")
 
 
@@ -141,7 +147,8 @@ def discovered_parameters(responses: Sequence[GetSetResponse]) -> dict[str, Valu
 
 
 def restart(bootloader: bool = False) -> RestartNodeRequest:
-    """A RestartNode request: normal reboot, or into the ST bootloader (seed 004 2.3)."""
+    """A RestartNode request: normal reboot, or into the ST bootloader (Vertiq's DroneCAN support,
+    2.3)."""
     return RestartNodeRequest(BOOTLOADER_MAGIC if bootloader else RESTART_MAGIC)
 
 
@@ -149,7 +156,8 @@ def throttle_to_raw(throttle: float) -> int:
     """Map a throttle fraction in [-1, 1] to the 14-bit setpoint [-8192, 8191].
 
     Positive fractions scale by 8191 and negative ones by 8192, so -1 and 1 are full speed
-    in reverse and forward (seed 004 1.4); values round to the nearest integer, halves
+    in reverse and forward (Vertiq's DroneCAN support, 1.4); values round to the nearest integer,
+    halves
     away from zero.
 
     Raises:

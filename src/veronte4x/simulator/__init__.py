@@ -1,11 +1,12 @@
-"""A simulated Vertiq ESC (seed 004): a sans-IO DroneCAN node with a motor model.
+"""A simulated Vertiq ESC (Vertiq's DroneCAN support document): a sans-IO DroneCAN node with a
+motor model.
 
 `SimulatedEsc` takes the frames seen on a bus with their timestamps (`SimulatedEsc.receive`)
-and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can adapter and a
-small client are in `veronte4x.simulator.can_node` and `veronte4x.simulator.client` (the
-``can`` extra).
+and gives the frames to send at a time (`SimulatedEsc.poll`). The python-can adapters are in
+`veronte4x.simulator.can_node` (the ``can`` extra); the client that talks to it is
+`veronte4x.client`.
 
-Example:
+Examples:
     >>> from veronte4x import dronecan
     >>> from veronte4x.simulator import SimulatedEsc
     >>> esc = SimulatedEsc(node_id=20, esc_index=0, telem_frequency=10)

@@ -10,26 +10,20 @@ schedules, its motor model and its reassembler.
 
 from __future__ import annotations
 
+import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import can
 
-from veronte4x.canbus import frame_to_message
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.simulator.esc import SimulatedEsc
 
-__all__ = ["EscNode", "to_message", "wanted"]
+__all__ = ["EscBus", "EscNode", "to_message", "wanted"]
 
 
-def wanted(message: can.Message) -> bool:
-    """Whether a bus message can be a DroneCAN frame: extended ID, data, classic CAN."""
-    return (
-        message.is_extended_id
-        and not message.is_remote_frame
-        and not message.is_error_frame
-        and not message.is_fd
-        and 0 < message.dlc <= 8
-    )
+wanted = is_dronecan_frame
+"""Whether a bus message can be a DroneCAN frame (`veronte4x.canbus.is_dronecan_frame`)."""
 
 
 to_message = frame_to_message
@@ -44,7 +38,7 @@ class EscNode:
         esc: The simulated ESC.
         clock: Seconds from any monotonic source; the only clock the simulator sees.
 
-    Example:
+    Examples:
         >>> import can
         >>> from veronte4x.simulator import SimulatedEsc
         >>> with can.Bus(interface="virtual", channel="doc-esc") as bus, can.Bus(
@@ -97,6 +91,71 @@ class EscNode:
                 return
             due = self.esc.next_time()
             wait = min(end - now, max_wait, max(0.0, due - now) if due is not None else max_wait)
+            message = self.bus.recv(timeout=wait)
+            if message is not None:
+                self.feed(message)
+            self.step()
+
+
+class EscBus:
+    """Several `SimulatedEsc` on one python-can bus: each sees every frame, all send.
+
+    Args:
+        bus: Any python-can bus.
+        escs: The simulated ESCs (distinct node ids).
+        clock: Seconds from any monotonic source; the only clock the simulators see.
+
+    Examples:
+        >>> import can
+        >>> from veronte4x.simulator import SimulatedEsc
+        >>> with can.Bus(interface="virtual", channel="doc-escs") as bus:
+        ...     escs = EscBus(bus, [SimulatedEsc(21), SimulatedEsc(22, esc_index=1)])
+        ...     escs.step()  # NodeStatus, esc.Status (3 frames), Temperature, twice
+        10
+    """
+
+    def __init__(
+        self,
+        bus: can.BusABC,
+        escs: Sequence[SimulatedEsc],
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
+        self.bus = bus
+        self.escs = list(escs)
+        self.clock = clock
+
+    def feed(self, message: can.Message) -> None:
+        """Give one bus message to every ESC, stamped with the clock."""
+        if wanted(message):
+            now = self.clock()
+            data = bytes(message.data)
+            for esc in self.escs:
+                esc.receive(message.arbitration_id, data, now)
+
+    def step(self) -> int:
+        """Feed every message waiting on the bus, then send what each ESC has to send now.
+
+        Returns:
+            The number of frames sent.
+        """
+        message = self.bus.recv(timeout=0.0)
+        while message is not None:
+            self.feed(message)
+            message = self.bus.recv(timeout=0.0)
+        sent = 0
+        now = self.clock()
+        for esc in self.escs:
+            for frame in esc.poll(now):
+                self.bus.send(to_message(frame))
+                sent += 1
+        return sent
+
+    def run(self, stop: threading.Event, max_wait: float = 0.01) -> None:
+        """Serve the bus until ``stop`` is set, blocking on the bus between sends."""
+        while not stop.is_set():
+            now = self.clock()
+            times = [t for t in (esc.next_time() for esc in self.escs) if t is not None]
+            wait = min([max_wait, *(max(0.0, t - now) for t in times)])
             message = self.bus.recv(timeout=wait)
             if message is not None:
                 self.feed(message)

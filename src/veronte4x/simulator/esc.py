@@ -1,13 +1,21 @@
 """`SimulatedEsc`: a sans-IO Vertiq ESC node that takes frames and gives frames.
 
-Behaviour from seed 004 ("Vertiq Standard DroneCAN Support"): NodeStatus at 1 Hz with
+Behaviour from Vertiq's "Standard DroneCAN Support" document: NodeStatus at 1 Hz with
 health OK, mode OPERATIONAL, no sub-mode or vendor code (1.1); esc.Status and
 device.Temperature at ``telem_frequency`` Hz, none at 0 (1.2, 1.3, 3.5); the RawCommand
 entry at ``esc_index`` (1.4, 3.3) with ``zero_behavior`` for a zero setpoint (3.4);
 GetNodeInfo with the name ``iq_motion.esc`` (2.1); GetSet by name and by index (2.2, 3);
 RestartNode with the normal and the bootloader magic numbers (2.3); BeginFirmwareUpdate,
 answered INVALID_MODE by modules without DroneCAN firmware updates (2.4). Responses reuse
-the request's transfer id and priority (spec 4.1; notes/dronecan-wire.md).
+the request's transfer id and priority (spec 4.1; as libcanard and the dronecan package do).
+
+After an accepted BeginFirmwareUpdate the simulator pulls the image as section 2.4 says a
+module does: ``file.GetInfo`` on the file server, then ``file.Read`` from offset 0 until a
+short read, through the client's sans-IO `Requester` (timeouts and retries included). It
+then restarts with the image's CRC-64-WE in its software version. A file server that stops
+answering ends the update: the module restarts into its old firmware. param.ExecuteOpcode
+SAVE is accepted (sets are kept at once, which the DSDL allows) and ERASE restores the
+defaults.
 
 Nothing here reads a clock: every time is a ``timestamp`` argument.
 """
@@ -19,12 +27,21 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
+from veronte4x.client.requests import Answered, Requester
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
     BeginFirmwareUpdateResponse,
     EscStatus,
+    ExecuteOpcodeRequest,
+    ExecuteOpcodeResponse,
+    FileError,
+    FileGetInfoRequest,
+    FileGetInfoResponse,
+    FileReadRequest,
+    FileReadResponse,
     FirmwareUpdateError,
     GetNodeInfoRequest,
     GetNodeInfoResponse,
@@ -34,10 +51,13 @@ from veronte4x.dronecan.messages import (
     Health,
     Mode,
     NodeStatus,
+    Opcode,
+    Path,
     RawCommand,
     RestartNodeRequest,
     RestartNodeResponse,
     SoftwareVersion,
+    SoftwareVersionFlag,
     Temperature,
     TemperatureErrorFlag,
 )
@@ -57,15 +77,21 @@ from veronte4x.simulator.motor import DEFAULT_MODEL, MotorModel, MotorState
 from veronte4x.simulator.schedule import Periodic
 
 NODE_STATUS_FREQUENCY = 1.0
-"""NodeStatus rate in Hz (seed 004 1.1)."""
+"""NodeStatus rate in Hz (Vertiq's DroneCAN support, 1.1)."""
 
 SOFTWARE_VERSION = SoftwareVersion(
     major=1, minor=0, optional_field_flags=0, vcs_commit=0, image_crc=0
 )
-"""The simulator's GetNodeInfo software version (the seed gives none for real modules)."""
+"""The simulator's GetNodeInfo software version (the document gives none for real modules)."""
 
 HARDWARE_VERSION_MAJOR = 1
 """The simulator's GetNodeInfo hardware version, major (minor is 0)."""
+
+FILE_REQUEST_TIMEOUT = 0.5
+"""Seconds the simulator waits for each file.GetInfo or file.Read answer (then retries)."""
+
+FILE_REQUEST_RETRIES = 3
+"""Retries of a file request before the simulator gives the update up."""
 
 UNIQUE_ID_PREFIX = b"veronte4x.sim\x00\x00"
 """First 15 bytes of the 16-byte unique id; the last is the node id given at construction."""
@@ -112,6 +138,17 @@ class EscState:
     overheating: bool
 
 
+@dataclass(slots=True)
+class _Pull:
+    """An image being pulled: from whom, which file, how far, its CRC so far."""
+
+    source: int
+    path: bytes
+    handle: int = 0
+    received: int = 0
+    crc: int = 0
+
+
 def _check(field: str, value: Any, low: int, high: int) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise EncodeError("SimulatedEsc", field, value, f"a whole number in {low}..{high}")
@@ -127,13 +164,16 @@ class SimulatedEsc:
         node_id: DroneCAN node id, 1..127 (also the ``uavcan_node_id`` default).
         esc_index: Which RawCommand entry it reads, 0..19.
         telem_frequency: esc.Status and device.Temperature rate in Hz, a whole number
-            (the parameter is an integer, seed 004 3.5), 0 for none.
+            (the parameter is an integer, Vertiq's DroneCAN support, 3.5), 0 for none.
         zero_behavior: What a zero setpoint does (`ZeroBehavior` or its int value).
         bit_rate: The ``bit_rate`` parameter, bit/s (stored and reported only).
         supports_firmware_update: False for modules such as the 81-08 that answer
-            BeginFirmwareUpdate with INVALID_MODE (seed 004 2.4).
+            BeginFirmwareUpdate with INVALID_MODE (Vertiq's DroneCAN support, 2.4).
         start_time: Power-on time: frames before it are ignored, NodeStatus and telemetry
             start at it.
+        update_stall_offset: A fault to test ground tools with: during a firmware update
+            the module hangs (falls silent until `power_cycle`) once it has read this many
+            bytes. None (the default) for a module that does not hang.
         priority: CAN priority of the messages it publishes, 0 (highest) to 31.
         model: The motor model's constants.
 
@@ -155,6 +195,7 @@ class SimulatedEsc:
         start_time: float = 0.0,
         priority: int = DEFAULT_PRIORITY,
         model: MotorModel = DEFAULT_MODEL,
+        update_stall_offset: int | None = None,
     ) -> None:
         given = (
             ("node_id", node_id),
@@ -177,6 +218,8 @@ class SimulatedEsc:
         self._motor = motor.at_rest(model)
         self._outbox: list[Frame] = []
         self._in_bootloader = False
+        self._software_version = SOFTWARE_VERSION
+        self._update_stall_offset = update_stall_offset
         self._node_status = Periodic(NODE_STATUS_FREQUENCY, start_time)
         self._telemetry = Periodic(self._value(Parameter.TELEM_FREQUENCY), start_time)
         self._boot(start_time)
@@ -243,6 +286,8 @@ class SimulatedEsc:
         self._mode = Mode.OPERATIONAL
         self._firmware_source: tuple[int, bytes] | None = None
         self._in_bootloader = False
+        self._pull: _Pull | None = None
+        self._requester = Requester(self._node_id, priority=self._priority)
         self._reassembler = Reassembler()
         self._transfer_ids: dict[type, int] = {NodeStatus: 0, EscStatus: 0, Temperature: 0}
         self._node_status.restart(NODE_STATUS_FREQUENCY, timestamp)
@@ -279,10 +324,14 @@ class SimulatedEsc:
         if transfer.kind is TransferKind.MESSAGE:
             if isinstance(message, RawCommand):
                 self._command(message)
-        elif transfer.kind is TransferKind.REQUEST and transfer.destination_node_id == (
-            self._node_id
-        ):
+        elif transfer.destination_node_id != self._node_id:
+            return
+        elif transfer.kind is TransferKind.REQUEST:
             self._serve(transfer, timestamp)
+        else:
+            answered = self._requester.receive(transfer)
+            if answered is not None:
+                self._pulled(answered, timestamp)
 
     def _command(self, command: RawCommand) -> None:
         index = self._value(Parameter.ESC_INDEX)
@@ -297,7 +346,7 @@ class SimulatedEsc:
         if isinstance(message, GetNodeInfoRequest):
             reply: Any = GetNodeInfoResponse(
                 status=self._status(timestamp),
-                software_version=SOFTWARE_VERSION,
+                software_version=self._software_version,
                 hardware_version=HardwareVersion(HARDWARE_VERSION_MAJOR, 0, self._unique_id),
                 name=NODE_NAME.encode(),
             )
@@ -308,9 +357,12 @@ class SimulatedEsc:
             reply = RestartNodeResponse(ok=known)
             if known:
                 after = message.magic_number
-        else:
-            assert isinstance(message, BeginFirmwareUpdateRequest)
+        elif isinstance(message, ExecuteOpcodeRequest):
+            reply = self._execute_opcode(message)
+        elif isinstance(message, BeginFirmwareUpdateRequest):
             reply = self._begin_firmware_update(message, request.source_node_id)
+        else:
+            return  # a request this module does not serve: no answer, as on a real node
         self._outbox += encode(
             reply,
             source_node_id=self._node_id,
@@ -323,6 +375,8 @@ class SimulatedEsc:
         elif after == BOOTLOADER_MAGIC:
             self._motor = motor.release(self._motor)
             self._in_bootloader = True
+        elif self._mode is Mode.SOFTWARE_UPDATE and self._pull is None:
+            self._start_pull(timestamp)
 
     def _get_set(self, request: GetSetRequest, timestamp: float) -> GetSetResponse:
         index = parameters.find(request)
@@ -334,6 +388,74 @@ class SimulatedEsc:
             if parameters.PARAMETERS[index].parameter is Parameter.TELEM_FREQUENCY:
                 self._telemetry.restart(value, timestamp, skip_first=True)
         return parameters.response(index, self._values[index], self._defaults[index])
+
+    def _execute_opcode(self, request: ExecuteOpcodeRequest) -> ExecuteOpcodeResponse:
+        if request.opcode == Opcode.SAVE:
+            return ExecuteOpcodeResponse(0, True)
+        if request.opcode == Opcode.ERASE:
+            self._values = list(self._defaults)
+            return ExecuteOpcodeResponse(0, True)
+        return ExecuteOpcodeResponse(0, False)
+
+    # -- firmware update ----------------------------------------------------------------------
+
+    def _start_pull(self, timestamp: float) -> None:
+        assert self._firmware_source is not None
+        source, path = self._firmware_source
+        self._pull = _Pull(source, path)
+        self._pull.handle = self._requester.request(
+            FileGetInfoRequest(Path(path)),
+            source,
+            timestamp,
+            timeout=FILE_REQUEST_TIMEOUT,
+            retries=FILE_REQUEST_RETRIES,
+        )
+        self._outbox += self._requester.take_frames()
+
+    def _read_next(self, timestamp: float) -> None:
+        pull = self._pull
+        assert pull is not None
+        stall = self._update_stall_offset
+        if stall is not None and pull.received >= stall:
+            self._motor = motor.release(self._motor)
+            self._in_bootloader = True  # hung: silent until power_cycle
+            return
+        pull.handle = self._requester.request(
+            FileReadRequest(pull.received, Path(pull.path)),
+            pull.source,
+            timestamp,
+            timeout=FILE_REQUEST_TIMEOUT,
+            retries=FILE_REQUEST_RETRIES,
+        )
+        self._outbox += self._requester.take_frames()
+
+    def _pulled(self, answered: Answered, timestamp: float) -> None:
+        pull = self._pull
+        if pull is None or answered.request.handle != pull.handle:
+            return
+        message = answered.transfer.message
+        if isinstance(message, FileGetInfoResponse):
+            if message.error.value != FileError.OK:
+                self._boot(timestamp)
+                return
+            self._read_next(timestamp)
+        elif isinstance(message, FileReadResponse):
+            if message.error.value != FileError.OK:
+                self._boot(timestamp)
+                return
+            pull.crc = crc64we(message.data, pull.crc)
+            pull.received += len(message.data)
+            if len(message.data) < FileReadResponse.MAX_DATA:
+                self._software_version = SoftwareVersion(
+                    major=SOFTWARE_VERSION.major,
+                    minor=SOFTWARE_VERSION.minor,
+                    optional_field_flags=SoftwareVersionFlag.IMAGE_CRC,
+                    vcs_commit=0,
+                    image_crc=pull.crc,
+                )
+                self._boot(timestamp)  # the new image runs
+            else:
+                self._read_next(timestamp)
 
     def _begin_firmware_update(
         self, request: BeginFirmwareUpdateRequest, caller: int
@@ -379,6 +501,9 @@ class SimulatedEsc:
         if timestamp < self._start_time:
             return []
         self._advance(timestamp)
+        if self._pull is not None and not self._in_bootloader and self._requester.poll(timestamp):
+            self._boot(timestamp)  # the file server stopped answering: back to the old firmware
+        self._outbox += self._requester.take_frames()
         frames = self._outbox
         self._outbox = []
         if self._in_bootloader:
@@ -419,7 +544,13 @@ class SimulatedEsc:
         if self._in_bootloader:
             return None
         times = [
-            t for t in (self._node_status.next_time, self._telemetry.next_time) if t is not None
+            t
+            for t in (
+                self._node_status.next_time,
+                self._telemetry.next_time,
+                self._requester.next_deadline(),
+            )
+            if t is not None
         ]
         return max(min(times), self._start_time) if times else None
 

@@ -1,6 +1,7 @@
 """A deterministic first-order model of a motor, its supply and its temperatures.
 
-Not from seed 004, which only names the telemetry fields (sections 1.2 and 1.3): the model
+Not from Vertiq's DroneCAN support document, which only names the telemetry fields (sections 1.2
+and 1.3): the model
 is the simulator's own, made to give plausible, smoothly varying telemetry. Every constant
 is a field of `MotorModel`; the docs page "Simulated ESC" tabulates them. Each quantity
 follows a first-order lag ``x += (target - x) * (1 - exp(-dt / tau))``, the exact solution
@@ -108,7 +109,8 @@ class MotorState:
 
     @property
     def power_rating_pct(self) -> int:
-        """PWM duty cycle in percent, 0..100 (seed 004 1.2): |throttle| while driven."""
+        """PWM duty cycle in percent, 0..100 (Vertiq's DroneCAN support, 1.2): |throttle| while
+        driven."""
         return round(abs(self.throttle) * 100) if self.driven else 0
 
 
@@ -127,7 +129,7 @@ def at_rest(model: MotorModel = DEFAULT_MODEL) -> MotorState:
 
 
 def command(state: MotorState, throttle: float, zero_behavior: ZeroBehavior) -> MotorState:
-    """Apply a new throttle setpoint (seed 004 1.4 and 3.4).
+    """Apply a new throttle setpoint (Vertiq's DroneCAN support, 1.4 and 3.4).
 
     A non-zero setpoint drives the motor. A zero one coasts (`ZeroBehavior.COAST`), brakes
     until stopped and then coasts (`ZeroBehavior.BRAKE`) or keeps driving at 0 %

@@ -1,13 +1,15 @@
 """The five configuration parameters of the simulated ESC and its GetSet replies.
 
-Names, types and order are those of seed 004 section 3 (all integers; the index of a
+Names, types and order are those of Vertiq's DroneCAN support document, section 3 (all integers;
+the index of a
 parameter is its position in that section, which is what a discovery walk by index sees).
-The seed gives no minimum or maximum for any of them; the ranges below are the simulator's
+The document gives no minimum or maximum for any of them; the ranges below are the simulator's
 own and are documented on the "Simulated ESC" page:
 
 - ``uavcan_node_id``: 1..127, the node ids DroneCAN allows a named node.
 - ``bit_rate``: 10000..1000000 bit/s, the classic CAN range.
-- ``esc_index``: 0..19, the entries a RawCommand can hold (seed 004 1.4: up to 20).
+- ``esc_index``: 0..19, the entries a RawCommand can hold (Vertiq's DroneCAN support, 1.4: up to
+20).
 - ``zero_behavior``: 0..2, the values of `ZeroBehavior` (3.4).
 - ``telem_frequency``: 0..1000 Hz, 0 turning telemetry off (3.5).
 """
@@ -38,7 +40,12 @@ class ParameterRange:
 
 
 PARAMETERS: tuple[ParameterRange, ...] = (
-    ParameterRange(Parameter.UAVCAN_NODE_ID, 1, 127, "after a restart (seed 004 3.1)"),
+    ParameterRange(
+        Parameter.UAVCAN_NODE_ID,
+        1,
+        127,
+        "after a restart (Vertiq document, 3.1)",
+    ),
     ParameterRange(
         Parameter.BIT_RATE, 10_000, 1_000_000, "at once, stored only: the simulator has no wire"
     ),
@@ -64,7 +71,8 @@ def find(request: GetSetRequest) -> int | None:
 def new_value(index: int, request: GetSetRequest) -> int | None:
     """The value a GetSet request sets, or None if it reads or asks for a value out of range.
 
-    Only an ``integer_value`` sets a parameter (they are all integers, seed 004 3); any
+    Only an ``integer_value`` sets a parameter (they are all integers, Vertiq's DroneCAN support,
+    3); any
     other member or an out-of-range integer leaves it unchanged, and the reply then shows
     the unchanged value (the DSDL's "actual value after the set").
     """

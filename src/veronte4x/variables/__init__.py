@@ -1,15 +1,16 @@
 """The Veronte Autopilot 4x manual's variable lists and PDI errors, as clean data.
 
-Source: seed 000 (Veronte Autopilot 4x manual), chapter 2 "Lists of interest": bit
+Source: the Veronte Autopilot 4x Software Manual, section 2 "Lists of interest": bit
 variables, real variables (RVar, 32-bit), integer variables (UVar, 16-bit) and PDI errors.
-The seed is OCR text; every entry here has its typos fixed, and an entry whose reading
-departs from what the seed printed says so in ``Variable.correction`` (PDI errors keep the
+The manual's lists are hard to read in places; every entry here has its typos fixed, and an entry
+whose reading
+departs from what the manual printed says so in ``Variable.correction`` (PDI errors keep the
 printed row in ``PdiError.seed_text``).
 
 ``BIT_VARIABLES``, ``REAL_VARIABLES`` and ``INTEGER_VARIABLES`` (also ``VARIABLES[kind]``)
 and ``PDI_ERRORS`` are tuples in the manual's order; a row may cover an id range.
 
-Example:
+Examples:
     >>> from veronte4x import variables
     >>> variables.by_id(variables.Kind.BIT, 803).name
     'PWM 0-5 GPIO Off'

@@ -1,9 +1,9 @@
-"""Bit variables of the Veronte Autopilot 4x (seed 000 section 2.2.1, "Bit Variables").
+"""Bit variables of the Veronte Autopilot 4x (4x Software Manual, section 2.2.1, "Bit Variables").
 
-The seed prints rows 6-27 many times over in garbled, overlapping forms (seed lines
-125-166); each of those rows below is the reading that the legible copies share. Rows 28 on
-(seed lines 171-268) are printed once, some with a second, garbled copy of the row
-underneath. "Line N" in a correction note is a line of seed file 000.
+The manual prints rows 6-27 many times over in garbled, overlapping forms; each of those
+rows below is the reading that the legible copies share. Rows 28 on are printed once, some
+with a second, garbled copy of the row underneath. "Line N" in a correction note counts lines of the
+manual's text (release 6.12) as veronte4x read it.
 """
 
 from __future__ import annotations
@@ -42,8 +42,8 @@ BIT_VARIABLES: tuple[Variable, ...] = (
         "OK. This bit is initialized with 1. When it is set as 0, it cannot recover until 1x "
         "is restarted",
         deprecated=True,
-        correction='the name cell also reads "Warning: Deprecated variable" (OCR "Varning", '
-        '"Vyriable"), kept as deprecated=True; name OCR variants "114X CAN failed", '
+        correction='the name cell also reads "Warning: Deprecated variable" (printed "Varning", '
+        '"Vyriable"), kept as deprecated=True; name printed variously as "114X CAN failed", '
         '"AY CAN foiled", "4A CAN lalled" (lines 131-143)',
     ),
     entry(_B, 12, "System Power up BIT Error", "Power up - 0 for error, 1 for OK"),

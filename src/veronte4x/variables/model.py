@@ -1,6 +1,6 @@
 """The shape of one entry of the manual's variable lists and of its PDI error list.
 
-Source: seed 000 (Veronte Autopilot 4x manual), chapter 2 "Lists of interest".
+Source: the Veronte Autopilot 4x Software Manual, section 2 "Lists of interest".
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ class Kind(str, Enum):
     """Which of the manual's three variable lists an entry belongs to.
 
     Attributes:
-        BIT: Bit variables (seed 000 section 2.2.1).
+        BIT: Bit variables (4x Software Manual, section 2.2.1).
         RVAR: Real variables, 32-bit float (section 2.2.2).
         UVAR: Integer variables, 16-bit (section 2.2.3).
     """
@@ -31,17 +31,17 @@ class Variable:
         kind: The table the row comes from.
         first: First id of the row.
         last: Last id of the row (equal to ``first`` for a single variable).
-        name: Name as printed in the manual, OCR typos fixed.
-        description: Description as printed in the manual, OCR typos fixed.
+        name: Name as printed in the manual, typos fixed.
+        description: Description as printed in the manual, typos fixed.
         unit: The "Units/Value" column (real variables only), ``None`` where blank.
         stored_in_1x: The manual's "*" marker: the variable is stored in the Autopilot 1x
             and, if communication is configured accordingly, carries information sent by
             the Arbiter.
         deprecated: The manual marks the variable "Warning: Deprecated variable".
-        uncertain: Part of the row is illegible in the seed and the reading given here
+        uncertain: Part of the row is illegible in the manual and the reading given here
             is the most plausible one, not a certain one (see ``correction``).
-        correction: What the seed printed where this entry departs from it, so that every
-            correction can be checked against the seed; ``None`` for rows taken as printed.
+        correction: What the manual printed where this entry departs from it, so that every
+            correction can be checked against the manual; ``None`` for rows taken as printed.
     """
 
     kind: Kind
@@ -87,15 +87,15 @@ def entry(
 
 @dataclass(frozen=True, slots=True)
 class PdiError:
-    """One PDI error the Arbiter can report (seed 000 section 2.3).
+    """One PDI error the Arbiter can report (4x Software Manual, section 2.3).
 
     Attributes:
         code: The error's code name, e.g. ``"pdi_arb_cfg2"``.
         number: The error number.
-        explanation: The manual's explanation, OCR typos fixed.
-        inferred: The number is illegible in the seed and was inferred from the legible
-            ones (notes/veronte-protocol.md, "Lists of variables and PDI errors").
-        seed_text: The seed's row exactly as printed, to check the reading against.
+        explanation: The manual's explanation, typos fixed.
+        inferred: The number is illegible in the manual and was inferred from the legible
+            ones (consecutive numbering).
+        seed_text: The manual's row exactly as printed, to check the reading against.
     """
 
     code: str

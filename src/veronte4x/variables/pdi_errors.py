@@ -1,9 +1,9 @@
 """PDI errors the Veronte Autopilot 4x Arbiter can report.
 
-Source: seed 000 section 2.3 "List of PDI errors" (seed lines 370-379). Only the numbers of
-pdi_arb_cfg2 (10005) and pdi_arb_cfg3 (10006) are legible; the others are the reading of
-notes/veronte-protocol.md ("Lists of variables and PDI errors"), consecutive from 10000 in
-the order printed, and are flagged ``inferred=True``. ``seed_text`` keeps each row as printed
+Source: 4x Software Manual, section 2.3 "List of PDI errors". Only the numbers of
+pdi_arb_cfg2 (10005) and pdi_arb_cfg3 (10006) are legible; the others are inferred,
+consecutive from 10000 in the order printed, and are flagged ``inferred=True``. ``seed_text`` keeps
+each row as printed
 (the tab between columns shown as " | "). "oor" is the manual's "out of range".
 """
 

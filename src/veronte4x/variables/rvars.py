@@ -1,8 +1,9 @@
 """Real variables (RVar, 32-bit float) of the Veronte Autopilot 4x.
 
-Source: seed 000 section 2.2.2 "Real Variables (RVar) - 32 Bits" (seed lines 277-296). The
+Source: 4x Software Manual, section 2.2.2 "Real Variables (RVar) - 32 Bits". The
 unit is the table's "Units/Value" column; it is blank for RVars 1361-1365 and left ``None``
-there. "Line N" in a correction note is a line of seed file 000.
+there. "Line N" in a correction note counts lines of the manual's text (release 6.12) as
+veronte4x read it.
 """
 
 from __future__ import annotations

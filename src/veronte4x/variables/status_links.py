@@ -1,8 +1,9 @@
 """Which bit variables the flags of the Status message summarise, where the manual says so.
 
-Status bytes 4-5 (seed 000 section 3.1.1, "Status Message") carry sixteen OK flags; the
+Status bytes 4-5 (4x Software Manual, section 3.1.1, "Status Message") carry sixteen OK flags; the
 codec names them ``cbit_ok`` ... ``normal_mode``. Each flag is linked below to the Arbiter's
-own bit variable and to its "4XV" copy stored in the Autopilot 1x (marked "*" in seed 000
+own bit variable and to its "4XV" copy stored in the Autopilot 1x (marked "*" in the 4x Software
+Manual
 section 2.2.1), only where a sentence or row of the manual ties them; the justifying text is
 quoted above each link ("2.1" is section "Activation System Error bits", "Status" the
 Status message table, "bit N" the row of the bit variable table). A flag's bits and the flag

@@ -1,9 +1,10 @@
 """Integer variables (UVar, 16-bit) of the Veronte Autopilot 4x.
 
-Source: seed 000 section 2.2.3 "Integer Variables (UVar) - 16 Bits" (seed lines 302-361).
+Source: 4x Software Manual, section 2.2.3 "Integer Variables (UVar) - 16 Bits".
 The table has no unit column. Rows printed with a stray number underneath (a garbled second
-copy of the row, e.g. "55", "405", "720") are read once. "Line N" in a correction note is a
-line of seed file 000. UVar 71 and 497 are not in the seed and are not listed.
+copy of the row, e.g. "55", "405", "720") are read once. "Line N" in a correction note counts
+lines of the manual's text (release 6.12) as veronte4x read it. UVar 71 and 497 are not in the
+manual and are not listed.
 """
 
 from __future__ import annotations

@@ -1,0 +1,183 @@
+"""Whole captures to tables: the columnar engine against the tools a user would pick instead.
+
+Run: python benchmarks/bench_columnar.py [--frames 2000000] [--small 1000000]
+
+The capture is the example flight (`examples/make_capture.py`: three autopilots and the
+arbiter, PWM sets, four Vertiq ESCs over DroneCAN with multi-frame esc.Status, RawCommand,
+NodeStatus and GetNodeInfo services), repeated with shifted timestamps up to ``--frames``
+lines, written as candump text and, for asammdf, as MF4 bus logging of the same frames. In
+one run it times, best of ``--repeat`` runs each:
+
+- python-can's candump reader (`can.CanutilsLogReader`) iterating every message;
+- asammdf: `MDF.extract_bus_logging` with an equivalent DBC (the Veronte IDs multiplexed on
+  the command byte: arbitration frames with a float32 value, PWM sets as four 12-bit
+  signals; DroneCAN cannot be described in a DBC, so asammdf skips those frames) and
+  `to_dataframe`;
+- veronte4x per frame, as before the columnar engine (`to_dataframe(read(path))`), on the
+  first ``--per-frame`` frames only (it is slow);
+- veronte4x `read_tables` (every frame decoded, DroneCAN reassembled and CRC-checked) on
+  ``--small`` and ``--frames`` frames, to show the time is linear in the file's size.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import tempfile
+import time
+from collections.abc import Callable
+from itertools import islice
+from pathlib import Path
+
+import can
+import numpy as np
+from asammdf import MDF
+from bench_capture import make_file
+
+from veronte4x import capture
+from veronte4x.capture.columnar.sources import read_frames
+
+VERONTE_IDS = ((255, "Arbiter"), (8, "AP1"), (9, "AP2"), (10, "AP3"), (11, "External"))
+PWM_COMMANDS = (2, 3, 11, 12, 13)
+
+
+def write_dbc(path: Path) -> None:
+    """A DBC of the Veronte frames, multiplexed on the command byte."""
+    lines = ['VERSION ""', "", "NS_ :", "", "BS_:", "", "BU_:", ""]
+    value_types = []
+    for can_id, name in VERONTE_IDS:
+        lines += [
+            f"BO_ {can_id} {name}: 8 Vector__XXX",
+            ' SG_ command M : 0|8@1+ (1,0) [0|255] "" Vector__XXX',
+            ' SG_ sub m0 : 8|8@1+ (1,0) [0|255] "" Vector__XXX',
+            ' SG_ value m0 : 16|32@1- (1,0) [0|0] "" Vector__XXX',
+        ]
+        for command in PWM_COMMANDS:
+            lines += [
+                f" SG_ pwm{command}_{i} m{command} : {8 + 12 * i}|12@1+ (1,0) [0|4095] "
+                '"" Vector__XXX'
+                for i in range(4)
+            ]
+        lines.append("")
+        value_types.append(f"SIG_VALTYPE_ {can_id} value : 1;")
+    path.write_text("\n".join(lines + value_types) + "\n")
+
+
+def write_mf4(log: Path, path: Path) -> None:
+    """The frames of a candump log as MF4 bus logging, laid out as python-can's MF4Writer
+    lays them out, but written as whole arrays (its per-message writer takes minutes)."""
+    from can.io.mf4 import STD_DTYPE
+
+    frames = read_frames(log)
+    writer = can.MF4Writer(str(path))
+    records = np.zeros(len(frames), dtype=STD_DTYPE)
+    records["CAN_DataFrame.BusChannel"] = 0
+    records["CAN_DataFrame.ID"] = frames.can_id
+    records["CAN_DataFrame.IDE"] = frames.extended
+    records["CAN_DataFrame.DLC"] = frames.length
+    records["CAN_DataFrame.DataLength"] = frames.length
+    records["CAN_DataFrame.DataBytes"][:, :8] = frames.data
+    stamps = frames.timestamp - writer._start_time
+    writer._mdf.extend(0, [(stamps, None), (records, None)])
+    writer.stop()
+
+
+def python_can_reader(path: Path) -> int:
+    """Every message through python-can's candump reader."""
+    return sum(1 for _ in can.CanutilsLogReader(str(path)))
+
+
+def asammdf_dataframe(mf4: Path, dbc: Path) -> int:
+    """asammdf's bus-logging decode into one DataFrame."""
+    decoded = MDF(str(mf4)).extract_bus_logging(database_files={"CAN": [(str(dbc), 0)]})
+    return len(decoded.to_dataframe())
+
+
+def per_frame_dataframe(path: Path) -> int:
+    """veronte4x before the columnar engine: records, then a DataFrame."""
+    return len(capture.to_dataframe(capture.read(path)))
+
+
+def columnar_tables(path: Path) -> int:
+    """veronte4x's columnar engine: every table."""
+    return sum(table.num_rows for table in capture.read_tables(path).values())
+
+
+def _timed(function: Callable[[], int], repeat: int) -> float:
+    """The best of ``repeat`` runs, in seconds."""
+    best = float("inf")
+    for _ in range(repeat):
+        start = time.perf_counter()
+        function()
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def _head(path: Path, frames: int, out: Path) -> None:
+    with path.open() as lines, out.open("w") as head:
+        head.writelines(islice(lines, frames))
+
+
+def main() -> None:
+    """Build the files, time every reader in one run, print rates and ratios."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--frames", type=int, default=2_000_000, help="frames of the big file")
+    parser.add_argument("--small", type=int, default=1_000_000, help="frames of the small file")
+    parser.add_argument("--per-frame", type=int, default=200_000, help="frames for the old path")
+    parser.add_argument("--repeat", type=int, default=2, help="runs of each reader (best kept)")
+    args = parser.parse_args()
+    repeat = args.repeat
+    with tempfile.TemporaryDirectory() as folder:
+        root = Path(folder)
+        big, small, head = root / "big.log", root / "small.log", root / "head.log"
+        written = make_file(big, args.frames)
+        _head(big, args.small, small)
+        _head(big, args.per_frame, head)
+        mf4, dbc = root / "big.mf4", root / "veronte.dbc"
+        write_mf4(big, mf4)
+        write_dbc(dbc)
+        print(
+            f"Python {platform.python_version()}, {os.cpu_count()} CPUs; {written} frames, "
+            f"{big.stat().st_size / 1e6:.0f} MB of candump text, {mf4.stat().st_size / 1e6:.0f}"
+            " MB of MF4"
+        )
+        rows = [
+            (
+                "python-can CanutilsLogReader",
+                written,
+                _timed(lambda: python_can_reader(big), repeat),
+            ),
+            (
+                "asammdf extract_bus_logging + to_dataframe",
+                written,
+                _timed(lambda: asammdf_dataframe(mf4, dbc), repeat),
+            ),
+            (
+                "veronte4x to_dataframe(read()) (per frame)",
+                args.per_frame,
+                _timed(lambda: per_frame_dataframe(head), repeat),
+            ),
+            (
+                f"veronte4x read_tables, {args.small} frames",
+                args.small,
+                _timed(lambda: columnar_tables(small), repeat),
+            ),
+            (
+                f"veronte4x read_tables, {written} frames",
+                written,
+                _timed(lambda: columnar_tables(big), repeat),
+            ),
+        ]
+        rates = {name: frames / seconds for name, frames, seconds in rows}
+        ours = rows[-1][1] / rows[-1][2]
+        print(f"{'reader':48} {'frames/s':>12} {'seconds':>8} {'read_tables is':>15}")
+        for name, frames, seconds in rows:
+            ratio = ours / rates[name]
+            print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {ratio:14.2f}x")
+        hour = 63_000_000 / ours
+        print(f"one hour of two 1 Mbit/s buses (63 M frames) at this rate: {hour:.0f} s")
+
+
+if __name__ == "__main__":
+    main()

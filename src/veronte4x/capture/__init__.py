@@ -1,0 +1,159 @@
+"""Captures in notebooks: read a capture into records, count them, tabulate and plot them.
+
+The capture layer, in one package: readers (`veronte4x.capture.readers`), where a source
+comes from (`veronte4x.capture.source`), the bus map, the per-frame decoder, records, stats,
+DataFrames and plots. This module is its public face.
+
+Examples:
+    >>> from veronte4x import capture
+    >>> records = list(capture.read("examples/capture.log"))
+    >>> records[2].sender, records[2].message
+    ('AP1', Ready(ready=True))
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING, Any
+
+from veronte4x.capture.busmap import BusMap, BusMapError, Role
+from veronte4x.capture.dataframe import fields, to_dataframe
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers.pythoncan import read_with_python_can
+from veronte4x.capture.records import Record
+from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_lines, resolve
+from veronte4x.capture.stats import Stats
+from veronte4x.extras import require
+
+if TYPE_CHECKING:
+    import pyarrow
+
+__all__ = [
+    "BadLine",
+    "BusMap",
+    "BusMapError",
+    "CaptureDecoder",
+    "Frame",
+    "Record",
+    "Role",
+    "Stats",
+    "fields",
+    "open_frames",
+    "read",
+    "read_tables",
+    "stats",
+    "tables_from_records",
+    "to_dataframe",
+]
+
+
+def read(
+    path: str | os.PathLike[str], bus_map: BusMap | None = None, channel: str | None = None
+) -> Iterator[Record]:
+    """Stream the decoded records of a capture file.
+
+    Args:
+        path: candump text (``.log``, ``.txt``, gzipped or not, or any other name whose
+            content is candump; ``-`` for standard input), or a format python-can reads
+            (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
+
+    Raises:
+        SourceError: The path is a directory or a file in no format veronte4x knows
+            (raised by the call, before any record).
+        MissingExtraError: The format needs python-can and it is not installed.
+        OSError: The file cannot be opened.
+    """
+    source = resolve(path)
+    decoder = CaptureDecoder(bus_map)
+    if source.format is Format.CANDUMP:
+        return _decode_text(decoder, source, channel)
+    return decoder.decode(read_with_python_can(source.path, channel))
+
+
+def _decode_text(decoder: CaptureDecoder, source: Source, channel: str | None) -> Iterator[Record]:
+    with open_lines(source) as lines:
+        try:
+            yield from decoder.decode_candump(lines, channel)
+        except Truncated as cut:
+            yield from decoder.decode((cut.bad_line(),))
+
+
+def stats(records: Iterable[Record]) -> Stats:
+    """Count records per message type, per sender and errors per kind."""
+    counts = Stats()
+    for record in records:
+        counts.add(record)
+    return counts
+
+
+def read_tables(
+    source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
+    bus_map: BusMap | None = None,
+    channel: str | None = None,
+    relative_time: bool = False,
+) -> dict[str, pyarrow.Table]:
+    """Decode whole captures into typed Arrow tables, one per message type.
+
+    The columnar path: frames are parsed, routed, reassembled and decoded as whole columns
+    (see the Tables page of the docs). It gives exactly the records of `read`, arranged in
+    tables: one per `Record.kind` of a message (``Status``, ``EscStatus``, ...), plus
+    ``errors`` (every record whose ``error`` is set: columns ``error``, ``detail``,
+    ``data``) and ``unknown`` (undecoded traffic), each only when the capture has such
+    rows. Every table starts with ``timestamp``, ``channel``, ``can_id`` and ``sender``
+    (DroneCAN tables then ``node_id``, and ``destination_node_id`` for services), then one
+    column per message field, with an Arrow type fixed by the layout (a field with a
+    physical unit carries it in its metadata: ``unit`` ``V``, ``A``, ``K``, ...). Rows keep
+    capture order; several files are decoded one by one and their tables joined in the
+    order given. Needs the ``arrow`` extra.
+
+    Args:
+        source: A capture file (any format `read` takes, ``-`` for candump text on
+            standard input) or a list of them.
+        bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
+        channel: Keep only this interface's frames.
+        relative_time: Timestamps in seconds from each capture's first timestamped frame,
+            as ``candump -t z`` shows them.
+
+    Raises:
+        SourceError: The path is a directory or a file in no format veronte4x knows.
+        MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
+            than candump text and MF4) is not installed; the message names it.
+
+    Examples:
+        >>> from veronte4x import capture
+        >>> tables = capture.read_tables("examples/capture.log")
+        >>> scores = tables["Score"]
+        >>> scores.column_names
+        ['timestamp', 'channel', 'can_id', 'sender', 'autopilot', 'score']
+        >>> scores.column("sender")[0].as_py(), scores.column("score").type
+        ('arbiter', DataType(float))
+        >>> tables["errors"].column("error").to_pylist()
+        ['unknown command']
+    """
+    tables: dict[str, pyarrow.Table] = _columnar().read_tables(
+        source, bus_map, channel, relative_time
+    )
+    return tables
+
+
+def tables_from_records(
+    records: Iterable[Record], bus_map: BusMap | None = None
+) -> dict[str, pyarrow.Table]:
+    """The tables of `read_tables` from records decoded one by one (a live bus, `read`).
+
+    Rows keep the order of the records. Needs the ``arrow`` extra.
+    """
+    tables: dict[str, pyarrow.Table] = _columnar().tables_from_records(records, bus_map)
+    return tables
+
+
+def _columnar() -> Any:
+    for module in ("numpy", "pyarrow"):
+        require(module, "arrow", "decoding into Arrow tables")
+    from veronte4x.capture import columnar
+
+    return columnar

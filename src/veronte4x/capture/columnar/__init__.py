@@ -1,0 +1,57 @@
+"""The columnar engine: whole captures into typed Arrow tables, one per message type.
+
+Needs the ``arrow`` extra (``pip install 'veronte4x[arrow]'``: pyarrow and NumPy). The
+public entry points are `veronte4x.capture.read_tables` and
+`veronte4x.capture.tables_from_records`; the modules here are its parts: `sources` opens a
+capture as `frames.FrameColumns` (`candump` parses text column-wise), `engine` routes and
+decodes (`veronte` and `dronecan` column-wise, the per-frame decoder for the rest), `schema`
+fixes each table's columns and `tables` assembles them.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+
+import numpy as np
+import numpy.typing as npt
+import pyarrow as pa
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.columnar import frame
+from veronte4x.capture.columnar.engine import decode_into, tables_from_records
+from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.capture.columnar.tables import relative_time as make_relative
+
+__all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
+
+Source = str | os.PathLike[str]
+
+
+def read_tables(
+    source: Source | Iterable[Source],
+    bus_map: BusMap | None = None,
+    channel: str | None = None,
+    relative_time: bool = False,
+) -> dict[str, pa.Table]:
+    """See `veronte4x.capture.read_tables`."""
+    paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
+    parts = [keyed_tables(path, bus_map, channel, relative_time) for path in paths]
+    parts = [{kind: table for kind, (table, _) in part.items()} for part in parts]
+    if len(parts) == 1:
+        return parts[0]
+    kinds = list(dict.fromkeys(kind for part in parts for kind in part))
+    return {
+        kind: pa.concat_tables([part[kind] for part in parts if kind in part]).unify_dictionaries()
+        for kind in kinds
+    }
+
+
+def keyed_tables(
+    path: Source, bus_map: BusMap | None, channel: str | None, relative_time: bool
+) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+    """The tables of one capture, each with the capture-order keys of its rows."""
+    tables = decode_into(read_frames(path), bus_map, channel).finish_with_keys()
+    if relative_time:
+        make_relative(tables)
+    return tables

@@ -1,0 +1,542 @@
+"""candump text to `FrameColumns`, column-wise.
+
+The whole text is one NumPy byte array. Line breaks, spaces and ``#`` are found in one pass
+each; every line of the plain log form (``(seconds) interface ID#DATA``, a classic frame,
+not an error frame) is then cut, checked and converted for all lines at once: timestamps to
+the float the per-frame reader's ``float()`` gives (an exact integer mantissa divided by a
+power of ten, one correctly rounded division), identifiers and data from hex through a
+lookup table. Every other line (the human view, remote, FD and error frames, raw DLCs, odd
+lines) goes through the per-frame reader's own `parse_line`, so that both paths agree
+line for line.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import deque
+from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
+from dataclasses import dataclass
+from typing import BinaryIO
+
+import numpy as np
+import numpy.typing as npt
+
+from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns, concat, from_frames
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers.candump import parse_candump
+
+_STAMP = 24
+"""Most characters of a timestamp the column parser reads; longer ones go line by line."""
+_INTERFACE = 16
+"""Most characters of an interface name the column parser reads."""
+
+_ODD = np.zeros(256, np.bool_)
+"""Bytes that make a line the per-line parser's: control characters (white space to the
+per-frame reader's split, among others) and non-ASCII bytes (decoded with replacement
+there). The column parser's byte arithmetic relies on lines having none."""
+_ODD[:32] = True
+_ODD[[10, 13]] = False
+_ODD[128:] = True
+_ONES = np.uint64(0x0101010101010101)
+_HIGH = np.uint64(0x8080808080808080)
+_PAD = 32
+"""Line breaks after the text, more than the widest window."""
+_POW10 = 10 ** np.arange(19, dtype=np.int64)
+_POW10F = 10.0 ** np.arange(23)
+_EXACT = 1 << 53
+"""Mantissas below this convert to float64 exactly."""
+
+
+def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
+    """Parse candump text into columns.
+
+    Args:
+        text: Whole lines of candump text (a last line without a break is taken whole).
+        first_line: Line number of the first line.
+
+    Returns:
+        The frames and bad lines, or None when the text has a lone carriage return (a line
+        break to the per-frame reader that this parser does not split on).
+    """
+    a = np.full(len(text) + 1 + _PAD, 10, np.uint8)
+    a[: len(text)] = np.frombuffer(text, np.uint8)
+    size = len(text) + (not text.endswith(b"\n"))
+    breaks = np.flatnonzero(a[:size] == 10)
+    starts = np.empty(len(breaks), np.int64)
+    starts[0] = 0
+    starts[1:] = breaks[:-1] + 1
+    ends = breaks.copy()
+    returns = np.flatnonzero(a == 13)
+    if len(returns):
+        if not (a[returns + 1] == 10).all():
+            return None
+        ends[np.searchsorted(breaks, returns)] -= 1
+    clean = _clean_lines(a, starts, ends)
+    fast = _log_lines(a, starts, ends, clean)
+    slow = ends > starts
+    slow[fast.line] = False
+    parts = [fast.columns(first_line)]
+    hashes = np.bincount(
+        np.searchsorted(ends, np.flatnonzero(a[:size] == 35)), minlength=len(starts)
+    )
+    human = np.flatnonzero(slow & clean & (hashes[: len(starts)] == 0))
+    if len(human):
+        found = _human_lines(a, starts, ends, human)
+        slow[found.line] = False
+        parts.append(found.columns(first_line))
+    columns = concat(parts)
+    lines = np.flatnonzero(slow)
+    if not len(lines):
+        return columns
+    items: list[tuple[int, Frame | BadLine]] = []
+    for line in lines.tolist():
+        raw = text[starts[line] : ends[line]].decode("utf-8", "replace")
+        for item in parse_candump((raw,), first_line=first_line + line):
+            items.append((first_line + line, item))
+    return concat([columns, from_frames(items)])
+
+
+@dataclass
+class _LogLines:
+    """The log-form lines of a text the column parser took, one row each."""
+
+    line: npt.NDArray[np.int64]
+    stamp: npt.NDArray[np.float64]
+    interface: npt.NDArray[np.int32]
+    interfaces: list[str]
+    can_id: npt.NDArray[np.uint32]
+    extended: npt.NDArray[np.bool_]
+    length: npt.NDArray[np.int64]
+    data: npt.NDArray[np.uint8]
+    has_time: npt.NDArray[np.bool_] | None = None
+
+    def columns(self, first_line: int) -> FrameColumns:
+        n = len(self.line)
+        no = np.zeros(n, np.bool_)
+        return FrameColumns(
+            order=self.line + first_line,
+            timestamp=self.stamp,
+            has_time=np.ones(n, np.bool_) if self.has_time is None else self.has_time,
+            channel=self.interface,
+            channels=self.interfaces,
+            can_id=self.can_id,
+            extended=self.extended,
+            remote=no,
+            fd=no,
+            error=no,
+            length=self.length,
+            data=self.data,
+        )
+
+
+def _window(a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64], width: int) -> np.ndarray:
+    """``width`` bytes from each position; the text ends in `_PAD` line breaks, so that a
+    window never runs past it."""
+    return np.lib.stride_tricks.sliding_window_view(a, width)[at]
+
+
+def _clean_lines(
+    a: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64], ends: npt.NDArray[np.int64]
+) -> npt.NDArray[np.bool_]:
+    """Lines with no control character and no non-ASCII byte (see `_ODD`)."""
+    clean = np.ones(len(starts), np.bool_)
+    body = a[: ends[-1] + 1]
+    controls = np.count_nonzero(body < 32) - len(starts) - np.count_nonzero(body == 13)
+    if controls or body.max() >= 128:
+        clean[np.searchsorted(ends, np.flatnonzero(_ODD[body]))] = False
+    return clean
+
+
+def _log_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    clean: npt.NDArray[np.bool_],
+) -> _LogLines:
+    """The plain log-form lines: ``(seconds) interface ID#DATA``, a classic data frame."""
+    ok = clean & (a[starts] == 40)  # "("
+    body = a[: ends[-1] + 1]
+    spaces = np.flatnonzero(body == 32)
+    spaces = np.append(spaces, len(a) - 1)  # a sentinel in the padding
+    first = np.searchsorted(spaces, starts)
+    ok &= np.searchsorted(spaces, ends) - first == 2  # exactly two spaces
+    second = np.minimum(first + 1, len(spaces) - 1)
+    space1, space2 = spaces[first], spaces[second]
+    hashes = np.append(np.flatnonzero(body == 35), [len(a) - 1, len(a) - 1])
+    at_hash = np.searchsorted(hashes, space2)
+    hash1, hash2 = hashes[at_hash], hashes[at_hash + 1]
+    ok &= (hash1 < ends) & (hash2 >= ends)  # one "#", in the third field
+    stamp_size = space1 - starts - 2
+    id_size = hash1 - space2 - 1
+    data_size = ends - hash1 - 1
+    ok &= (stamp_size > 0) & (stamp_size <= _STAMP)
+    ok &= (space2 - space1 > 1) & (space2 - space1 <= _INTERFACE + 1)
+    ok &= (id_size == 3) | (id_size == 8)
+    ok &= (data_size >= 0) & (data_size <= 2 * MAX_DATA) & (data_size % 2 == 0)
+    ok &= a[np.maximum(space1 - 1, 0)] == 41  # ")"
+    rows = np.flatnonzero(ok)
+    words = _words(a)
+    space1, space2, hash1 = space1[rows], space2[rows], hash1[rows]
+    stamp, good = _stamps(a, words, starts[rows] + 1, stamp_size[rows])
+    can_id, extended, good_id = _identifiers(words[space2 + 1], id_size[rows])
+    size = data_size[rows]
+    data, good_data = _data(words[hash1 + 1], words[hash1 + 9], size)
+    interface, names = _interfaces(words[space1 + 1], words[space1 + 9], space2 - space1 - 1)
+    good &= good_id & good_data
+    data_bytes = data.view(np.uint8).reshape(-1, MAX_DATA)
+    if good.all():
+        return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data_bytes)
+    keep = np.flatnonzero(good)
+    return _LogLines(
+        rows[keep],
+        stamp[keep],
+        interface[keep],
+        names,
+        can_id[keep],
+        extended[keep],
+        size[keep] // 2,
+        data_bytes[keep],
+    )
+
+
+def _human_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    lines: npt.NDArray[np.int64],
+) -> _LogLines:
+    """The plain human-view lines: ``[(time)] interface ID [n] XX XX ...``, a classic data
+    frame and nothing after its bytes (lines with "#" are left to `parse_line`). The time is
+    seconds (``candump -t a``, ``-t d``, ``-t z``) or ``YYYY-MM-DD HH:MM:SS.ffffff``
+    (``-t A``)."""
+    body = a[: ends[-1] + 1]
+    separator = (body == 32) | (body == 10) | (body == 13)
+    begins = ~separator
+    begins[1:] &= separator[:-1]
+    finishes = ~separator
+    finishes[:-1] &= separator[1:]
+    token_start = np.append(np.flatnonzero(begins), len(body))  # a sentinel token
+    token_end = np.append(np.flatnonzero(finishes) + 1, len(body))
+    last = len(token_start) - 1
+    first = np.searchsorted(token_start, starts[lines])
+    count = np.searchsorted(token_start, ends[lines]) - first
+    stamped = (a[token_start[first]] == 40) & (count > 0)  # "("
+    date_end = token_end[first]
+    dated = stamped & (date_end - token_start[first] == 11) & (a[date_end - 3] == 45)  # "-"
+    dated &= token_start[np.minimum(first + 1, last)] == date_end + 1
+    dated &= token_end[np.minimum(first + 1, last)] == date_end + 17
+    stamped = stamped.astype(np.int64) + dated  # tokens the time takes
+    head = first + stamped  # the interface's token
+    size_token = np.minimum(head + 2, last)
+    size_at = token_start[size_token]
+    size_len = token_end[size_token] - size_at
+    words = _words(a)
+    size_word = words[size_at]
+    size_one = (size_len == 3) & ((size_word & np.uint64(0xFF00FF)) == np.uint64(0x5D005B))
+    size = ((size_word >> np.uint64(8)) & np.uint64(0xFF)).astype(np.int64) - 48  # "[n]"
+    ok = (count >= 3) & size_one & (size >= 0) & (size <= MAX_DATA)
+    ok &= count == 3 + stamped + size
+    rows = np.flatnonzero(ok)
+    lines, first, head, size, stamped = (
+        lines[rows],
+        first[rows],
+        head[rows],
+        size[rows],
+        stamped[rows],
+    )
+    ident = head + 1
+    id_size = token_end[ident] - token_start[ident]
+    iface_size = token_end[head] - token_start[head]
+    can_id, extended, good = _identifiers(words[token_start[ident]], id_size)
+    good &= ((id_size == 3) | (id_size == 8)) & (iface_size <= _INTERFACE)
+    stamp = np.zeros(len(lines))
+    timed = np.flatnonzero(stamped == 1)
+    if len(timed):
+        at, end = token_start[first[timed]], token_end[first[timed]]
+        good[timed] &= a[end - 1] == 41  # ")"
+        stamp[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
+        good[timed] &= timed_ok & (end - at - 2 > 0) & (end - at - 2 <= _STAMP)
+    dated_rows = np.flatnonzero(stamped == 2)
+    if len(dated_rows):
+        stamp[dated_rows], dated_ok = _date_stamps(a, token_start[first[dated_rows]] + 1)
+        good[dated_rows] &= dated_ok
+    # The data bytes: one two-character token each.
+    owner = np.repeat(np.arange(len(lines)), size)
+    position = np.arange(len(owner)) - np.repeat(np.cumsum(size) - size, size)
+    token = head[owner] + 3 + position
+    pair = words[token_start[token]]
+    nibbles, pair_ok = _hex(pair, _MASKS[np.full(len(token), 2)])
+    pair_ok &= token_end[token] - token_start[token] == 2
+    value = ((nibbles & np.uint64(15)) << np.uint64(4)) | (
+        (nibbles >> np.uint64(8)) & np.uint64(15)
+    )
+    good &= np.bincount(owner, weights=~pair_ok, minlength=len(lines)) == 0
+    data = np.zeros((len(lines), MAX_DATA), np.uint8)
+    data[owner, position] = value.astype(np.uint8)
+    interface, names = _interfaces(
+        words[token_start[head]], words[token_start[head] + 8], iface_size
+    )
+    keep = np.flatnonzero(good)
+    return _LogLines(
+        lines[keep],
+        stamp[keep],
+        interface[keep],
+        names,
+        can_id[keep],
+        extended[keep],
+        size[keep],
+        data[keep],
+        stamped[keep] > 0,
+    )
+
+
+_DAYS_IN_MONTH = np.array([0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31], np.int64)
+
+
+def _date_stamps(
+    a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, np.ndarray]:
+    """``YYYY-MM-DD HH:MM:SS.ffffff)`` at ``at`` to seconds since the epoch (UTC), exactly as
+    ``datetime.strptime(...).replace(tzinfo=utc).timestamp()`` gives them: whole
+    microseconds divided once by a million. Dates ``datetime`` refuses are not good."""
+    digits = {k: a[at + k].astype(np.int64) - 48 for k in (*range(4), 5, 6, 8, 9)}
+    digits.update({k: a[at + k].astype(np.int64) - 48 for k in (11, 12, 14, 15, 17, 18)})
+    digits.update({k: a[at + k].astype(np.int64) - 48 for k in range(20, 26)})
+    good = np.ones(len(at), np.bool_)
+    for value in digits.values():
+        good &= (value >= 0) & (value <= 9)
+    for k, char in ((4, 45), (7, 45), (10, 32), (13, 58), (16, 58), (19, 46), (26, 41)):
+        good &= a[at + k] == char
+
+    def number(*places: int) -> np.ndarray:
+        total = np.zeros(len(at), np.int64)
+        for k in places:
+            total = total * 10 + digits[k]
+        return total
+
+    year, month, day = number(0, 1, 2, 3), number(5, 6), number(8, 9)
+    hour, minute, second = number(11, 12), number(14, 15), number(17, 18)
+    micro = number(20, 21, 22, 23, 24, 25)
+    leap = (year % 4 == 0) & ((year % 100 != 0) | (year % 400 == 0))
+    month_ok = (month >= 1) & (month <= 12)
+    length = _DAYS_IN_MONTH[np.where(month_ok, month, 0)] + (leap & (month == 2))
+    good &= (year >= 1) & month_ok & (day >= 1) & (day <= length)
+    good &= (hour <= 23) & (minute <= 59) & (second <= 59)
+    # Days since 1970-01-01 of a proleptic Gregorian date (H. Hinnant's days_from_civil).
+    shifted = year - (month <= 2)
+    era = shifted // 400
+    of_era = shifted - era * 400
+    of_year = (153 * (month + np.where(month > 2, -3, 9)) + 2) // 5 + day - 1
+    days = era * 146097 + of_era * 365 + of_era // 4 - of_era // 100 + of_year - 719468
+    total = ((days * 86400 + hour * 3600 + minute * 60 + second) * 1_000_000) + micro
+    good &= np.abs(total) < _EXACT
+    return total.astype(np.float64) / 1e6, good
+
+
+def _words(a: npt.NDArray[np.uint8]) -> npt.NDArray[np.uint64]:
+    """The eight bytes from every position of the text as one little-endian integer: an
+    overlapping view, so that ``words[p]`` reads the eight characters at ``p``."""
+    words: npt.NDArray[np.uint64] = np.ndarray(
+        shape=(len(a) - 7,), dtype="<u8", buffer=a, strides=(1,)
+    )
+    return words
+
+
+_MASKS = np.array([(1 << (8 * n)) - 1 for n in range(9)], np.uint64)
+
+
+def _byte_mask(count: npt.NDArray[np.int64]) -> npt.NDArray[np.uint64]:
+    """A mask of the ``count`` low bytes of a word (none below 0, all eight above 8)."""
+    masks: npt.NDArray[np.uint64] = _MASKS[np.clip(count, 0, 8)]
+    return masks
+
+
+def _hex(word: npt.NDArray[np.uint64], mask: npt.NDArray[np.uint64]) -> tuple[np.ndarray, ...]:
+    """Eight hex characters per word (no control or non-ASCII bytes) to their nibbles, one
+    per byte, and whether every character under ``mask`` is a hex digit."""
+    lower = word | (_ONES * np.uint64(0x20))
+    digit = (lower + _ONES * np.uint64(0x50)) & ~(lower + _ONES * np.uint64(0x46))
+    letter = (lower + _ONES * np.uint64(0x1F)) & ~(lower + _ONES * np.uint64(0x19))
+    good = (~(digit | letter) & mask & _HIGH) == 0
+    nibbles = (lower & (_ONES * np.uint64(15))) + np.uint64(9) * ((lower >> np.uint64(6)) & _ONES)
+    return nibbles, good
+
+
+def _pack(nibbles: npt.NDArray[np.uint64]) -> npt.NDArray[np.uint64]:
+    """Eight nibbles, one per byte, to the four bytes they spell (first nibble high)."""
+    pairs = ((nibbles << np.uint64(4)) | (nibbles >> np.uint64(8))) & np.uint64(0x00FF00FF00FF00FF)
+    pairs = (pairs | (pairs >> np.uint64(8))) & np.uint64(0x0000FFFF0000FFFF)
+    packed: npt.NDArray[np.uint64] = (pairs | (pairs >> np.uint64(16))) & np.uint64(0xFFFFFFFF)
+    return packed
+
+
+def _stamps(
+    a: npt.NDArray[np.uint8],
+    words: npt.NDArray[np.uint64],
+    at: npt.NDArray[np.int64],
+    sizes: npt.NDArray[np.int64],
+) -> tuple[np.ndarray, np.ndarray]:
+    """Decimal ``digits[.digits]`` to float64, exactly as ``float()``; others not good.
+
+    The timestamps of a capture share one shape (``1436509052.249713``): for those of the
+    first one's shape, the digits are moved into two words of eight (zero-padded in front)
+    with a few shifts, converted eight at a time, and the exact integer divided by a power
+    of ten once; the rest go through `_stamps_any`.
+    """
+    stamp = np.zeros(len(at))
+    good = np.zeros(len(at), np.bool_)
+    if not len(at):
+        return stamp, good
+    size = int(sizes[0])
+    shape = bytes(a[at[0] : at[0] + size])
+    dot = shape.find(b".")
+    digits = size - (dot >= 0)
+    rows = np.flatnonzero(sizes == size)
+    if 0 < digits <= 16 and shape.count(b".") <= 1:
+        base = at[rows]
+        runs = [(0, dot), (dot + 1, size - dot - 1)] if dot >= 0 else [(0, size)]
+        halves = [np.zeros(len(rows), np.uint64), np.zeros(len(rows), np.uint64)]
+        pad = 16 - digits
+        for half in range(2):
+            zeros = [j - 8 * half for j in range(8 * half, 8 * half + 8) if j < pad]
+            for j in zeros:
+                halves[half] |= np.uint64(48) << np.uint64(8 * j)
+        target = pad
+        for source, length in runs:
+            while length:
+                half, offset = divmod(target, 8)
+                piece = min(length, 8 - offset)
+                mask = np.uint64((1 << (8 * piece)) - 1)
+                halves[half] |= (words[base + source] & mask) << np.uint64(8 * offset)
+                target, source, length = target + piece, source + piece, length - piece
+        high, high_ok = _eight_digits(halves[0])
+        low, low_ok = _eight_digits(halves[1])
+        mantissa = high * np.uint64(100_000_000) + low
+        shaped = high_ok & low_ok & (mantissa < _EXACT)
+        if dot >= 0:
+            shaped &= a[base + dot] == 46
+        stamp[rows] = mantissa.astype(np.float64) / _POW10F[size - dot - 1 if dot >= 0 else 0]
+        good[rows] = shaped
+    rest = np.flatnonzero(~good)
+    if len(rest):
+        stamp[rest], good[rest] = _stamps_any(_window(a, at[rest], _STAMP), sizes[rest])
+    return stamp, good
+
+
+def _eight_digits(words: npt.NDArray[np.uint64]) -> tuple[np.ndarray, np.ndarray]:
+    """Eight ASCII digits per word (first digit in the lowest byte) to their value, and
+    whether all eight are digits: three multiply-shift steps that combine neighbours."""
+    valid = (words + np.uint64(0x4646464646464646)) | (words - np.uint64(0x3030303030303030))
+    valid = (valid & np.uint64(0x8080808080808080)) == 0
+    value = words & np.uint64(0x0F0F0F0F0F0F0F0F)
+    value = (value * np.uint64(2561)) >> np.uint64(8)
+    value = ((value & np.uint64(0x00FF00FF00FF00FF)) * np.uint64(6553601)) >> np.uint64(16)
+    value = ((value & np.uint64(0x0000FFFF0000FFFF)) * np.uint64(42949672960001)) >> np.uint64(32)
+    return value & np.uint64(0xFFFFFFFF), valid
+
+
+def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """`_stamps` for timestamps of any shape, up to `_STAMP` characters."""
+    inside = np.arange(chars.shape[1]) < sizes[:, None]
+    digits = chars - np.uint8(48)
+    is_digit = (digits < 10) & inside
+    dots = (chars == 46) & inside
+    counted = np.cumsum(is_digit, axis=1, dtype=np.int8)
+    total = counted[:, -1].astype(np.int64)
+    good = (is_digit | dots | ~inside).all(axis=1) & (dots.sum(axis=1) <= 1) & (total > 0)
+    good &= total <= 18
+    power = np.where(is_digit, np.minimum(total[:, None] - counted, 18), 0)
+    mantissa = (np.where(is_digit, digits, 0).astype(np.int64) * _POW10[power]).sum(axis=1)
+    before_dot = np.where(dots.any(axis=1), (counted * dots).sum(axis=1), total)
+    good &= mantissa < _EXACT
+    return mantissa / _POW10F[np.minimum(total - before_dot, 22)], good
+
+
+def _identifiers(word: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
+    """3 or 8 hex digits to the identifier; error frames (bit 29) are not good."""
+    long = sizes == 8
+    nibbles, good = _hex(word, _byte_mask(sizes))
+    short_id = (
+        (nibbles & np.uint64(15)) << np.uint64(8)
+        | ((nibbles >> np.uint64(8)) & np.uint64(15)) << np.uint64(4)
+        | (nibbles >> np.uint64(16)) & np.uint64(15)
+    )
+    long_id = _pack(nibbles).astype(np.uint32).byteswap().astype(np.uint64)
+    can_id = np.where(long, long_id, short_id).astype(np.uint32)
+    good &= (can_id & 0x2000_0000) == 0
+    return can_id, long, good
+
+
+def _data(
+    first: npt.NDArray[np.uint64], second: npt.NDArray[np.uint64], sizes: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Up to 16 hex digits (in two words of eight) to up to 8 bytes, zero-padded, as one
+    little-endian word."""
+    high, good_high = _hex(first, _byte_mask(sizes))
+    low, good_low = _hex(second, _byte_mask(sizes - 8))
+    data = (_pack(high) | _pack(low) << np.uint64(32)) & _byte_mask(sizes // 2)
+    return data, good_high & good_low
+
+
+def _interfaces(
+    first: npt.NDArray[np.uint64], second: npt.NDArray[np.uint64], sizes: npt.NDArray[np.int64]
+) -> tuple[np.ndarray, list[str]]:
+    """Interface names (up to 16 characters, in two words) to codes: a pass per name."""
+    low = first & _byte_mask(sizes)
+    high = second & _byte_mask(sizes - 8)
+    codes = np.full(len(sizes), -1, np.int32)
+    names: list[str] = []
+    left = np.flatnonzero(codes < 0)
+    while len(left):
+        row = left[0]
+        same = np.flatnonzero((low == low[row]) & (high == high[row]) & (codes < 0))
+        codes[same] = len(names)
+        text = (int(low[row]) | int(high[row]) << 64).to_bytes(16, "little")
+        names.append(text[: sizes[row]].decode("ascii"))
+        left = np.flatnonzero(codes < 0)
+    return codes, names
+
+
+BLOCK = 1 << 22
+"""Bytes of text parsed at once: small enough for the processor's caches."""
+
+
+def parse_stream(stream: BinaryIO, workers: int | None = None) -> FrameColumns | None:
+    """Parse candump text from a binary stream, block by block; see `parse_text`.
+
+    Blocks are parsed on ``workers`` threads (default: one per processor); NumPy releases
+    the interpreter lock in its loops, so they run side by side.
+    """
+    workers = workers or os.cpu_count() or 1
+    parts: list[FrameColumns | None] = []
+    pending: deque[Future[FrameColumns | None]] = deque()
+    line = 1
+    with ThreadPoolExecutor(workers) as pool:
+        for block in _blocks(stream):
+            pending.append(pool.submit(parse_text, block, line))
+            line += block.count(b"\n") + (not block.endswith(b"\n"))
+            if len(pending) > 2 * workers:
+                parts.append(pending.popleft().result())
+        parts += [future.result() for future in pending]
+    if any(part is None for part in parts):
+        return None
+    return concat([p for p in parts if p is not None]) if parts else parse_text(b"")
+
+
+def _blocks(stream: BinaryIO) -> Iterator[bytes]:
+    """Blocks of about `BLOCK` bytes that end at a line break (the last one may not)."""
+    rest = b""
+    while True:
+        chunk = stream.read(BLOCK)
+        if not chunk:
+            if rest:
+                yield rest
+            return
+        block = rest + chunk
+        cut = block.rfind(b"\n")
+        if cut < 0:
+            rest = block
+            continue
+        rest = block[cut + 1 :]
+        yield block[: cut + 1]

@@ -1,0 +1,322 @@
+"""DroneCAN transfers, column-wise: sessions checked, frames joined and CRCs computed for
+whole columns, payloads decoded field by field for all transfers of a type at once.
+
+The per-frame `veronte4x.dronecan.Reassembler` is the reference. A session (a channel and a
+CAN ID without its priority bits, as the reassembler keys them) is *regular* when its
+frames form whole transfers one after the other: a start frame opens each, toggles
+alternate from 0, the transfer id holds within a transfer and differs from the previous
+transfer's unless the transfer-ID timeout passed in between, every frame but the last of a
+transfer has 8 bytes, no frame comes later than the timeout after its transfer's first, and
+the payload fits the type. On such a session the reassembler delivers every transfer (or
+reports its CRC mismatch or bad payload) and nothing else, which is what this module
+computes. Every frame of any other session, and every frame the reassembler refuses on its
+own (no tail byte, anonymous, unknown type, node id 0), goes to the reassembler itself.
+Sessions do not interact while the reassembler's table never fills; a channel with more
+sessions than that goes to it whole.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import pyarrow as pa
+
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.codec import CODECS, Codec
+from veronte4x.dronecan.compiled import bit_runs
+from veronte4x.dronecan.definitions import RAW_COMMAND
+from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
+from veronte4x.dronecan.schema import Array, Scalar, Struct
+
+MAX_SESSIONS = 1024
+"""The per-frame reassembler's session table (its default ``max_sessions``)."""
+
+_MESSAGE_TYPES = np.full(1 << 16, -1, np.int16)
+_SERVICE_TYPES = np.full(1 << 10, -1, np.int16)
+for _index, _codec in enumerate(CODECS):
+    _type = _codec.data_type
+    if _type.kind is TransferKind.MESSAGE:
+        _MESSAGE_TYPES[_type.data_type_id] = _index
+    else:
+        _SERVICE_TYPES[_type.data_type_id << 1 | (_type.kind is TransferKind.REQUEST)] = _index
+_LIMITS = np.array([c.max_payload + 2 for c in CODECS], np.int64)
+_SEEDS = np.array([c.crc_seed for c in CODECS], np.uint32)
+
+
+def _crc_table() -> npt.NDArray[np.uint32]:
+    table = np.zeros(256, np.uint32)
+    for byte in range(256):
+        crc = byte << 8
+        for _ in range(8):
+            crc = (crc << 1) ^ 0x1021 if crc & 0x8000 else crc << 1
+        table[byte] = crc & 0xFFFF
+    return table
+
+
+_CRC_TABLE = _crc_table()
+
+
+@dataclass
+class Transfers:
+    """The transfers of regular sessions, one row each, in no particular order.
+
+    Attributes:
+        last: Row (in the frames given) of each transfer's last frame.
+        first: Row of its first frame.
+        type_index: Index of its type in `veronte4x.dronecan.codec.CODECS`.
+        payload: Payload bytes of every transfer, one after the other.
+        offsets: Where each transfer's payload starts in `payload` (one more at the end).
+        crc: The CRC a multi-frame transfer carries, or -1 for a single frame.
+    """
+
+    last: npt.NDArray[np.int64]
+    first: npt.NDArray[np.int64]
+    type_index: npt.NDArray[np.int16]
+    payload: npt.NDArray[np.uint8]
+    offsets: npt.NDArray[np.int64]
+    crc: npt.NDArray[np.int64]
+
+    def payload_of(self, transfer: int) -> bytes:
+        """One transfer's payload."""
+        return self.payload[self.offsets[transfer] : self.offsets[transfer + 1]].tobytes()
+
+
+def type_index(can_id: npt.NDArray[np.uint32]) -> npt.NDArray[np.int16]:
+    """The type of each frame, as the reassembler finds it; -1 where it refuses the frame
+    whatever its session (anonymous, unknown type, node id 0, beyond 29 bits)."""
+    cid = can_id.astype(np.int64)
+    service = (cid & 0x80) != 0
+    source = cid & 0x7F
+    found = np.where(
+        service,
+        _SERVICE_TYPES[(cid >> 15) & 0x1FF],
+        _MESSAGE_TYPES[(cid >> 8) & 0xFFFF],
+    )
+    refused = (source == 0) | (service & (((cid >> 8) & 0x7F) == 0)) | ((cid >> 29) != 0)
+    return np.where(refused, -1, found).astype(np.int16)
+
+
+def regular_sessions(
+    channel: npt.NDArray[np.int32],
+    can_id: npt.NDArray[np.uint32],
+    stamp: npt.NDArray[np.float64],
+    length: npt.NDArray[np.int64],
+    tail: npt.NDArray[np.uint8],
+    types: npt.NDArray[np.int16],
+    timeout: float = TRANSFER_ID_TIMEOUT,
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
+    """Sort frames by session and find the regular sessions.
+
+    Args:
+        channel, can_id, stamp, length, tail, types: Per frame, in capture order: channel
+            code, CAN ID, timestamp as the reassembler is fed it, data length, tail byte
+            and type index (all >= 0).
+        timeout: The transfer-ID timeout.
+
+    Returns:
+        The frames' order by session (capture order within one), and for each frame in
+        that order whether its session is regular.
+    """
+    key = channel.astype(np.int64) << 24 | (can_id.astype(np.int64) & 0xFFFFFF)
+    order = np.argsort(key, kind="stable")
+    key = key[order]
+    n = len(order)
+    tail = tail[order]
+    size = length[order]
+    ts = stamp[order]
+    opens = np.ones(n, np.bool_)
+    opens[1:] = key[1:] != key[:-1]
+    session = np.cumsum(opens) - 1
+    start = (tail & 0x80) != 0
+    end = (tail & 0x40) != 0
+    toggle = (tail & 0x20) != 0
+    tid = tail & 0x1F
+    bad = opens & ~start
+    transfer = np.cumsum(start) - 1
+    first = np.flatnonzero(start)
+    if len(first):
+        transfer = np.maximum(transfer, 0)
+        head = first[transfer]
+        position = np.arange(n) - head
+        last = np.ones(n, np.bool_)
+        last[:-1] = opens[1:] | start[1:]
+        bad |= toggle != ((position & 1) == 1)
+        bad |= tid != tid[head]
+        bad |= end != last
+        bad |= ~last & (size != 8)
+        bad |= (size < 1) | (size > 8)
+        bad |= (position > 0) & (ts - ts[head] > timeout)
+        sizes = np.add.reduceat(size - 1, first)
+        multi = ~last[first]  # transfers of more than one frame
+        bad[first[multi & (sizes > _LIMITS[types[order][first]])]] = True
+        # A new transfer repeats the previous one's id only after the timeout.
+        follows = first[1:][~opens[first[1:]]]
+        before = first[np.searchsorted(first, follows) - 1]
+        repeat = (tid[follows] == tid[before]) & ~(ts[follows] - ts[before] > timeout)
+        bad[follows[repeat]] = True
+    else:
+        bad[:] = True
+    sessions = session[-1] + 1 if n else 0
+    broken = np.bincount(session[bad], minlength=sessions) > 0 if n else np.zeros(0, np.bool_)
+    regular = ~broken[session] if n else np.zeros(0, np.bool_)
+    # A channel whose sessions outnumber the table goes to the reassembler whole.
+    channels = channel[order]
+    per_channel = np.bincount(channels[opens], minlength=int(channels.max(initial=0)) + 1)
+    regular &= per_channel[channels] <= MAX_SESSIONS
+    return order, regular
+
+
+def transfers(
+    rows: npt.NDArray[np.int64],
+    data: npt.NDArray[np.uint8],
+    length: npt.NDArray[np.int64],
+    types: npt.NDArray[np.int16],
+) -> Transfers:
+    """Join the frames of regular sessions into transfers.
+
+    Args:
+        rows: Frames of regular sessions, in session order (see `regular_sessions`).
+        data, length, types: Per frame (indexed by ``rows``).
+    """
+    tail = data[rows, np.maximum(length[rows] - 1, 0)]
+    start = (tail & 0x80) != 0
+    first = np.flatnonzero(start)
+    n = len(rows)
+    last = np.empty(len(first), np.int64)
+    last[:-1] = first[1:] - 1
+    if len(first):
+        last[-1] = n - 1
+    used = length[rows] - 1
+    keep = np.arange(8) < used[:, None]
+    flat = data[rows][keep]
+    sizes = np.add.reduceat(used, first) if len(first) else np.zeros(0, np.int64)
+    starts = np.zeros(len(first) + 1, np.int64)
+    np.cumsum(sizes, out=starts[1:])
+    multi = last != first
+    crc = np.full(len(first), -1, np.int64)
+    at = starts[:-1][multi]
+    crc[multi] = flat[at].astype(np.int64) | flat[at + 1].astype(np.int64) << 8
+    # Drop the two CRC bytes of multi-frame transfers from the payload.
+    drop = np.zeros(len(flat), np.bool_)
+    drop[at] = drop[at + 1] = True
+    payload = flat[~drop]
+    sizes = sizes - 2 * multi
+    offsets = np.zeros(len(first) + 1, np.int64)
+    np.cumsum(sizes, out=offsets[1:])
+    return Transfers(rows[last], rows[first], types[rows[first]], payload, offsets, crc)
+
+
+def crc_ok(found: Transfers, which: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
+    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads."""
+    crc = _SEEDS[found.type_index[which]].copy()
+    sizes = found.offsets[which + 1] - found.offsets[which]
+    starts = found.offsets[which]
+    for position in range(int(sizes.max(initial=0))):
+        active = np.flatnonzero(sizes > position)
+        byte = found.payload[starts[active] + position].astype(np.uint32)
+        value = crc[active]
+        crc[active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
+    computed: npt.NDArray[np.int64] = crc.astype(np.int64)
+    return computed
+
+
+# Payload decoding ------------------------------------------------------------------------
+
+
+def payload_matrix(found: Transfers, which: npt.NDArray[np.int64], size: int) -> np.ndarray:
+    """The payloads of ``which`` transfers, all ``size`` bytes long, as rows (plus padding)."""
+    index = found.offsets[which][:, None] + np.arange(size)
+    matrix = np.zeros((len(which), size + 8), np.uint8)
+    matrix[:, :size] = found.payload[index] if size else matrix[:, :0]
+    return matrix
+
+
+def _bits(matrix: np.ndarray, start: int, width: int) -> npt.NDArray[np.uint64]:
+    """Bits ``start..start+width`` of each row read as one little-endian integer."""
+    out = np.zeros(len(matrix), np.uint64)
+    done = 0
+    while done < width:
+        piece = min(width - done, 56)
+        at = start + done
+        first, shift = at // 8, at % 8
+        word = np.zeros(len(matrix), np.uint64)
+        for k in range((shift + piece + 7) // 8):
+            word |= matrix[:, first + k].astype(np.uint64) << np.uint64(8 * k)
+        word = (word >> np.uint64(shift)) & np.uint64((1 << piece) - 1)
+        out |= word << np.uint64(done)
+        done += piece
+    return out
+
+
+def scalar(matrix: np.ndarray, t: Scalar, offset: int) -> np.ndarray:
+    """A DSDL scalar at bit ``offset`` of the stream, for every row, as the codec decodes it
+    (integers sign-extended, floats widened exactly, bools)."""
+    raw = np.zeros(len(matrix), np.uint64)
+    for source, width, dest in bit_runs(offset, t.bits):
+        raw |= _bits(matrix, dest, width) << np.uint64(source)
+    if t.kind == "int":
+        signed: np.ndarray = raw.astype(np.int64)
+        signed -= ((signed >> (t.bits - 1)) & 1) * (1 << t.bits)
+        return signed
+    if t.kind == "float":
+        if t.bits == 16:
+            widened: np.ndarray = raw.astype(np.uint16).view(np.float16).astype(np.float32)
+            return widened
+        single: np.ndarray = raw.astype(np.uint32).view(np.float32)
+        return single if t.bits == 32 else raw.view(np.float64)
+    flags: np.ndarray = raw != 0
+    return flags if t.kind == "bool" else raw
+
+
+def fixed_size(struct: Struct) -> int | None:
+    """Payload bytes of a struct of scalars only (its every field at a fixed place)."""
+    bits = 0
+    for f in struct.fields:
+        if not isinstance(f.type, Scalar):
+            return None
+        bits += f.type.bits
+    return (bits + 7) // 8
+
+
+def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
+    """Every field of a struct of scalars, by name (enum fields as their wire value)."""
+    out: dict[str, Any] = {}
+    offset = 0
+    for f in struct.fields:
+        assert isinstance(f.type, Scalar)
+        if f.name:
+            out[f.name] = scalar(matrix, f.type, offset)
+        offset += f.type.bits
+    return out
+
+
+def raw_command_items(size: int) -> int | None:
+    """How many int14 items a RawCommand payload of ``size`` bytes holds, or None where the
+    codec refuses that size (tail array optimisation: items while 8 bits remain)."""
+    bits = 8 * size
+    count = 0
+    while bits - count * 14 >= 8:
+        count += 1
+    field = RAW_COMMAND.fields[0].type
+    assert isinstance(field, Array)
+    if count * 14 > bits or count > field.max_size:
+        return None
+    return count
+
+
+def decode_raw_command(matrix: np.ndarray, count: int) -> pa.Array:
+    """RawCommand ``cmd`` lists of ``count`` items for every row."""
+    item = Scalar("int", 14)
+    values = np.zeros((len(matrix), count), np.int64)
+    for i in range(count):
+        values[:, i] = scalar(matrix, item, 14 * i)
+    offsets = np.arange(len(matrix) + 1, dtype=np.int32) * count
+    return pa.ListArray.from_arrays(pa.array(offsets), pa.array(values.ravel().astype(np.int16)))
+
+
+def codec_of(index: int) -> Codec:
+    """The codec of a type index."""
+    return CODECS[index]

@@ -1,0 +1,293 @@
+"""Decode `FrameColumns` into one Arrow table per message type.
+
+Frames are routed by the bus map as the per-frame decoder routes them: Veronte frames go to
+the column-wise layout decoders, DroneCAN frames of regular sessions to the column-wise
+reassembly, and everything else (bad lines, error, remote and FD frames, unknown IDs,
+frames a layout refuses, irregular DroneCAN sessions) to the per-frame `CaptureDecoder`, fed
+in capture order. The tables therefore hold exactly the records `veronte4x.capture.read`
+gives, whichever path decoded them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+import numpy as np
+import numpy.typing as npt
+import pyarrow as pa
+
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.columnar import dronecan, veronte
+from veronte4x.capture.columnar.frames import FrameColumns
+from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs
+from veronte4x.capture.columnar.tables import SUB, Tables
+from veronte4x.capture.decoder import CaptureDecoder, problem_record
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.records import Record
+from veronte4x.codec import Codec
+from veronte4x.codec.messages import Sender
+from veronte4x.dronecan.codec import Codec as DroneCanCodec
+from veronte4x.dronecan.definitions import RAW_COMMAND
+from veronte4x.dronecan.reassembler import Problem, ProblemReport
+from veronte4x.errors import DecodeError
+
+
+def decode_columns(
+    frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
+) -> dict[str, pa.Table]:
+    """The tables of a capture's frames (see `veronte4x.capture.read_tables`)."""
+    return decode_into(frames, bus_map, channel).finish()
+
+
+def decode_into(
+    frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
+) -> Tables:
+    """Decode a capture's frames into tables still being built (their rows keyed)."""
+    bus_map = bus_map or BusMap()
+    if channel is not None:
+        frames = _only_channel(frames, channel)
+    codec = bus_map.codec()
+    tables = Tables(all_specs(codec), list(frames.channels))
+    plain = ~(frames.remote | frames.fd | frames.error) & (frames.length <= 8)
+    if frames.long_data:
+        plain[list(frames.long_data)] = False
+    done = np.zeros(len(frames), np.bool_)
+    sender_code = np.full(len(frames), -1, np.int16)
+    veronte_ids = plain & (frames.extended == bus_map.extended)
+    for can_id, (_, index) in bus_map.veronte_roles.items():
+        code = SENDER_INDEX["arbiter"] if index is None else SENDER_INDEX["AP1"] + index
+        sender_code[veronte_ids & (frames.can_id == can_id)] = code
+    arbiter = sender_code == SENDER_INDEX["arbiter"]
+    for sender, rows in (
+        (Sender.ARBITER, np.flatnonzero(arbiter)),
+        (Sender.AUTOPILOT, np.flatnonzero((sender_code >= 0) & ~arbiter)),
+    ):
+        taken = _decode_veronte(frames, rows, codec, sender, sender_code, bus_map, tables)
+        done[taken] = True
+    veronte_rows = sender_code >= 0
+    if bus_map.dronecan:
+        candidates = np.flatnonzero(plain & frames.extended & ~veronte_rows)
+        done[_decode_dronecan(frames, candidates, tables)] = True
+    decoder = CaptureDecoder(bus_map)
+    tables.add_records(_per_frame(frames, np.flatnonzero(~done), decoder))
+    return tables
+
+
+def _only_channel(frames: FrameColumns, channel: str) -> FrameColumns:
+    if channel not in frames.channels:
+        return frames.take(np.zeros(0, np.int64))
+    return frames.take(np.flatnonzero(frames.channel == frames.channels.index(channel)))
+
+
+def _head(frames: FrameColumns, rows: npt.NDArray[np.int64]) -> dict[str, np.ndarray]:
+    return {
+        "timestamp": frames.timestamp[rows],
+        "has_time": frames.has_time[rows],
+        "channel": frames.channel[rows],
+        "can_id": frames.can_id[rows],
+    }
+
+
+def _decode_veronte(
+    frames: FrameColumns,
+    rows: npt.NDArray[np.int64],
+    codec: Codec,
+    sender: Sender,
+    sender_code: npt.NDArray[np.int16],
+    bus_map: BusMap,
+    tables: Tables,
+) -> npt.NDArray[np.int64]:
+    """Decode one sender's frames column-wise; return the rows decoded."""
+    excess = bus_map.allow_excess
+    data = frames.data.view("<u8")[rows, 0]
+    length = frames.length[rows]
+    target = veronte.targets(codec, sender, data, length, excess)
+    layouts = veronte.layout_list(codec)
+    decoded = []
+    for index in np.unique(target[target >= 0]).tolist():
+        layout = layouts[index]
+        picked = np.flatnonzero(target == index)
+        good, columns = veronte.decode(layout, data[picked], length[picked], excess)
+        taken = rows[picked[good]]
+        head = _head(frames, taken)
+        head["sender"] = sender_code[taken]
+        fields = {
+            name: (value.filter(pa.array(good)) if isinstance(value, pa.Array) else value[good])
+            for name, value in columns.items()
+        }
+        tables.add_columns(layout.name, frames.order[taken] * SUB, head, fields)
+        decoded.append(taken)
+    return np.concatenate(decoded) if decoded else np.zeros(0, np.int64)
+
+
+def _decode_dronecan(
+    frames: FrameColumns, rows: npt.NDArray[np.int64], tables: Tables
+) -> npt.NDArray[np.int64]:
+    """Reassemble and decode the regular sessions column-wise; return the rows taken."""
+    types = np.full(len(frames), -1, np.int16)
+    types[rows] = dronecan.type_index(frames.can_id[rows])
+    length = frames.length
+    rows = rows[(types[rows] >= 0) & (length[rows] >= 1)]
+    if not len(rows):
+        return rows
+    stamp = np.zeros(len(frames))
+    stamp[rows] = np.where(frames.has_time[rows], frames.timestamp[rows], 0.0)
+    tail = frames.data[rows, length[rows] - 1]
+    order, regular = dronecan.regular_sessions(
+        frames.channel[rows], frames.can_id[rows], stamp[rows], length[rows], tail, types[rows]
+    )
+    taken = rows[order[regular]]
+    found = dronecan.transfers(taken, frames.data, length, types)
+    records: list[tuple[int, Record]] = []
+    for index in np.unique(found.type_index).tolist():
+        which = np.flatnonzero(found.type_index == index)
+        multi = which[found.crc[which] >= 0]
+        computed = dronecan.crc_ok(found, multi)
+        wrong = multi[computed != found.crc[multi]]
+        records += _crc_mismatches(
+            frames, found, wrong, computed[computed != found.crc[multi]], stamp
+        )
+        intact = np.ones(len(found.last), np.bool_)
+        intact[wrong] = False
+        good = which[intact[which]]
+        records += _decode_type(frames, found, index, good, stamp, tables)
+    tables.add_records(records)
+    return taken
+
+
+def _crc_mismatches(
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    wrong: np.ndarray,
+    computed: np.ndarray,
+    stamp: np.ndarray,
+) -> list[tuple[int, Record]]:
+    out = []
+    for transfer, crc in zip(wrong.tolist(), computed.tolist(), strict=True):
+        last, carried = int(found.last[transfer]), int(found.crc[transfer])
+        report = ProblemReport(
+            Problem.CRC_MISMATCH,
+            int(frames.can_id[last]),
+            frames.data[last, : frames.length[last]].tobytes(),
+            float(stamp[found.first[transfer]]),
+            f"CRC {carried:#06x}, computed {crc:#06x}",
+        )
+        channel = frames.channels[frames.channel[last]]
+        out.append((int(frames.order[last]) * SUB, problem_record(report, channel)))
+    return out
+
+
+def _decode_type(
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    index: int,
+    which: np.ndarray,
+    stamp: np.ndarray,
+    tables: Tables,
+) -> list[tuple[int, Record]]:
+    """Decode one type's transfers: by columns where the layout allows, else one by one."""
+    codec = dronecan.codec_of(index)
+    schema = codec.data_type.schema
+    kind = schema.cls.__name__
+    sizes = found.offsets[which + 1] - found.offsets[which]
+    fixed = dronecan.fixed_size(schema)
+    left = which
+    if fixed is not None:
+        good = which[sizes == fixed]
+        matrix = dronecan.payload_matrix(found, good, fixed)
+        _add_transfers(frames, found, good, kind, dronecan.decode_fixed(schema, matrix), tables)
+        left = which[sizes != fixed]
+    elif schema is RAW_COMMAND:
+        rest = []
+        for size in np.unique(sizes).tolist():
+            group = which[sizes == size]
+            count = dronecan.raw_command_items(size)
+            if count is None:
+                rest.append(group)
+                continue
+            matrix = dronecan.payload_matrix(found, group, size)
+            cmd = dronecan.decode_raw_command(matrix, count)
+            _add_transfers(frames, found, group, kind, {"cmd": cmd}, tables)
+        left = np.concatenate(rest) if rest else which[:0]
+    return [item for t in left.tolist() for item in _one_transfer(frames, found, t, codec, stamp)]
+
+
+def _add_transfers(
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    which: np.ndarray,
+    kind: str,
+    fields: dict[str, object],
+    tables: Tables,
+) -> None:
+    last = found.last[which]
+    head = _head(frames, last)
+    can_id = frames.can_id[last].astype(np.int64)
+    source = can_id & 0x7F
+    head["node_id"] = source
+    head["sender"] = (NODE_SENDER + source).astype(np.int16)
+    head["destination_node_id"] = (can_id >> 8) & 0x7F
+    tables.add_columns(kind, frames.order[last] * SUB, head, fields)
+
+
+def _one_transfer(
+    frames: FrameColumns,
+    found: dronecan.Transfers,
+    transfer: int,
+    codec: DroneCanCodec,
+    stamp: np.ndarray,
+) -> list[tuple[int, Record]]:
+    """A transfer the column decoders do not take, decoded as the reassembler does."""
+    last, first = int(found.last[transfer]), int(found.first[transfer])
+    can_id = int(frames.can_id[last])
+    channel = frames.channels[frames.channel[last]]
+    key = int(frames.order[last]) * SUB
+    payload = found.payload_of(transfer)
+    try:
+        message = codec.decode(payload)
+    except DecodeError as error:
+        report = ProblemReport(
+            Problem.BAD_PAYLOAD, can_id, payload, float(stamp[first]), str(error)
+        )
+        return [(key, problem_record(report, channel))]
+    record = Record(
+        float(frames.timestamp[last]) if frames.has_time[last] else None,
+        channel,
+        can_id,
+        Role.DRONECAN,
+        None,
+        can_id & 0x7F,
+        message,
+        None,
+        "",
+        frames.data[last, : frames.length[last]].tobytes(),
+        (can_id >> 8) & 0x7F if can_id & 0x80 else None,
+    )
+    return [(key, record)]
+
+
+def _per_frame(
+    frames: FrameColumns, rows: npt.NDArray[np.int64], decoder: CaptureDecoder
+) -> Iterator[tuple[int, Record]]:
+    """The records of the rows and bad lines left to the per-frame decoder, in order."""
+    items: list[tuple[int, Frame | BadLine]] = [
+        (int(frames.order[row]), frames.frame(row)) for row in rows.tolist()
+    ]
+    if frames.bad_lines:
+        items = sorted([*items, *frames.bad_lines], key=lambda item: item[0])
+    for order, item in items:
+        for sub, record in enumerate(decoder.decode((item,))):
+            yield order * SUB + sub, record
+
+
+def tables_from_records(
+    records: Iterable[Record], bus_map: BusMap | None = None
+) -> dict[str, pa.Table]:
+    """The tables of records decoded one by one (a live bus, `veronte4x.capture.read`).
+
+    Rows keep the order of ``records``. The exact reference of the column-wise path.
+    """
+    codec = (bus_map or BusMap()).codec()
+    tables = Tables(all_specs(codec), [])
+    tables.add_records((index * SUB, record) for index, record in enumerate(records))
+    return tables.finish()

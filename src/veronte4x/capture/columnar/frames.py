@@ -1,0 +1,188 @@
+"""Frames as columns: what the columnar readers produce and the columnar engine consumes.
+
+The column form of `veronte4x.capture.Frame`: one NumPy array per attribute, a row per frame,
+in capture order, plus the lines that are no frame (`veronte4x.capture.BadLine`), each with
+the position it takes in that order.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from veronte4x.capture.frames import BadLine, Frame
+
+MAX_DATA = 8
+"""Data bytes a row of `FrameColumns.data` holds; longer (CAN FD) data lives in `long_data`."""
+
+
+@dataclass
+class FrameColumns:
+    """Frames as NumPy columns, in capture order.
+
+    Attributes:
+        order: Position of each frame in the capture (a line number or a message index),
+            increasing; bad lines take the positions between.
+        timestamp: Seconds; NaN where `has_time` is False.
+        has_time: The frame has a timestamp.
+        channel: Index into `channels` of each frame's interface.
+        channels: Interface names.
+        can_id: The identifier (without the error flag).
+        extended: 29-bit identifier.
+        remote: Remote frame.
+        fd: CAN FD frame.
+        error: Error frame.
+        length: Number of data bytes.
+        data: The first eight data bytes of each frame, zero-padded.
+        long_data: The data of frames with more than eight bytes, by row.
+        bad_lines: Lines that are no frame, with their position in the capture order.
+    """
+
+    order: npt.NDArray[np.int64]
+    timestamp: npt.NDArray[np.float64]
+    has_time: npt.NDArray[np.bool_]
+    channel: npt.NDArray[np.int32]
+    channels: list[str]
+    can_id: npt.NDArray[np.uint32]
+    extended: npt.NDArray[np.bool_]
+    remote: npt.NDArray[np.bool_]
+    fd: npt.NDArray[np.bool_]
+    error: npt.NDArray[np.bool_]
+    length: npt.NDArray[np.int64]
+    data: npt.NDArray[np.uint8]
+    long_data: dict[int, bytes] = field(default_factory=dict)
+    bad_lines: list[tuple[int, BadLine]] = field(default_factory=list)
+
+    def __len__(self) -> int:
+        return len(self.order)
+
+    def take(
+        self, rows: npt.NDArray[np.int64], order: npt.NDArray[np.int64] | None = None
+    ) -> FrameColumns:
+        """The frames of ``rows``, in that order (numbered ``order`` if given)."""
+        where = {int(old): new for new, old in enumerate(rows)} if self.long_data else {}
+        return FrameColumns(
+            order=self.order[rows] if order is None else order,
+            timestamp=self.timestamp[rows],
+            has_time=self.has_time[rows],
+            channel=self.channel[rows],
+            channels=self.channels,
+            can_id=self.can_id[rows],
+            extended=self.extended[rows],
+            remote=self.remote[rows],
+            fd=self.fd[rows],
+            error=self.error[rows],
+            length=self.length[rows],
+            data=self.data[rows],
+            long_data={where[r]: d for r, d in self.long_data.items() if r in where},
+            bad_lines=self.bad_lines,
+        )
+
+    def frame(self, row: int) -> Frame:
+        """The frame of one row, as the per-frame readers give it."""
+        data = self.long_data.get(row)
+        if data is None:
+            data = self.data[row, : self.length[row]].tobytes()
+        return Frame(
+            float(self.timestamp[row]) if self.has_time[row] else None,
+            self.channels[self.channel[row]],
+            int(self.can_id[row]),
+            data,
+            bool(self.extended[row]),
+            bool(self.remote[row]),
+            bool(self.fd[row]),
+            bool(self.error[row]),
+        )
+
+
+def from_frames(items: list[tuple[int, Frame | BadLine]]) -> FrameColumns:
+    """Columns from frames made one by one (python-can readers, odd candump lines).
+
+    Args:
+        items: (position in the capture, frame or bad line), in capture order.
+    """
+    frames = [(order, item) for order, item in items if isinstance(item, Frame)]
+    channels: dict[str, int] = {}
+    n = len(frames)
+    data = np.zeros((n, MAX_DATA), np.uint8)
+    long_data: dict[int, bytes] = {}
+    lengths = np.zeros(n, np.int64)
+    for row, (_, frame) in enumerate(frames):
+        size = len(frame.data)
+        lengths[row] = size
+        if size > MAX_DATA:
+            long_data[row] = frame.data
+        elif size:
+            data[row, :size] = np.frombuffer(frame.data, np.uint8)
+    stamps = [f.timestamp for _, f in frames]
+    return FrameColumns(
+        order=np.array([o for o, _ in frames], np.int64),
+        timestamp=np.array([np.nan if s is None else s for s in stamps], np.float64),
+        has_time=np.array([s is not None for s in stamps], np.bool_),
+        channel=np.array(
+            [channels.setdefault(f.channel, len(channels)) for _, f in frames], np.int32
+        ),
+        channels=list(channels),
+        can_id=np.array([f.can_id for _, f in frames], np.uint32),
+        extended=np.array([f.extended for _, f in frames], np.bool_),
+        remote=np.array([f.remote for _, f in frames], np.bool_),
+        fd=np.array([f.fd for _, f in frames], np.bool_),
+        error=np.array([f.error for _, f in frames], np.bool_),
+        length=lengths,
+        data=data,
+        long_data=long_data,
+        bad_lines=[(o, b) for o, b in items if isinstance(b, BadLine)],
+    )
+
+
+def concat(parts: list[FrameColumns]) -> FrameColumns:
+    """Join column blocks whose orders do not overlap, keeping capture order."""
+    if len(parts) == 1:
+        return parts[0]
+    channels: dict[str, int] = {}
+    remapped = []
+    for part in parts:
+        codes = np.array(
+            [channels.setdefault(c, len(channels)) for c in part.channels] or [0], np.int32
+        )
+        remapped.append(codes[part.channel] if len(part) else part.channel)
+    order = np.concatenate([p.order for p in parts])
+    in_sequence = all(
+        not len(a) or not len(b) or a.order[-1] < b.order[0] for a, b in itertools.pairwise(parts)
+    )
+    sort = order if in_sequence else np.argsort(order, kind="stable")
+    long_data: dict[int, bytes] = {}
+    if any(p.long_data for p in parts):
+        offsets = np.cumsum([0] + [len(p) for p in parts])
+        rank = np.arange(len(order))
+        if not in_sequence:
+            rank[sort] = np.arange(len(sort))
+        long_data = {
+            int(rank[offsets[i] + row]): data
+            for i, p in enumerate(parts)
+            for row, data in p.long_data.items()
+        }
+
+    def joined(name: str) -> np.ndarray:
+        joined: np.ndarray = np.concatenate([getattr(p, name) for p in parts])
+        return joined if in_sequence else joined[sort]
+
+    return FrameColumns(
+        order=order if in_sequence else order[sort],
+        timestamp=joined("timestamp"),
+        has_time=joined("has_time"),
+        channel=np.concatenate(remapped) if in_sequence else np.concatenate(remapped)[sort],
+        channels=list(channels),
+        can_id=joined("can_id"),
+        extended=joined("extended"),
+        remote=joined("remote"),
+        fd=joined("fd"),
+        error=joined("error"),
+        length=joined("length"),
+        data=joined("data"),
+        long_data=long_data,
+        bad_lines=sorted((b for p in parts for b in p.bad_lines), key=lambda b: b[0]),
+    )

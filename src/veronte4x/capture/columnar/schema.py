@@ -1,0 +1,282 @@
+"""The Arrow schema of every table `read_tables` gives, fixed in advance from the layouts.
+
+Veronte tables take their columns from the codec's frame layouts (the same data the codec
+compiles), DroneCAN tables from the DSDL definitions. Column names are those of
+`veronte4x.capture.fields`: tuple attributes become ``name_0``, ``name_1``..., nested
+structs ``outer.inner``. Types follow the wire: the smallest unsigned or signed integer
+that holds the field, ``float32`` for float32 and float16 (every float16 is a float32;
+Polars and DuckDB read no float16), ``float64`` for scaled integers, ``bool``, ``binary``
+for raw bytes and uint8 arrays, a ``list`` for other arrays (RawCommand's ``cmd``), and
+dictionary-encoded names for enums, whose dictionary lists every wire value (a value
+without a member is named by its number).
+
+A DSDL union (param ``Value``, ``NumericValue``) becomes ``name.type``, the member's
+name, and one nullable column per member with a value: ``name.integer_value`` (int64),
+``name.real_value`` (float32), ``name.boolean_value`` (uint8), ``name.string_value``
+(binary); ``empty`` has no column.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+from operator import attrgetter
+from typing import Any, cast
+
+import pyarrow as pa
+
+from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.columnar.veronte import layout_list
+from veronte4x.codec import Codec
+from veronte4x.codec.compiler import FrameLayout
+from veronte4x.codec.fields import Field, Kind
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.dronecan.serializer import enum_table
+from veronte4x.units import unit
+
+SENDERS: tuple[str, ...] = (
+    "arbiter",
+    *AUTOPILOT_NAMES,
+    "autopilot",
+    "dronecan",
+    "unknown",
+    *(f"node {n}" for n in range(128)),
+)
+"""Every value of the ``sender`` column, in dictionary order."""
+SENDER_INDEX = {name: index for index, name in enumerate(SENDERS)}
+NODE_SENDER = SENDER_INDEX["node 0"]
+"""Dictionary index of ``node 0``; node N is this plus N."""
+
+CHANNEL = pa.dictionary(pa.int32(), pa.string())
+SENDER = pa.dictionary(pa.int16(), pa.string())
+ERROR = pa.dictionary(pa.int16(), pa.string())
+
+HEAD = (
+    pa.field("timestamp", pa.float64(), metadata={"unit": "s"}),
+    pa.field("channel", CHANNEL),
+    pa.field("can_id", pa.uint32()),
+    pa.field("sender", SENDER),
+)
+"""The columns every table starts with, as `veronte4x.capture.Record` has them."""
+NODE_ID = pa.field("node_id", pa.uint8())
+DESTINATION = pa.field("destination_node_id", pa.uint8())
+PROBLEM = (
+    pa.field("error", ERROR),
+    pa.field("detail", pa.string()),
+    pa.field("data", pa.binary()),
+)
+UNKNOWN = (pa.field("detail", pa.string()), pa.field("data", pa.binary()))
+
+
+@dataclass(frozen=True)
+class Column:
+    """One field column of a table.
+
+    Attributes:
+        name: Column name.
+        type: Arrow type.
+        get: Its value from a message object (for a dictionary column, the index).
+        names: The dictionary of a dictionary column.
+    """
+
+    name: str
+    type: pa.DataType
+    get: Callable[[Any], Any]
+    names: tuple[str, ...] | None = None
+
+
+@dataclass(frozen=True)
+class TableSpec:
+    """The schema of one message type's table.
+
+    Attributes:
+        kind: The table's name, `veronte4x.capture.Record.kind` of its rows.
+        head: The record columns it starts with.
+        columns: The message's field columns.
+    """
+
+    kind: str
+    head: tuple[pa.Field, ...]
+    columns: tuple[Column, ...]
+
+    @property
+    def schema(self) -> pa.Schema:
+        """The table's Arrow schema; fields with a physical unit carry it in their metadata
+        (``unit``: ``V``, ``A``, ``K``, ``rpm``, ``%``, ``s``)."""
+        fields = [pa.field(c.name, c.type, metadata=_unit(self.kind, c.name)) for c in self.columns]
+        return pa.schema([*self.head, *fields])
+
+
+def _unit(kind: str, name: str) -> dict[str, str] | None:
+    symbol = unit(kind, name)
+    return None if symbol is None else {"unit": symbol}
+
+
+def integer_type(low: int, high: int) -> pa.DataType:
+    """The smallest Arrow integer type holding ``low..high``."""
+    for bits in (8, 16, 32, 64):
+        if low >= 0 and high < 1 << bits:
+            return pa.from_numpy_dtype(f"uint{bits}")
+        if -(1 << (bits - 1)) <= low and high < 1 << (bits - 1):
+            return pa.from_numpy_dtype(f"int{bits}")
+    raise ValueError(f"no Arrow integer holds {low}..{high}")
+
+
+# Veronte ---------------------------------------------------------------------------------
+
+
+def veronte_layouts(codec: Codec) -> dict[str, list[FrameLayout]]:
+    """The frame layouts of each Veronte message type this codec decodes, by type name."""
+    found: dict[str, list[FrameLayout]] = {}
+    for layout in layout_list(codec):
+        found.setdefault(layout.name, []).append(layout)
+    return found
+
+
+def veronte_spec(kind: str, variants: list[FrameLayout]) -> TableSpec:
+    """The table of a Veronte message type, from the layouts that decode to it."""
+    by_attr: dict[str, list[Field]] = {}
+    for layout in variants:
+        for f in layout.fields:
+            if f.attr is not None:
+                by_attr.setdefault(f.attr, []).append(f)
+    columns: list[Column] = []
+    for dc_field in dataclasses.fields(cast(Any, variants[0].message)):
+        attr = dc_field.name
+        fields = sorted({f.index or 0: f for f in by_attr[attr]}.items())
+        for index, f in fields:
+            tupled = f.index is not None
+            name = f"{attr}_{index}" if tupled else attr
+            get = _item(attr, index) if tupled else attrgetter(attr)
+            columns.append(Column(name, veronte_type(f), get))
+    return TableSpec(kind, HEAD, tuple(columns))
+
+
+def _item(attr: str, index: int) -> Callable[[Any], Any]:
+    return lambda message: getattr(message, attr)[index]
+
+
+def veronte_type(f: Field) -> pa.DataType:
+    """The Arrow type of a Veronte field's decoded values."""
+    if f.kind in (Kind.UNSIGNED, Kind.SIGNED):
+        if f.scale is not None:
+            return pa.float64()
+        if f.kind is Kind.SIGNED:
+            return integer_type(-(1 << (f.bits - 1)), (1 << (f.bits - 1)) - 1)
+        return integer_type(0, f.maximum if f.maximum is not None else (1 << f.bits) - 1)
+    if f.kind is Kind.BOOL:
+        return pa.bool_()
+    if f.kind is Kind.FLOAT32:
+        return pa.float32()
+    if f.kind is Kind.BYTES:
+        return pa.binary()
+    if f.kind is Kind.MAPPED:
+        values = [value for _, value in f.mapping]
+        return integer_type(min(values), max(values))
+    raise ValueError(f"field {f.label} of kind {f.kind.value} holds no value")
+
+
+# DroneCAN --------------------------------------------------------------------------------
+
+
+def dronecan_specs() -> dict[str, TableSpec]:
+    """The table of every DroneCAN type, by class name."""
+    specs = {}
+    for data_type in DATA_TYPES:
+        head: tuple[pa.Field, ...] = (*HEAD, NODE_ID)
+        if data_type.kind is not TransferKind.MESSAGE:
+            head = (*head, DESTINATION)
+        kind = data_type.schema.cls.__name__
+        specs[kind] = TableSpec(kind, head, tuple(_struct_columns(data_type.schema, "", ())))
+    return specs
+
+
+def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[Column]:
+    columns: list[Column] = []
+    for f in struct.fields:
+        if not f.name:
+            continue  # void padding
+        name, where = prefix + f.name, (*path, f.name)
+        t = f.type
+        if isinstance(t, Struct):
+            columns += _struct_columns(t, name + ".", where)
+        elif isinstance(t, Union):
+            columns += _union_columns(t, name, where)
+        elif isinstance(t, Array):
+            item = pa.binary() if t.is_bytes else pa.list_(scalar_type(t.item))
+            columns.append(Column(name, item, _path(where)))
+        elif f.enum is not None:
+            names = enum_names(f.enum, t.bits)
+            columns.append(Column(name, enum_type(names), _enum_index(where), names))
+        else:
+            columns.append(Column(name, scalar_type(t), _path(where)))
+    return columns
+
+
+def _union_columns(union: Union, name: str, where: tuple[str, ...]) -> list[Column]:
+    members = tuple(member.name for member in union.members)
+    classes = {member.cls: index for index, member in enumerate(union.members)}
+    get_value = _path(where)
+    columns = [
+        Column(f"{name}.type", enum_type(members), lambda m: classes[type(get_value(m))], members)
+    ]
+    for member in union.members:
+        if isinstance(member.type, Struct):
+            continue  # Empty: the type says it all
+        t = pa.binary() if isinstance(member.type, Array) else scalar_type(member.type)
+        columns.append(Column(f"{name}.{member.name}", t, _member(get_value, member.cls)))
+    return columns
+
+
+def _member(get_value: Callable[[Any], Any], cls: type) -> Callable[[Any], Any]:
+    def get(message: Any) -> Any:
+        value = get_value(message)
+        return getattr(value, "value", None) if type(value) is cls else None
+
+    return get
+
+
+def _path(where: tuple[str, ...]) -> Callable[[Any], Any]:
+    return attrgetter(".".join(where))
+
+
+def _enum_index(where: tuple[str, ...]) -> Callable[[Any], Any]:
+    get = _path(where)
+    return lambda message: int(get(message))
+
+
+def scalar_type(t: Scalar) -> pa.DataType:
+    """The Arrow type of a DSDL scalar's decoded values."""
+    if t.kind == "float":
+        return pa.float64() if t.bits == 64 else pa.float32()
+    if t.kind == "bool":
+        return pa.bool_()
+    return integer_type(t.low, t.high)
+
+
+def enum_names(enum: type, bits: int) -> tuple[str, ...]:
+    """The name of every wire value of an enum field: the member's, or the number."""
+    return tuple(str(getattr(v, "name", None) or int(v)) for v in enum_table(enum, bits))
+
+
+def enum_type(names: tuple[str, ...]) -> pa.DataType:
+    """Dictionary-encoded names, indexed by the wire value."""
+    return pa.dictionary(integer_type(0, len(names) - 1), pa.string())
+
+
+def all_specs(codec: Codec) -> dict[str, TableSpec]:
+    """Every message table a capture decoded with this codec can give, by kind."""
+    specs = {
+        kind: veronte_spec(kind, variants) for kind, variants in veronte_layouts(codec).items()
+    }
+    specs.update(dronecan_specs())
+    return specs
+
+
+ERRORS = TableSpec("errors", (*HEAD, *PROBLEM), ())
+"""The table of every record whose ``error`` is set."""
+UNDECODED = TableSpec("unknown", (*HEAD, *UNKNOWN), ())
+"""The table of undecoded traffic: records with neither a message nor an error."""

@@ -1,0 +1,194 @@
+"""Collect rows into one Arrow table per message type, in capture order.
+
+Rows come in two forms: whole columns from the column-wise decoders, and `Record` objects
+from the per-frame decoder for everything else. Each row carries a sort key (its position
+in the capture, then its place among the records of that position), so that each table's
+rows come out in capture order whatever path decoded them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import pyarrow as pa
+import pyarrow.compute as pc
+
+from veronte4x.capture.columnar.schema import (
+    ERRORS,
+    SENDER_INDEX,
+    SENDERS,
+    UNDECODED,
+    TableSpec,
+)
+from veronte4x.capture.records import Record
+
+SUB = 16
+"""Sort keys are ``position * SUB + index among the records of that position``."""
+
+_SENDER_NAMES = pa.array(SENDERS, pa.string())
+
+
+class Tables:
+    """The tables being built, by kind.
+
+    Args:
+        specs: The schema of every message table, by kind.
+        channels: Interface names; column-wise rows give channels as indices into it.
+    """
+
+    def __init__(self, specs: Mapping[str, TableSpec], channels: list[str]) -> None:
+        self.specs = {**specs, "errors": ERRORS, "unknown": UNDECODED}
+        self.channels = channels
+        self._channel_codes = {name: index for index, name in enumerate(channels)}
+        self._parts: dict[str, list[tuple[npt.NDArray[np.int64], dict[str, pa.Array]]]] = {}
+
+    def add_columns(
+        self,
+        kind: str,
+        keys: npt.NDArray[np.int64],
+        head: Mapping[str, Any],
+        fields: Mapping[str, Any],
+    ) -> None:
+        """Add rows given as columns (NumPy or Arrow), head columns included.
+
+        ``head`` holds ``timestamp`` (NaN for none), ``has_time``, ``channel`` (codes),
+        ``can_id``, ``sender`` (codes into `SENDERS`), and for DroneCAN ``node_id`` and
+        ``destination_node_id``.
+        """
+        if not len(keys):
+            return
+        spec = self.specs[kind]
+        names = {c.name: c.names for c in spec.columns}
+        arrays: dict[str, pa.Array] = {}
+        for field in spec.schema:
+            if field.name == "timestamp":
+                arrays["timestamp"] = pa.array(
+                    head["timestamp"], pa.float64(), mask=~head["has_time"]
+                )
+            elif field.name == "channel":
+                arrays["channel"] = np.asarray(head["channel"], np.int32)
+            elif field.name == "sender":
+                arrays["sender"] = np.asarray(head["sender"], np.int16)
+            elif field.name in head:
+                arrays[field.name] = _arrow(head[field.name], field.type, len(keys))
+            else:
+                arrays[field.name] = _arrow(
+                    fields[field.name], field.type, len(keys), names.get(field.name)
+                )
+        self._parts.setdefault(kind, []).append((keys, arrays))
+
+    def add_records(self, records: Iterable[tuple[int, Record]]) -> None:
+        """Add records of the per-frame decoder with their sort keys."""
+        by_kind: dict[str, list[tuple[int, Record]]] = {}
+        for key, record in records:
+            if record.error is not None:
+                kind = "errors"
+            elif record.message is None:
+                kind = "unknown"
+            else:
+                kind = type(record.message).__name__
+            by_kind.setdefault(kind, []).append((key, record))
+        for kind, rows in by_kind.items():
+            self._add_record_rows(kind, rows)
+
+    def _add_record_rows(self, kind: str, rows: list[tuple[int, Record]]) -> None:
+        spec = self.specs[kind]
+        records = [record for _, record in rows]
+        head: dict[str, Any] = {
+            "timestamp": np.array(
+                [np.nan if r.timestamp is None else r.timestamp for r in records], np.float64
+            ),
+            "has_time": np.array([r.timestamp is not None for r in records], np.bool_),
+            "channel": [self._channel(r.channel) for r in records],
+            "can_id": [r.can_id for r in records],
+            "sender": [SENDER_INDEX[r.sender] for r in records],
+            "node_id": [r.node_id for r in records],
+            "destination_node_id": [r.destination_node_id for r in records],
+            "error": [r.error for r in records],
+            "detail": [r.detail for r in records],
+            "data": [r.data for r in records],
+        }
+        fields = {c.name: [c.get(r.message) for r in records] for c in spec.columns}
+        self.add_columns(kind, np.array([key for key, _ in rows], np.int64), head, fields)
+
+    def _channel(self, name: str) -> int:
+        code = self._channel_codes.get(name)
+        if code is None:
+            code = self._channel_codes[name] = len(self.channels)
+            self.channels.append(name)
+        return code
+
+    def finish(self) -> dict[str, pa.Table]:
+        """The tables, each sorted into capture order; kinds without rows are left out."""
+        return {kind: table for kind, (table, _) in self.finish_with_keys().items()}
+
+    def finish_with_keys(self) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+        """The tables, each with the sort keys of its rows (increasing)."""
+        channel_names = pa.array(self.channels, pa.string())
+        out: dict[str, tuple[pa.Table, npt.NDArray[np.int64]]] = {}
+        for kind, parts in self._parts.items():
+            spec = self.specs[kind]
+            keys = np.concatenate([k for k, _ in parts])
+            order = np.argsort(keys, kind="stable")
+            ordered = bool((order == np.arange(len(order))).all())
+            columns = []
+            for field in spec.schema:
+                pieces = [arrays[field.name] for _, arrays in parts]
+                if field.name == "channel":
+                    column = _dictionary(np.concatenate(pieces)[order], field.type, channel_names)
+                elif field.name == "sender":
+                    column = _dictionary(np.concatenate(pieces)[order], field.type, _SENDER_NAMES)
+                else:
+                    joined = pa.concat_arrays(pieces) if len(pieces) > 1 else pieces[0]
+                    column = joined if ordered else joined.take(pa.array(order))
+                    if pa.types.is_dictionary(field.type) and pa.types.is_string(column.type):
+                        column = column.dictionary_encode().cast(field.type)
+                columns.append(column)
+            out[kind] = pa.Table.from_arrays(columns, schema=spec.schema), keys[order]
+        return out
+
+
+def relative_time(tables: dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]) -> None:
+    """Make every table's timestamps relative to the capture's first timestamped row (the
+    one with the smallest key), in place."""
+    first: tuple[int, float] | None = None
+    for table, keys in tables.values():
+        stamps = table.column("timestamp")
+        valid = np.flatnonzero(~np.asarray(stamps.is_null()))
+        if len(valid) and (first is None or keys[valid[0]] < first[0]):
+            first = int(keys[valid[0]]), stamps[int(valid[0])].as_py()
+    if first is None:
+        return
+    for kind, (table, keys) in tables.items():
+        index = table.schema.get_field_index("timestamp")
+        shifted = pc.subtract(table.column("timestamp"), first[1])
+        tables[kind] = table.set_column(index, table.schema.field(index), shifted), keys
+
+
+def _dictionary(codes: np.ndarray, type_: pa.DataType, names: pa.Array) -> pa.Array:
+    indices = pa.array(codes, type_.index_type)
+    return pa.DictionaryArray.from_arrays(indices, names)
+
+
+def _arrow(
+    values: Any, type_: pa.DataType, size: int, names: tuple[str, ...] | None = None
+) -> pa.Array:
+    """One column as an Arrow array of its schema type (``names``: an enum's dictionary,
+    ``values`` then being indices)."""
+    if isinstance(values, pa.Array):
+        if values.type == pa.null():
+            return pa.nulls(size, type_)
+        return values if values.type == type_ else values.cast(type_)
+    if pa.types.is_dictionary(type_):
+        if names is None:  # names found in the data: encoded once the table is whole
+            return pa.array(list(values), pa.string())
+        indices = pa.array(
+            values if isinstance(values, np.ndarray) else list(values), type_.index_type
+        )
+        return pa.DictionaryArray.from_arrays(indices, pa.array(names, pa.string()))
+    if isinstance(values, np.ndarray) and values.dtype != object:
+        return pa.array(values, type_)
+    return pa.array(list(values), type_)

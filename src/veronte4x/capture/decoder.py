@@ -1,0 +1,217 @@
+"""Turn captured frames into records: the bus map routes, the codecs decode.
+
+Sans-IO: frames come in with their timestamps; nothing here opens a file or reads a clock.
+A bad frame becomes a record with its error and raw bytes; the stream never stops on one.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Iterator
+
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
+from veronte4x.capture.records import Record
+from veronte4x.codec import DecodeError, Sender, UnknownCommandError
+from veronte4x.codec.core import Dispatch
+from veronte4x.dronecan import ProblemReport, Reassembler
+from veronte4x.dronecan.reassembler import Problem
+
+_SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
+_new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
+
+Route = tuple[Role, int | None, Dispatch]
+
+
+class CaptureDecoder:
+    """Decode the frames of a capture into `Record` objects.
+
+    Args:
+        bus_map: CAN IDs of the Veronte roles and the codec choices; defaults to Embention's
+            template IDs.
+    """
+
+    def __init__(self, bus_map: BusMap | None = None) -> None:
+        self.bus_map = bus_map or BusMap()
+        self.codec = self.bus_map.codec()
+        self.reassemblers: dict[str, Reassembler] = {}
+        """One DroneCAN reassembler per channel (bus), created on its first frame."""
+        self._routes: dict[int, Route] = {
+            can_id: (role, index, self.codec.dispatch(_SENDERS[role]))
+            for can_id, (role, index) in self.bus_map.veronte_roles.items()
+        }
+
+    def decode(self, items: Iterable[Frame | BadLine]) -> Iterator[Record]:
+        """Yield the records of a stream of frames and bad lines, in order."""
+        routes = self._routes
+        veronte_extended = self.bus_map.extended
+        excess = self.bus_map.allow_excess
+        for item in items:
+            if type(item) is Frame:
+                timestamp, channel, can_id, data, extended, remote, fd, error = item
+                route = routes.get(can_id) if extended == veronte_extended else None
+                if route is not None and not (remote or error or fd):
+                    yield self._veronte(timestamp, channel, can_id, data, route, excess)
+                    continue
+                yield from self.frame_records(item)
+            else:
+                yield self._bad_line(item)  # type: ignore[arg-type]
+
+    def decode_candump(self, lines: Iterable[str], channel: str | None = None) -> Iterator[Record]:
+        """Yield the records of candump text, reading and decoding in one pass.
+
+        Equivalent to ``decode(parse_candump(lines, channel))``, but plain log-form frames,
+        the bulk of a capture, skip the intermediate `Frame` and the generic dispatch: an
+        11-bit frame on a Veronte ID is decoded inline, a 29-bit one goes straight to its
+        channel's DroneCAN reassembler. Every other line goes through `parse_line`.
+        """
+        routes = self._routes if not self.bus_map.extended else {}
+        dronecan = self.bus_map.dronecan and not self.bus_map.extended
+        excess = self.bus_map.allow_excess
+        fromhex = bytes.fromhex
+        for number, line in enumerate(lines, 1):
+            parts = line.split()
+            if not parts:
+                continue
+            if len(parts) == 3:
+                stamp, interface, body = parts
+                ident, separator, text = body.partition("#")
+                size = len(ident)
+                if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
+                    try:
+                        seconds = float(stamp[1:-1])
+                        can_id = int(ident, 16)
+                        data = fromhex(text)
+                    except ValueError:
+                        seconds = math.nan
+                    # seconds - seconds is 0.0 for a finite time only; the rest is parse_line's.
+                    if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
+                        if channel is not None and interface != channel:
+                            continue
+                        if size == 8 and dronecan and can_id not in routes:
+                            frame = (seconds, interface, can_id, data, True, False, False, False)
+                            yield from self._dronecan(_new(Frame, frame))
+                            continue
+                        route = routes.get(can_id) if size == 3 else None
+                        if route is not None:
+                            # The hottest path of a capture: the dispatch of _veronte, inlined.
+                            role, index, dispatch = route
+                            decode = None
+                            if data and data[0]:
+                                decode = dispatch.by_command[data[0]]
+                            elif len(data) > 1:
+                                decode = dispatch.header_ff if data[1] == 0xFF else dispatch.other
+                            if decode is not None:
+                                try:
+                                    message = decode(data, excess)
+                                except DecodeError:
+                                    pass
+                                else:
+                                    record = (seconds, interface, can_id, role, index, None,
+                                              message, None, "", data, None)  # fmt: skip
+                                    yield _new(Record, record)
+                                    continue
+                            yield self._veronte(seconds, interface, can_id, data, route, excess)
+                            continue
+            item = parse_line(line, number, parts)
+            if isinstance(item, BadLine):
+                yield self._bad_line(item)
+            elif channel is None or item.channel == channel:
+                yield from self.decode((item,))
+
+    def frame_records(self, frame: Frame) -> Iterator[Record]:
+        """The records of one frame that is not a plain Veronte frame."""
+        role, index = self.bus_map.role(frame.can_id, frame.extended)
+        base = (frame.timestamp, frame.channel, frame.can_id, role, index, None, None)
+        if frame.error:
+            yield Record(*base, "error frame", "error frame", frame.data)
+        elif frame.remote:
+            yield Record(*base, "remote frame", "remote frame", frame.data)
+        elif role is Role.ARBITER or role is Role.AUTOPILOT:
+            yield Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
+        elif role is Role.DRONECAN and not frame.fd:
+            yield from self._dronecan(frame)
+        else:
+            yield Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
+
+    def _dronecan(self, frame: Frame) -> Iterator[Record]:
+        """Feed a 29-bit frame to its channel's reassembler: a record per problem it reports,
+        then one for the transfer it completes. A capture without timestamps feeds 0.0, so
+        no transfer-ID timeout ever fires there."""
+        reassembler = self.reassemblers.get(frame.channel)
+        if reassembler is None:
+            reassembler = self.reassemblers[frame.channel] = Reassembler()
+        before = reassembler.reported
+        stamp = frame.timestamp if frame.timestamp is not None else 0.0
+        transfer = reassembler.feed(frame.can_id, frame.data, stamp)
+        new = reassembler.reported - before
+        if new:
+            for report in list(reassembler.problems)[-new:]:
+                yield problem_record(report, frame.channel)
+        if transfer is not None:
+            yield _new(
+                Record,
+                (frame.timestamp, frame.channel, frame.can_id, Role.DRONECAN, None,
+                 transfer.source_node_id, transfer.message, None, "", frame.data,
+                 transfer.destination_node_id),
+            )  # fmt: skip
+
+    def _veronte(
+        self,
+        timestamp: float | None,
+        channel: str,
+        can_id: int,
+        data: bytes,
+        route: Route,
+        excess: bool,
+    ) -> Record:
+        role, index, _ = route
+        try:
+            message = self.codec.decode(data, sender=_SENDERS[role], allow_excess=excess)
+        except UnknownCommandError as failure:
+            return Record(timestamp, channel, can_id, role, index, None, None,
+                          "unknown command", str(failure), data)  # fmt: skip
+        except DecodeError as failure:
+            return Record(timestamp, channel, can_id, role, index, None, None,
+                          "decode error", str(failure), data)  # fmt: skip
+        return _new(
+            Record, (timestamp, channel, can_id, role, index, None, message, None, "", data, None)
+        )
+
+    @staticmethod
+    def _bad_line(item: BadLine) -> Record:
+        if isinstance(item, Truncation):
+            return Record(None, "", 0, Role.UNKNOWN, None, None, None, "truncated", item.reason,
+                          b"")  # fmt: skip
+        detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
+        return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
+
+
+def problem_record(report: ProblemReport, channel: str) -> Record:
+    """The record of a DroneCAN reassembly problem on a channel; a frame of a data type
+    with no codec is undecoded traffic (error None, `foreign_data_type` as its detail)."""
+    if report.problem is Problem.UNKNOWN_TYPE:
+        return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                      report.can_id & 0x7F or None, None, None, foreign_data_type(report.can_id),
+                      report.data)  # fmt: skip
+    kind = report.problem.name.lower().replace("_", " ")
+    detail = f"{report.problem.value} {report.detail}"
+    return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                  report.can_id & 0x7F or None, None, kind, detail, report.data)  # fmt: skip
+
+
+def foreign_id(can_id: int, extended: bool) -> str:
+    """The `Record.detail` of a frame on a CAN ID outside the bus map: ``11-bit CAN ID 0x123``."""
+    return f"{'29' if extended else '11'}-bit CAN ID {can_id:#x}"
+
+
+def foreign_data_type(can_id: int) -> str:
+    """The `Record.detail` of a DroneCAN frame of a type with no codec, from its CAN ID:
+    ``DroneCAN data type 1234``, ``DroneCAN service type 48`` or
+    ``DroneCAN anonymous data type 2`` (only the type id's low 2 bits are on the wire)."""
+    if can_id & 0x80:
+        return f"DroneCAN service type {(can_id >> 16) & 0xFF}"
+    if can_id & 0x7F:
+        return f"DroneCAN data type {(can_id >> 8) & 0xFFFF}"
+    return f"DroneCAN anonymous data type {(can_id >> 8) & 0x3}"

@@ -1,0 +1,227 @@
+"""What `veronte4x monitor` shows: the latest of every message type per sender (sans-IO).
+
+`MonitorState` takes decoded records and keeps, per (message type, sender), the latest
+fields (as `veronte4x.capture.readable` writes them: shortest numbers, enums by name,
+units), the count, the rate over the last seconds and the errors; and the arbiter's state
+from its Status and Score frames (Veronte Autopilot 4x Software Manual, the arbiter's CAN
+messages). Time is the records' own timestamps, so a capture and a live bus give the same
+table. `render_text` writes the table as plain text; the terminal view is drawn by the CLI.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Any
+
+from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.readable import format_message
+from veronte4x.capture.records import Record
+from veronte4x.codec import Score, Status
+from veronte4x.numbers import shortest
+
+RATE_WINDOW = 2.0
+"""Seconds over which a row's rate is counted."""
+
+
+def fields_text(message: Any) -> str:
+    """A message's fields as people read them, with units: ``voltage=25.2 V, rpm=1200 rpm``.
+
+    The same text as `veronte4x.capture.readable.format_message`, without the class name.
+    """
+    text = format_message(message)
+    return text[len(type(message).__name__) + 1 : -1]
+
+
+def rate_text(rate: float) -> str:
+    """A rate in records per second, to one decimal."""
+    return str(round(rate, 1))
+
+
+@dataclass(frozen=True, slots=True)
+class Row:
+    """One line of the monitor.
+
+    Attributes:
+        sender: Who sent it (``AP1``, ``arbiter``, ``node 21``, ...).
+        kind: The message class name.
+        can_id: The CAN ID it came on last.
+        count: Records of this type from this sender.
+        errors: Bad frames on this sender's CAN ID since this type was first decoded there.
+        rate: Records per second over the last `RATE_WINDOW` seconds.
+        fields: The latest message's fields, as people read them (`fields_text`).
+        last_seen: Timestamp of the latest one.
+    """
+
+    sender: str
+    kind: str
+    can_id: int
+    count: int
+    errors: int
+    rate: float
+    fields: str
+    last_seen: float | None
+
+
+@dataclass
+class _Entry:
+    can_id: int
+    count: int = 0
+    errors: int = 0
+    fields: str = ""
+    last_seen: float | None = None
+    times: deque[float] = field(default_factory=deque)
+
+
+@dataclass(frozen=True, slots=True)
+class ArbiterView:
+    """The arbiter's latest Status and Scores.
+
+    Attributes:
+        status: The latest Status, or None.
+        scores: The latest score of each autopilot (0 = AP1 .. 3 = external).
+    """
+
+    status: Status | None
+    scores: tuple[tuple[int, float], ...]
+
+    def describe(self) -> str:
+        """One line: selected autopilot, arbitration, mode, alive and ready flags, scores."""
+        parts = []
+        status = self.status
+        if status is None:
+            parts.append("arbiter: no Status yet")
+        else:
+            mode = {None: "", True: ", normal mode", False: ", MAINTENANCE mode"}
+            parts.append(
+                f"arbiter: selected {AUTOPILOT_NAMES[status.selected]}, "
+                f"arbitration {'on' if status.arbitrating else 'OFF'}" + mode[status.normal_mode]
+            )
+            for name, flags in (("alive", status.alive), ("ready", status.ready)):
+                shown = " ".join(AUTOPILOT_NAMES[i] if ok else "-" for i, ok in enumerate(flags))
+                parts.append(f"{name} {shown}")
+        if self.scores:
+            parts.append(
+                "scores " + " ".join(f"{AUTOPILOT_NAMES[a]} {shortest(s)}" for a, s in self.scores)
+            )
+        return "; ".join(parts)
+
+
+class MonitorState:
+    """The monitor's table, updated record by record.
+
+    Args:
+        rate_window: Seconds over which rates are counted.
+
+    Examples:
+        >>> from veronte4x import capture
+        >>> state = MonitorState()
+        >>> for record in capture.read("examples/capture.log"):
+        ...     state.add(record)
+        >>> [(r.sender, r.kind, r.count) for r in state.rows("score")]
+        [('arbiter', 'Score', 3)]
+    """
+
+    def __init__(self, rate_window: float = RATE_WINDOW) -> None:
+        self.rate_window = rate_window
+        self.records = 0
+        self.errors = 0
+        self.first_timestamp: float | None = None
+        self.last_timestamp: float | None = None
+        self._rows: dict[tuple[str, str], _Entry] = {}
+        self._by_id: dict[tuple[str, int], tuple[str, str]] = {}
+        self._status: Status | None = None
+        self._scores: dict[int, float] = {}
+
+    def add(self, record: Record) -> None:
+        """Take one record."""
+        self.records += 1
+        stamp = record.timestamp
+        if stamp is not None:
+            if self.first_timestamp is None:
+                self.first_timestamp = stamp
+            if self.last_timestamp is None or stamp > self.last_timestamp:
+                self.last_timestamp = stamp
+        sender = record.sender
+        if record.error is not None:
+            self.errors += 1
+            key = self._by_id.get((sender, record.can_id), (sender, f"error: {record.error}"))
+            entry = self._rows.setdefault(key, _Entry(record.can_id))
+            entry.errors += 1
+            return
+        message = record.message
+        key = (sender, type(message).__name__)
+        entry = self._rows.setdefault(key, _Entry(record.can_id))
+        self._by_id[(sender, record.can_id)] = key
+        entry.can_id = record.can_id
+        entry.count += 1
+        entry.fields = fields_text(message)
+        entry.last_seen = stamp
+        if stamp is not None:
+            entry.times.append(stamp)
+            while entry.times and entry.times[0] <= stamp - self.rate_window:
+                entry.times.popleft()
+        if isinstance(message, Status):
+            self._status = message
+        elif isinstance(message, Score):
+            self._scores[message.autopilot] = message.score
+
+    @property
+    def arbiter(self) -> ArbiterView:
+        """The arbiter's latest Status and Scores."""
+        return ArbiterView(self._status, tuple(sorted(self._scores.items())))
+
+    def rows(self, text_filter: str = "") -> list[Row]:
+        """The rows by sender and type; only those whose sender or type contains the filter
+        (any case)."""
+        wanted = text_filter.lower()
+        now = self.last_timestamp
+        rows = []
+        for (sender, kind), e in sorted(self._rows.items()):
+            if wanted and wanted not in sender.lower() and wanted not in kind.lower():
+                continue
+            recent = 0 if now is None else sum(1 for t in e.times if t > now - self.rate_window)
+            rows.append(
+                Row(
+                    sender,
+                    kind,
+                    e.can_id,
+                    e.count,
+                    e.errors,
+                    recent / self.rate_window,
+                    e.fields,
+                    e.last_seen,
+                )
+            )
+        return rows
+
+    def summary(self) -> str:
+        """One line: records, errors, time span."""
+        span = ""
+        if self.first_timestamp is not None and self.last_timestamp is not None:
+            span = f", {round(self.last_timestamp - self.first_timestamp, 3)} s"
+        return f"{self.records} records, {self.errors} bad{span}"
+
+
+def can_id_text(can_id: int) -> str:
+    """A CAN ID in hex: 3 digits for 11-bit IDs, 8 for 29-bit ones."""
+    return f"{can_id:08X}" if can_id > 0x7FF else f"{can_id:03X}"
+
+
+def render_text(state: MonitorState, text_filter: str = "") -> str:
+    """The monitor as plain text: the arbiter line, a summary, then one line per row."""
+    rows = state.rows(text_filter)
+    lines = [state.arbiter.describe(), state.summary()]
+    sender_width = max([len("sender"), *(len(r.sender) for r in rows)])
+    kind_width = max([len("type"), *(len(r.kind) for r in rows)])
+    lines.append(
+        f"{'sender':<{sender_width}}  {'type':<{kind_width}}  {'id':>8}  {'count':>7}  "
+        f"{'rate/s':>7}  {'errors':>6}  fields"
+    )
+    for r in rows:
+        line = (
+            f"{r.sender:<{sender_width}}  {r.kind:<{kind_width}}  {can_id_text(r.can_id):>8}  "
+            f"{r.count:>7}  {rate_text(r.rate):>7}  {r.errors:>6}  {r.fields}"
+        )
+        lines.append(line.rstrip())
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,168 @@
+"""Values as people read them: shortest round-trip numbers, enums by name, text as text,
+units, and times in ISO 8601.
+
+The command line's text, JSON lines and CSV outputs are written through these functions;
+`readable_fields` has the same keys as `veronte4x.capture.fields`, with readable values.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+from typing import Any
+
+from veronte4x.dronecan import definitions as _dronecan
+from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.numbers import shortest
+from veronte4x.times import format_time
+from veronte4x.units import unit
+
+__all__ = ["format_message", "format_time", "readable", "readable_fields", "shortest"]
+
+
+def _float16_fields() -> frozenset[tuple[type, str]]:
+    """(class, attribute) of every DroneCAN float16 field, from the type definitions."""
+    found: set[tuple[type, str]] = set()
+
+    def walk(node: Struct | Union) -> None:
+        if isinstance(node, Union):
+            for member in node.members:
+                if isinstance(member.type, Struct):
+                    walk(member.type)
+                elif member.type == Scalar("float", 16):
+                    found.add((member.cls, "value"))
+            return
+        for field in node.fields:
+            if isinstance(field.type, (Struct, Union)):
+                walk(field.type)
+            else:
+                item = field.type.item if isinstance(field.type, Array) else field.type
+                if item == Scalar("float", 16):
+                    found.add((node.cls, field.name))
+
+    for data_type in _dronecan.DATA_TYPES:
+        walk(data_type.schema)
+    return frozenset(found)
+
+
+FLOAT16_FIELDS = _float16_fields()
+"""(class, attribute) of the half-precision fields (DroneCAN ``float16``)."""
+
+TEXT_FIELDS = frozenset(
+    {
+        ("GetNodeInfoResponse", "name"),
+        ("GetSetRequest", "name"),
+        ("GetSetResponse", "name"),
+        ("StringValue", "value"),
+        ("Path", "path"),
+        ("BeginFirmwareUpdateResponse", "optional_error_message"),
+    }
+)
+"""(class name, attribute) of the byte fields that hold text (DroneCAN names, strings and
+paths); every other byte field is data, shown in hex."""
+
+
+def _float_bits(owner: type, attr: str) -> int:
+    return 16 if (owner, attr) in FLOAT16_FIELDS else 32
+
+
+def readable(owner: type, attr: str, value: Any) -> Any:
+    """One field's value as people read it: an enum's name, text as ``str``, other bytes in
+    hex, a float in its shortest round-trip form; ints, bools and None unchanged."""
+    kind = type(value)
+    if kind is float:
+        return shortest(value, _float_bits(owner, attr))
+    if isinstance(value, enum.Enum):
+        return value.name
+    if kind is bytes:
+        if (owner.__name__, attr) in TEXT_FIELDS:
+            return value.decode("utf-8", "backslashreplace")
+        return value.hex()
+    return value
+
+
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+
+
+def _names(cls: type) -> tuple[str, ...]:
+    names = _FIELD_NAMES.get(cls)
+    if names is None:  # dataclasses.fields() is slow: once per class
+        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(cls))
+    return names
+
+
+def _is_message(value: Any) -> bool:
+    return dataclasses.is_dataclass(value) and not isinstance(value, type)
+
+
+def readable_fields(message: Any) -> dict[str, Any]:
+    """A message's fields as a flat dict with readable values.
+
+    The keys are those of `veronte4x.capture.fields` (tuples as ``name_0``, ``name_1``...,
+    nested structures with dots); the values go through `readable`.
+
+    Examples:
+        >>> from veronte4x import codec, dronecan
+        >>> readable_fields(codec.ArbitrationVariable(number=0, value=0.10000000149011612))
+        {'number': 0, 'value': 0.1}
+        >>> status = dronecan.NodeStatus(7, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+        >>> readable_fields(status)["health"]
+        'OK'
+    """
+    out: dict[str, Any] = {}
+    if _is_message(message):
+        _fill(message, "", out)
+    return out
+
+
+def _fill(message: Any, prefix: str, out: dict[str, Any]) -> None:
+    owner = type(message)
+    for attr in _names(owner):
+        value = getattr(message, attr)
+        kind = type(value)
+        if kind is int or kind is bool or value is None:
+            out[prefix + attr] = value
+        elif kind is tuple:
+            for index, item in enumerate(value):
+                out[f"{prefix}{attr}_{index}"] = readable(owner, attr, item)
+        elif hasattr(kind, "__dataclass_fields__"):
+            _fill(value, f"{prefix}{attr}.", out)
+        else:
+            out[prefix + attr] = readable(owner, attr, value)
+
+
+def format_message(message: Any) -> str:
+    """A message on one line: its class, then every field as ``name=value``, with units.
+
+    Examples:
+        >>> from veronte4x import dronecan
+        >>> format_message(dronecan.EscStatus(0, 16.203125, 2.5, 310.25, 1200, 40, 2))
+        'EscStatus(error_count=0, voltage=16.2 V, current=2.5 A, temperature=310.2 K, \
+rpm=1200 rpm, power_rating_pct=40 %, esc_index=2)'
+    """
+    return _format(message, type(message).__name__, "")
+
+
+def _format(message: Any, top: str, prefix: str) -> str:
+    owner = type(message)
+    parts = []
+    for attr in _names(owner):
+        value = getattr(message, attr)
+        if _is_message(value):
+            text = _format(value, top, f"{prefix}{attr}.")
+        elif type(value) is tuple:
+            text = "(" + ", ".join(_scalar(owner, attr, item) for item in value) + ")"
+        else:
+            text = _scalar(owner, attr, value)
+            symbol = unit(top, prefix + attr)
+            if symbol is not None:
+                text = f"{text} {symbol}"
+        parts.append(f"{attr}={text}")
+    return f"{owner.__name__}({', '.join(parts)})"
+
+
+def _scalar(owner: type, attr: str, value: Any) -> str:
+    shown = readable(owner, attr, value)
+    if type(value) is bytes and (owner.__name__, attr) in TEXT_FIELDS:
+        return repr(shown)
+    return str(shown)

@@ -1,0 +1,220 @@
+"""Where a capture comes from, decided once: candump text (plain, gzip or standard input) or a
+format python-can reads.
+
+Every reader of the package, per-frame and columnar, asks `resolve` and opens through it, so
+that one rule decides how a source is read: by suffix where the suffix says it, by content
+otherwise (a candump file saved as ``flight`` or ``flight.bin`` is still candump), and with a
+`SourceError` naming the path for a directory or a file in no format veronte4x knows.
+"""
+
+from __future__ import annotations
+
+import enum
+import gzip
+import io
+import os
+import sys
+import zlib
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from typing import IO
+
+from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.errors import SourceError
+
+CANDUMP_SUFFIXES = (".log", ".txt", ".candump")
+"""File names the native candump parser reads, gzipped (``.gz``) or not."""
+
+PYTHON_CAN_SUFFIXES = (".asc", ".blf", ".csv", ".db", ".mf4", ".trc")
+"""File names python-can's ``LogReader`` reads (needs the ``can`` extra)."""
+
+_GZIP_MAGIC = b"\x1f\x8b"
+_SNIFF_BYTES = 4096
+_SNIFF_LINES = 8
+
+STDIN = "-"
+"""The path that stands for candump text on standard input."""
+
+
+class Format(enum.Enum):
+    """How a source is parsed."""
+
+    CANDUMP = "candump"
+    PYTHON_CAN = "python-can"
+
+
+@dataclass(frozen=True, slots=True)
+class Source:
+    """A capture to read.
+
+    Attributes:
+        path: The file's path, or ``-`` for standard input.
+        format: How it is parsed.
+        gzipped: The file is gzip-compressed.
+    """
+
+    path: str
+    format: Format
+    gzipped: bool = False
+
+    @property
+    def is_stdin(self) -> bool:
+        """The source is standard input."""
+        return self.path == STDIN
+
+
+def resolve(path: str | os.PathLike[str]) -> Source:
+    """Decide how a capture is read from its path, and its content where the suffix is silent.
+
+    candump text (``.log``, ``.txt``, ``.candump``, gzipped or not, or ``-`` for standard
+    input) is parsed natively; ``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4`` and ``.trc`` go
+    through python-can's ``LogReader``. A file with any other suffix, or none, is read as
+    candump text if its first lines are candump frames; a pipe without a suffix is read as
+    candump text.
+
+    Raises:
+        SourceError: The path is a directory, or a file in no format veronte4x knows.
+        FileNotFoundError: The file does not exist.
+    """
+    name = os.fspath(path)
+    if name == STDIN:
+        return Source(name, Format.CANDUMP)
+    if os.path.isdir(name):
+        raise SourceError(f"{name} is a directory: give a capture file")
+    lower = name.lower()
+    gzipped = lower.endswith(".gz")
+    stem = lower[:-3] if gzipped else lower
+    if stem.endswith(CANDUMP_SUFFIXES):
+        return Source(name, Format.CANDUMP, gzipped)
+    if stem.endswith(PYTHON_CAN_SUFFIXES):
+        return Source(name, Format.PYTHON_CAN, gzipped)
+    if not os.path.isfile(name):
+        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is candump text,
+        # the one format that streams. A missing file fails when it is opened.
+        return Source(name, Format.CANDUMP, gzipped)
+    with open(name, "rb") as file:
+        head = file.read(_SNIFF_BYTES)
+    gzipped = head.startswith(_GZIP_MAGIC)
+    if gzipped:
+        head = _gunzip_head(name)
+    if _is_candump(head):
+        return Source(name, Format.CANDUMP, gzipped)
+    known = ", ".join(CANDUMP_SUFFIXES + PYTHON_CAN_SUFFIXES)
+    raise SourceError(
+        f"{name}: not candump text, and its suffix is none of {known}: convert it, or rename "
+        "it to the suffix of its format"
+    )
+
+
+def _gunzip_head(name: str) -> bytes:
+    """The first bytes of a gzip file's content, as many as a truncated file has."""
+    out = b""
+    try:
+        with gzip.open(name, "rb") as file:
+            while len(out) < _SNIFF_BYTES:
+                chunk = file.read(_SNIFF_BYTES - len(out))
+                if not chunk:
+                    break
+                out += chunk
+    except (EOFError, OSError, zlib.error):
+        pass
+    return out
+
+
+def _is_candump(head: bytes) -> bool:
+    """Whether most of the first complete lines of a file are candump frames (a capture may
+    start with a bad line; other text or binary data has none or few)."""
+    from veronte4x.capture.readers.candump import parse_line
+
+    lines = head.decode("utf-8", "replace").splitlines()
+    if len(head) == _SNIFF_BYTES and len(lines) > 1:
+        lines.pop()  # cut by the sniff, not by the file
+    numbered = [(n, line) for n, line in enumerate(lines, 1) if line.strip()][:_SNIFF_LINES]
+    frames = sum(isinstance(parse_line(text, n), Frame) for n, text in numbered)
+    return frames * 2 > len(numbered)
+
+
+class Truncated(SourceError):
+    """Compressed input that ends early: the frames before the cut were read.
+
+    Attributes:
+        line_number: The line at which the input ends.
+    """
+
+    def __init__(self, path: str, line_number: int) -> None:
+        self.line_number = line_number
+        super().__init__(
+            f"{path}: the gzip data ends early, at line {line_number}: the file is truncated"
+        )
+
+    def bad_line(self) -> Truncation:
+        """The `Truncation` that stands for the cut, so that a reader counts it and stops."""
+        return Truncation(self.line_number, "", str(self))
+
+
+@contextmanager
+def open_text(source: Source) -> Iterator[IO[str]]:
+    """Open candump text for reading; bytes that are not UTF-8 are replaced.
+
+    Reading gzip text that ends early raises ``EOFError`` (or ``gzip.BadGzipFile``);
+    `open_lines` turns that into `Truncated`.
+    """
+    if source.is_stdin:
+        stream = io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
+        try:
+            yield stream
+        finally:
+            stream.detach()
+        return
+    opener = gzip.open if source.gzipped else open
+    with opener(source.path, "rt", encoding="utf-8", errors="replace") as text:
+        yield text
+
+
+@contextmanager
+def open_lines(source: Source) -> Iterator[Iterator[str]]:
+    """Open candump text as lines; gzip text that ends early raises `Truncated` after its
+    last whole line."""
+    with open_text(source) as text:
+        yield _until_truncated(text, source.path) if source.gzipped else text
+
+
+def _until_truncated(lines: IO[str], path: str) -> Iterator[str]:
+    number = 0
+    try:
+        for number, line in enumerate(lines, 1):  # noqa: B007 - the count is read after
+            yield line
+    except (EOFError, gzip.BadGzipFile, zlib.error):
+        raise Truncated(path, number + 1) from None
+
+
+def open_frames(
+    path: str | os.PathLike[str], channel: str | None = None
+) -> Iterator[Frame | BadLine]:
+    """Stream the frames of a capture, whatever its format.
+
+    Args:
+        path: The capture file, or ``-`` for candump text on standard input.
+        channel: Keep only frames of this interface (None keeps all).
+
+    Raises:
+        SourceError: The path is a directory or a file in no format veronte4x knows.
+        MissingExtraError: The format needs python-can and it is not installed.
+    """
+    source = resolve(path)
+    if source.format is Format.CANDUMP:
+        return _candump_frames(source, channel)
+    from veronte4x.capture.readers.pythoncan import read_with_python_can
+
+    return read_with_python_can(source.path, channel)
+
+
+def _candump_frames(source: Source, channel: str | None) -> Iterator[Frame | BadLine]:
+    from veronte4x.capture.readers.candump import parse_candump
+
+    with open_lines(source) as lines:
+        try:
+            yield from parse_candump(lines, channel)
+        except Truncated as cut:
+            yield cut.bad_line()

@@ -1,0 +1,91 @@
+"""The ``veronte4x`` command line: a filter over captures, like cantools' ``decode``.
+
+Data goes to standard output; summaries and errors go to standard error, an error as one line
+naming what was wrong and what to do, never a traceback. Exit codes (`exit_codes`): 0 on
+success (bad frames skipped or kept are not failures), 1 when the capture failed a check
+(``--on-error raise`` met a bad frame, ``replay`` found disagreements), 2 for a usage error or
+an input that cannot be read (missing file, directory, unknown format, bad bus map, missing
+extra, a CAN bus that cannot be opened), 3 when a DroneCAN node did not answer and 4 when it
+refused (``esc``), 130 when interrupted by Ctrl-C.
+
+Each command lives in its own module with an ``add_parser`` function that registers it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+from collections.abc import Sequence
+
+from veronte4x.arbiter.errors import ConfigError
+from veronte4x.capture.busmap import BusMap, BusMapError
+from veronte4x.cli import decode, esc, monitor, plot, replay, simulate, stats
+from veronte4x.cli import list as list_command
+from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
+from veronte4x.errors import SourceError
+
+COMMANDS = (decode, stats, replay, monitor, plot, list_command, esc, simulate)
+"""The command modules, in the order ``--help`` lists them."""
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; return its exit code."""
+    try:
+        parser = _parser()
+        args = parser.parse_args(argv)
+        bus_map = BusMap.from_toml(args.bus_map) if args.bus_map else BusMap()
+        result: int = args.run(args, bus_map)
+        return result
+    except KeyboardInterrupt:
+        return _fail("interrupted", EXIT_INTERRUPTED)
+    except BrokenPipeError:
+        # The reader (`| head`) is gone: stop quietly, and keep Python's exit-time flush
+        # of standard output from failing again.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_OK
+    except OSError as error:
+        return _fail(_os_error(error), EXIT_USAGE)
+    except (SourceError, BusMapError, ConfigError, ImportError) as error:
+        return _fail(str(error), EXIT_USAGE)
+
+
+def _fail(message: str, code: int) -> int:
+    """Print one error line on standard error after the output so far; return the code."""
+    with contextlib.suppress(OSError):
+        sys.stdout.flush()
+    print(f"veronte4x: {message}", file=sys.stderr)
+    return code
+
+
+def _os_error(error: OSError) -> str:
+    """``path: reason`` rather than Python's ``[Errno 2] ...: 'path'``."""
+    if error.filename is not None and error.strerror:
+        return f"{error.filename}: {error.strerror}"
+    return str(error)
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="veronte4x",
+        description="Decode Veronte 4x and Vertiq DroneCAN traffic from CAN captures.",
+    )
+    parser.add_argument("--version", action=_Version, help="show the version and exit")
+    commands = parser.add_subparsers(required=True, metavar="COMMAND")
+    for command in COMMANDS:
+        command.add_parser(commands)
+    return parser
+
+
+class _Version(argparse.Action):
+    """``--version``, which looks the version up only when asked (it reads package metadata)."""
+
+    def __init__(self, option_strings: Sequence[str], dest: str, help: str | None = None) -> None:
+        super().__init__(option_strings, dest, nargs=0, help=help)
+
+    def __call__(self, parser: argparse.ArgumentParser, *_: object) -> None:
+        from veronte4x import __version__
+
+        print(f"veronte4x {__version__}")
+        parser.exit()

@@ -1,0 +1,226 @@
+"""``veronte4x decode``: a capture to one record per line, as text, JSON lines or CSV.
+
+Values are written as people read them (`veronte4x.capture.readable`): shortest round-trip
+floats, enums by name, text as text; the text output adds units and ISO 8601 times.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+from collections.abc import Callable, Iterable
+from typing import Any, TextIO
+
+from veronte4x import capture
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.readable import format_message, readable_fields
+from veronte4x.capture.records import Record
+from veronte4x.capture.stats import Stats
+from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.notices import tell_truncation
+from veronte4x.cli.options import add_capture_options, add_live_options, open_records
+from veronte4x.cli.options import live as live_bus
+from veronte4x.times import format_time
+
+HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
+"""The record's own columns, before the message's fields."""
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser("decode", help="decode a capture, one record per line")
+    parser.add_argument("file", nargs="?", default="-", help="capture file, or - for stdin")
+    parser.add_argument(
+        "--output",
+        choices=["text", "jsonl", "csv"],
+        default="text",
+        help="text (default), JSON lines, or CSV with one column per field",
+    )
+    parser.add_argument(
+        "--on-error",
+        choices=["skip", "keep", "raise"],
+        default="skip",
+        help="bad frames: skip and count them (default), keep them as records, or stop",
+    )
+    parser.add_argument(
+        "--relative-time",
+        action="store_true",
+        help="times in seconds since the first frame (default: as captured; ISO 8601 in text)",
+    )
+    add_capture_options(parser)
+    add_live_options(parser)
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Decode the capture to standard output; the summary goes to standard error."""
+    counts = Stats()
+    records = counts.counted(tell_truncation(open_records(args, bus_map)))
+    out = sys.stdout
+    clock = _Clock(args.relative_time)
+    if args.output == "csv":
+        write, close = _csv_writer(out, clock, _csv_columns(args, bus_map))
+    else:
+        write, close = {"text": _text_writer, "jsonl": _jsonl_writer}[args.output](out, clock)
+    live = args.file == "-" or live_bus(args)
+    status = EXIT_OK
+    try:
+        for record in records:
+            if record.error is not None:
+                if args.on_error == "skip":
+                    continue
+                if args.on_error == "raise":
+                    close()
+                    out.flush()
+                    print(f"veronte4x: {_describe(record, clock)}", file=sys.stderr)
+                    status = EXIT_BAD_FRAME
+                    break
+            write(record)
+            if live:
+                out.flush()
+    except KeyboardInterrupt:
+        close()
+        out.flush()
+        print(f"veronte4x: interrupted after {_summary(counts)}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    if status == EXIT_OK:
+        close()
+    print(f"veronte4x: {_summary(counts)} ({args.on_error})", file=sys.stderr)
+    return status
+
+
+def _summary(counts: Stats) -> str:
+    errors = sum(counts.errors.values())
+    unknown = sum(counts.unknown.values())
+    return f"{counts.records} records, {unknown} undecoded, {errors} bad"
+
+
+class _Clock:
+    """Timestamps as written: as captured, or relative to the first timestamped record."""
+
+    def __init__(self, relative: bool) -> None:
+        self.relative = relative
+        self.start: float | None = None
+
+    def seconds(self, stamp: float | None) -> float | None:
+        """The timestamp for JSON and CSV: as captured, or seconds since the first one."""
+        if stamp is None or not self.relative:
+            return stamp
+        if self.start is None:
+            self.start = stamp
+        return round(stamp - self.start, 6)
+
+    def text(self, stamp: float | None) -> str:
+        """The timestamp for text: ISO 8601, or seconds since the first one."""
+        if stamp is not None and self.relative and self.start is None:
+            self.start = stamp
+        return format_time(stamp, self.start if self.relative else None)
+
+
+def _describe(record: Record, clock: _Clock) -> str:
+    return (
+        f"{clock.text(record.timestamp)} {record.channel} {record.can_id:03X} "
+        f"{record.error}: {record.detail}"
+    )
+
+
+Writer = tuple[Callable[[Record], None], Callable[[], None]]
+"""Write one record; close (write what is kept, once)."""
+
+
+def _nothing() -> None:
+    pass
+
+
+def _text_writer(out: TextIO, clock: _Clock) -> Writer:
+    def write(record: Record) -> None:
+        if record.error is not None:
+            out.write(f"{_describe(record, clock)} [{record.data.hex(' ')}]\n")
+            return
+        stamp = clock.text(record.timestamp)
+        head = f"{stamp} {record.channel} {record.can_id:03X} {record.sender:<9}"
+        if record.message is None:
+            out.write(f"{head} unknown: {record.detail} [{record.data.hex(' ')}]\n")
+        else:
+            out.write(f"{head} {format_message(record.message)}\n")
+
+    return write, _nothing
+
+
+def _row(record: Record, clock: _Clock) -> dict[str, Any]:
+    row: dict[str, Any] = {
+        "timestamp": clock.seconds(record.timestamp),
+        "channel": record.channel,
+        "can_id": record.can_id,
+        "sender": record.sender,
+    }
+    if record.message is not None:
+        row["message"] = type(record.message).__name__
+        for name, value in readable_fields(record.message).items():
+            row[f"message.{name}" if name in HEAD_COLUMNS else name] = value
+    else:
+        row["message"] = None
+        if record.error is not None:
+            row["error"] = record.error
+        row["detail"] = record.detail
+        row["data"] = record.data.hex()
+    return row
+
+
+def _json_safe(value: Any) -> Any:
+    """Non-finite floats as strings (JSON has no NaN or infinity)."""
+    if type(value) is float and not math.isfinite(value):
+        return str(value)
+    return value
+
+
+def _jsonl_writer(out: TextIO, clock: _Clock) -> Writer:
+    def write(record: Record) -> None:
+        row = _row(record, clock)
+        try:
+            text = json.dumps(row, allow_nan=False)
+        except ValueError:  # a NaN or an infinity, which JSON has not
+            text = json.dumps({k: _json_safe(v) for k, v in row.items()})
+        out.write(text + "\n")
+
+    return write, _nothing
+
+
+def _csv_columns(args: argparse.Namespace, bus_map: BusMap) -> Iterable[str] | None:
+    """The field columns of a file, from a first pass over it; None for standard input,
+    whose rows are kept until it ends."""
+    if args.file == "-":
+        return None
+    columns: dict[str, None] = {}
+    for record in capture.read(args.file, bus_map, args.channel):
+        if record.message is not None:
+            columns.update(dict.fromkeys(_row(record, _Clock(False))))
+    return columns
+
+
+def _csv_writer(out: TextIO, clock: _Clock, fields: Iterable[str] | None) -> Writer:
+    """One column per field: the record's columns, then every field the capture has.
+
+    From a file the columns are known from a first pass and rows stream out. From standard
+    input they are not known until it ends: rows are kept and written on close.
+    """
+    if fields is not None:
+        columns = [*HEAD_COLUMNS, *(name for name in fields if name not in HEAD_COLUMNS)]
+        writer = csv.DictWriter(out, columns, lineterminator="\n")
+        writer.writeheader()
+        return (lambda record: writer.writerow(_row(record, clock))), _nothing
+    rows: list[dict[str, Any]] = []
+
+    def close() -> None:
+        names = dict.fromkeys(HEAD_COLUMNS)
+        for row in rows:
+            names.update(dict.fromkeys(row))
+        kept = csv.DictWriter(out, list(names), lineterminator="\n")
+        kept.writeheader()
+        kept.writerows(rows)
+        rows.clear()
+
+    return (lambda record: rows.append(_row(record, clock))), close

@@ -1,0 +1,476 @@
+"""``veronte4x esc``: find, configure, update and spin Vertiq ESCs on a live DroneCAN bus.
+
+Every action opens the bus with python-can's options, runs the ground-station client
+(`veronte4x.client.bus.BusClient`) and prints for people, or JSON with ``--json``. Errors are
+one line on standard error with the documented exit code; ``spin`` sends zero throttle on
+every way out.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import random
+import signal
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.cli.exit_codes import (
+    EXIT_INTERRUPTED,
+    EXIT_NO_ANSWER,
+    EXIT_OK,
+    EXIT_REFUSED,
+    EXIT_USAGE,
+)
+from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.client.errors import (
+    ClientError,
+    FirmwareUpdateError,
+    NoResponseError,
+)
+from veronte4x.client.firmware import Phase, UpdateProgress
+from veronte4x.client.nodes import NodeEntry
+from veronte4x.client.params import ParameterInfo, plain
+from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
+from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+from veronte4x.dronecan import vertiq
+from veronte4x.dronecan.image_crc import crc64we
+from veronte4x.dronecan.messages import (
+    EscStatus,
+    GetNodeInfoResponse,
+    IntegerValue,
+    SoftwareVersionFlag,
+)
+from veronte4x.errors import EncodeError
+from veronte4x.extras import require
+
+if TYPE_CHECKING:
+    from veronte4x.client.bus import BusClient
+
+Action = Callable[["BusClient", argparse.Namespace], int]
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command and its actions."""
+    parser = commands.add_parser(
+        "esc", help="find, configure, update and spin Vertiq ESCs (DroneCAN, live bus)"
+    )
+    actions = parser.add_subparsers(required=True, metavar="ACTION")
+
+    def action(name: str, help: str, run: Action) -> argparse.ArgumentParser:
+        sub: argparse.ArgumentParser = actions.add_parser(name, help=help, description=help)
+        sub.set_defaults(run=_runner(run), bus_map=None)
+        return sub
+
+    nodes = action("nodes", "list the nodes on the bus, from their NodeStatus", _nodes)
+    nodes.add_argument(
+        "--timeout", type=float, default=1.1, metavar="S", help="seconds to listen (1.1)"
+    )
+    _options(nodes, timeout=False)
+
+    info = action("info", "GetNodeInfo: name, versions, image CRC, unique id", _info)
+    _node(info)
+
+    params = action("params", "every parameter: name, value, default, range", _params)
+    _node(params)
+
+    get = action("get", "read one parameter by name (or index)", _get)
+    _node(get)
+    get.add_argument("name", type=_name_or_index, help="parameter name, e.g. esc_index, or index")
+
+    set_ = action("set", "set one parameter by name or index (range checked first)", _set)
+    _node(set_)
+    set_.add_argument("name", type=_name_or_index, help="parameter name, or index")
+    set_.add_argument("value", help="new value, of the parameter's type")
+
+    save = action("save", "save the parameters to non-volatile storage (ExecuteOpcode)", _save)
+    _node(save)
+
+    erase = action("erase", "erase the stored parameters back to defaults (ExecuteOpcode)", _erase)
+    _node(erase)
+
+    restart = action("restart", "restart the node (RestartNode with the magic number)", _restart)
+    _node(restart)
+    restart.add_argument(
+        "--bootloader", action="store_true", help="Vertiq: restart into the ST bootloader"
+    )
+
+    update = action(
+        "update", "update the firmware: the node pulls the image via file.Read", _update
+    )
+    update.add_argument("node", type=int, help="node id")
+    update.add_argument("firmware", help="firmware image file")
+    update.add_argument("--path", help="name the node is told to read (default: the file name)")
+    update.add_argument("--start-timeout", type=float, default=10.0, metavar="S")
+    update.add_argument("--read-timeout", type=float, default=5.0, metavar="S")
+    update.add_argument("--restart-timeout", type=float, default=30.0, metavar="S")
+    _options(update)
+
+    spin = action("spin", "spin motors with RawCommand at a rate (needs --yes)", _spin)
+    spin.add_argument("nodes", type=int, nargs="+", metavar="NODE", help="node ids")
+    spin.add_argument("--throttle", type=float, required=True, help="fraction in [-1, 1]")
+    spin.add_argument("--duration", type=float, required=True, metavar="S", help="seconds")
+    spin.add_argument("--rate", type=float, default=50.0, help="commands per second (50)")
+    spin.add_argument(
+        "--watchdog", type=float, default=0.5, metavar="S", help="zero throttle after S (0.5)"
+    )
+    spin.add_argument("--yes", action="store_true", help="confirm: this moves motors")
+    _options(spin)
+
+
+def _name_or_index(text: str) -> str | int:
+    """A parameter name, or an index when the argument is a whole number."""
+    return int(text) if text.isdigit() else text
+
+
+def _node(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("node", type=int, help="node id, 1..127")
+    _options(parser)
+
+
+def _options(parser: argparse.ArgumentParser, *, timeout: bool = True) -> None:
+    add_bus_options(parser)
+    parser.add_argument(
+        "--node-id",
+        type=int,
+        default=DEFAULT_NODE_ID,
+        help=f"this tool's node id ({DEFAULT_NODE_ID})",
+    )
+    if timeout:
+        parser.add_argument(
+            "--timeout",
+            type=float,
+            default=DEFAULT_TIMEOUT,
+            metavar="S",
+            help=f"seconds to wait for each answer ({DEFAULT_TIMEOUT:g})",
+        )
+    parser.add_argument(
+        "--retries", type=int, default=DEFAULT_RETRIES, help=f"retries ({DEFAULT_RETRIES})"
+    )
+    parser.add_argument("--json", action="store_true", help="JSON on standard output")
+
+
+def _error(message: str) -> None:
+    print(f"veronte4x: {message}", file=sys.stderr)
+
+
+def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int]:
+    def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
+        require("can", "can", "veronte4x esc")
+        import can
+
+        from veronte4x.canbus import open_bus
+        from veronte4x.client.bus import BusClient
+
+        bus = open_bus(**bus_settings(args))
+        try:
+            client = BusClient(
+                bus,
+                args.node_id,
+                timeout=getattr(args, "timeout", 1.0),
+                retries=args.retries,
+                # A run right after another must not repeat its last transfer ids.
+                first_transfer_id=random.randrange(32),
+            )
+            return action(client, args)
+        except NoResponseError as error:
+            _error(str(error))
+            return EXIT_NO_ANSWER
+        except FirmwareUpdateError as error:
+            _error(str(error))
+            return EXIT_NO_ANSWER if error.timed_out else EXIT_REFUSED
+        except ClientError as error:
+            _error(str(error))
+            return EXIT_REFUSED
+        except EncodeError as error:
+            _error(str(error))
+            return EXIT_USAGE
+        except KeyboardInterrupt:
+            _error("interrupted")
+            return EXIT_INTERRUPTED
+        except can.CanError as error:
+            _error(f"the CAN bus failed: {error}")
+            return EXIT_USAGE
+        finally:
+            bus.shutdown()
+
+    return run
+
+
+def _print_json(data: Any) -> None:
+    print(json.dumps(data))
+
+
+# -- nodes and info ------------------------------------------------------------------------
+
+
+def _entry(entry: NodeEntry, now: float, name: str | None) -> dict[str, Any]:
+    return {
+        "node_id": entry.node_id,
+        "name": name,
+        "health": _name(entry.health),
+        "mode": _name(entry.mode),
+        "sub_mode": entry.sub_mode,
+        "vendor_specific_status_code": entry.vendor_specific_status_code,
+        "uptime_sec": entry.uptime_sec,
+        "last_seen_sec_ago": round(now - entry.last_seen, 3),
+    }
+
+
+def _name(value: Any) -> Any:
+    return getattr(value, "name", value)
+
+
+def _nodes(client: BusClient, args: argparse.Namespace) -> int:
+    found = client.discover(args.timeout)
+    now = client.clock()
+    names = {e.node_id: _node_name(client, e.node_id) for e in found}
+    if args.json:
+        _print_json([_entry(e, now, names[e.node_id]) for e in found])
+    if not found:
+        _error(
+            f"no node on the bus within {args.timeout:g} s; "
+            "check --interface, --channel and --bitrate"
+        )
+        return EXIT_NO_ANSWER
+    if not args.json:
+        width = max(len(n or "?") for n in names.values())
+        print(
+            f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  {'uptime':>9}  "
+            f"{'seen':>10}  vendor"
+        )
+        for e in found:
+            print(
+                f"{e.node_id:>4}  {names[e.node_id] or '?':<{width}}  {_name(e.health):<8}  "
+                f"{_name(e.mode):<15}  {e.uptime_sec:>7} s  {now - e.last_seen:>5.1f} s ago  "
+                f"{e.vendor_specific_status_code:#06x}"
+            )
+    return EXIT_OK
+
+
+def _node_name(client: BusClient, node_id: int) -> str | None:
+    """The node's GetNodeInfo name, or None if it does not answer (as the GUI tool shows)."""
+    try:
+        return client.node_info(node_id).name.decode("utf-8", "replace")
+    except NoResponseError:
+        return None
+
+
+def _info_dict(node_id: int, info: GetNodeInfoResponse) -> dict[str, Any]:
+    sw, hw = info.software_version, info.hardware_version
+    flags = sw.optional_field_flags
+    return {
+        "node_id": node_id,
+        "name": info.name.decode("utf-8", "replace"),
+        "health": _name(info.status.health),
+        "mode": _name(info.status.mode),
+        "uptime_sec": info.status.uptime_sec,
+        "software_version": {
+            "major": sw.major,
+            "minor": sw.minor,
+            "vcs_commit": sw.vcs_commit if flags & SoftwareVersionFlag.VCS_COMMIT else None,
+            "image_crc": f"{sw.image_crc:#018x}" if flags & SoftwareVersionFlag.IMAGE_CRC else None,
+        },
+        "hardware_version": {
+            "major": hw.major,
+            "minor": hw.minor,
+            "unique_id": hw.unique_id.hex(),
+            "certificate_of_authenticity": hw.certificate_of_authenticity.hex(),
+        },
+    }
+
+
+def _info(client: BusClient, args: argparse.Namespace) -> int:
+    data = _info_dict(args.node, client.node_info(args.node))
+    if args.json:
+        _print_json(data)
+        return EXIT_OK
+    sw, hw = data["software_version"], data["hardware_version"]
+    print(f"node {args.node}: {data['name']}")
+    print(
+        f"  status    health {data['health']}, mode {data['mode']}, uptime {data['uptime_sec']} s"
+    )
+    print(
+        f"  software  {sw['major']}.{sw['minor']}, vcs commit "
+        f"{'-' if sw['vcs_commit'] is None else format(sw['vcs_commit'], '#010x')}, "
+        f"image CRC {sw['image_crc'] or '-'}"
+    )
+    print(f"  hardware  {hw['major']}.{hw['minor']}, unique id {hw['unique_id']}")
+    return EXIT_OK
+
+
+# -- parameters --------------------------------------------------------------------------------
+
+
+def _range(p: ParameterInfo) -> str:
+    low, high = plain(p.minimum), plain(p.maximum)
+    if low is None and high is None:
+        return "-"
+    return f"{'' if low is None else low}..{'' if high is None else high}"
+
+
+def _show(p: ParameterInfo) -> str:
+    return f"{p.name} = {plain(p.value)} (default {plain(p.default)}, range {_range(p)})"
+
+
+def _params(client: BusClient, args: argparse.Namespace) -> int:
+    found = client.list_params(args.node)
+    if args.json:
+        _print_json([p.as_dict() for p in found])
+        return EXIT_OK
+    width = max((len(p.name) for p in found), default=4)
+    print(f"{'index':>5}  {'name':<{width}}  {'value':>10}  {'default':>10}  range")
+    for p in found:
+        print(
+            f"{p.index:>5}  {p.name:<{width}}  {plain(p.value)!s:>10}  "
+            f"{plain(p.default)!s:>10}  {_range(p)}"
+        )
+    return EXIT_OK
+
+
+def _get(client: BusClient, args: argparse.Namespace) -> int:
+    p = client.get_param(args.node, args.name)
+    if args.json:
+        _print_json(p.as_dict())
+    else:
+        print(_show(p))
+    return EXIT_OK
+
+
+def _set(client: BusClient, args: argparse.Namespace) -> int:
+    p = client.set_param(args.node, args.name, args.value)
+    if args.json:
+        _print_json(p.as_dict())
+    else:
+        print(_show(p))
+    return EXIT_OK
+
+
+def _done(args: argparse.Namespace, what: str) -> int:
+    if args.json:
+        _print_json({"node_id": args.node, "ok": True})
+    else:
+        print(f"node {args.node}: {what}")
+    return EXIT_OK
+
+
+def _save(client: BusClient, args: argparse.Namespace) -> int:
+    client.save_params(args.node)
+    return _done(args, "parameters saved")
+
+
+def _erase(client: BusClient, args: argparse.Namespace) -> int:
+    client.erase_params(args.node)
+    return _done(args, "stored parameters erased (defaults after a restart)")
+
+
+def _restart(client: BusClient, args: argparse.Namespace) -> int:
+    client.restart(args.node, bootloader=args.bootloader)
+    return _done(args, "restarting" + (" into the bootloader" if args.bootloader else ""))
+
+
+# -- firmware update ---------------------------------------------------------------------------
+
+
+def _update(client: BusClient, args: argparse.Namespace) -> int:
+    image = Path(args.firmware).read_bytes()
+    path = args.path or Path(args.firmware).name
+    tty = sys.stderr.isatty()
+    shown = {"phase": Phase.STARTING, "tenth": -1}
+
+    def progress(p: UpdateProgress) -> None:
+        tenth = 10 * p.sent // max(1, p.size)
+        if p.phase is not shown["phase"] or tenth != shown["tenth"] or tty:
+            end = "\r" if tty and p.phase is Phase.READING else "\n"
+            print(
+                f"node {p.node_id}: {p.phase.value}, {p.sent} of {p.size} bytes",
+                end=end,
+                file=sys.stderr,
+                flush=True,
+            )
+        shown["phase"], shown["tenth"] = p.phase, tenth
+
+    info = client.update_firmware(
+        args.node,
+        image,
+        path,
+        progress=None if args.json else progress,
+        start_timeout=args.start_timeout,
+        read_timeout=args.read_timeout,
+        restart_timeout=args.restart_timeout,
+    )
+    crc = crc64we(image)
+    data = _info_dict(args.node, info)
+    data.update(image=path, image_bytes=len(image), image_crc64we=f"{crc:#018x}")
+    if args.json:
+        _print_json(data)
+    else:
+        reported = data["software_version"]["image_crc"]
+        print(
+            f"node {args.node}: updated with {path} ({len(image)} bytes, CRC-64-WE {crc:#018x}); "
+            + ("the node reports the same CRC" if reported else "the node reports no image CRC")
+        )
+    return EXIT_OK
+
+
+# -- spin -----------------------------------------------------------------------------------------
+
+
+def _interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
+
+
+def _spin(client: BusClient, args: argparse.Namespace) -> int:
+    if not args.yes:
+        _error("esc spin moves motors: add --yes to confirm that they are free to turn")
+        return EXIT_USAGE
+    vertiq.throttle_to_raw(args.throttle)  # EncodeError for a throttle outside [-1, 1]
+    if not args.duration > 0:
+        raise EncodeError("esc spin", "duration", args.duration, "seconds above 0")
+    indices = {}
+    for node in args.nodes:
+        value = client.get_param(node, vertiq.Parameter.ESC_INDEX.value).value
+        if not isinstance(value, IntegerValue):
+            raise EncodeError("esc spin", "esc_index", plain(value), "an integer parameter")
+        indices[node] = value.value
+    setpoint = {index: args.throttle for index in indices.values()}
+    signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
+    by_index = {index: node for node, index in indices.items()}
+    rpm: dict[int, list[int]] = {node: [] for node in args.nodes}
+    with client.command_stream(args.rate, args.watchdog) as stream:
+        end = client.clock() + args.duration
+        while client.clock() < end:
+            stream.set(setpoint)
+            for event in client.spin_once(0.02):
+                if isinstance(event, Received) and isinstance(event.transfer.message, EscStatus):
+                    status = event.transfer.message
+                    node = by_index.get(status.esc_index)
+                    if node == event.transfer.source_node_id:
+                        rpm[node].append(status.rpm)
+    settle = time.monotonic() + 0.2  # let the zero throttle reach the ESCs' telemetry
+    while time.monotonic() < settle:
+        client.spin_once(0.02)
+    summary = [
+        {
+            "node_id": node,
+            "esc_index": indices[node],
+            "throttle": args.throttle,
+            "peak_rpm": max(rpm[node], key=abs, default=None),
+            "telemetry": len(rpm[node]),
+        }
+        for node in args.nodes
+    ]
+    if args.json:
+        _print_json(summary)
+    else:
+        for row in summary:
+            peak = "no telemetry" if row["peak_rpm"] is None else f"peak {row['peak_rpm']} rpm"
+            print(
+                f"node {row['node_id']} (esc_index {row['esc_index']}): throttle "
+                f"{args.throttle:g} for {args.duration:g} s, {peak}; zero throttle sent"
+            )
+    return EXIT_OK

@@ -1,0 +1,143 @@
+"""Options that commands share: the capture's, and the live bus's (python-can)."""
+
+from __future__ import annotations
+
+import argparse
+import threading
+from collections.abc import Iterator
+from typing import Any
+
+from veronte4x import capture
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.records import Record
+from veronte4x.capture.source import open_frames
+from veronte4x.errors import SourceError
+
+
+def add_capture_options(parser: argparse.ArgumentParser) -> None:
+    """The capture argument's companions: the bus map and the channel filter."""
+    parser.add_argument("--bus-map", metavar="FILE", help="TOML file of CAN IDs and choices")
+    parser.add_argument("--channel", help="keep only this interface's frames")
+
+
+def add_bus_options(parser: argparse.ArgumentParser, *, channel: bool = True) -> None:
+    """python-can's bus options: ``--interface``, ``--channel``, ``--bitrate`` and more.
+
+    Without ``--interface`` python-can reads its own configuration (``--can-config`` or its
+    default files and environment). ``channel=False`` leaves ``--channel`` to
+    `add_capture_options`, where it filters a capture and names the bus channel of a live
+    source.
+    """
+    group = parser.add_argument_group("bus (python-can, the 'can' extra)")
+    group.add_argument(
+        "--interface", help="python-can interface: socketcan, pcan, slcan, udp_multicast, ..."
+    )
+    if channel:
+        group.add_argument("--channel", help="the interface's channel, e.g. can0")
+    group.add_argument("--bitrate", type=int, help="bit rate in bit/s (DroneCAN: 1000000)")
+    group.add_argument(
+        "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
+    )
+    group.add_argument(
+        "--bus-option",
+        metavar="KEY=VALUE",
+        action="append",
+        default=[],
+        help="another keyword argument of the python-can bus, e.g. port=43113 (repeatable)",
+    )
+
+
+def add_live_options(parser: argparse.ArgumentParser) -> None:
+    """Options of a command that reads a capture and can read a live bus instead."""
+    add_bus_options(parser, channel=False)
+    parser.add_argument(
+        "--duration",
+        type=float,
+        metavar="S",
+        help="live bus: stop after S seconds (default: until Ctrl-C)",
+    )
+
+
+def live(args: argparse.Namespace) -> bool:
+    """Whether the command reads a live bus rather than a capture."""
+    return bool(args.interface or args.can_config)
+
+
+def bus_settings(args: argparse.Namespace) -> dict[str, Any]:
+    """The keyword arguments for `veronte4x.canbus.open_bus` from the bus options."""
+    options: dict[str, Any] = {}
+    for item in args.bus_option:
+        key, sep, text = item.partition("=")
+        if not sep or not key:
+            raise SourceError(f"--bus-option {item!r} is not KEY=VALUE")
+        options[key] = _option_value(text)
+    return {
+        "interface": args.interface,
+        "channel": args.channel,
+        "bitrate": args.bitrate,
+        "config_file": args.can_config,
+        "options": options,
+    }
+
+
+def _option_value(text: str) -> object:
+    """An option's value: an int, a float, true/false, or the text."""
+    lowered = text.lower()
+    if lowered in ("true", "false"):
+        return lowered == "true"
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def open_records(
+    args: argparse.Namespace, bus_map: BusMap, stop: threading.Event | None = None
+) -> Iterator[Record]:
+    """The records of the command's source: the capture file, or the live bus if one is set.
+
+    A live bus is read until its ``--duration`` ends, Ctrl-C or ``stop`` is set.
+
+    Raises:
+        SourceError: Both a file and a bus, or neither.
+        BusOpenError: The bus cannot be opened (`veronte4x.canbus.BusOpenError`).
+    """
+    if not live(args):
+        if args.file is None:
+            raise SourceError("give a capture file, or a live bus with --interface")
+        return capture.read(args.file, bus_map, args.channel)
+    return CaptureDecoder(bus_map).decode(open_frame_source(args, stop))
+
+
+def open_frame_source(
+    args: argparse.Namespace, stop: threading.Event | None = None
+) -> Iterator[Frame | BadLine]:
+    """The frames of the command's source: the capture file, or the live bus if one is set.
+
+    Raises:
+        SourceError: Both a file and a bus, or neither.
+    """
+    if not live(args):
+        if args.file is None:
+            raise SourceError("give a capture file, or a live bus with --interface")
+        return open_frames(args.file, args.channel)
+    if args.file not in (None, "-"):
+        raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
+    return _live_frames(args, stop)
+
+
+def _live_frames(
+    args: argparse.Namespace, stop: threading.Event | None
+) -> Iterator[Frame | BadLine]:
+    from veronte4x.canbus import open_bus
+    from veronte4x.capture.readers.live import read_bus
+
+    bus = open_bus(**bus_settings(args))
+    try:
+        yield from read_bus(bus, args.channel or args.interface, args.duration, stop=stop)
+    finally:
+        bus.shutdown()

@@ -1,0 +1,60 @@
+"""``veronte4x plot``: a capture's arbitration timeline or ESC telemetry, to a PNG or a window."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.options import add_capture_options, open_records
+from veronte4x.extras import require
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser(
+        "plot", help="plot a capture: arbitration timeline or ESC telemetry (PNG or window)"
+    )
+    parser.add_argument("file", help="capture file, or - for stdin")
+    parser.add_argument(
+        "--kind",
+        choices=["arbitration", "esc"],
+        default="arbitration",
+        help="arbitration: scores, selection, dead and maintenance periods (default); "
+        "esc: speed, current, voltage and temperatures of each DroneCAN ESC",
+    )
+    parser.add_argument(
+        "--output", metavar="FILE", help="write an image (.png, .svg, .pdf) instead of a window"
+    )
+    add_capture_options(parser)
+    parser.set_defaults(run=run, interface=None, can_config=None)
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Draw the figure and save or show it."""
+    matplotlib = require("matplotlib", "plot", "veronte4x plot")
+    if args.output:
+        matplotlib.use("Agg")
+    records = open_records(args, bus_map)
+    if args.kind == "esc":
+        from veronte4x.capture.esc_plot import esc_telemetry
+
+        figure = esc_telemetry(records)
+    else:
+        from veronte4x.capture.plot import arbitration_timeline
+
+        figure = arbitration_timeline(records)
+    if args.output:
+        figure.savefig(args.output)
+        print(f"veronte4x: wrote {args.output}", file=sys.stderr)
+        return EXIT_OK
+    import matplotlib.pyplot as plt
+
+    if plt.get_backend().lower() == "agg":
+        print("veronte4x: no display for a window; give --output FILE.png", file=sys.stderr)
+        return EXIT_USAGE
+    plt.figure(figure)
+    plt.show()
+    return EXIT_OK

@@ -1,0 +1,99 @@
+"""``veronte4x replay``: the arbiter model over a capture, its decisions and disagreements."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.frames import Frame
+from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK
+from veronte4x.cli.options import add_capture_options, add_live_options, open_frame_source
+from veronte4x.times import format_time
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser(
+        "replay", help="run the arbiter model on a capture; explain switches and disagreements"
+    )
+    parser.add_argument("file", nargs="?", help="capture file, or - for stdin")
+    parser.add_argument(
+        "--config",
+        metavar="FILE",
+        help="TOML arbiter configuration of the captured vehicle (without it, the defaults "
+        "are assumed and disagreements may come from them)",
+    )
+    parser.add_argument(
+        "--relative-time",
+        action="store_true",
+        help="times in seconds since the first frame (default: ISO 8601 for Unix time)",
+    )
+    add_capture_options(parser)
+    add_live_options(parser)
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Replay the capture through the arbiter model and print its timeline.
+
+    Exit code 1 when the recorded arbiter disagrees with the model, as a checker does.
+    """
+    from veronte4x import arbiter
+    from veronte4x.arbiter.config_file import load_config
+
+    if args.config:
+        config = load_config(args.config)
+    else:
+        config = arbiter.ArbiterConfig(
+            autopilot_ids=bus_map.autopilot_ids,
+            arbiter_id=bus_map.arbiter_id,
+            extended_ids=bus_map.extended,
+        )
+    clock = _Clock(args.relative_time)
+    frames = (
+        (clock.see(frame.timestamp), frame.can_id, frame.data)
+        for frame in open_frame_source(args)
+        if isinstance(frame, Frame)
+        and frame.timestamp is not None
+        and not (frame.error or frame.remote or frame.fd)
+        and frame.extended == config.extended_ids
+    )
+    if not args.config:  # said once the capture opened: an error about it comes first
+        print(NO_CONFIG, file=sys.stderr)
+    result = arbiter.replay(frames, config)
+    print(result.timeline(clock.format))
+    print(
+        f"veronte4x: {len(result.decisions)} decisions, {len(result.disagreements)} "
+        f"disagreements, {len(result.errors)} bad frames",
+        file=sys.stderr,
+    )
+    return EXIT_FINDINGS if result.disagreements else EXIT_OK
+
+
+NO_CONFIG = (
+    "veronte4x: no --config: assuming the default arbiter configuration (no arbitration "
+    "variables, method 'always best', AP1 preferred, no holding time or hysteresis), so "
+    "disagreements may come from the vehicle's configuration rather than its arbiter; pass "
+    "the vehicle's arbiter configuration with --config FILE"
+)
+"""The warning of a replay without ``--config``."""
+
+
+class _Clock:
+    """The timeline's times: ISO 8601 for Unix time, or seconds since the first frame."""
+
+    def __init__(self, relative: bool) -> None:
+        self.relative = relative
+        self.start: float | None = None
+
+    def see(self, stamp: float) -> float:
+        """Note a frame's time (the first one is the start); return it unchanged."""
+        if self.start is None:
+            self.start = stamp
+        return stamp
+
+    def format(self, stamp: float) -> str:
+        """A time of the timeline, as people read it."""
+        return format_time(stamp, self.start if self.relative else None)

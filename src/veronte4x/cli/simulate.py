@@ -1,0 +1,102 @@
+"""``veronte4x simulate esc``: simulated Vertiq ESCs on any python-can bus, until Ctrl-C."""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+import threading
+from typing import Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.extras import require
+
+
+def _node_list(text: str) -> list[int]:
+    try:
+        nodes = [int(part) for part in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a list of node ids") from None
+    if not nodes or any(not 1 <= n <= 127 for n in nodes) or len(set(nodes)) != len(nodes):
+        raise argparse.ArgumentTypeError(f"{text!r}: distinct node ids in 1..127 expected")
+    return nodes
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser("simulate", help="run simulated devices on a bus")
+    devices = parser.add_subparsers(required=True, metavar="DEVICE")
+    esc = devices.add_parser(
+        "esc",
+        help="simulated Vertiq ESCs (DroneCAN), until Ctrl-C",
+        description="Simulated Vertiq ESCs: NodeStatus, telemetry, parameters, RawCommand, "
+        "restart and firmware update, on any python-can bus.",
+    )
+    esc.add_argument(
+        "--nodes", type=_node_list, default=[21], help="node ids, e.g. 21,22 (esc_index 0, 1...)"
+    )
+    esc.add_argument("--telem-frequency", type=int, default=10, metavar="HZ")
+    esc.add_argument(
+        "--no-firmware-update",
+        action="store_true",
+        help="answer BeginFirmwareUpdate with INVALID_MODE, like the Vertiq 81-08",
+    )
+    esc.add_argument(
+        "--stall-update-at",
+        type=int,
+        metavar="BYTES",
+        help="fault: hang during a firmware update after reading BYTES",
+    )
+    esc.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
+    add_bus_options(esc)
+    esc.set_defaults(run=run, bus_map=None)
+
+
+def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
+    """Serve the bus until Ctrl-C, SIGTERM or the duration."""
+    require("can", "can", "veronte4x simulate")
+    from veronte4x.canbus import open_bus
+    from veronte4x.errors import EncodeError
+    from veronte4x.simulator import SimulatedEsc
+    from veronte4x.simulator.can_node import EscBus
+
+    try:
+        escs = [
+            SimulatedEsc(
+                node,
+                index,
+                telem_frequency=args.telem_frequency,
+                supports_firmware_update=not args.no_firmware_update,
+                update_stall_offset=args.stall_update_at,
+            )
+            for index, node in enumerate(args.nodes)
+        ]
+    except EncodeError as error:
+        print(f"veronte4x: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    bus = open_bus(**bus_settings(args))
+    stop = threading.Event()
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    if args.duration is not None:
+        threading.Timer(args.duration, stop.set).start()
+    node = EscBus(bus, escs)
+    start = node.clock()
+    for esc in escs:
+        esc.power_cycle(start)
+    names = ", ".join(f"{n} (esc_index {i})" for i, n in enumerate(args.nodes))
+    print(f"veronte4x: simulating Vertiq ESC nodes {names}; Ctrl-C stops", file=sys.stderr)
+    import can
+
+    try:
+        node.run(stop)
+    except KeyboardInterrupt:
+        pass
+    except can.CanError as error:
+        print(f"veronte4x: the CAN bus failed: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    finally:
+        stop.set()
+        bus.shutdown()
+    return EXIT_OK

@@ -1,0 +1,512 @@
+"""`BusClient`: the ground-station client on a python-can bus (the ``can`` extra).
+
+The thin I/O side of `ClientProtocol`: it takes frames from the bus and stamps them with
+its clock, sends what the protocol has to send, and blocks until a request is answered or
+has timed out. Failures raise the errors of `veronte4x.client.errors`, each one line that
+names the node and what it did not do.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import can
+
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
+from veronte4x.client.errors import (
+    FirmwareUpdateError,
+    NoResponseError,
+    ParameterError,
+    RejectedError,
+)
+from veronte4x.client.firmware import (
+    READ_TIMEOUT,
+    RESTART_TIMEOUT,
+    START_TIMEOUT,
+    FirmwareUpdate,
+    Phase,
+    UpdateProgress,
+)
+from veronte4x.client.nodes import NodeEntry
+from veronte4x.client.params import ParameterInfo, plain
+from veronte4x.client.protocol import (
+    DEFAULT_NODE_ID,
+    ClientProtocol,
+    Event,
+    FileServed,
+    Received,
+    StatusSeen,
+)
+from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT, Answered, TimedOut
+from veronte4x.dronecan import vertiq
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.image_crc import crc64we
+from veronte4x.dronecan.messages import (
+    BeginFirmwareUpdateRequest,
+    BooleanValue,
+    Empty,
+    ExecuteOpcodeRequest,
+    GetNodeInfoRequest,
+    GetNodeInfoResponse,
+    GetSetRequest,
+    GetSetResponse,
+    IntegerValue,
+    Opcode,
+    Path,
+    RawCommand,
+    RealValue,
+    SoftwareVersionFlag,
+    StringValue,
+    Value,
+)
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+
+__all__ = ["BusClient", "CommandStream"]
+
+MAX_WAIT = 0.05
+"""Longest single wait on the bus, in seconds."""
+
+WAIT_STEP = 0.001
+"""Longest single wait while a ``while_waiting`` callback runs."""
+
+MAX_PARAMETERS = 8192
+"""Indices a parameter walk tries at most (GetSet ``index`` is 13 bits)."""
+
+_RAW_COMMAND_ID = BY_CLASS[RawCommand].data_type.data_type_id
+
+_VALUES = (Empty, IntegerValue, RealValue, BooleanValue, StringValue)
+
+
+class BusClient:
+    """A ground-station node on a python-can bus: discovery, services, firmware update.
+
+    Args:
+        bus: Any python-can bus.
+        node_id: This node's id, 1..127 (127 by default, like the DroneCAN GUI tool).
+        clock: Seconds from any monotonic source; stamps frames and measures timeouts.
+        timeout: Seconds to wait for each response.
+        retries: Times a request is sent again after a timeout.
+        while_waiting: Called before each short wait on the bus (e.g. a simulated node's
+            ``step``, to run it in the same thread).
+        priority: CAN priority of what it sends.
+        first_transfer_id: Where every transfer id stream starts; a tool that runs briefly
+            and often should pick it at random (see `TransferIds`).
+
+    Examples:
+        >>> import can
+        >>> from veronte4x.simulator import SimulatedEsc
+        >>> from veronte4x.simulator.can_node import EscBus
+        >>> with can.Bus(interface="virtual", channel="doc-client") as a, can.Bus(
+        ...     interface="virtual", channel="doc-client"
+        ... ) as b:
+        ...     escs = EscBus(a, [SimulatedEsc(21)], clock=time.monotonic)
+        ...     client = BusClient(b, while_waiting=escs.step)
+        ...     client.get_param(21, "esc_index").as_dict()
+        {'name': 'esc_index', 'value': 0, 'default': 0, 'min': 0, 'max': 19, 'index': None}
+    """
+
+    def __init__(
+        self,
+        bus: can.BusABC,
+        node_id: int = DEFAULT_NODE_ID,
+        *,
+        clock: Callable[[], float] = time.monotonic,
+        timeout: float = DEFAULT_TIMEOUT,
+        retries: int = DEFAULT_RETRIES,
+        while_waiting: Callable[[], object] | None = None,
+        priority: int = DEFAULT_PRIORITY,
+        first_transfer_id: int = 0,
+    ) -> None:
+        self.bus = bus
+        self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
+        self.clock = clock
+        self.timeout = timeout
+        self.retries = retries
+        self.while_waiting = while_waiting
+        self._lock = threading.Lock()
+
+    @property
+    def node_id(self) -> int:
+        """This client's node id."""
+        return self.protocol.node_id
+
+    # -- I/O ----------------------------------------------------------------------------
+
+    def _flush(self) -> None:
+        for frame in self.protocol.take_frames():
+            self.send_frame(frame.can_id, frame.data)
+
+    def send_frame(self, can_id: int, data: bytes) -> None:
+        """Send one extended frame (thread-safe with `CommandStream`)."""
+        with self._lock:
+            self.bus.send(frame_to_message(Frame(can_id, data)))
+
+    def spin_once(self, max_wait: float = MAX_WAIT) -> list[Event]:
+        """Wait for frames (at most ``max_wait`` s), feed them in, send what is due.
+
+        Returns:
+            The events of the frames received and of the requests timed out.
+        """
+        if self.while_waiting is not None:
+            self.while_waiting()
+            max_wait = min(max_wait, WAIT_STEP)
+        now = self.clock()
+        deadline = self.protocol.next_deadline()
+        if deadline is not None:
+            max_wait = max(0.0, min(max_wait, deadline - now))
+        events: list[Event] = []
+        message = self.bus.recv(timeout=max_wait)
+        while message is not None:
+            if is_dronecan_frame(message):
+                events += self.protocol.receive(
+                    message.arbitration_id, bytes(message.data), self.clock()
+                )
+            message = self.bus.recv(timeout=0.0)
+        events += self.protocol.poll(self.clock())
+        self._flush()
+        return events
+
+    # -- services -------------------------------------------------------------------------
+
+    def call(
+        self,
+        request: Any,
+        node_id: int,
+        *,
+        timeout: float | None = None,
+        retries: int | None = None,
+    ) -> Any:
+        """Send a service request and return the response message.
+
+        Raises:
+            NoResponseError: No response after every retry.
+            EncodeError: The request cannot be encoded.
+        """
+        timeout = self.timeout if timeout is None else timeout
+        handle = self.protocol.request(
+            request,
+            node_id,
+            self.clock(),
+            timeout=timeout,
+            retries=self.retries if retries is None else retries,
+        )
+        self._flush()
+        while True:
+            for event in self.spin_once():
+                if isinstance(event, Answered) and event.request.handle == handle:
+                    return event.transfer.message
+                if isinstance(event, TimedOut) and event.request.handle == handle:
+                    raise NoResponseError(
+                        node_id, event.request.request_name, event.attempts, timeout
+                    )
+
+    def broadcast(self, message: Any) -> None:
+        """Send a message now (e.g. one RawCommand); transfer ids count per data type."""
+        self.protocol.broadcast(message)
+        self._flush()
+
+    def listen(self, duration: float) -> list[Transfer]:
+        """Every transfer received within ``duration`` seconds of the clock, in order."""
+        end = self.clock() + duration
+        heard = []
+        while True:
+            remaining = end - self.clock()
+            events = self.spin_once(min(MAX_WAIT, max(0.0, remaining)))
+            heard += [e.transfer for e in events if isinstance(e, Received)]
+            if remaining <= 0:
+                return heard
+
+    def discover(self, duration: float = 1.1) -> list[NodeEntry]:
+        """Listen for ``duration`` seconds; return the nodes online then, by id.
+
+        Nodes publish NodeStatus at least once a second (DSDL MAX_BROADCASTING_PERIOD_MS),
+        so the default hears every node once.
+        """
+        end = self.clock() + duration
+        while self.clock() < end:
+            self.spin_once(min(MAX_WAIT, max(0.0, end - self.clock())))
+        return self.protocol.nodes.online(self.clock())
+
+    def node_info(self, node_id: int) -> GetNodeInfoResponse:
+        """GetNodeInfo: status, software and hardware version, name."""
+        response: GetNodeInfoResponse = self.call(GetNodeInfoRequest(), node_id)
+        return response
+
+    def get_param(self, node_id: int, name: str | int) -> ParameterInfo:
+        """Read one parameter by name, or by index given an int.
+
+        Vertiq's modules are best read by name: their indices may change between firmware
+        versions and serve for discovery only.
+
+        Raises:
+            ParameterError: The node has no such parameter.
+        """
+        if isinstance(name, int):
+            request = vertiq.get_parameter_by_index(name)
+        else:
+            request = vertiq.get_parameter(name)
+        return self._parameter(node_id, name, self.call(request, node_id))
+
+    @staticmethod
+    def _parameter(node_id: int, name: str | int, response: GetSetResponse) -> ParameterInfo:
+        if vertiq.is_end_of_parameters(response):
+            where = f"at index {name}" if isinstance(name, int) else repr(name)
+            raise ParameterError(f"node {node_id} has no parameter {where}")
+        return ParameterInfo.from_response(response, name if isinstance(name, int) else None)
+
+    def list_params(self, node_id: int) -> list[ParameterInfo]:
+        """Every parameter, walking the indices from 0 to the first empty answer."""
+        found = []
+        for index in range(MAX_PARAMETERS):
+            response = self.call(vertiq.get_parameter_by_index(index), node_id)
+            if vertiq.is_end_of_parameters(response):
+                break
+            found.append(ParameterInfo.from_response(response, index))
+        return found
+
+    def set_param(
+        self, node_id: int, name: str | int, value: int | float | bool | str | Value
+    ) -> ParameterInfo:
+        """Set a parameter by name (or by index given an int); return what the node reports
+        after the set.
+
+        The parameter is read first: a ``str`` is parsed as a value of its type, and a value
+        of another type or outside the node's range is refused before anything is set.
+
+        Raises:
+            ParameterError: No such parameter, a wrong type or a value out of range.
+            RejectedError: The node kept another value.
+        """
+        current = self.get_param(node_id, name)
+        if isinstance(value, _VALUES):
+            wanted: Value = value
+        elif isinstance(value, str) and not isinstance(current.value, StringValue):
+            try:
+                wanted = current.parse(value)
+            except ValueError as error:
+                raise ParameterError(f"node {node_id}: {error}") from None
+        else:
+            wanted = vertiq.set_parameter(current.name, value).value
+        problem = current.check(wanted)
+        if problem is not None:
+            raise ParameterError(f"node {node_id}: {problem}")
+        if isinstance(name, int):
+            request = GetSetRequest(index=name, value=wanted)
+        else:
+            request = GetSetRequest(value=wanted, name=name.encode("utf-8"))
+        after = self._parameter(node_id, name, self.call(request, node_id))
+        if plain(after.value) != plain(wanted):
+            raise RejectedError(
+                f"node {node_id} kept {after.name} at {plain(after.value)!r} "
+                f"instead of {plain(wanted)!r}"
+            )
+        return after
+
+    def _opcode(self, node_id: int, opcode: Opcode) -> None:
+        response = self.call(ExecuteOpcodeRequest(opcode, 0), node_id)
+        if not response.ok:
+            raise RejectedError(
+                f"node {node_id} refused to {opcode.name.lower()} its parameters "
+                f"(error {response.argument})"
+            )
+
+    def save_params(self, node_id: int) -> None:
+        """Save the parameters to non-volatile storage (ExecuteOpcode SAVE)."""
+        self._opcode(node_id, Opcode.SAVE)
+
+    def erase_params(self, node_id: int) -> None:
+        """Clear the stored parameters back to defaults (ExecuteOpcode ERASE)."""
+        self._opcode(node_id, Opcode.ERASE)
+
+    def restart(self, node_id: int, *, bootloader: bool = False) -> None:
+        """RestartNode with the magic number (Vertiq's bootloader one with ``bootloader``).
+
+        Raises:
+            RejectedError: The node answered that it does not restart.
+        """
+        response = self.call(vertiq.restart(bootloader), node_id)
+        if not response.ok:
+            raise RejectedError(f"node {node_id} refused to restart")
+
+    # -- firmware update --------------------------------------------------------------------
+
+    def update_firmware(
+        self,
+        node_id: int,
+        image: bytes,
+        path: str = "firmware.bin",
+        *,
+        progress: Callable[[UpdateProgress], object] | None = None,
+        start_timeout: float = START_TIMEOUT,
+        read_timeout: float = READ_TIMEOUT,
+        restart_timeout: float = RESTART_TIMEOUT,
+    ) -> GetNodeInfoResponse:
+        """Update a node's firmware: BeginFirmwareUpdate, serve its reads, wait for it.
+
+        Args:
+            node_id: The node.
+            image: The firmware image.
+            path: The name the node is told to read (at most 200 bytes).
+            progress: Called with each change of phase or of bytes sent.
+            start_timeout: Seconds from accepting to the first read.
+            read_timeout: Seconds without a read that count as a stall.
+            restart_timeout: Seconds after the last read for the node to run again.
+
+        Returns:
+            The node's GetNodeInfo after the update.
+
+        Raises:
+            FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
+            NoResponseError: GetNodeInfo after the update got no answer.
+        """
+        name = path.encode("utf-8")
+        now = self.clock()
+        update = FirmwareUpdate(
+            node_id,
+            name,
+            len(image),
+            now,
+            start_timeout=start_timeout,
+            read_timeout=read_timeout,
+            restart_timeout=restart_timeout,
+        )
+        self.protocol.files.add(name, image)
+        request = BeginFirmwareUpdateRequest(self.node_id, Path(name))
+        handle = self.protocol.request(request, node_id, now)
+        self._flush()
+        last = update.progress
+        try:
+            while not last.finished:
+                for event in self.spin_once():
+                    now = self.clock()
+                    if isinstance(event, Answered) and event.request.handle == handle:
+                        update.accepted(event.transfer.message, now)
+                    elif isinstance(event, TimedOut) and event.request.handle == handle:
+                        error = NoResponseError(
+                            node_id, event.request.request_name, event.attempts, self.timeout
+                        )
+                        update.no_answer(str(error))
+                    elif isinstance(event, FileServed):
+                        update.served(event.node_id, event.read, now)
+                    elif isinstance(event, StatusSeen):
+                        update.status(event.entry, now)
+                current = update.poll(self.clock())
+                if current != last and progress is not None:
+                    progress(current)
+                last = current
+        finally:
+            self.protocol.files.remove(name)
+            self.protocol.requests.cancel(handle)  # no retry of BeginFirmwareUpdate after this
+        if last.phase is not Phase.DONE:
+            raise FirmwareUpdateError(
+                last.error or f"node {node_id}: update failed", timed_out=last.timed_out
+            )
+        info = self.node_info(node_id)
+        version = info.software_version
+        expected = crc64we(image)
+        if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC and (
+            version.image_crc != expected
+        ):
+            raise FirmwareUpdateError(
+                f"node {node_id} reports image CRC {version.image_crc:#018x}, but the "
+                f"image's CRC-64-WE is {expected:#018x}"
+            )
+        return info
+
+    # -- motors -----------------------------------------------------------------------------
+
+    def command_stream(
+        self, rate: float = DEFAULT_RATE, watchdog: float = DEFAULT_WATCHDOG
+    ) -> CommandStream:
+        """A `CommandStream` from this client (start it with ``with``)."""
+        return CommandStream(self, Commander(rate, watchdog))
+
+
+class CommandStream:
+    """RawCommand sent from a background thread at a fixed rate, with a watchdog.
+
+    Use it as a context manager and refresh the throttles with `set` more often than the
+    watchdog period; when refreshes stop, zero throttle is sent. Leaving the ``with``
+    block, normally or by an exception, stops the thread after sending zero throttle.
+
+    Args:
+        client: The client whose bus and node id it uses.
+        commander: The rate and watchdog (`Commander`).
+    """
+
+    STOP_REPEATS = 3
+    """Zero-throttle commands sent when the stream stops."""
+
+    def __init__(self, client: BusClient, commander: Commander) -> None:
+        self.client = client
+        self.commander = commander
+        self._lock = threading.Lock()
+        self._stopped = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.sent = 0
+        """Commands sent so far."""
+
+    def set(self, throttles: Sequence[float] | Mapping[int, float]) -> None:
+        """New throttle fractions in [-1, 1] by ESC index; they also feed the watchdog."""
+        with self._lock:
+            self.commander.set(throttles, self.client.clock())
+
+    @property
+    def tripped(self) -> bool:
+        """Whether the watchdog has zeroed the throttle since the last `set`."""
+        return self.commander.tripped
+
+    def _send(self, command: RawCommand) -> None:
+        transfer_id = self.client.protocol.transfer_ids.next(
+            TransferKind.MESSAGE, _RAW_COMMAND_ID, None
+        )
+        for frame in encode(
+            command,
+            source_node_id=self.client.node_id,
+            transfer_id=transfer_id,
+            priority=self.client.protocol.priority,
+        ):
+            self.client.send_frame(frame.can_id, frame.data)
+        self.sent += 1
+
+    def _run(self) -> None:
+        while not self._stopped.is_set():
+            with self._lock:
+                command = self.commander.poll(self.client.clock())
+                due = self.commander.next_time()
+            if command is not None:
+                self._send(command)
+            wait = MAX_WAIT if due is None else max(0.0, due - self.client.clock())
+            self._stopped.wait(min(wait, MAX_WAIT))
+
+    def start(self) -> None:
+        """Start sending (nothing goes out before the first `set`)."""
+        self._stopped.clear()
+        self._thread = threading.Thread(target=self._run, name="veronte4x-raw-command")
+        self._thread.daemon = True
+        self._thread.start()
+
+    def stop(self) -> None:
+        """Stop the thread, then send zero throttle `STOP_REPEATS` times."""
+        self._stopped.set()
+        if self._thread is not None:
+            self._thread.join()
+            self._thread = None
+        with self._lock:
+            zero = self.commander.stop()
+        if zero.cmd:
+            for _ in range(self.STOP_REPEATS):
+                self._send(zero)
+
+    def __enter__(self) -> CommandStream:
+        self.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()

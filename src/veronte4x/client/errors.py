@@ -1,0 +1,51 @@
+"""The errors of the ground-station client: each names the node and what it did not do."""
+
+from __future__ import annotations
+
+from veronte4x.errors import Veronte4xError
+
+
+class ClientError(Veronte4xError):
+    """A request to a node failed; the message is one line that names the node."""
+
+
+class NoResponseError(ClientError):
+    """A node did not answer a request in time, after every retry.
+
+    Attributes:
+        node_id: The node asked.
+        request: The DSDL name of the request, e.g. ``uavcan.protocol.param.GetSet``.
+        attempts: How many times it was sent.
+        timeout: Seconds waited for each attempt.
+    """
+
+    def __init__(self, node_id: int, request: str, attempts: int, timeout: float) -> None:
+        self.node_id = node_id
+        self.request = request
+        self.attempts = attempts
+        self.timeout = timeout
+        tries = "once" if attempts == 1 else f"{attempts} times"
+        super().__init__(
+            f"node {node_id} did not answer {request} (sent {tries}, {timeout:g} s each); "
+            "check the node id, the bus and the bit rate"
+        )
+
+
+class RejectedError(ClientError):
+    """A node answered but refused: RestartNode not ok, ExecuteOpcode not ok, an update error."""
+
+
+class ParameterError(ClientError):
+    """A parameter that the node does not have, or a value it cannot take."""
+
+
+class FirmwareUpdateError(ClientError):
+    """A firmware update that did not complete, or whose result the node contradicts.
+
+    Attributes:
+        timed_out: The node fell silent (rather than refusing or reporting another CRC).
+    """
+
+    def __init__(self, message: str, *, timed_out: bool = False) -> None:
+        super().__init__(message)
+        self.timed_out = timed_out

@@ -1,0 +1,179 @@
+"""`ClientProtocol`: the ground station's DroneCAN node, frames in and frames out (sans-IO).
+
+It reassembles what it is given, keeps the node table, matches responses with requests,
+retries and times them out, and answers the file requests of nodes pulling a served file.
+Nothing here touches a bus or reads a clock: an adapter (`veronte4x.client.bus`) feeds it
+frames with their timestamps, calls `ClientProtocol.poll` with the time, and sends what
+`ClientProtocol.take_frames` returns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from veronte4x.client.files import FileRead, FileServer
+from veronte4x.client.nodes import NodeEntry, NodeTable
+from veronte4x.client.requests import (
+    DEFAULT_RETRIES,
+    DEFAULT_TIMEOUT,
+    Answered,
+    Requester,
+    TimedOut,
+)
+from veronte4x.client.transfer_ids import TransferIds
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest
+from veronte4x.dronecan.reassembler import Reassembler
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.errors import EncodeError
+
+DEFAULT_NODE_ID = 127
+"""The client's node id unless told otherwise: the DroneCAN GUI tool's default."""
+
+
+@dataclass(frozen=True, slots=True)
+class Received:
+    """A complete transfer from the bus (any kind, any destination)."""
+
+    transfer: Transfer
+
+
+@dataclass(frozen=True, slots=True)
+class StatusSeen:
+    """A NodeStatus updated the node table."""
+
+    entry: NodeEntry
+
+
+@dataclass(frozen=True, slots=True)
+class FileServed:
+    """The client answered a file request of ``node_id``."""
+
+    node_id: int
+    read: FileRead
+
+
+Event = Received | StatusSeen | Answered | TimedOut | FileServed
+"""What `ClientProtocol.receive` and `ClientProtocol.poll` report."""
+
+
+class ClientProtocol:
+    """A ground-station node on a DroneCAN bus, as a state machine.
+
+    Args:
+        node_id: This node's id, 1..127.
+        priority: CAN priority of what it sends.
+        first_transfer_id: Where every transfer id stream starts (see `TransferIds`).
+
+    Examples:
+        >>> from veronte4x import dronecan
+        >>> from veronte4x.simulator import SimulatedEsc
+        >>> client, esc = ClientProtocol(), SimulatedEsc(node_id=21)
+        >>> handle = client.request(dronecan.GetNodeInfoRequest(), 21, now=0.0)
+        >>> for frame in client.take_frames():
+        ...     esc.receive(frame.can_id, frame.data, 0.0)
+        >>> events = [e for f in esc.poll(0.01) for e in client.receive(f.can_id, f.data, 0.01)]
+        >>> [type(e).__name__ for e in events]
+        ['Received', 'Answered', 'Received', 'StatusSeen', 'Received', 'Received']
+        >>> events[1].transfer.message.name
+        b'iq_motion.esc'
+    """
+
+    def __init__(
+        self,
+        node_id: int = DEFAULT_NODE_ID,
+        priority: int = DEFAULT_PRIORITY,
+        first_transfer_id: int = 0,
+    ) -> None:
+        if isinstance(node_id, bool) or not isinstance(node_id, int) or not 1 <= node_id <= 127:
+            raise EncodeError("ClientProtocol", "node_id", node_id, "a node id in 1..127")
+        self.node_id = node_id
+        self.priority = priority
+        self.transfer_ids = TransferIds(first_transfer_id)
+        self.requests = Requester(node_id, self.transfer_ids, priority)
+        self.nodes = NodeTable()
+        self.files = FileServer()
+        self.reassembler = Reassembler()
+        self._outbox: list[Frame] = []
+
+    def receive(self, can_id: int, data: bytes, timestamp: float) -> list[Event]:
+        """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``."""
+        transfer = self.reassembler.feed(can_id, data, timestamp)
+        if transfer is None:
+            return []
+        events: list[Event] = [Received(transfer)]
+        entry = self.nodes.observe(transfer)
+        if entry is not None:
+            events.append(StatusSeen(entry))
+        if transfer.destination_node_id != self.node_id:
+            return events
+        if transfer.kind is TransferKind.RESPONSE:
+            answered = self.requests.receive(transfer)
+            if answered is not None:
+                events.append(answered)
+        elif isinstance(transfer.message, FileReadRequest):
+            response, read = self.files.read(transfer.message)
+            self._respond(transfer, response)
+            events.append(FileServed(transfer.source_node_id, read))
+        elif isinstance(transfer.message, FileGetInfoRequest):
+            self._respond(transfer, self.files.get_info(transfer.message))
+        return events
+
+    def _respond(self, request: Transfer, response: Any) -> None:
+        """Answer a request: same transfer id and priority (spec 4.1)."""
+        self._outbox += encode(
+            response,
+            source_node_id=self.node_id,
+            destination_node_id=request.source_node_id,
+            transfer_id=request.transfer_id,
+            priority=request.priority,
+        )
+
+    def request(
+        self,
+        message: Any,
+        destination: int,
+        now: float,
+        *,
+        timeout: float = DEFAULT_TIMEOUT,
+        retries: int = DEFAULT_RETRIES,
+    ) -> int:
+        """Send a service request; its `Answered` or `TimedOut` event carries the handle.
+
+        Raises:
+            EncodeError: Not a request, or a field out of range.
+        """
+        return self.requests.request(message, destination, now, timeout=timeout, retries=retries)
+
+    def broadcast(self, message: Any) -> None:
+        """Send a message (e.g. RawCommand); transfer ids count per data type.
+
+        Raises:
+            EncodeError: Not a message, or a field out of range.
+        """
+        codec = BY_CLASS.get(type(message))
+        if codec is None or codec.data_type.kind is not TransferKind.MESSAGE:
+            raise EncodeError("broadcast", "message", message, "a DroneCAN message")
+        transfer_id = self.transfer_ids.next(
+            TransferKind.MESSAGE, codec.data_type.data_type_id, None
+        )
+        self._outbox += encode(
+            message, source_node_id=self.node_id, transfer_id=transfer_id, priority=self.priority
+        )
+
+    def poll(self, now: float) -> list[TimedOut]:
+        """Retry or time out pending requests at ``now``."""
+        return self.requests.poll(now)
+
+    def take_frames(self) -> list[Frame]:
+        """Every frame to send now, in order: responses, messages, then requests."""
+        frames = self._outbox + self.requests.take_frames()
+        self._outbox = []
+        return frames
+
+    def next_deadline(self) -> float | None:
+        """When `poll` next has something to do."""
+        return self.requests.next_deadline()

@@ -1,0 +1,217 @@
+"""Service requests as values: send, match the response, time out and retry (sans-IO).
+
+`Requester` never reads a clock: every method takes the current time. The frames it wants
+sent collect in its outbox (`Requester.take_frames`); responses are given to it as
+reassembled transfers (`Requester.receive`), and `Requester.poll` reports the requests
+whose time is up after their last retry.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Any
+
+from veronte4x.client.transfer_ids import TransferIds
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.errors import EncodeError
+
+DEFAULT_TIMEOUT = 1.0
+"""Seconds to wait for a response before retrying: the DroneCAN GUI tool's default."""
+
+DEFAULT_RETRIES = 2
+"""Times a request is sent again after a timeout before it fails."""
+
+
+@dataclass(frozen=True, slots=True)
+class Pending:
+    """A request waiting for its response.
+
+    Attributes:
+        handle: The number `Requester.request` returned.
+        message: The request.
+        destination: The node asked.
+        data_type_id: The request's data type id.
+        transfer_ids: The transfer id of each attempt so far (a late answer to any counts).
+        deadline: When the current attempt times out.
+        timeout: Seconds each attempt waits.
+        retries_left: Attempts still allowed after this one.
+    """
+
+    handle: int
+    message: Any
+    destination: int
+    data_type_id: int
+    transfer_ids: tuple[int, ...]
+    deadline: float
+    timeout: float
+    retries_left: int
+
+    @property
+    def request_name(self) -> str:
+        """The DSDL name of the request, e.g. ``uavcan.protocol.GetNodeInfo``."""
+        return BY_CLASS[type(self.message)].data_type.full_name
+
+
+@dataclass(frozen=True, slots=True)
+class Answered:
+    """A request got its response.
+
+    Attributes:
+        request: The request as it was pending.
+        transfer: The response transfer.
+    """
+
+    request: Pending
+    transfer: Transfer
+
+
+@dataclass(frozen=True, slots=True)
+class TimedOut:
+    """A request got no response, after every retry.
+
+    Attributes:
+        request: The request as it was pending (``transfer_ids`` has one id per attempt).
+    """
+
+    request: Pending
+
+    @property
+    def attempts(self) -> int:
+        """How many times the request was sent."""
+        return len(self.request.transfer_ids)
+
+
+class Requester:
+    """Service requests from node ``node_id``, matched with their responses.
+
+    Args:
+        node_id: This node's id, 1..127.
+        transfer_ids: The transfer id counters to share with other senders of this node.
+        priority: CAN priority of the requests.
+
+    Examples:
+        >>> from veronte4x import dronecan
+        >>> requester = Requester(node_id=127)
+        >>> handle = requester.request(dronecan.GetNodeInfoRequest(), 21, now=0.0)
+        >>> [hex(f.can_id) for f in requester.take_frames()]
+        ['0x100195ff']
+        >>> requester.poll(1.5), len(requester.take_frames())  # timed out once: sent again
+        ([], 1)
+        >>> [t.attempts for t in requester.poll(2.5) + requester.poll(3.5)]
+        [3]
+    """
+
+    def __init__(
+        self,
+        node_id: int,
+        transfer_ids: TransferIds | None = None,
+        priority: int = DEFAULT_PRIORITY,
+    ) -> None:
+        self.node_id = node_id
+        self.priority = priority
+        self.transfer_ids = transfer_ids or TransferIds()
+        self._pending: dict[int, Pending] = {}
+        self._outbox: list[Frame] = []
+        self._handles = 0
+
+    def request(
+        self,
+        message: Any,
+        destination: int,
+        now: float,
+        *,
+        timeout: float = DEFAULT_TIMEOUT,
+        retries: int = DEFAULT_RETRIES,
+    ) -> int:
+        """Queue a request to ``destination``; return its handle.
+
+        Raises:
+            EncodeError: Not a request class, or a field out of range.
+        """
+        codec = BY_CLASS.get(type(message))
+        if codec is None or codec.data_type.kind is not TransferKind.REQUEST:
+            raise EncodeError("request", "message", message, "a DroneCAN service request")
+        self._handles += 1
+        pending = Pending(
+            self._handles,
+            message,
+            destination,
+            codec.data_type.data_type_id,
+            (),
+            now,
+            timeout,
+            retries,
+        )
+        self._pending[pending.handle] = self._send(pending, now)
+        return pending.handle
+
+    def _send(self, pending: Pending, now: float) -> Pending:
+        transfer_id = self.transfer_ids.next(
+            TransferKind.REQUEST, pending.data_type_id, pending.destination
+        )
+        self._outbox += encode(
+            pending.message,
+            source_node_id=self.node_id,
+            destination_node_id=pending.destination,
+            transfer_id=transfer_id,
+            priority=self.priority,
+        )
+        return replace(
+            pending,
+            transfer_ids=(*pending.transfer_ids, transfer_id),
+            deadline=now + pending.timeout,
+        )
+
+    def take_frames(self) -> list[Frame]:
+        """The frames to send now, in order; the outbox is emptied."""
+        frames, self._outbox = self._outbox, []
+        return frames
+
+    def receive(self, transfer: Transfer) -> Answered | None:
+        """Match a received transfer with a pending request.
+
+        A response matches when it comes from the node asked, to this node, with the
+        request's data type and the transfer id of one of its attempts.
+        """
+        if transfer.kind is not TransferKind.RESPONSE or transfer.destination_node_id != (
+            self.node_id
+        ):
+            return None
+        for handle, pending in self._pending.items():
+            if (
+                pending.destination == transfer.source_node_id
+                and pending.data_type_id == transfer.data_type_id
+                and transfer.transfer_id in pending.transfer_ids
+            ):
+                del self._pending[handle]
+                return Answered(pending, transfer)
+        return None
+
+    def poll(self, now: float) -> list[TimedOut]:
+        """Retry the requests whose attempt timed out at ``now``; return those out of retries."""
+        failed = []
+        for handle, pending in list(self._pending.items()):
+            if now < pending.deadline:
+                continue
+            if pending.retries_left > 0:
+                retry = replace(pending, retries_left=pending.retries_left - 1)
+                self._pending[handle] = self._send(retry, now)
+            else:
+                del self._pending[handle]
+                failed.append(TimedOut(pending))
+        return failed
+
+    def cancel(self, handle: int) -> None:
+        """Forget a pending request (its response, if any, is then ignored)."""
+        self._pending.pop(handle, None)
+
+    def pending(self, handle: int) -> Pending | None:
+        """The request of ``handle`` if it still waits, else None."""
+        return self._pending.get(handle)
+
+    def next_deadline(self) -> float | None:
+        """When `poll` next has something to do, or None with nothing pending."""
+        return min((p.deadline for p in self._pending.values()), default=None)

@@ -1,0 +1,41 @@
+"""Timestamps as people read them: ISO 8601 for Unix time, seconds otherwise or relative."""
+
+from __future__ import annotations
+
+import datetime as _dt
+
+EPOCH_THRESHOLD = 1e8
+"""Timestamps at or above this many seconds (March 1973) are read as Unix time, printed as
+ISO 8601 in UTC; smaller ones are a capture's own clock (seconds since its start), printed
+as seconds."""
+
+
+def format_time(seconds: float | None, start: float | None = None) -> str:
+    """A timestamp as people read it.
+
+    Args:
+        seconds: The timestamp (None: the capture has no time).
+        start: Print the time relative to this one (the first frame's), in seconds.
+
+    Returns:
+        ``-`` without a time; seconds since `start` with microseconds when given; else
+        ISO 8601 in UTC for Unix time (see `EPOCH_THRESHOLD`) and seconds otherwise.
+
+    Examples:
+        >>> format_time(1763737200.01)
+        '2025-11-21T15:00:00.010000Z'
+        >>> format_time(1763737200.01, start=1763737200.0)
+        '0.010000'
+    """
+    if seconds is None:
+        return "-"
+    if start is not None:
+        return f"{seconds - start:.6f}"
+    if seconds < EPOCH_THRESHOLD:
+        return f"{seconds:.6f}"
+    micros = round(seconds * 1_000_000)
+    moment = _EPOCH + _dt.timedelta(microseconds=micros)
+    return moment.strftime("%Y-%m-%dT%H:%M:%S.%fZ")
+
+
+_EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)

@@ -1,0 +1,210 @@
+"""Generated captures for the columnar differential tests, and a table comparison."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+from hypothesis import strategies as st
+
+from veronte4x import codec, dronecan
+from veronte4x.capture import BusMap
+from veronte4x.codec import Linear
+
+DECLARED = codec.Layout(
+    5,
+    "ScorpionTelemetry",
+    [
+        codec.unsigned("throttle", 8, scale=Linear(0, 200, 0.0, 100.0)),
+        codec.skip(4),
+        codec.signed("current", 8),
+        codec.constant(0xA, 4),
+        codec.float32("voltage"),
+    ],
+    codec.ByteOrder.LITTLE,
+)
+"""A declared layout with every field kind, for command 5."""
+
+BUS_MAPS = st.sampled_from(
+    [
+        BusMap(),
+        BusMap(pwm_packing=codec.PwmPacking.MSB_FIRST),
+        BusMap(layouts=(DECLARED,), allow_excess=True),
+        BusMap(arbiter_id=0x100, autopilot_ids=(0x101, 0x102, 0x103, 0x104), extended=True),
+    ]
+)
+
+float32s = st.floats(width=32, allow_nan=True)
+int14 = st.integers(-8192, 8191)
+nodes = st.sampled_from([20, 21, 22])
+DRONECAN_MESSAGES = st.one_of(
+    st.builds(
+        dronecan.NodeStatus,
+        uptime_sec=st.integers(0, 2**32 - 1),
+        health=st.sampled_from(list(dronecan.Health)),
+        mode=st.integers(0, 7),
+        sub_mode=st.integers(0, 7),
+        vendor_specific_status_code=st.integers(0, 65535),
+    ),
+    st.builds(
+        dronecan.EscStatus,
+        error_count=st.integers(0, 2**32 - 1),
+        voltage=st.floats(-65504, 65504, width=16),
+        current=st.floats(width=16),
+        temperature=st.floats(0, 400, width=16),
+        rpm=st.integers(-(2**17), 2**17 - 1),
+        power_rating_pct=st.integers(0, 127),
+        esc_index=st.integers(0, 31),
+    ),
+    st.builds(
+        dronecan.Temperature,
+        device_id=st.integers(0, 65535),
+        temperature=st.floats(0, 400, width=16),
+        error_flags=st.integers(0, 255),
+    ),
+    st.builds(dronecan.RawCommand, cmd=st.lists(int14, max_size=20).map(tuple)),
+)
+SERVICES = st.one_of(
+    st.builds(dronecan.GetNodeInfoRequest),
+    st.builds(
+        dronecan.GetSetRequest,
+        index=st.integers(0, 8191),
+        value=st.one_of(
+            st.builds(dronecan.Empty),
+            st.builds(dronecan.IntegerValue, value=st.integers(-(2**63), 2**63 - 1)),
+            st.builds(dronecan.RealValue, value=st.floats(width=32, allow_nan=False)),
+            st.builds(dronecan.StringValue, value=st.binary(max_size=20)),
+        ),
+        name=st.binary(max_size=12),
+    ),
+    st.builds(dronecan.RestartNodeRequest, magic_number=st.integers(0, 2**40 - 1)),
+)
+
+
+def veronte_payloads(sender: codec.Sender) -> st.SearchStrategy[bytes]:
+    """Valid frames of every type the sender sends, and arbitrary bytes."""
+    from tests.codec.strategies import MESSAGES
+
+    arbiter_only = {"Status", "Score"}
+    autopilot_only = {"Ready", "ArbitrationVariable"}
+    skip = autopilot_only if sender is codec.Sender.ARBITER else arbiter_only
+    kinds = [s for name, s in MESSAGES.items() if name not in skip]
+    pwm = st.builds(
+        codec.PwmSet,
+        first_channel=st.sampled_from([0, 4, 8, 12, 16]),
+        values=st.tuples(*[st.integers(0, 4095)] * 4),
+    )
+    valid = st.one_of(*kinds).map(codec.encode)
+    msb = pwm.map(codec.Codec(pwm_packing=codec.PwmPacking.MSB_FIRST).encode)
+    declared = st.builds(
+        lambda t, c, v: DECLARED.encode(DECLARED.message_class(t * 0.5, c, v)),
+        st.integers(0, 200),
+        st.integers(-128, 127),
+        float32s,
+    )
+    return st.one_of(valid, msb, declared, st.binary(max_size=9), valid.map(lambda b: b + b"\0"))
+
+
+@st.composite
+def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
+    """candump lines: Veronte frames of both senders, DroneCAN transfers with faults,
+    unknown IDs, error and remote frames, bad lines; log and human forms."""
+    frames: list[tuple[int, bytes, bool] | str] = []
+    tids: dict[tuple[int, int], int] = {}
+    for _ in range(draw(st.integers(0, 40))):
+        what = draw(st.integers(0, 9))
+        if what <= 2:
+            index = draw(st.integers(0, 4))
+            ids = (bus_map.arbiter_id, *bus_map.autopilot_ids)
+            sender = codec.Sender.ARBITER if index == 0 else codec.Sender.AUTOPILOT
+            frames.append((ids[index], draw(veronte_payloads(sender)), bus_map.extended))
+        elif what <= 6:
+            service = draw(st.integers(0, 4)) == 0
+            message = draw(SERVICES if service else DRONECAN_MESSAGES)
+            source = draw(nodes)
+            key = (source, hash(type(message)))
+            tid = tids.get(key, draw(st.integers(0, 31)))
+            tid = (tid + draw(st.sampled_from([0, 1, 1, 1, 1, 2]))) % 32
+            tids[key] = tid
+            made = dronecan.encode(
+                message,
+                source_node_id=source,
+                transfer_id=tid,
+                destination_node_id=draw(nodes) if service else None,
+            )
+            transfer = [(f.can_id, f.data, True) for f in made]
+            fault = draw(st.integers(0, 7))
+            if fault == 1 and transfer:
+                del transfer[draw(st.integers(0, len(transfer) - 1))]
+            elif fault == 2 and transfer:
+                at = draw(st.integers(0, len(transfer) - 1))
+                transfer.insert(at, transfer[at])
+            elif fault == 3 and len(transfer) > 1:
+                transfer[0], transfer[1] = transfer[1], transfer[0]
+            elif fault == 4 and transfer:
+                at = draw(st.integers(0, len(transfer) - 1))
+                can_id, data, ext = transfer[at]
+                flipped = bytearray(data)
+                flipped[draw(st.integers(0, len(data) - 1))] ^= 1 << draw(st.integers(0, 7))
+                transfer[at] = (can_id, bytes(flipped), ext)
+            frames += transfer
+        elif what == 7:
+            frames.append((draw(st.integers(0, 0x7FF)), draw(st.binary(max_size=8)), False))
+        elif what == 8:
+            frames.append((draw(st.integers(0, 2**29 - 1)), draw(st.binary(max_size=8)), True))
+        else:
+            frames.append(
+                draw(
+                    st.sampled_from(
+                        [
+                            "(1.0) can0 20000080#0000000000000000",
+                            "(1.0) can0 123#R",
+                            "(1.0) can0 123##1DEADBEEF",
+                            "not a frame",
+                            "",
+                            "(1.0) can0 123#1122_E",
+                        ]
+                    )
+                )
+            )
+    lines = []
+    stamp = 1_700_000_000.0
+    human = draw(st.sampled_from([0.0, 0.2]))
+    for item in frames:
+        stamp += draw(st.sampled_from([0.0, 0.001, 0.01, 0.5, 3.0]))
+        if isinstance(item, str):
+            lines.append(item)
+            continue
+        can_id, data, extended = item
+        ident = f"{can_id:08X}" if extended else f"{can_id:03X}"
+        channel = draw(st.sampled_from(["can0", "can0", "can1"]))
+        if draw(st.floats(0, 1)) < human:
+            lines.append(f"({stamp:.6f})  {channel}  {ident}   [{len(data)}]  {data.hex(' ')}")
+        else:
+            lines.append(f"({stamp:.6f}) {channel} {ident}#{data.hex().upper()}")
+    return lines
+
+
+def write(path: Path, lines: list[str]) -> Path:
+    path.write_text("".join(line + "\n" for line in lines))
+    return path
+
+
+def rows(table: Any) -> list[dict[str, Any]]:
+    """A table's rows with NaN made comparable."""
+    return [{k: _plain(v) for k, v in row.items()} for row in table.to_pylist()]
+
+
+def _plain(value: Any) -> Any:
+    if isinstance(value, float) and math.isnan(value):
+        return "NaN"
+    return value
+
+
+def assert_same_tables(got: dict[str, Any], expected: dict[str, Any]) -> None:
+    """Same kinds, schemas and rows, value for value (NaN equal to NaN)."""
+    assert sorted(got) == sorted(expected)
+    for kind, table in expected.items():
+        assert got[kind].schema == table.schema, kind
+        assert rows(got[kind]) == rows(table), kind

@@ -1,0 +1,81 @@
+"""The columnar engine against the per-frame decoder: the same records, table for table."""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
+from veronte4x import capture
+from veronte4x.capture import BusMap
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
+def test_generated_captures_agree(
+    data: st.DataObject, bus_map: BusMap, channel: str | None
+) -> None:
+    lines = data.draw(captures(bus_map))
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "capture.log", lines)
+        expected = capture.tables_from_records(capture.read(path, bus_map, channel), bus_map)
+        got = capture.read_tables(path, bus_map, channel)
+    assert_same_tables(got, expected)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.text(max_size=60), max_size=20))
+def test_arbitrary_text_agrees(lines: list[str]) -> None:
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "capture.log"
+        path.write_text("\n".join(lines), encoding="utf-8", errors="surrogatepass")
+        expected = capture.tables_from_records(capture.read(path))
+        got = capture.read_tables(path)
+    assert_same_tables(got, expected)
+
+
+stamps = st.one_of(
+    st.from_regex(r"\A[0-9]{1,19}(\.[0-9]{0,12})?\Z"),
+    st.from_regex(r"\A\.?[0-9]{0,4}[.e+-]?[0-9]{0,3}\Z"),
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.lists(
+        st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
+        min_size=1,
+        max_size=12,
+    )
+)
+def test_timestamps_of_any_shape_agree(lines: list[tuple[str, str]]) -> None:
+    text = "".join(f"({stamp}) can0 {frame}\n" for stamp, frame in lines)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "capture.log"
+        path.write_text(text)
+        expected = capture.tables_from_records(capture.read(path))
+        got = capture.read_tables(path)
+    assert_same_tables(got, expected)
+
+
+human_stamps = st.one_of(
+    st.datetimes().map(lambda moment: moment.strftime("%Y-%m-%d %H:%M:%S.%f")),
+    st.from_regex(r"\A[0-9]{4}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2}:[0-9]{2}\.[0-9]{6}\Z"),
+    stamps,
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(human_stamps, st.booleans()), min_size=1, max_size=12))
+def test_human_view_times_agree(lines: list[tuple[str, bool]]) -> None:
+    frame = ["0FF   [3]  00 FF 01", "1004060A   [8]  00 00 00 00 00 00 00 C0"]
+    text = "".join(f"({stamp})  can0  {frame[long]}\n" for stamp, long in lines)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "capture.log"
+        path.write_text(text)
+        expected = capture.tables_from_records(capture.read(path))
+        got = capture.read_tables(path)
+    assert_same_tables(got, expected)

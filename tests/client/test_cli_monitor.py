@@ -1,0 +1,121 @@
+"""``veronte4x monitor``: plain text over a capture, and interactively in a terminal (tmux)."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
+
+CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
+
+
+def test_plain_table_over_a_capture() -> None:
+    result = veronte4x("monitor", str(CAPTURE))
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[:3] == [
+        "arbiter: selected AP2, arbitration on; alive AP1 AP2 AP3 -; ready AP1 AP2 AP3 -; "
+        "scores AP1 0.058 AP2 0.026 AP3 0.054",
+        "39 records, 1 bad, 0.501 s",
+        "sender    type                        id    count   rate/s  errors  fields",
+    ]
+    assert (
+        "AP1       ArbitrationVariable        008        3      1.5       0  number=2, value=1.7"
+        in lines
+    )
+    assert result.stderr == "veronte4x: 39 records, 1 bad, 0.501 s\n"
+
+
+def test_plain_filter_and_live_bus() -> None:
+    port = free_port()
+    with simulator(port, "--nodes", "21"):
+        result = veronte4x("monitor", *bus_args(port), "--duration", "1.2", "--filter", "node")
+    assert result.returncode == 0, result.stderr
+    tables = result.stdout.split("arbiter: no Status yet\n")[1:]
+    assert len(tables) >= 2  # one a second while live, and the last one
+    rows = [line.split()[2] for line in tables[-1].splitlines()[2:]]
+    assert rows == ["EscStatus", "NodeStatus", "Temperature"]
+
+
+def _screen(tmux: list[str]) -> str:
+    return subprocess.run(
+        [*tmux, "capture-pane", "-p", "-t", "monitor"], capture_output=True, text=True, check=True
+    ).stdout
+
+
+def _wait_for(tmux: list[str], condition: Callable[[str], bool], timeout: float = 10.0) -> str:
+    end = time.monotonic() + timeout
+    screen = ""
+    while time.monotonic() < end:
+        screen = _screen(tmux)
+        if condition(screen):
+            return screen
+        time.sleep(0.1)
+    raise AssertionError(f"screen never matched:\n{screen}")
+
+
+@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+def test_interactive_in_a_terminal() -> None:
+    port = free_port()
+    tmux = ["tmux", "-L", f"veronte4x-test-{port}"]
+    command = " ".join([sys.executable, "-m", "veronte4x", "monitor", *bus_args(port)])
+    with simulator(port, "--nodes", "21,22"):
+        subprocess.run(
+            [*tmux, "new-session", "-d", "-s", "monitor", "-x", "150", "-y", "30",
+             f"{command}; echo exit=$?; sleep 30"],
+            check=True,
+        )  # fmt: skip
+        try:
+            screen = _wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
+            assert "p pause · f filter · c clear filter · q quit" in screen
+            subprocess.run([*tmux, "send-keys", "-t", "monitor", "f"], check=True)
+            subprocess.run([*tmux, "send-keys", "-t", "monitor", "-l", "nodestat"], check=True)
+            subprocess.run([*tmux, "send-keys", "-t", "monitor", "Enter"], check=True)
+            _wait_for(
+                tmux,
+                lambda s: (
+                    "filter: nodestat " in s
+                    and s.count("NodeStatus") == 2
+                    and "EscStatus" not in s
+                    and "Temperature" not in s
+                ),
+            )
+            subprocess.run([*tmux, "send-keys", "-t", "monitor", "p"], check=True)
+            paused = _wait_for(tmux, lambda s: "PAUSED" in s)
+            time.sleep(1.2)
+            assert _screen(tmux) == paused  # frozen while paused
+            subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
+            screen = _wait_for(tmux, lambda s: "exit=0" in s)
+            assert "veronte4x: " in screen and " records, 0 bad" in screen
+        finally:
+            subprocess.run([*tmux, "kill-server"], check=False)
+
+
+def test_stats_and_replay_read_a_live_bus() -> None:
+    port = free_port()
+    with simulator(port, "--nodes", "21"):
+        stats, replay = veronte4x_all(
+            ["stats", *bus_args(port), "--duration", "1.2"],
+            ["replay", *bus_args(port), "--duration", "0.3"],
+        )
+    assert stats.returncode == 0, stats.stderr
+    assert "NodeStatus" in stats.stdout and "EscStatus" in stats.stdout
+    assert replay.returncode == 0, replay.stderr
+    assert replay.stderr.splitlines()[-1] == (
+        "veronte4x: 0 decisions, 0 disagreements, 0 bad frames"
+    )
+
+
+def test_live_bus_and_a_file_is_a_usage_error() -> None:
+    result = veronte4x("stats", str(CAPTURE), *bus_args(free_port()))
+    assert result.returncode == 2
+    assert result.stderr == (
+        f"veronte4x: give a capture file ({CAPTURE}) or --interface, not both\n"
+    )

@@ -1,0 +1,237 @@
+"""The client's sans-IO parts: no bus, times as arguments."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from veronte4x import dronecan
+from veronte4x.client import (
+    Answered,
+    ClientProtocol,
+    Commander,
+    FileServed,
+    FileServer,
+    FirmwareUpdate,
+    NodeTable,
+    Phase,
+    Requester,
+    StatusSeen,
+    TimedOut,
+    TransferIds,
+)
+from veronte4x.client.files import FileRead
+from veronte4x.errors import EncodeError
+
+K = dronecan.TransferKind
+
+
+def _response(message: Any, source: int, destination: int, transfer_id: int) -> dronecan.Transfer:
+    frames = dronecan.encode(
+        message, source_node_id=source, destination_node_id=destination, transfer_id=transfer_id
+    )
+    return dronecan.decode_frames([(f.can_id, f.data) for f in frames])
+
+
+_INFO = dronecan.GetNodeInfoResponse(
+    dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0),
+    dronecan.SoftwareVersion(1, 0, 0, 0, 0),
+    dronecan.HardwareVersion(1, 0, bytes(16)),
+    b"x",
+)
+
+
+def test_transfer_ids_count_per_stream_and_wrap() -> None:
+    ids = TransferIds()
+    assert [ids.next(K.REQUEST, 11, 21) for _ in range(33)] == [*range(32), 0]
+    assert ids.next(K.REQUEST, 11, 22) == 0
+    assert ids.next(K.REQUEST, 1, 21) == 0
+    assert ids.next(K.MESSAGE, 1030, None) == 0
+
+
+def test_requester_matches_only_its_response() -> None:
+    requester = Requester(node_id=100)
+    handle = requester.request(dronecan.GetNodeInfoRequest(), 21, now=0.0, timeout=1.0)
+    requester.take_frames()
+    reply = dronecan.RestartNodeResponse(True)
+    assert requester.receive(_response(reply, 21, 100, 0)) is None  # other data type
+    info = _INFO
+    assert requester.receive(_response(info, 22, 100, 0)) is None  # other node
+    assert requester.receive(_response(info, 21, 101, 0)) is None  # to another client
+    assert requester.receive(_response(info, 21, 100, 5)) is None  # other transfer id
+    answered = requester.receive(_response(info, 21, 100, 0))
+    assert isinstance(answered, Answered) and answered.request.handle == handle
+    assert requester.pending(handle) is None
+    assert requester.receive(_response(info, 21, 100, 0)) is None  # answered once
+
+
+def test_retries_take_new_transfer_ids_and_a_late_answer_counts() -> None:
+    requester = Requester(node_id=100)
+    handle = requester.request(dronecan.GetNodeInfoRequest(), 21, now=0.0, retries=2)
+    assert len(requester.take_frames()) == 1
+    assert requester.poll(0.99) == [] and requester.take_frames() == []
+    assert requester.poll(1.0) == [] and len(requester.take_frames()) == 1
+    pending = requester.pending(handle)
+    assert pending is not None and pending.transfer_ids == (0, 1)
+    assert requester.next_deadline() == 2.0
+    late = requester.receive(_response(_INFO, 21, 100, 0))  # the first attempt's answer
+    assert isinstance(late, Answered) and late.request.handle == handle
+
+
+def test_timeout_after_every_retry() -> None:
+    requester = Requester(node_id=100)
+    handle = requester.request(dronecan.RestartNodeRequest(1), 5, now=10.0, timeout=0.5, retries=1)
+    assert requester.poll(10.5) == []
+    (failed,) = requester.poll(11.0)
+    assert isinstance(failed, TimedOut)
+    assert (failed.request.handle, failed.attempts, failed.request.request_name) == (
+        handle,
+        2,
+        "uavcan.protocol.RestartNode",
+    )
+    assert requester.next_deadline() is None
+
+
+def test_only_requests_can_be_requested() -> None:
+    with pytest.raises(EncodeError):
+        Requester(1).request(dronecan.RawCommand(()), 5, now=0.0)
+    with pytest.raises(EncodeError):
+        ClientProtocol().broadcast(dronecan.GetNodeInfoRequest())
+    with pytest.raises(EncodeError):
+        ClientProtocol(node_id=0)
+
+
+def test_node_table_counts_restarts_and_forgets_silent_nodes() -> None:
+    table = NodeTable()
+    status = dronecan.NodeStatus(10, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    table.observe_status(21, status, 1.0)
+    entry = table.observe_status(
+        21, dronecan.NodeStatus(0, dronecan.Health.WARNING, dronecan.Mode.OPERATIONAL, 0, 0), 2.0
+    )
+    assert (entry.restarts, entry.first_seen, entry.last_seen, entry.health) == (
+        1,
+        1.0,
+        2.0,
+        dronecan.Health.WARNING,
+    )
+    assert [e.node_id for e in table.online(4.99)] == [21]
+    assert table.online(5.0) == []
+    assert [e.node_id for e in table.all()] == [21]
+
+
+def test_file_server() -> None:
+    server = FileServer()
+    server.add(b"a.bin", bytes(range(256)) * 2)
+    info = server.get_info(dronecan.FileGetInfoRequest(dronecan.Path(b"a.bin")))
+    assert (info.size, info.error.value, info.entry_type.flags) == (512, 0, 9)
+    missing = server.get_info(dronecan.FileGetInfoRequest(dronecan.Path(b"b.bin")))
+    assert missing.error.value == dronecan.FileError.NOT_FOUND
+    full, read = server.read(dronecan.FileReadRequest(256, dronecan.Path(b"a.bin")))
+    assert full.data == bytes(range(256)) and not read.end_of_file
+    end, read = server.read(dronecan.FileReadRequest(512, dronecan.Path(b"a.bin")))
+    assert end.data == b"" and read.end_of_file  # a file of whole chunks ends on an empty read
+    past, read = server.read(dronecan.FileReadRequest(10**6, dronecan.Path(b"a.bin")))
+    assert past.data == b"" and read.end_of_file
+    absent, read = server.read(dronecan.FileReadRequest(0, dronecan.Path(b"b.bin")))
+    assert absent.error.value == dronecan.FileError.NOT_FOUND and read.size is None
+
+
+def test_commander_rate_watchdog_and_stop() -> None:
+    commander = Commander(rate=10, watchdog=0.35)
+    assert commander.poll(0.0) is None  # nothing before the first set
+    commander.set([0.5], now=0.0)
+    sent = [(t / 100, commander.poll(t / 100)) for t in range(0, 60)]
+    commands = [(round(t, 2), c.cmd) for t, c in sent if c is not None]
+    assert commands == [
+        (0.0, (4096,)),
+        (0.1, (4096,)),
+        (0.2, (4096,)),
+        (0.3, (4096,)),
+        (0.4, (0,)),
+        (0.5, (0,)),
+    ]
+    assert commander.stop() == dronecan.RawCommand((0,))
+    assert commander.poll(1.0) is None
+    with pytest.raises(EncodeError):
+        commander.set([1.5], now=1.0)
+    with pytest.raises(EncodeError):
+        Commander(rate=0)
+
+
+def test_firmware_update_phases() -> None:
+    update = FirmwareUpdate(21, b"fw", 600, now=0.0, start_timeout=2, read_timeout=1)
+    assert update.progress.phase is Phase.STARTING
+    update.accepted(dronecan.BeginFirmwareUpdateResponse(0), 0.1)
+    assert update.poll(2.0).phase is Phase.WAITING
+    update.served(22, FileRead(b"fw", 0, 256, 600), 0.5)  # another node's read: not ours
+    update.served(21, FileRead(b"other", 0, 256, 600), 0.5)  # another file
+    assert update.progress.sent == 0
+    for offset in (0, 256):
+        update.served(21, FileRead(b"fw", offset, 256, 600), 1.0)
+    assert update.poll(1.5).phase is Phase.READING
+    update.served(21, FileRead(b"fw", 512, 88, 600), 1.6)
+    assert update.progress.phase is Phase.RESTARTING
+    busy = dronecan.NodeStatus(3, dronecan.Health.OK, dronecan.Mode.SOFTWARE_UPDATE, 0, 0)
+    update.status(NodeTable().observe_status(21, busy, 1.7), 1.7)
+    assert update.progress.phase is Phase.RESTARTING
+    running = dronecan.NodeStatus(0, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    update.status(NodeTable().observe_status(21, running, 2.0), 2.0)
+    assert update.poll(100.0).phase is Phase.DONE
+
+
+@pytest.mark.parametrize(
+    ("events", "error", "timed_out"),
+    [
+        ("refused", "node 21 refused the update: IN_PROGRESS", False),
+        ("silent", "node 21 accepted the update but did not read the image within 2 s", True),
+        ("left", "node 21 left the update at byte 256 of 600 and runs its old firmware", False),
+    ],
+)
+def test_firmware_update_failures(events: str, error: str, timed_out: bool) -> None:
+    update = FirmwareUpdate(21, b"fw", 600, now=0.0, start_timeout=2)
+    if events == "refused":
+        update.accepted(dronecan.BeginFirmwareUpdateResponse(2), 0.1)
+    else:
+        update.accepted(dronecan.BeginFirmwareUpdateResponse(0), 0.1)
+    if events == "left":
+        update.served(21, FileRead(b"fw", 0, 256, 600), 0.5)
+        running = dronecan.NodeStatus(0, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+        update.status(NodeTable().observe_status(21, running, 0.6), 0.6)
+    progress = update.poll(3.0)
+    assert (progress.phase, progress.error, progress.timed_out) == (Phase.FAILED, error, timed_out)
+
+
+def test_protocol_serves_file_reads_to_any_node() -> None:
+    client = ClientProtocol(node_id=100)
+    client.files.add(b"fw", b"\x01" * 10)
+    request = dronecan.FileReadRequest(4, dronecan.Path(b"fw"))
+    frames = dronecan.encode(request, source_node_id=21, destination_node_id=100, transfer_id=7)
+    events = [e for f in frames for e in client.receive(f.can_id, f.data, 1.0)]
+    assert [type(e).__name__ for e in events] == ["Received", "FileServed"]
+    served = events[1]
+    assert isinstance(served, FileServed) and served.node_id == 21
+    (answer,) = [dronecan.decode_frames([(f.can_id, f.data) for f in client.take_frames()])]
+    assert answer.message == dronecan.FileReadResponse(dronecan.FileErrorCode(0), b"\x01" * 6)
+    assert (answer.transfer_id, answer.destination_node_id) == (7, 21)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    frames=st.lists(
+        st.tuples(st.integers(0, 2**29 - 1), st.binary(min_size=0, max_size=8)), max_size=30
+    )
+)
+def test_any_frames_give_events_or_nothing(frames: list[tuple[int, bytes]]) -> None:
+    client = ClientProtocol(node_id=100)
+    client.request(dronecan.GetNodeInfoRequest(), 21, now=0.0)
+    for number, (can_id, data) in enumerate(frames):
+        events = client.receive(can_id, data, number * 0.01)
+        assert all(
+            isinstance(e, (Answered, FileServed, StatusSeen)) or type(e).__name__ == "Received"
+            for e in events
+        )
+    client.poll(10.0)
+    client.take_frames()
