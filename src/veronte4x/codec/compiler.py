@@ -258,16 +258,21 @@ def inline_decoder(
     if shorter is not None:
         namespace["_shorter"] = shorter
     source = _decode_source(layout, shorter=shorter is not None)
-    pad = " " * (indent - 4)
     # Skip the def line and ``n = _len(data)``: the dispatching function has ``n`` already.
-    lines = [
-        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[2:] if line
-    ]
-    renamed = {
+    return _renamed(source.splitlines()[2:], namespace, suffix, indent)
+
+
+def _renamed(
+    lines: list[str], namespace: dict[str, Any], suffix: str, indent: int
+) -> tuple[list[str], dict[str, Any]]:
+    """Body lines and namespace with the layout's own names suffixed, the lines re-indented."""
+    pad = " " * (indent - 4)
+    body = [pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in lines if line]
+    names = {
         (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
         for key, value in namespace.items()
     }
-    return lines, renamed
+    return body, names
 
 
 def optimistic_decoder(
@@ -290,15 +295,7 @@ def optimistic_decoder(
     layout.check()
     namespace = _namespace(layout)
     source = _decode_source(layout, otherwise=otherwise, assume=assume)
-    pad = " " * (indent - 4)
-    lines = [
-        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[1:] if line
-    ]
-    renamed = {
-        (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
-        for key, value in namespace.items()
-    }
-    return lines, renamed
+    return _renamed(source.splitlines()[1:], namespace, suffix, indent)
 
 
 def builder(cls: type[Message]) -> type | None:
