@@ -437,3 +437,16 @@ def test_generated_encoders_agree_with_the_generic_serializer(valid: Any, data: 
             return str(error)
 
     assert outcome(codec.encode) == outcome(generic.encode)
+
+
+def test_can_id_zero_parses() -> None:
+    assert dronecan.parse_can_id(0) == dronecan.CanId(0, TransferKind.MESSAGE, 0, 0, None, 0)
+    assert dronecan.parse_can_id(0x1FFFFFFF).priority == 31
+
+
+def test_enum_values_are_the_dsdl_constants() -> None:
+    status = reference.uavcan.protocol.NodeStatus()
+    for member in dronecan.Health:
+        assert member.value == getattr(status, f"HEALTH_{member.name}")
+    for mode in dronecan.Mode:
+        assert mode.value == getattr(status, f"MODE_{mode.name}")
