@@ -5,7 +5,8 @@ Run: python benchmarks/bench_codec.py [--seconds 0.3]
 For each message type, cantools gets an equivalent DBC message built in memory (same
 signals, little endian) and runs `decode_message` / `encode_message` on the same frames.
 The floor is `struct.unpack_from` plus building the same frozen dataclass, the least any
-Python decoder returning typed messages can do. Rates are frames per second, best of five.
+Python decoder returning typed messages can do. Rates are frames per second, best of five
+turns, the libraries timed in turns so that they see the same machine load.
 """
 
 from __future__ import annotations
@@ -146,11 +147,16 @@ def _database() -> Database:
     return cdb.can.Database(messages)
 
 
-def _rate(function: Callable[[], object], seconds: float) -> float:
-    timer = timeit.Timer(function)
-    number, _ = timer.autorange()
-    number = max(1, int(number * seconds / 0.2))
-    return number / min(timer.repeat(repeat=5, number=number))
+def _rates(functions: list[Callable[[], object]], seconds: float) -> list[float]:
+    """Calls per second of each function, timed in turns (best of five turns each), so
+    that all of them see the same load on a shared machine."""
+    timers = [timeit.Timer(function) for function in functions]
+    numbers = [max(1, int(timer.autorange()[0] * seconds / 0.2)) for timer in timers]
+    best = [float("inf")] * len(timers)
+    for _ in range(5):
+        for i, (timer, number) in enumerate(zip(timers, numbers, strict=True)):
+            best[i] = min(best[i], timer.timeit(number) / number)
+    return [1 / b for b in best]
 
 
 def main() -> None:
@@ -170,11 +176,21 @@ def main() -> None:
         values = db.decode_message(frame_id, data, decode_choices=False)
         assert db.encode_message(frame_id, values) == data
         assert codec.encode(message) == data
-        ours = _rate(lambda: codec.decode(data, sender=sender), seconds)  # noqa: B023
-        theirs = _rate(lambda: db.decode_message(frame_id, data), seconds)  # noqa: B023
-        floor = _rate(lambda: case.floor(data), seconds)  # noqa: B023
-        ours_enc = _rate(lambda: codec.encode(message), seconds)  # noqa: B023
-        theirs_enc = _rate(lambda: db.encode_message(frame_id, values), seconds)  # noqa: B023
+        ours, theirs, floor = _rates(
+            [
+                lambda: codec.decode(data, sender=sender),  # noqa: B023
+                lambda: db.decode_message(frame_id, data),  # noqa: B023
+                lambda: case.floor(data),  # noqa: B023
+            ],
+            seconds,
+        )
+        ours_enc, theirs_enc = _rates(
+            [
+                lambda: codec.encode(message),  # noqa: B023
+                lambda: db.encode_message(frame_id, values),  # noqa: B023
+            ],
+            seconds,
+        )
         print(
             f"{case.name:38} {ours:10.0f} {theirs:10.0f} {floor:10.0f} {ours / theirs:10.1f}"
             f" {ours_enc:10.0f} {theirs_enc:10.0f} {ours_enc / theirs_enc:10.1f}"

@@ -3,6 +3,7 @@ fast path is the one taken for ordinary frames."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from typing import Any
@@ -13,6 +14,7 @@ from hypothesis import strategies as st
 
 from tests.codec.strategies import MESSAGES
 from veronte4x import codec
+from veronte4x.codec.compiler import builder
 
 CODECS = {
     "lsb_first": codec.Codec(),
@@ -85,3 +87,23 @@ def test_opaque_frames_take_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> No
     message = codec.decode(b"\x09\x01\x02", sender=codec.Sender.AUTOPILOT)
     assert message == codec.JetiTemperature(b"\x01\x02")
     assert type(message.payload) is bytes
+
+
+def test_no_builder_under_a_frozen_base() -> None:
+    """A builder must derive from a plain base: under a frozen one its stores would raise."""
+
+    @dataclasses.dataclass(frozen=True, slots=True)
+    class Base(codec.Message):
+        x: int
+
+    @dataclasses.dataclass(frozen=True, slots=True)
+    class Child(Base):
+        y: int
+
+    assert builder(Child) is None
+    made = builder(codec.Score)
+    assert made is not None
+    probe = made()
+    probe.autopilot, probe.score = 1, 2.0
+    probe.__class__ = codec.Score
+    assert probe == codec.Score(1, 2.0)

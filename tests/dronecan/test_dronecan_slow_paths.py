@@ -3,6 +3,7 @@ and proof that the generated fast paths are the ones taken for ordinary input.""
 
 from __future__ import annotations
 
+import dataclasses
 from binascii import crc_hqx
 from typing import Any
 
@@ -10,10 +11,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import dronecan as reference
 from veronte4x import dronecan
 from veronte4x.dronecan import Problem, TransferKind
 from veronte4x.dronecan import codec as dronecan_codec
 from veronte4x.dronecan import transfer as transfer_module
+from veronte4x.dronecan.crc import crc16
+from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.float16 import float16_bits
 from veronte4x.dronecan.serializer import Serializer
 from veronte4x.dronecan.tail import split_payload
@@ -324,3 +328,125 @@ def test_decode_frames_refuses_can_ids_beyond_29_bits(extra: int, message: Any) 
     frames = [(can_id + extra, data) for can_id, data in _frames(message)]
     with pytest.raises(dronecan.DecodeError, match="is not a 29-bit value"):
         dronecan.decode_frames(frames)
+
+
+def test_the_generic_serializer_takes_bools_only_for_bool_fields() -> None:
+    """saturate=True goes through the generic serializer, as do the types without fast paths."""
+    for saturate in (False, True):
+        frames = dronecan.encode(
+            dronecan.RestartNodeResponse(True),
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+            saturate=saturate,
+        )
+        assert frames[0].data == bytes.fromhex("80c4")
+        with pytest.raises(dronecan.EncodeError, match="an int for"):
+            dronecan.encode(
+                dronecan.NodeStatus(True, OK, OPERATIONAL, 0, 0),
+                source_node_id=1,
+                transfer_id=0,
+                saturate=saturate,
+            )
+    with pytest.raises(dronecan.EncodeError, match="an int for"):
+        dronecan.encode(
+            dronecan.GetSetRequest(index=True),
+            source_node_id=1,
+            destination_node_id=2,
+            transfer_id=0,
+        )
+
+
+def test_can_id_layouts_have_29_bits() -> None:
+    for name, fields in dronecan.can_id.LAYOUTS.items():
+        assert sum(width for _, width, _ in fields) == 29, name
+
+
+def test_signatures_and_crc_seeds_match_the_dronecan_package() -> None:
+    """Every type's signature, including those whose transfers always fit one frame."""
+    for data_type in DATA_TYPES:
+        theirs = reference.TYPENAMES[data_type.full_name]
+        assert data_type.signature == theirs.get_data_type_signature(), data_type.full_name
+        assert data_type.crc_seed == theirs.base_crc, data_type.full_name
+        seed = crc16(data_type.signature.to_bytes(8, "little"), 0xFFFF)
+        assert data_type.crc_seed == seed, data_type.full_name
+
+
+@pytest.mark.parametrize(
+    ("message", "destination"),
+    [
+        (dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7), None),
+        (dronecan.GetNodeInfoRequest(), 42),
+        (dronecan.RestartNodeResponse(True), 43),
+    ],
+)
+def test_a_frame_that_opens_a_session_takes_the_lean_path(
+    message: Any, destination: int | None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    r = dronecan.Reassembler(max_sessions=1)
+    monkeypatch.setattr(r, "_feed", _refuse)
+    for source in (5, 6, 7):  # each one opens a session and evicts the previous one
+        ((can_id, data),) = _frames(message, source=source, tid=3, destination_node_id=destination)
+        t = r.feed(can_id, data, 0.0)
+        assert t is not None
+        assert (t.message, t.source_node_id, t.destination_node_id) == (
+            message,
+            source,
+            destination,
+        )
+        assert (t.priority, t.transfer_id) == (16, 3)
+    assert r.session_count == 1
+
+
+_VALUES = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(-(2**40), 2**40),
+    st.integers(-20000, 70000),
+    st.floats(),
+    st.floats(-70000, 70000, width=32),
+    st.text(max_size=2),
+    st.lists(st.integers(-9000, 9000), max_size=21).map(tuple),
+    st.lists(st.booleans(), max_size=3).map(tuple),
+)
+_FAST_MESSAGES = [
+    dronecan.NodeStatus(5, OK, OPERATIONAL, 0, 7),
+    ESC,
+    dronecan.Temperature(3, 301.5, 0),
+    dronecan.RawCommand((1, -2, 3)),
+    dronecan.RestartNodeRequest(0xACCE551B1E),
+    dronecan.RestartNodeResponse(True),
+]
+
+
+@pytest.mark.parametrize("valid", _FAST_MESSAGES, ids=lambda m: type(m).__name__)
+@settings(max_examples=150, deadline=None)
+@given(data=st.data())
+def test_generated_encoders_agree_with_the_generic_serializer(valid: Any, data: Any) -> None:
+    """A valid message with one field replaced by anything."""
+    cls = type(valid)
+    field = data.draw(st.sampled_from([f.name for f in dataclasses.fields(cls)]))
+    message = dataclasses.replace(valid, **{field: data.draw(_VALUES, label=field)})
+    codec = dronecan_codec.BY_CLASS[cls]
+    generic = Serializer(codec.data_type.schema)
+
+    def outcome(encode: Any) -> Any:
+        try:
+            return encode(message, False)
+        except dronecan.EncodeError as error:
+            return str(error)
+
+    assert outcome(codec.encode) == outcome(generic.encode)
+
+
+def test_can_id_zero_parses() -> None:
+    assert dronecan.parse_can_id(0) == dronecan.CanId(0, TransferKind.MESSAGE, 0, 0, None, 0)
+    assert dronecan.parse_can_id(0x1FFFFFFF).priority == 31
+
+
+def test_enum_values_are_the_dsdl_constants() -> None:
+    status = reference.uavcan.protocol.NodeStatus()
+    for member in dronecan.Health:
+        assert member.value == getattr(status, f"HEALTH_{member.name}")
+    for mode in dronecan.Mode:
+        assert mode.value == getattr(status, f"MODE_{mode.name}")

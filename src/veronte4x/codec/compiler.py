@@ -228,8 +228,6 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         namespace["_pack"] = struct.Struct(plan[0]).pack
     for dc_field in _dataclass_fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
-    if plan is not None:
-        namespace["_unpack_exact"] = struct.Struct(plan[0]).unpack
     namespace["_builder"] = builder(layout.message)
     return namespace
 
@@ -258,16 +256,21 @@ def inline_decoder(
     if shorter is not None:
         namespace["_shorter"] = shorter
     source = _decode_source(layout, shorter=shorter is not None)
-    pad = " " * (indent - 4)
     # Skip the def line and ``n = _len(data)``: the dispatching function has ``n`` already.
-    lines = [
-        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[2:] if line
-    ]
-    renamed = {
+    return _renamed(source.splitlines()[2:], namespace, suffix, indent)
+
+
+def _renamed(
+    lines: list[str], namespace: dict[str, Any], suffix: str, indent: int
+) -> tuple[list[str], dict[str, Any]]:
+    """Body lines and namespace with the layout's own names suffixed, the lines re-indented."""
+    pad = " " * (indent - 4)
+    body = [pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in lines if line]
+    names = {
         (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
         for key, value in namespace.items()
     }
-    return lines, renamed
+    return body, names
 
 
 def optimistic_decoder(
@@ -289,16 +292,26 @@ def optimistic_decoder(
         return None
     layout.check()
     namespace = _namespace(layout)
+    namespace["_unpack_exact"] = struct.Struct(_skipping(layout, assume)[0]).unpack
     source = _decode_source(layout, otherwise=otherwise, assume=assume)
-    pad = " " * (indent - 4)
-    lines = [
-        pad + _PER_LAYOUT.sub(rf"\1_{suffix}", line) for line in source.splitlines()[1:] if line
-    ]
-    renamed = {
-        (f"{key}_{suffix}" if _PER_LAYOUT.fullmatch(key) else key): value
-        for key, value in namespace.items()
+    return _renamed(source.splitlines()[1:], namespace, suffix, indent)
+
+
+def _skipping(layout: FrameLayout, assume: frozenset[str]) -> tuple[str, list[str]]:
+    """The `struct` plan of a layout with the bytes of the assumed constants as pad bytes."""
+    plan = _struct_plan(layout)
+    assert plan is not None
+    fmt, names = plan
+    skipped = {
+        f"b{p.start // 8}"
+        for p in layout.placed
+        if p.field.kind is Kind.CONSTANT
+        and p.field.label in assume
+        and p.field.bits == 8
+        and p.start % 8 == 0
     }
-    return lines, renamed
+    codes = [("x" if name in skipped else code) for code, name in zip(fmt[1:], names, strict=True)]
+    return fmt[0] + "".join(codes), [name for name in names if name not in skipped]
 
 
 def builder(cls: type[Message]) -> type | None:
@@ -401,7 +414,7 @@ def _decode_source(
     plan = _struct_plan(layout)
     if plan is not None:
         # Every field lies within one byte or is an aligned float32: one unpack reads them all.
-        fmt, names = plan
+        fmt, names = plan if otherwise is None else _skipping(layout, assume)
         unpack = "_unpack" if otherwise is None else "_unpack_exact"
         lines.append(f"    {', '.join(names)}, = {unpack}(data)  # struct {fmt!r}")
     flag_bytes = _flag_bytes(layout)

@@ -225,6 +225,13 @@ def _layout(src: _Source, scalars: Sequence[Scalar]) -> tuple[str, list[str], li
     range (``v >> bits`` for an unsigned field).
     """
     codes, values, checks = ["<"], [], []
+    # A bool is an int to Python and to struct, but not a value of an int or float field:
+    # the generic serializer refuses it, so the generated code must too.
+    checks += [
+        f"v{i}.__class__ is bool"
+        for i, t in enumerate(scalars)
+        if t.kind in ("uint", "int", "float")
+    ]
     for group in _groups(scalars):
         if _direct(group, scalars):
             t = scalars[group.members[0]]
@@ -421,7 +428,7 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         sizes.append(size)
         pad = 8 * size - count * bits
         names = "".join(f"v{i}, " for i in range(count))
-        checks = [f"(v{i} + {offset}) >> {bits}" for i in range(count)]
+        checks = [f"(v{i} + {offset}) >> {bits} or v{i}.__class__ is bool" for i in range(count)]
         shifts = [(count - 1 - i) * bits + pad for i in range(count)]
         stream = " | ".join(f"{enc}[v{i} + {offset}] << {shifts[i]}" for i in range(count)) or "0"
         for head, extra in (
@@ -458,9 +465,13 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         f"DF = ({', '.join(frames)})",
         "def frames(m, src, tid, prio, dst):",
         f"    c = m.{name}",
+        "    if c.__class__ is not tuple:",  # the generic serializer takes tuples only
+        "        raise SlowPath",
         "    return FR[len(c)](c, src, tid, prio, dst)",
         "def payload(m):",
         f"    c = m.{name}",
+        "    if c.__class__ is not tuple:",
+        "        raise SlowPath",
         "    return PL[len(c)](c)",
         "def decode(buf):",
         f"    return (DP[len(buf)] if len(buf) < {longest} else bad)(buf)",

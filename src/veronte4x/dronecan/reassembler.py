@@ -452,7 +452,6 @@ class Reassembler:
     def _lost(self, session: _Session, can_id: int, tid: int, timestamp: float) -> None:
         """Remember transfer ``tid`` as lost: its other frames are now silent."""
         session.buffer = None
-        session.counted = False
         session.closed = tid + _LOST
         session.closed_at = timestamp
         session.tid = -1
