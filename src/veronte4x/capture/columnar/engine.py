@@ -11,6 +11,7 @@ gives, whichever path decoded them.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import numpy.typing as npt
@@ -47,9 +48,14 @@ def decode_into(
     if channel is not None:
         frames = only_channel(frames, channel)
     tables = Tables(all_specs(bus_map.codec()), list(frames.channels))
-    done, candidates = decode_veronte(frames, bus_map, tables)
-    if bus_map.dronecan:
-        done[_decode_dronecan(frames, candidates, tables)] = True
+    plain, sender_code = _routes(frames, bus_map)
+    dronecan_rows = np.flatnonzero(plain & frames.extended & (sender_code < 0))
+    if not bus_map.dronecan:
+        dronecan_rows = dronecan_rows[:0]
+    with ThreadPoolExecutor(1) as pool:  # DroneCAN beside Veronte: NumPy frees the GIL
+        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, tables)
+        done = _decode_senders(frames, bus_map, sender_code, tables)
+        done[taken.result()] = True
     decoder = CaptureDecoder(bus_map)
     tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
     return tables
@@ -64,16 +70,33 @@ def decode_veronte(
         Which rows are decoded, and the rows that may be DroneCAN (plain 29-bit frames on
         no Veronte ID), in capture order.
     """
-    codec = bus_map.codec()
+    plain, sender_code = _routes(frames, bus_map)
+    done = _decode_senders(frames, bus_map, sender_code, tables)
+    return done, np.flatnonzero(plain & frames.extended & (sender_code < 0))
+
+
+def _routes(
+    frames: FrameColumns, bus_map: BusMap
+) -> tuple[npt.NDArray[np.bool_], npt.NDArray[np.int16]]:
+    """Which frames are plain (classic data frames of up to 8 bytes), and the sender code
+    of each plain frame on a Veronte ID (-1 for the others)."""
     plain = ~(frames.remote | frames.fd | frames.error) & (frames.length <= 8)
     if frames.long_data:
         plain[list(frames.long_data)] = False
-    done = np.zeros(len(frames), np.bool_)
     sender_code = np.full(len(frames), -1, np.int16)
     veronte_ids = plain & (frames.extended == bus_map.extended)
     for can_id, (_, index) in bus_map.veronte_roles.items():
         code = SENDER_INDEX["arbiter"] if index is None else SENDER_INDEX["AP1"] + index
         sender_code[veronte_ids & (frames.can_id == can_id)] = code
+    return plain, sender_code
+
+
+def _decode_senders(
+    frames: FrameColumns, bus_map: BusMap, sender_code: npt.NDArray[np.int16], tables: Tables
+) -> npt.NDArray[np.bool_]:
+    """Decode every Veronte frame column-wise, by sender; return which rows are decoded."""
+    codec = bus_map.codec()
+    done = np.zeros(len(frames), np.bool_)
     arbiter = sender_code == SENDER_INDEX["arbiter"]
     for sender, rows in (
         (Sender.ARBITER, np.flatnonzero(arbiter)),
@@ -81,7 +104,7 @@ def decode_veronte(
     ):
         taken = _decode_veronte(frames, rows, codec, sender, sender_code, bus_map, tables)
         done[taken] = True
-    return done, np.flatnonzero(plain & frames.extended & (sender_code < 0))
+    return done
 
 
 def only_channel(frames: FrameColumns, channel: str) -> FrameColumns:

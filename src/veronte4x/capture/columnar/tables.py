@@ -8,6 +8,7 @@ rows come out in capture order whatever path decoded them.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterable, Mapping
 from typing import Any
 
@@ -44,6 +45,7 @@ class Tables:
         self.channels = channels
         self._channel_codes = {name: index for index, name in enumerate(channels)}
         self._parts: dict[str, list[tuple[npt.NDArray[np.int64], dict[str, pa.Array]]]] = {}
+        self._lock = threading.Lock()  # decoders of different protocols add rows side by side
 
     def add_columns(
         self,
@@ -78,7 +80,8 @@ class Tables:
                 arrays[field.name] = _arrow(
                     fields[field.name], field.type, len(keys), names.get(field.name)
                 )
-        self._parts.setdefault(kind, []).append((keys, arrays))
+        with self._lock:
+            self._parts.setdefault(kind, []).append((keys, arrays))
 
     def add_records(self, records: Iterable[tuple[int, Record]]) -> None:
         """Add records of the per-frame decoder with their sort keys."""
@@ -115,11 +118,12 @@ class Tables:
         self.add_columns(kind, np.array([key for key, _ in rows], np.int64), head, fields)
 
     def _channel(self, name: str) -> int:
-        code = self._channel_codes.get(name)
-        if code is None:
-            code = self._channel_codes[name] = len(self.channels)
-            self.channels.append(name)
-        return code
+        with self._lock:
+            code = self._channel_codes.get(name)
+            if code is None:
+                code = self._channel_codes[name] = len(self.channels)
+                self.channels.append(name)
+            return code
 
     def finish(self) -> dict[str, pa.Table]:
         """The tables, each sorted into capture order; kinds without rows are left out."""
