@@ -91,13 +91,7 @@ def cite(source: str) -> str:
 def protocol_tables() -> str:
     """Every built-in layout's table, grouped as the protocol reference shows them."""
     groups = [
-        layouts.STATUS_4X,
-        layouts.STATUS_CEX,
-        layouts.SCORE,
-        layouts.READY,
-        layouts.ARBITRATION_VARIABLE,
-        layouts.VERSION_REQUEST,
-        layouts.VERSION_RESPONSE,
+        *layouts.ARBITRATION_AND_VERSION,
         layouts.PWM_SET[PwmPacking.LSB_FIRST],
         layouts.PWM_SET[PwmPacking.MSB_FIRST],
     ]

@@ -37,16 +37,7 @@ def _layouts(bus_map: BusMap) -> list[tuple[int | None, FrameLayout]]:
     """Each layout with its command byte; a declared layout replaces the opaque one."""
     declared = {layout.command: layout.frame for layout in bus_map.layouts}
     opaque = {**layouts.OPAQUE, **declared}
-    fixed = [
-        layouts.STATUS_4X,
-        layouts.STATUS_CEX,
-        layouts.SCORE,
-        layouts.READY,
-        layouts.ARBITRATION_VARIABLE,
-        layouts.VERSION_REQUEST,
-        layouts.VERSION_RESPONSE,
-        layouts.PWM_SET[bus_map.pwm_packing],
-    ]
+    fixed = [*layouts.ARBITRATION_AND_VERSION, layouts.PWM_SET[bus_map.pwm_packing]]
     return [(layout.message.COMMAND, layout) for layout in fixed] + sorted(opaque.items())
 
 

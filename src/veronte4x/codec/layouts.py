@@ -130,6 +130,18 @@ VERSION_RESPONSE = FrameLayout(
 )
 
 
+ARBITRATION_AND_VERSION: tuple[FrameLayout, ...] = (
+    STATUS_4X,
+    STATUS_CEX,
+    SCORE,
+    READY,
+    ARBITRATION_VARIABLE,
+    VERSION_REQUEST,
+    VERSION_RESPONSE,
+)
+"""The layouts of the arbitration and version messages, the same whatever a codec's choices."""
+
+
 def _pwm(packing: PwmPacking) -> FrameLayout:
     values = tuple(
         Field(Kind.UNSIGNED, 12, "values", i, description=f"channel first_channel + {i}, 0..4095")

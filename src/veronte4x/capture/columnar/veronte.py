@@ -62,16 +62,7 @@ def targets(
 
 def layout_list(codec: Codec) -> list[FrameLayout]:
     """Every layout this codec decodes with, in a fixed order."""
-    fixed = [
-        layouts.STATUS_4X,
-        layouts.STATUS_CEX,
-        layouts.SCORE,
-        layouts.READY,
-        layouts.ARBITRATION_VARIABLE,
-        layouts.VERSION_REQUEST,
-        layouts.VERSION_RESPONSE,
-    ]
-    return fixed + list(dict.fromkeys(_by_command(codec).values()))
+    return [*layouts.ARBITRATION_AND_VERSION, *dict.fromkeys(_by_command(codec).values())]
 
 
 def _by_command(codec: Codec) -> dict[int, FrameLayout]:
