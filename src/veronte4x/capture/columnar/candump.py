@@ -79,13 +79,12 @@ def _parse(a: npt.NDArray[np.uint8], size: int, first_line: int) -> tuple[FrameC
             return None, len(breaks)
         ends[np.searchsorted(breaks, returns)] -= 1
     clean = _clean_lines(a, starts, ends)
-    fast = _log_lines(a, starts, ends, clean)
+    hash_marks = np.flatnonzero(a[:size] == 35)  # "#": found once, for both forms
+    fast = _log_lines(a, starts, ends, clean, hash_marks)
     slow = ends > starts
     slow[fast.line] = False
     parts = [fast.columns(first_line)]
-    hashes = np.bincount(
-        np.searchsorted(ends, np.flatnonzero(a[:size] == 35)), minlength=len(starts)
-    )
+    hashes = np.bincount(np.searchsorted(ends, hash_marks), minlength=len(starts))
     human = np.flatnonzero(slow & clean & (hashes[: len(starts)] == 0))
     if len(human):
         found = _human_lines(a, starts, ends, human)
@@ -159,8 +158,10 @@ def _log_lines(
     starts: npt.NDArray[np.int64],
     ends: npt.NDArray[np.int64],
     clean: npt.NDArray[np.bool_],
+    hash_marks: npt.NDArray[np.int64],
 ) -> _LogLines:
-    """The plain log-form lines: ``(seconds) interface ID#DATA``, a classic data frame."""
+    """The plain log-form lines: ``(seconds) interface ID#DATA``, a classic data frame
+    (``hash_marks``: where the text has a "#")."""
     ok = clean & (a[starts] == 40)  # "("
     body = a[: ends[-1] + 1]
     spaces = np.flatnonzero(body == 32)
@@ -169,7 +170,7 @@ def _log_lines(
     ok &= np.searchsorted(spaces, ends) - first == 2  # exactly two spaces
     second = np.minimum(first + 1, len(spaces) - 1)
     space1, space2 = spaces[first], spaces[second]
-    hashes = np.append(np.flatnonzero(body == 35), [len(a) - 1, len(a) - 1])
+    hashes = np.append(hash_marks, [len(a) - 1, len(a) - 1])
     at_hash = np.searchsorted(hashes, space2)
     hash1, hash2 = hashes[at_hash], hashes[at_hash + 1]
     ok &= (hash1 < ends) & (hash2 >= ends)  # one "#", in the third field
