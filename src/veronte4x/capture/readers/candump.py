@@ -31,6 +31,25 @@ CAN_ERR_FLAG = 0x2000_0000
 """Error-frame flag of a SocketCAN identifier (linux/can.h)."""
 
 _ID_MASK = 0x1FFF_FFFF
+_MAX_IDENTIFIERS = 65_536
+
+
+class Identifiers(dict[str, int]):
+    """The CAN ID of each identifier text of the log form: a dict lookup per line instead
+    of `int`, and only 3 or 8 ASCII hex digits pass (`int` alone would take ``0x12345``,
+    ``+1234567`` or ``1_234567``).
+
+    A text that is no identifier raises `ValueError`. Up to 65,536 texts are remembered
+    (a bus holds far fewer distinct IDs); beyond, they are converted each time.
+    """
+
+    def __missing__(self, ident: str) -> int:
+        if len(ident) not in (3, 8) or not _is_hex(ident):
+            raise ValueError(f"identifier {ident!r} is not 3 or 8 hex digits")
+        can_id = int(ident, 16)
+        if len(self) < _MAX_IDENTIFIERS:
+            self[ident] = can_id
+        return can_id
 
 
 def parse_candump(
@@ -45,6 +64,7 @@ def parse_candump(
     """
     fromhex = bytes.fromhex
     new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on the hot path
+    identifiers = Identifiers()
     for number, line in enumerate(lines, first_line):
         parts = line.split()
         # Fast path: the log form with a plain classic frame, the bulk of any capture.
@@ -55,7 +75,7 @@ def parse_candump(
             size = len(ident)
             if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
                 try:
-                    can_id = int(ident, 16)
+                    can_id = identifiers[ident]
                     frame = (float(stamp[1:-1]), interface, can_id, fromhex(data), size == 8)
                 except ValueError:
                     pass
