@@ -48,9 +48,9 @@ CASES: list[tuple[str, Callable[[], Any], str]] = [
     ),
     ("Codec layouts", _call(codec.Codec, layouts=[5]), "layouts must be Layout objects, not int"),
     (
-        "dispatch",
-        _call(codec.DEFAULT_CODEC.dispatch, "arbiter"),
-        "dispatch(): sender must be a Sender",
+        "decoder",
+        _call(codec.DEFAULT_CODEC.decoder, "arbiter"),
+        "decoder(): sender must be a Sender",
     ),
     (
         "Layout command",

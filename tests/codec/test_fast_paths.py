@@ -57,6 +57,21 @@ def test_fast_decode_agrees_with_the_checked_decode(
     assert _outcome(c.decode, memoryview(data), sender=sender, allow_excess=excess) == fast
 
 
+@pytest.mark.parametrize("name", CODECS)
+@settings(max_examples=400, deadline=None)
+@given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
+def test_a_senders_decoder_agrees_with_decode(
+    name: str, data: bytes, sender: codec.Sender, excess: bool
+) -> None:
+    c = CODECS[name]
+    expected = _outcome(c.decode, data, sender=sender, allow_excess=excess)
+    decoder = c.decoder(sender)
+    assert _outcome(lambda d: decoder(d, excess), data) == expected
+    assert _outcome(lambda d: decoder(d, excess), bytearray(data)) == expected
+    if not excess:
+        assert _outcome(decoder, data) == expected  # allow_excess defaults to False
+
+
 def _refuse(*args: Any, **kwargs: Any) -> Any:
     raise AssertionError("the checked decoder was called")
 
@@ -80,6 +95,13 @@ def test_ordinary_frames_take_the_fast_path(name: str, data: st.DataObject) -> N
     if isinstance(message, codec.Score) and math.isnan(message.score):
         return
     assert decoded == message
+
+
+def test_a_senders_decoder_takes_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:
+    decoder = codec.DEFAULT_CODEC.decoder(codec.Sender.AUTOPILOT)
+    monkeypatch.setitem(decoder.__globals__, "_checked", _refuse)
+    assert decoder(b"\x00\x01\x00\x00\x80\x3f", False) == codec.ArbitrationVariable(1, 1.0)
+    assert decoder(b"\x00\xff\x01", False) == codec.Ready(True)
 
 
 def test_opaque_frames_take_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:

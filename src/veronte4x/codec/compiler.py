@@ -149,20 +149,6 @@ class FrameLayout:
         exec(compile(encode_src, f"<encode {self.name}>", "exec"), namespace)
         return namespace["decode"], namespace["encode"]
 
-    def decoder_with_shorter(self, shorter: Decoder) -> Decoder:
-        """A decoder that hands frames shorter than the layout to ``shorter``.
-
-        For a message with two forms of different lengths (Status: 6 bytes from the 4x
-        arbiter, 4 from the CEX one), without a dispatching call in front of the longer.
-        """
-        self.check()
-        namespace = _namespace(self)
-        namespace["_shorter"] = shorter
-        source = _decode_source(self, shorter=True)
-        exec(compile(source, f"<decode {self.name}>", "exec"), namespace)
-        decode: Decoder = namespace["decode"]
-        return decode
-
     def decode(self, data: bytes, allow_excess: bool = False) -> Message:
         """Decode one frame with this layout; see `veronte4x.codec.Codec.decode`."""
         return self.functions[0](data, allow_excess)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable, Iterable
-from typing import Any, NamedTuple
+from typing import Any
 
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import (
@@ -36,22 +36,6 @@ from veronte4x.errors import (
 )
 
 _ARBITER = Sender.ARBITER
-
-
-class Dispatch(NamedTuple):
-    """Where a sender's frames go: by command byte, and for command 0 by byte 1.
-
-    Attributes:
-        by_command: Decoder for each command byte 1..255 (index 0 unused), None if unknown.
-        header_ff: Decoder of command 0 frames whose byte 1 is 0xFF (Status or Ready).
-        other: Decoder of the other command 0 frames (Score or ArbitrationVariable).
-    """
-
-    by_command: tuple[Decoder | None, ...]
-    header_ff: Decoder
-    other: Decoder
-
-
 _AUTOPILOT = Sender.AUTOPILOT
 
 
@@ -121,13 +105,16 @@ class Codec:
         # arbitration, PWM and opaque layouts inlined, so a frame costs one Python call.
         self._checked = self._compile_checked()
         self.__dict__["decode"] = self._compile_fast(self._checked)
+        self._decoders = {
+            sender: self._compile_fast(self._checked, sender) for sender in (_ARBITER, _AUTOPILOT)
+        }
 
     def _install_built_in(self) -> None:
         status_4x, encode_4x = layouts.STATUS_4X.functions
         status_cex, encode_cex = layouts.STATUS_CEX.functions
-        self._score, encode_score = layouts.SCORE.functions
-        self._ready, encode_ready = layouts.READY.functions
-        self._variable, encode_variable = layouts.ARBITRATION_VARIABLE.functions
+        encode_score = layouts.SCORE.functions[1]
+        encode_ready = layouts.READY.functions[1]
+        encode_variable = layouts.ARBITRATION_VARIABLE.functions[1]
         request, encode_request = layouts.VERSION_REQUEST.functions
         response, encode_response = layouts.VERSION_RESPONSE.functions
 
@@ -148,8 +135,7 @@ class Codec:
         def decode_version(data: bytes, excess: bool) -> Message:
             return request(data, excess) if len(data) == 1 else response(data, excess)
 
-        # The 6-byte form is decoded first; shorter frames go on to decode_status.
-        self._status = layouts.STATUS_4X.decoder_with_shorter(decode_status)
+        # The generated decode tries the 6-byte form first; shorter frames go on to this.
         self._status_short = decode_status
         self._by_command[1] = decode_version
         self._encoders.update(
@@ -244,12 +230,16 @@ class Codec:
         decode: Callable[..., Message] = namespace["decode"]
         return decode
 
-    def _compile_fast(self, checked: Callable[..., Message]) -> Callable[..., Message]:
+    def _compile_fast(
+        self, checked: Callable[..., Message], sender: Sender | None = None
+    ) -> Callable[..., Message]:
         """Generate `decode`: optimistic bodies (`compiler.optimistic_decoder`) for the
         arbitration frames, one exact-size unpack for PWM frames, a slice for opaque ones;
         any frame out of the ordinary goes to ``checked``, which decides and raises the
-        precise error."""
+        precise error. With ``sender``, the same function for that sender alone, called as
+        ``decode(data, allow_excess)`` (`decoder`)."""
         namespace: dict[str, Any] = {
+            "_SENDER": sender,
             "_checked": checked,
             "_check_types": _check_types,
             "_bytes": bytes,
@@ -280,8 +270,11 @@ class Codec:
         for channel, command in PWM_COMMANDS.items():
             first_channel[command] = channel
         namespace["_first_channel"] = tuple(first_channel)
+        signature = ["def decode(data, *, sender, allow_excess=False):"]
+        if sender is not None:
+            signature = ["def decode(data, allow_excess=False):", "    sender = _SENDER"]
         lines = [
-            "def decode(data, *, sender, allow_excess=False):",
+            *signature,
             "    try:",
             "        command = data[0]",
             "        if not command:",
@@ -356,20 +349,19 @@ class Codec:
         generated: Callable[..., Message] = self.__dict__["decode"]
         return generated(data, sender=sender, allow_excess=allow_excess)
 
-    def dispatch(self, sender: Sender) -> Dispatch:
-        """The decoders `decode` chooses from for one sender, for loops that inline dispatch.
+    def decoder(self, sender: Sender) -> Decoder:
+        """`decode` for one sender's frames, called as ``decoder(data, allow_excess)``.
 
-        Each decoder is called as ``decoder(data, allow_excess)``; a missing one (None) is
-        where `decode` raises `UnknownCommandError`.
+        The same generated function as `decode`, with the sender fixed and positional
+        arguments only: for loops over many frames of a known sender (a capture reader
+        routes by CAN ID). It returns and raises exactly what `decode` does.
 
         Raises:
             TypeError: ``sender`` is not a `Sender`.
         """
         if not isinstance(sender, Sender):
-            raise argument_type_error("dispatch", "sender", "a Sender", sender)
-        if sender is _ARBITER:
-            return Dispatch(tuple(self._by_command), self._status, self._score)
-        return Dispatch(tuple(self._by_command), self._ready, self._variable)
+            raise argument_type_error("decoder", "sender", "a Sender", sender)
+        return self._decoders[sender]
 
     def encode(self, message: Message) -> bytes:
         """Encode a message into a frame's data bytes, validating every field.
