@@ -1,11 +1,14 @@
 """Bad input anywhere gives records, never an exception."""
 
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from tests.capture.columnar_support import BUS_MAPS, captures
+from veronte4x.capture import BusMap
 from veronte4x.capture.decoder import CaptureDecoder
-from veronte4x.capture.frames import Frame
+from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers import parse_candump
+from veronte4x.capture.readers.candump import parse_line
 from veronte4x.capture.records import Record
 
 hex_digits = st.text("0123456789ABCDEFabcdef", max_size=20)
@@ -60,3 +63,71 @@ def _well_formed(record: Record) -> bool:
             ("11-bit", "29-bit", "DroneCAN")
         )
     return record.kind == type(record.message).__name__
+
+
+def _respelled(line: str, how: str) -> str:
+    """``line`` with the identifier of its log form respelled ``how``."""
+    parts = line.split(" ")
+    if len(parts) != 3 or "#" not in parts[2]:
+        return line
+    ident, _, rest = parts[2].partition("#")
+    spelled = {
+        "lower": ident.lower(),
+        "0x": "0x" + ident[2:],
+        "plus": "+" + ident[1:],
+        "underscore": ident[:1] + "_" + ident[2:],
+        "arabic digits": ident.translate(str.maketrans("0123456789", "٠١٢٣٤٥٦٧٨٩")),
+        "short": ident[1:],
+    }[how]
+    return f"{parts[0]} {parts[1]} {spelled}#{rest}"
+
+
+def _reference(decoder: CaptureDecoder, lines: list[str], channel: str | None) -> list[Record]:
+    """The records of the exact, line-by-line parser (`parse_line`), with no fast path."""
+    items: list[Frame | BadLine] = []
+    for number, line in enumerate(lines, 1):
+        if line.split():
+            item = parse_line(line, number)
+            if isinstance(item, BadLine) or channel is None or item.channel == channel:
+                items.append(item)
+    return list(decoder.decode(items))
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
+def test_fused_reader_agrees_with_the_exact_parser(
+    data: st.DataObject, bus_map: BusMap, channel: str | None
+) -> None:
+    """The fast paths (`decode_candump`, `parse_candump`) against `parse_line` line by line,
+    on generated captures: Veronte frames, DroneCAN transfers with drops, duplicates, swaps
+    and bit flips, foreign IDs, odd lines, identifiers in lower case or not quite hex."""
+    lines = data.draw(captures(bus_map))
+    spellings = st.sampled_from(
+        ["", "", "", "lower", "0x", "plus", "underscore", "arabic digits", "short"]
+    )
+    lines = [
+        _respelled(line, how) if how else line for line in lines for how in [data.draw(spellings)]
+    ]
+    expected = [repr(r) for r in _reference(CaptureDecoder(bus_map), lines, channel)]
+    fused = CaptureDecoder(bus_map)
+    assert [repr(r) for r in fused.decode_candump(lines, channel)] == expected
+    two_stage = CaptureDecoder(bus_map).decode(parse_candump(lines, channel))
+    assert [repr(r) for r in two_stage] == expected
+
+
+def test_identifiers_that_int_takes_but_are_not_hex_digits_are_bad_lines() -> None:
+    for ident in ("0x123456", "+1234567", "1_234567", "٠١٢٣٤٥٦٧", "0x1", "+12"):
+        line = f"(1.0) can0 {ident}#00"
+        (item,) = parse_candump([line])
+        assert isinstance(item, BadLine), ident
+        assert item.reason == f"identifier {ident!r} is not 3 or 8 hex digits"
+        (record,) = CaptureDecoder().decode_candump([line])
+        assert record.kind == "error: bad line"
+
+
+def test_lower_case_identifiers_decode_as_upper_case_ones() -> None:
+    upper = ["(1.0) can0 00A#0000B19C453C", "(1.1) can0 1004060A#00000000000000C0"]
+    lower = [line.lower() for line in upper]
+    assert [r.message for r in CaptureDecoder().decode_candump(lower)] == [
+        r.message for r in CaptureDecoder().decode_candump(upper)
+    ]

@@ -6,22 +6,23 @@ A bad frame becomes a record with its error and raw bytes; the stream never stop
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.frames import BadLine, Frame, Truncation
-from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
+from veronte4x.capture.readers.candump import CAN_ERR_FLAG, Identifiers, parse_line
 from veronte4x.capture.records import Record
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
-from veronte4x.codec.core import Dispatch
+from veronte4x.codec.compiler import Decoder
 from veronte4x.dronecan import ProblemReport, Reassembler
 from veronte4x.dronecan.reassembler import Problem
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 _new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
 
-Route = tuple[Role, int | None, Dispatch]
+Route = tuple[Role, int | None, Decoder]
 
 
 class CaptureDecoder:
@@ -38,7 +39,7 @@ class CaptureDecoder:
         self.reassemblers: dict[str, Reassembler] = {}
         """One DroneCAN reassembler per channel (bus), created on its first frame."""
         self._routes: dict[int, Route] = {
-            can_id: (role, index, self.codec.dispatch(_SENDERS[role]))
+            can_id: (role, index, self.codec.decoder(_SENDERS[role]))
             for can_id, (role, index) in self.bus_map.veronte_roles.items()
         }
 
@@ -66,54 +67,72 @@ class CaptureDecoder:
         11-bit frame on a Veronte ID is decoded inline, a 29-bit one goes straight to its
         channel's DroneCAN reassembler. Every other line goes through `parse_line`.
         """
-        routes = self._routes if not self.bus_map.extended else {}
+        # Veronte routes by identifier text, in every case spelling: one dict lookup
+        # replaces int() and the error-flag check (3 hex digits cannot hold the flag).
+        veronte = {} if self.bus_map.extended else _routes_by_text(self._routes)
         dronecan = self.bus_map.dronecan and not self.bus_map.extended
         excess = self.bus_map.allow_excess
         fromhex = bytes.fromhex
+        identifiers = Identifiers()
+        new, dronecan_role = _new, Role.DRONECAN
+        # The reassembler of the latest DroneCAN frame's channel (one lookup per change).
+        last_channel, reassembler = None, None
         for number, line in enumerate(lines, 1):
             parts = line.split()
-            if not parts:
-                continue
             if len(parts) == 3:
                 stamp, interface, body = parts
                 ident, separator, text = body.partition("#")
-                size = len(ident)
-                if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
-                    try:
-                        seconds = float(stamp[1:-1])
-                        can_id = int(ident, 16)
-                        data = fromhex(text)
-                    except ValueError:
-                        seconds = math.nan
-                    # seconds - seconds is 0.0 for a finite time only; the rest is parse_line's.
-                    if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
-                        if channel is not None and interface != channel:
+                if separator and stamp[0] == "(" and stamp[-1] == ")":
+                    route = veronte.get(ident)
+                    if route is not None:
+                        try:
+                            seconds = float(stamp[1:-1])
+                            data = fromhex(text)
+                        except ValueError:
+                            seconds = math.nan
+                        # seconds - seconds is 0.0 for a finite time only.
+                        if seconds - seconds == 0.0:
+                            if channel is not None and interface != channel:
+                                continue
+                            can_id, role, index, decode = route
+                            try:
+                                message = decode(data, excess)
+                            except DecodeError as failure:
+                                yield _failed(seconds, interface, can_id, role, index, data,
+                                              failure)  # fmt: skip
+                            else:
+                                record = (seconds, interface, can_id, role, index, None,
+                                          message, None, "", data, None)  # fmt: skip
+                                yield new(Record, record)
                             continue
-                        if size == 8 and dronecan and can_id not in routes:
-                            frame = (seconds, interface, can_id, data, True, False, False, False)
-                            yield from self._dronecan(_new(Frame, frame))
+                    elif dronecan and len(ident) == 8:
+                        try:
+                            seconds = float(stamp[1:-1])
+                            can_id = identifiers[ident]
+                            data = fromhex(text)
+                        except ValueError:
+                            seconds = math.nan
+                        if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
+                            if channel is not None and interface != channel:
+                                continue
+                            # _dronecan, inlined: no Frame, no generator per frame.
+                            if interface != last_channel or reassembler is None:
+                                reassembler = self.reassemblers.get(interface)
+                                if reassembler is None:
+                                    reassembler = self._reassembler(interface)
+                                last_channel, feed = interface, reassembler.feed
+                            before = reassembler.reported
+                            transfer = feed(can_id, data, seconds)
+                            if reassembler.reported != before:
+                                yield from self._problems(reassembler, before, interface)
+                            if transfer is not None:
+                                delivered = (seconds, interface, can_id, dronecan_role, None,
+                                             transfer.source_node_id, transfer.message, None,
+                                             "", data, transfer.destination_node_id)  # fmt: skip
+                                yield new(Record, delivered)
                             continue
-                        route = routes.get(can_id) if size == 3 else None
-                        if route is not None:
-                            # The hottest path of a capture: the dispatch of _veronte, inlined.
-                            role, index, dispatch = route
-                            decode = None
-                            if data and data[0]:
-                                decode = dispatch.by_command[data[0]]
-                            elif len(data) > 1:
-                                decode = dispatch.header_ff if data[1] == 0xFF else dispatch.other
-                            if decode is not None:
-                                try:
-                                    message = decode(data, excess)
-                                except DecodeError:
-                                    pass
-                                else:
-                                    record = (seconds, interface, can_id, role, index, None,
-                                              message, None, "", data, None)  # fmt: skip
-                                    yield _new(Record, record)
-                                    continue
-                            yield self._veronte(seconds, interface, can_id, data, route, excess)
-                            continue
+            elif not parts:
+                continue
             item = parse_line(line, number, parts)
             if isinstance(item, BadLine):
                 yield self._bad_line(item)
@@ -139,16 +158,12 @@ class CaptureDecoder:
         """Feed a 29-bit frame to its channel's reassembler: a record per problem it reports,
         then one for the transfer it completes. A capture without timestamps feeds 0.0, so
         no transfer-ID timeout ever fires there."""
-        reassembler = self.reassemblers.get(frame.channel)
-        if reassembler is None:
-            reassembler = self.reassemblers[frame.channel] = Reassembler()
+        reassembler = self.reassemblers.get(frame.channel) or self._reassembler(frame.channel)
         before = reassembler.reported
         stamp = frame.timestamp if frame.timestamp is not None else 0.0
         transfer = reassembler.feed(frame.can_id, frame.data, stamp)
-        new = reassembler.reported - before
-        if new:
-            for report in list(reassembler.problems)[-new:]:
-                yield problem_record(report, frame.channel)
+        if reassembler.reported != before:
+            yield from self._problems(reassembler, before, frame.channel)
         if transfer is not None:
             yield _new(
                 Record,
@@ -157,8 +172,20 @@ class CaptureDecoder:
                  transfer.destination_node_id),
             )  # fmt: skip
 
+    def _reassembler(self, channel: str) -> Reassembler:
+        """A new reassembler for a channel's first DroneCAN frame."""
+        reassembler = self.reassemblers[channel] = Reassembler()
+        return reassembler
+
+    @staticmethod
+    def _problems(reassembler: Reassembler, before: int, channel: str) -> Iterator[Record]:
+        """The records of the problems a reassembler reported since its count was ``before``."""
+        new = reassembler.reported - before
+        for report in list(reassembler.problems)[-new:]:
+            yield problem_record(report, channel)
+
+    @staticmethod
     def _veronte(
-        self,
         timestamp: float | None,
         channel: str,
         can_id: int,
@@ -166,15 +193,11 @@ class CaptureDecoder:
         route: Route,
         excess: bool,
     ) -> Record:
-        role, index, _ = route
+        role, index, decode = route
         try:
-            message = self.codec.decode(data, sender=_SENDERS[role], allow_excess=excess)
-        except UnknownCommandError as failure:
-            return Record(timestamp, channel, can_id, role, index, None, None,
-                          "unknown command", str(failure), data)  # fmt: skip
+            message = decode(data, excess)
         except DecodeError as failure:
-            return Record(timestamp, channel, can_id, role, index, None, None,
-                          "decode error", str(failure), data)  # fmt: skip
+            return _failed(timestamp, channel, can_id, role, index, data, failure)
         return _new(
             Record, (timestamp, channel, can_id, role, index, None, message, None, "", data, None)
         )
@@ -186,6 +209,30 @@ class CaptureDecoder:
                           b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
+
+
+def _routes_by_text(routes: dict[int, Route]) -> dict[str, tuple[int, Role, int | None, Decoder]]:
+    """The 11-bit Veronte routes keyed by identifier text, each in every case spelling."""
+    by_text = {}
+    for can_id, (role, index, decode) in routes.items():
+        if can_id <= 0xFFF:  # what 3 hex digits hold
+            for spelling in itertools.product(*({c.lower(), c.upper()} for c in f"{can_id:03x}")):
+                by_text["".join(spelling)] = (can_id, role, index, decode)
+    return by_text
+
+
+def _failed(
+    timestamp: float | None,
+    channel: str,
+    can_id: int,
+    role: Role,
+    index: int | None,
+    data: bytes,
+    failure: DecodeError,
+) -> Record:
+    """The record of a Veronte frame its codec refused."""
+    kind = "unknown command" if isinstance(failure, UnknownCommandError) else "decode error"
+    return Record(timestamp, channel, can_id, role, index, None, None, kind, str(failure), data)
 
 
 def problem_record(report: ProblemReport, channel: str) -> Record:
