@@ -47,15 +47,45 @@ class CaptureDecoder:
         """Yield the records of a stream of frames and bad lines, in order."""
         routes = self._routes
         veronte_extended = self.bus_map.extended
+        dronecan = self.bus_map.dronecan
         excess = self.bus_map.allow_excess
+        new, dronecan_role = _new, Role.DRONECAN
+        # The reassembler of the latest DroneCAN frame's channel (one lookup per change).
+        last_channel, reassembler = None, None
         for item in items:
             if type(item) is Frame:
                 timestamp, channel, can_id, data, extended, remote, fd, error = item
-                route = routes.get(can_id) if extended == veronte_extended else None
-                if route is not None and not (remote or error or fd):
-                    yield self._veronte(timestamp, channel, can_id, data, route, excess)
-                    continue
-                yield from self.frame_records(item)
+                if not (remote or fd or error):
+                    route = routes.get(can_id) if extended == veronte_extended else None
+                    if route is not None:
+                        role, index, decode = route
+                        try:
+                            message = decode(data, excess)
+                        except DecodeError as failure:
+                            yield _failed(timestamp, channel, can_id, role, index, data, failure)
+                        else:
+                            record = (timestamp, channel, can_id, role, index, None, message,
+                                      None, "", data, None)  # fmt: skip
+                            yield new(Record, record)
+                        continue
+                    if extended and dronecan:
+                        # _dronecan, inlined: no generator per frame.
+                        if channel != last_channel or reassembler is None:
+                            reassembler = self.reassemblers.get(channel)
+                            if reassembler is None:
+                                reassembler = self._reassembler(channel)
+                            last_channel, feed = channel, reassembler.feed
+                        before = reassembler.reported
+                        transfer = feed(can_id, data, 0.0 if timestamp is None else timestamp)
+                        if reassembler.reported != before:
+                            yield from self._problems(reassembler, before, channel)
+                        if transfer is not None:
+                            delivered = (timestamp, channel, can_id, dronecan_role, None,
+                                         transfer.source_node_id, transfer.message, None, "",
+                                         data, transfer.destination_node_id)  # fmt: skip
+                            yield new(Record, delivered)
+                        continue
+                yield self._odd_frame(item)
             else:
                 yield self._bad_line(item)  # type: ignore[arg-type]
 
@@ -139,38 +169,18 @@ class CaptureDecoder:
             elif channel is None or item.channel == channel:
                 yield from self.decode((item,))
 
-    def frame_records(self, frame: Frame) -> Iterator[Record]:
-        """The records of one frame that is not a plain Veronte frame."""
+    def _odd_frame(self, frame: Frame) -> Record:
+        """The record of a frame that is neither a plain Veronte nor a plain DroneCAN frame:
+        an error or remote frame, CAN FD, or a foreign ID."""
         role, index = self.bus_map.role(frame.can_id, frame.extended)
         base = (frame.timestamp, frame.channel, frame.can_id, role, index, None, None)
         if frame.error:
-            yield Record(*base, "error frame", "error frame", frame.data)
-        elif frame.remote:
-            yield Record(*base, "remote frame", "remote frame", frame.data)
-        elif role is Role.ARBITER or role is Role.AUTOPILOT:
-            yield Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
-        elif role is Role.DRONECAN and not frame.fd:
-            yield from self._dronecan(frame)
-        else:
-            yield Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
-
-    def _dronecan(self, frame: Frame) -> Iterator[Record]:
-        """Feed a 29-bit frame to its channel's reassembler: a record per problem it reports,
-        then one for the transfer it completes. A capture without timestamps feeds 0.0, so
-        no transfer-ID timeout ever fires there."""
-        reassembler = self.reassemblers.get(frame.channel) or self._reassembler(frame.channel)
-        before = reassembler.reported
-        stamp = frame.timestamp if frame.timestamp is not None else 0.0
-        transfer = reassembler.feed(frame.can_id, frame.data, stamp)
-        if reassembler.reported != before:
-            yield from self._problems(reassembler, before, frame.channel)
-        if transfer is not None:
-            yield _new(
-                Record,
-                (frame.timestamp, frame.channel, frame.can_id, Role.DRONECAN, None,
-                 transfer.source_node_id, transfer.message, None, "", frame.data,
-                 transfer.destination_node_id),
-            )  # fmt: skip
+            return Record(*base, "error frame", "error frame", frame.data)
+        if frame.remote:
+            return Record(*base, "remote frame", "remote frame", frame.data)
+        if role is Role.ARBITER or role is Role.AUTOPILOT:
+            return Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
+        return Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
 
     def _reassembler(self, channel: str) -> Reassembler:
         """A new reassembler for a channel's first DroneCAN frame."""
