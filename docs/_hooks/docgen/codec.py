@@ -65,27 +65,7 @@ def layout_table(layout: FrameLayout) -> str:
         else f"{layout.fixed_size} to {layout.fixed_size + layout.tail.bits // 8} bytes"
     )
     title = layout.title or layout.name
-    return f"### {title}\n\n{size}. Source: {cite(layout.source)}.\n\n" + "\n".join(rows) + "\n"
-
-
-_CITATIONS = (
-    ("seed 000, chapter 3,", 'Veronte Autopilot 4x Software Manual, section 3 "CAN Bus protocol",'),
-    ("seed 000", "Veronte Autopilot 4x Software Manual"),
-    ("notes/veronte-protocol.md: ", "Embention's public manuals: "),
-    ("; notes: ", "; Embention's public manuals and templates: "),
-)
-
-
-def cite(source: str) -> str:
-    """A layout's source as users can look it up: the manual by its title and section.
-
-    Examples:
-        >>> cite("seed 000, section 3.1.2 Score Message")
-        'Veronte Autopilot 4x Software Manual, section 3.1.2 Score Message'
-    """
-    for internal, public in _CITATIONS:
-        source = source.replace(internal, public)
-    return source
+    return f"### {title}\n\n{size}. Source: {layout.source}.\n\n" + "\n".join(rows) + "\n"
 
 
 def protocol_tables() -> str:

@@ -14,7 +14,9 @@ from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant, float32
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 
-SEED_TABLE = "seed 000, chapter 3, message-type table"
+MANUAL = "Veronte Autopilot 4x Software Manual"
+"""The manual the public layouts come from, by its title."""
+MANUAL_TABLE = f'{MANUAL}, section 3 "CAN Bus protocol", message-type table'
 AUTOPILOTS = ("AP1", "AP2", "AP3", "external AP")
 
 _ARBITRATION = constant(0x00, 8, "message type t_arbitration", "command")
@@ -63,7 +65,7 @@ STATUS_FLAGS: tuple[tuple[str, str], ...] = (
 STATUS_4X = FrameLayout(
     m.Status,
     (*_STATUS_BYTES_0_3, *(_flag(attr, text) for attr, text in STATUS_FLAGS)),
-    source="seed 000, section 3.1.1 Status Message (6 bytes, Autopilot 4x)",
+    source=f"{MANUAL}, section 3.1.1 Status Message (6 bytes, Autopilot 4x)",
     title="Status (4x, 6 bytes)",
 )
 
@@ -71,7 +73,7 @@ STATUS_CEX = FrameLayout(
     m.Status,
     _STATUS_BYTES_0_3,
     implied=tuple((attr, None) for attr, _ in STATUS_FLAGS),
-    source="notes/veronte-protocol.md: the CEX arbiter sends only bytes 0-3 of the Status",
+    source="Embention's public manuals: the CEX arbiter sends only bytes 0-3 of the Status",
     title="Status (CEX, 4 bytes)",
     implied_text="None like cbit_ok (the 4-byte CEX form), or set every flag (the 6-byte 4x form)",
 )
@@ -89,7 +91,7 @@ SCORE = FrameLayout(
         ),
         float32("score", "arbitration score, single-precision float; lower is better"),
     ),
-    source="seed 000, section 3.1.2 Score Message",
+    source=f"{MANUAL}, section 3.1.2 Score Message",
 )
 
 READY = FrameLayout(
@@ -100,7 +102,7 @@ READY = FrameLayout(
         _flag("ready", "Ready (1) / Not Ready (0)"),
         constant(0, 7, "unused bits of byte 2, zero", "reserved"),
     ),
-    source="seed 000, section 3.1.3 Ready Message; notes: Embention's 1x template sends 00 FF 01",
+    source=f"{MANUAL}, section 3.1.3 Ready Message; Embention's 1x template sends 00 FF 01",
 )
 
 ARBITRATION_VARIABLE = FrameLayout(
@@ -110,13 +112,13 @@ ARBITRATION_VARIABLE = FrameLayout(
         Field(Kind.UNSIGNED, 8, "number", maximum=31, description="arbitration variable number"),
         float32("value", "arbitration variable value, single-precision float"),
     ),
-    source="seed 000, section 3.1.4 Arbitration Message (numbers 0..31: at most 32 variables)",
+    source=f"{MANUAL}, section 3.1.4 Arbitration Message (numbers 0..31: at most 32 variables)",
 )
 
 VERSION_REQUEST = FrameLayout(
     m.VersionRequest,
     (constant(0x01, 8, "message type t_version", "command"),),
-    source=f"{SEED_TABLE}; notes: the request is the single byte 01",
+    source=f"{MANUAL_TABLE}; Embention's templates: the request is the single byte 01",
 )
 
 VERSION_RESPONSE = FrameLayout(
@@ -126,7 +128,9 @@ VERSION_RESPONSE = FrameLayout(
         Field(Kind.UNSIGNED, 8, "application_code", description="application code (9 = CEXv2)"),
         Field(Kind.BYTES, 48, "rest", description="version and the rest, layout not public"),
     ),
-    source=f"{SEED_TABLE}; notes: byte 1 application code, the rest not public",
+    source=(
+        f"{MANUAL_TABLE}; Embention's public manuals: byte 1 application code, the rest not public"
+    ),
 )
 
 
@@ -160,7 +164,10 @@ def _pwm(packing: PwmPacking) -> FrameLayout:
         m.PwmSet,
         (command, *values),
         byte_order=order,
-        source=f"{SEED_TABLE}; notes: four 12-bit values, packing {packing.value} (open point)",
+        source=(
+            f"{MANUAL_TABLE}; four 12-bit values; the packing ({packing.value}) is not public: "
+            "an option"
+        ),
         title=f"PwmSet ({packing.value})",
     )
 
@@ -205,7 +212,7 @@ def _opaque(cls: type[m.OpaqueMessage]) -> FrameLayout:
                 Kind.BYTES, 56, "payload", description="payload, layout not public: kept exactly"
             ),
         ),
-        source=f"{SEED_TABLE}; notes: no public source gives this payload's layout",
+        source=f"{MANUAL_TABLE}; no public source gives this payload's layout",
     )
 
 
