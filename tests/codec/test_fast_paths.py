@@ -97,6 +97,17 @@ def test_ordinary_frames_take_the_fast_path(name: str, data: st.DataObject) -> N
     assert decoded == message
 
 
+@pytest.mark.parametrize("name", ["lsb_first", "msb_first"])
+def test_pwm_tables_give_every_value_of_the_checked_decode(name: str) -> None:
+    """Every pair of a middle byte (2, 5) and its neighbours, in both halves of the frame."""
+    c = CODECS[name]
+    decode = c.decoder(codec.Sender.AUTOPILOT)
+    for middle in range(256):
+        for whole in range(256):
+            frame = bytes((2, whole, middle, whole, whole, middle, whole))
+            assert decode(frame, False) == c._checked(frame, sender=codec.Sender.AUTOPILOT)
+
+
 def test_a_senders_decoder_takes_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:
     decoder = codec.DEFAULT_CODEC.decoder(codec.Sender.AUTOPILOT)
     monkeypatch.setitem(decoder.__globals__, "_checked", _refuse)

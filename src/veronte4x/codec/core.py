@@ -261,9 +261,9 @@ class Codec:
             namespace.update(found[1])
             return found[0]
 
-        # PWM frames: one exact-size unpack and the packing's expressions (PWM_WORDS).
-        word_format, values = layouts.PWM_WORDS[self.pwm_packing]
-        namespace["_unpack_pwm"] = struct.Struct(word_format).unpack
+        # PWM frames: one exact-size unpack and two tables of the packing (PWM_VALUES).
+        namespace["_unpack_pwm"] = struct.Struct(layouts.PWM_FORMAT).unpack
+        namespace["_first"], namespace["_second"] = layouts.pwm_tables(self.pwm_packing)
         namespace["_pwm_builder"] = builder(PwmSet)
         namespace["_PwmSet"] = PwmSet
         first_channel: list[int | None] = [None] * 256
@@ -289,10 +289,10 @@ class Codec:
             "        elif data.__class__ is _bytes and sender.__class__ is _Sender:",
             "            first_channel = _first_channel[command]",
             "            if first_channel is not None:",
-            "                _, h1, b3, h4, b6 = _unpack_pwm(data)",
+            "                b1, b2, b3, b4, b5, b6 = _unpack_pwm(data)",
             "                o = _pwm_builder()",
             "                o.first_channel = first_channel",
-            f"                o.values = {values}",
+            f"                o.values = {layouts.PWM_VALUES}",
             "                o.__class__ = _PwmSet",
             "                return o",
             "            n = _len(data)",
