@@ -57,6 +57,28 @@ def test_fast_decode_agrees_with_the_checked_decode(
     assert _outcome(c.decode, memoryview(data), sender=sender, allow_excess=excess) == fast
 
 
+def _views(data: bytes) -> list[object]:
+    """Memoryviews of ``data`` whose items are not its bytes: other formats, two dimensions."""
+    views = [memoryview(data).cast("c"), memoryview(data).cast("b")]
+    if data and len(data) % 2 == 0:
+        views += [memoryview(data).cast("H"), memoryview(data).cast("B", (2, len(data) // 2))]
+    return views
+
+
+@pytest.mark.parametrize("name", CODECS)
+@settings(max_examples=400, deadline=None)
+@given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
+def test_a_memoryview_of_any_format_or_shape_decodes_its_bytes(
+    name: str, data: bytes, sender: codec.Sender, excess: bool
+) -> None:
+    c = CODECS[name]
+    expected = _outcome(c.decode, data, sender=sender, allow_excess=excess)
+    decoder = c.decoder(sender)
+    for view in _views(data):
+        assert _outcome(c.decode, view, sender=sender, allow_excess=excess) == expected
+        assert _outcome(lambda d: decoder(d, excess), view) == expected
+
+
 @pytest.mark.parametrize("name", CODECS)
 @settings(max_examples=400, deadline=None)
 @given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
