@@ -130,6 +130,27 @@ def test_pwm_tables_give_every_value_of_the_checked_decode(name: str) -> None:
             assert decode(frame, False) == c._checked(frame, sender=codec.Sender.AUTOPILOT)
 
 
+@pytest.mark.parametrize(
+    ("head", "tail", "sender"),
+    [
+        (b"\x00\xff", b"\x77\xff\xff", codec.Sender.ARBITER),  # Status: selected, arbitrating
+        (b"\x00\xff", b"", codec.Sender.AUTOPILOT),  # Ready: the flag and 7 reserved bits
+        (b"\x00", b"\x00\x00\x80\x3f", codec.Sender.ARBITER),  # Score's autopilot, or Status
+        (b"\x00", b"\x00\x00\x80\x3f", codec.Sender.AUTOPILOT),  # ArbitrationVariable
+    ],
+)
+def test_every_value_of_a_byte_of_several_fields(
+    head: bytes, tail: bytes, sender: codec.Sender
+) -> None:
+    """The byte tables of the optimistic decoders, and the dispatch on byte 1, for all 256
+    values of the byte."""
+    for name, c in CODECS.items():
+        for value in range(256):
+            frame = head + bytes((value,)) + tail
+            fast = _outcome(c.decode, frame, sender=sender)
+            assert fast == _outcome(c._checked, frame, sender=sender), (name, frame)
+
+
 def test_a_senders_decoder_takes_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:
     decoder = codec.DEFAULT_CODEC.decoder(codec.Sender.AUTOPILOT)
     monkeypatch.setitem(decoder.__globals__, "_checked", _refuse)

@@ -251,11 +251,15 @@ class Codec:
             "_opaque_builder": builder(OpaqueMessage),
             "_struct_error": struct.error,
         }
-        otherwise = "return _checked(data, sender=sender, allow_excess=allow_excess)"
+        to_checked = "_checked(data, sender=sender, allow_excess=allow_excess)"
+        to_status = "_status(data, sender, allow_excess)"
+        otherwise = f"return {to_checked}"
 
-        def body(layout: FrameLayout, indent: int, assume: set[str]) -> list[str]:
+        def body(
+            layout: FrameLayout, indent: int, assume: set[str], fallback: str = otherwise
+        ) -> list[str]:
             found = optimistic_decoder(
-                layout, layout.message.__name__, indent, otherwise, frozenset(assume)
+                layout, layout.message.__name__, indent, fallback, frozenset(assume)
             )
             assert found is not None, layout.name
             namespace.update(found[1])
@@ -279,9 +283,13 @@ class Codec:
             "        command = data[0]",
             "        if not command:",
             "            if sender is _ARBITER:",
-            "                if data[1] == 0xFF:",
-            "                    return _status(data, sender, allow_excess)",
-            *body(layouts.SCORE, 16, {"command"}),
+            # Score first: a Status has 0xFF where a Score has its autopilot (0..3).
+            *body(
+                layouts.SCORE,
+                16,
+                {"command"},
+                f"return {to_status} if data[1] == 0xFF else {to_checked}",
+            ),
             "            if sender is _AUTOPILOT:",
             "                if data[1] == 0xFF:",
             *body(layouts.READY, 20, {"command", "header"}),
