@@ -250,6 +250,7 @@ class Codec:
             "_opaque": self._opaque_classes(),
             "_opaque_builder": builder(OpaqueMessage),
             "_struct_error": struct.error,
+            "_AFTER_COMMAND": slice(1, None),  # a constant slice: none built per frame
         }
         to_checked = "_checked(data, sender=sender, allow_excess=allow_excess)"
         to_status = "_status(data, sender, allow_excess)"
@@ -310,7 +311,7 @@ class Codec:
             f"                and _len(data) <= {MAX_FRAME_BYTES}",
             "            ):",
             "                o = _opaque_builder()",
-            "                o.payload = data[1:]",
+            "                o.payload = data[_AFTER_COMMAND]",
             "                o.__class__ = cls",
             "                return o",
             # A memoryview of another shape or item format fails here and not in the
