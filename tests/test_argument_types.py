@@ -11,13 +11,15 @@ from typing import Any
 import pytest
 
 from veronte4x import codec, dronecan
-from veronte4x.dronecan import TransferKind
+from veronte4x.dronecan import TransferKind, vertiq
 from veronte4x.errors import BytesLike
 
 AP = codec.Sender.AUTOPILOT
 STATUS = dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
 NODE_STATUS_ID = dronecan.message_can_id(16, 341, 5)
 LAYOUT = codec.Layout(20, "Declared", [codec.unsigned("a", 8)])
+SCALE = codec.Linear(0, 255, 0.0, 1.0)
+GET_SET = dronecan.GetSetResponse(value=dronecan.IntegerValue(2), name=b"esc_index")
 
 
 def _call(function: Callable[..., Any], *args: Any, **kwargs: Any) -> Callable[[], Any]:
@@ -72,6 +74,114 @@ CASES: list[tuple[str, Callable[[], Any], str]] = [
         "from_microseconds",
         _call(codec.from_microseconds, "1500"),
         "pulse_us must be a number, not str",
+    ),
+    # veronte4x.codec fields
+    ("constant value", _call(codec.constant, 1.0), "constant(): value must be an int, not float"),
+    (
+        "constant value bool",
+        _call(codec.constant, True),
+        "constant(): value must be an int, not bool",
+    ),
+    ("constant bits", _call(codec.constant, 1, "8"), "constant(): bits must be an int, not str"),
+    (
+        "constant description",
+        _call(codec.constant, 1, 8, None),
+        "constant(): description must be a str, not NoneType",
+    ),
+    (
+        "constant name",
+        _call(codec.constant, 1, 8, "", 3),
+        "constant(): name must be a str, not int",
+    ),
+    ("skip bits", _call(codec.skip, 8.0), "skip(): bits must be an int, not float"),
+    ("skip bits bool", _call(codec.skip, False), "skip(): bits must be an int, not bool"),
+    ("unsigned name", _call(codec.unsigned, b"a", 8), "unsigned(): name must be a str, not bytes"),
+    ("unsigned bits", _call(codec.unsigned, "a", "8"), "unsigned(): bits must be an int, not str"),
+    (
+        "unsigned scale",
+        _call(codec.unsigned, "a", 8, (0, 255, 0.0, 1.0)),
+        "unsigned(): scale must be a Linear or None, not tuple",
+    ),
+    (
+        "unsigned description",
+        _call(codec.unsigned, "a", 8, SCALE, 1),
+        "unsigned(): description must be a str, not int",
+    ),
+    ("signed name", _call(codec.signed, None, 8), "signed(): name must be a str, not NoneType"),
+    ("signed bits", _call(codec.signed, "a", True), "signed(): bits must be an int, not bool"),
+    ("signed scale", _call(codec.signed, "a", 8, 2.0), "signed(): scale must be a Linear or None"),
+    (
+        "signed description",
+        _call(codec.signed, "a", 8, None, ["x"]),
+        "signed(): description must be a str, not list",
+    ),
+    ("float32 name", _call(codec.float32, 1), "float32(): name must be a str, not int"),
+    (
+        "float32 description",
+        _call(codec.float32, "a", b""),
+        "float32(): description must be a str, not bytes",
+    ),
+    (
+        "Linear encoded_min",
+        _call(codec.Linear, 0.0, 255, 0.0, 1.0),
+        "Linear(): encoded_min must be an int, not float",
+    ),
+    (
+        "Linear encoded_max",
+        _call(codec.Linear, 0, "255", 0.0, 1.0),
+        "Linear(): encoded_max must be an int, not str",
+    ),
+    (
+        "Linear decoded_min",
+        _call(codec.Linear, 0, 255, False, 1.0),
+        "Linear(): decoded_min must be a number, not bool",
+    ),
+    (
+        "Linear decoded_max",
+        _call(codec.Linear, 0, 255, 0.0, "1"),
+        "Linear(): decoded_max must be a number, not str",
+    ),
+    ("Field kind", _call(codec.Field, "unsigned", 8), "Field(): kind must be a Kind, not str"),
+    ("Field bits", _call(codec.Field, codec.Kind.UNSIGNED, 8.0), "Field(): bits must be an int"),
+    (
+        "Field attr",
+        _call(codec.Field, codec.Kind.UNSIGNED, 8, 1),
+        "Field(): attr must be a str or None, not int",
+    ),
+    (
+        "Field index",
+        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", "0"),
+        "Field(): index must be an int or None, not str",
+    ),
+    (
+        "Field value",
+        _call(codec.Field, codec.Kind.CONSTANT, 8, value=True),
+        "Field(): value must be an int, not bool",
+    ),
+    (
+        "Field maximum",
+        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", maximum=9.0),
+        "Field(): maximum must be an int or None, not float",
+    ),
+    (
+        "Field scale",
+        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", scale=1),
+        "Field(): scale must be a Linear or None, not int",
+    ),
+    (
+        "Field description",
+        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", description=None),
+        "Field(): description must be a str, not NoneType",
+    ),
+    (
+        "Field name",
+        _call(codec.Field, codec.Kind.PADDING, 8, name=None),
+        "Field(): name must be a str, not NoneType",
+    ),
+    (
+        "Field mapping",
+        _call(codec.Field, codec.Kind.MAPPED, 8, "a", mapping=[(0, "x")]),
+        "Field(): mapping must be a tuple of (wire value, value) pairs, not list",
     ),
     # veronte4x.dronecan
     (
@@ -189,6 +299,107 @@ CASES: list[tuple[str, Callable[[], Any], str]] = [
         "Reassembler",
         _call(dronecan.Reassembler, max_sessions=1.5),
         "Reassembler(): max_sessions must be an int",
+    ),
+    (
+        "from_builtin cls",
+        _call(dronecan.from_builtin, ["NodeStatus"], {}),
+        "from_builtin(): cls must be a DroneCAN message class, not list",
+    ),
+    (
+        "from_builtin cls not DroneCAN",
+        _call(dronecan.from_builtin, codec.Ready, {}),
+        "from_builtin(): cls must be a DroneCAN message class, not type",
+    ),
+    (
+        "from_builtin data",
+        _call(dronecan.from_builtin, dronecan.NodeStatus, [1]),
+        "from_builtin(): data must be a dict, not list",
+    ),
+    # veronte4x.dronecan.vertiq
+    (
+        "get_parameter name",
+        _call(vertiq.get_parameter, b"esc_index"),
+        "get_parameter(): name must be a str or Parameter, not bytes",
+    ),
+    (
+        "set_parameter name",
+        _call(vertiq.set_parameter, 3, 1),
+        "set_parameter(): name must be a str or Parameter, not int",
+    ),
+    (
+        "set_parameter value",
+        _call(vertiq.set_parameter, "esc_index", [1]),
+        "set_parameter(): value must be an int, float, bool, str, bytes or param.Value, not list",
+    ),
+    (
+        "get_parameter_by_index index",
+        _call(vertiq.get_parameter_by_index, True),
+        "get_parameter_by_index(): index must be an int, not bool",
+    ),
+    (
+        "is_end_of_parameters response",
+        _call(vertiq.is_end_of_parameters, dronecan.GetSetRequest()),
+        "is_end_of_parameters(): response must be a GetSetResponse, not GetSetRequest",
+    ),
+    (
+        "discovered_parameters responses",
+        _call(vertiq.discovered_parameters, None),
+        "discovered_parameters(): responses must be a sequence of GetSetResponse, not NoneType",
+    ),
+    (
+        "discovered_parameters responses[1]",
+        _call(vertiq.discovered_parameters, [GET_SET, "x"]),
+        "discovered_parameters(): responses[1] must be a GetSetResponse, not str",
+    ),
+    (
+        "restart bootloader",
+        _call(vertiq.restart, 1),
+        "restart(): bootloader must be a bool, not int",
+    ),
+    (
+        "throttle_to_raw str",
+        _call(vertiq.throttle_to_raw, "0.5"),
+        "throttle_to_raw(): throttle must be a float, not str",
+    ),
+    (
+        "throttle_to_raw bool",
+        _call(vertiq.throttle_to_raw, True),
+        "throttle_to_raw(): throttle must be a float, not bool",
+    ),
+    (
+        "raw_to_throttle raw",
+        _call(vertiq.raw_to_throttle, 8191.0),
+        "raw_to_throttle(): raw must be an int, not float",
+    ),
+    (
+        "raw_command throttles",
+        _call(vertiq.raw_command, 0.5),
+        "raw_command(): throttles must be a sequence or mapping of floats, not float",
+    ),
+    (
+        "raw_command throttles[1]",
+        _call(vertiq.raw_command, [0.5, "0.5"]),
+        "raw_command(): throttles[1] must be a float, not str",
+    ),
+    (
+        "raw_command throttles value",
+        _call(vertiq.raw_command, {3: None}),
+        "raw_command(): throttles[3] must be a float, not NoneType",
+    ),
+    (
+        "raw_command throttles keys",
+        _call(vertiq.raw_command, {"3": 0.5}),
+        "raw_command(): throttles keys must be ints, not str",
+    ),
+    (
+        "raw_command throttles keys bool",
+        _call(vertiq.raw_command, {True: 0.5}),
+        "raw_command(): throttles keys must be ints, not bool",
+    ),
+    (
+        "throttles command",
+        _call(vertiq.throttles, (8191,)),
+        "throttles(): command must be a RawCommand, not tuple",
     ),
 ]
 

@@ -57,6 +57,28 @@ def test_fast_decode_agrees_with_the_checked_decode(
     assert _outcome(c.decode, memoryview(data), sender=sender, allow_excess=excess) == fast
 
 
+def _views(data: bytes) -> list[object]:
+    """Memoryviews of ``data`` whose items are not its bytes: other formats, two dimensions."""
+    views = [memoryview(data).cast("c"), memoryview(data).cast("b")]
+    if data and len(data) % 2 == 0:
+        views += [memoryview(data).cast("H"), memoryview(data).cast("B", (2, len(data) // 2))]
+    return views
+
+
+@pytest.mark.parametrize("name", CODECS)
+@settings(max_examples=400, deadline=None)
+@given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
+def test_a_memoryview_of_any_format_or_shape_decodes_its_bytes(
+    name: str, data: bytes, sender: codec.Sender, excess: bool
+) -> None:
+    c = CODECS[name]
+    expected = _outcome(c.decode, data, sender=sender, allow_excess=excess)
+    decoder = c.decoder(sender)
+    for view in _views(data):
+        assert _outcome(c.decode, view, sender=sender, allow_excess=excess) == expected
+        assert _outcome(lambda d: decoder(d, excess), view) == expected
+
+
 @pytest.mark.parametrize("name", CODECS)
 @settings(max_examples=400, deadline=None)
 @given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
@@ -95,6 +117,38 @@ def test_ordinary_frames_take_the_fast_path(name: str, data: st.DataObject) -> N
     if isinstance(message, codec.Score) and math.isnan(message.score):
         return
     assert decoded == message
+
+
+@pytest.mark.parametrize("name", ["lsb_first", "msb_first"])
+def test_pwm_tables_give_every_value_of_the_checked_decode(name: str) -> None:
+    """Every pair of a middle byte (2, 5) and its neighbours, in both halves of the frame."""
+    c = CODECS[name]
+    decode = c.decoder(codec.Sender.AUTOPILOT)
+    for middle in range(256):
+        for whole in range(256):
+            frame = bytes((2, whole, middle, whole, whole, middle, whole))
+            assert decode(frame, False) == c._checked(frame, sender=codec.Sender.AUTOPILOT)
+
+
+@pytest.mark.parametrize(
+    ("head", "tail", "sender"),
+    [
+        (b"\x00\xff", b"\x77\xff\xff", codec.Sender.ARBITER),  # Status: selected, arbitrating
+        (b"\x00\xff", b"", codec.Sender.AUTOPILOT),  # Ready: the flag and 7 reserved bits
+        (b"\x00", b"\x00\x00\x80\x3f", codec.Sender.ARBITER),  # Score's autopilot, or Status
+        (b"\x00", b"\x00\x00\x80\x3f", codec.Sender.AUTOPILOT),  # ArbitrationVariable
+    ],
+)
+def test_every_value_of_a_byte_of_several_fields(
+    head: bytes, tail: bytes, sender: codec.Sender
+) -> None:
+    """The byte tables of the optimistic decoders, and the dispatch on byte 1, for all 256
+    values of the byte."""
+    for name, c in CODECS.items():
+        for value in range(256):
+            frame = head + bytes((value,)) + tail
+            fast = _outcome(c.decode, frame, sender=sender)
+            assert fast == _outcome(c._checked, frame, sender=sender), (name, frame)
 
 
 def test_a_senders_decoder_takes_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:

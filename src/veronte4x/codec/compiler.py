@@ -220,7 +220,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
 
 _PER_LAYOUT = re.compile(
     r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
-    r"|_implied_\w+|_from_wire_\w+|_to_wire_\w+|_set_\w+)\b"
+    r"|_implied_\w+|_from_wire_\w+|_to_wire_\w+|_set_\w+|_byte\d+)\b"
 )
 """The names of a decoder's namespace that belong to its layout (the rest are shared)."""
 
@@ -279,6 +279,8 @@ def optimistic_decoder(
     layout.check()
     namespace = _namespace(layout)
     namespace["_unpack_exact"] = struct.Struct(_skipping(layout, assume)[0]).unpack
+    for index, (_, table) in _byte_tables(layout, assume).items():
+        namespace[f"_byte{index}"] = table
     source = _decode_source(layout, otherwise=otherwise, assume=assume)
     return _renamed(source.splitlines()[1:], namespace, suffix, indent)
 
@@ -408,6 +410,16 @@ def _decode_source(
         byte = f"b{index}" if plan is not None else f"data[{index}]"
         body.append("    " + ", ".join(f"f{n}" for n in numbers) + f" = _BITS[{byte}]")
     grouped = {n for numbers in flag_bytes.values() for n in numbers}
+    if otherwise is not None:
+        for index, (numbers, _) in _byte_tables(layout, assume).items():
+            targets = [f"f{n}" for n in numbers if layout.placed[n].field.kind is not Kind.CONSTANT]
+            body += [
+                f"    t{index} = _byte{index}[b{index}]",
+                f"    if t{index} is None:",
+                f"        {otherwise}",
+                *([f"    {', '.join(targets)}, = t{index}"] if targets else []),
+            ]
+            grouped.update(numbers)
     needs_word = False
     for number, p in enumerate(layout.placed):
         if p.field.kind is Kind.CONSTANT and p.field.label in assume:
@@ -457,6 +469,73 @@ def _flag_bytes(layout: FrameLayout) -> dict[int, list[int]]:
         if p.field.kind is Kind.BOOL and index is not None:
             by_byte.setdefault(index, {})[p.shift % 8] = number
     return {index: [bits[b] for b in range(8)] for index, bits in by_byte.items() if len(bits) == 8}
+
+
+_TABLED = frozenset({Kind.CONSTANT, Kind.BOOL, Kind.UNSIGNED, Kind.SIGNED, Kind.MAPPED})
+
+
+def _byte_tables(
+    layout: FrameLayout, assume: frozenset[str]
+) -> dict[int, tuple[list[int], tuple[tuple[Any, ...] | None, ...]]]:
+    """For an optimistic decoder: the bytes that hold several fields, each decoded by one
+    lookup of the byte's value in a 256-entry table.
+
+    An entry is the tuple of the byte's field values (constants left out) as the checked
+    decoder computes them, or None where it would raise (a constant or a maximum not met,
+    a wire value the mapping lacks). Only for layouts that one `struct` unpack reads, and
+    not for bytes of eight flags (`_BITS` has them).
+
+    Returns:
+        Byte index to (the field numbers in the byte, the table).
+    """
+    if _struct_plan(layout) is None:
+        return {}
+    flags = _flag_bytes(layout)
+    by_byte: dict[int, list[int]] = {}
+    for number, p in enumerate(layout.placed):
+        f = p.field
+        if f.kind is Kind.PADDING or (f.kind is Kind.CONSTANT and f.label in assume):
+            continue
+        index = _byte_index(layout, p)
+        if index is not None and index not in flags:
+            by_byte.setdefault(index, []).append(number)
+    tables = {}
+    for index, numbers in by_byte.items():
+        fields = [layout.placed[n] for n in numbers]
+        if len(numbers) > 1 and all(p.field.kind in _TABLED for p in fields):
+            tables[index] = (numbers, tuple(_byte_entry(fields, byte) for byte in range(256)))
+    return tables
+
+
+def _byte_entry(fields: list[Placed], byte: int) -> tuple[Any, ...] | None:
+    """The values of the fields of one byte for one value of the byte, as `_decode_field`
+    computes them, or None where it raises."""
+    values: list[Any] = []
+    for p in fields:
+        f = p.field
+        raw = byte >> p.shift % 8 & (1 << f.bits) - 1
+        if f.kind is Kind.CONSTANT:
+            if raw != f.value:
+                return None
+            continue
+        if f.kind is Kind.BOOL:
+            values.append(raw == 1)
+            continue
+        if f.kind is Kind.MAPPED:
+            mapped = dict(f.mapping).get(raw)
+            if mapped is None:
+                return None
+            values.append(mapped)
+            continue
+        value: float = raw
+        if f.kind is Kind.SIGNED:
+            value = raw - ((raw & 1 << f.bits - 1) << 1)
+        if f.maximum is not None and value > f.maximum:
+            return None
+        if f.scale is not None:
+            value = value * f.scale.factor + f.scale.offset
+        values.append(value)
+    return tuple(values)
 
 
 def _struct_plan(layout: FrameLayout) -> tuple[str, list[str]] | None:

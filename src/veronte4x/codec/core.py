@@ -250,20 +250,25 @@ class Codec:
             "_opaque": self._opaque_classes(),
             "_opaque_builder": builder(OpaqueMessage),
             "_struct_error": struct.error,
+            "_AFTER_COMMAND": slice(1, None),  # a constant slice: none built per frame
         }
-        otherwise = "return _checked(data, sender=sender, allow_excess=allow_excess)"
+        to_checked = "_checked(data, sender=sender, allow_excess=allow_excess)"
+        to_status = "_status(data, sender, allow_excess)"
+        otherwise = f"return {to_checked}"
 
-        def body(layout: FrameLayout, indent: int, assume: set[str]) -> list[str]:
+        def body(
+            layout: FrameLayout, indent: int, assume: set[str], fallback: str = otherwise
+        ) -> list[str]:
             found = optimistic_decoder(
-                layout, layout.message.__name__, indent, otherwise, frozenset(assume)
+                layout, layout.message.__name__, indent, fallback, frozenset(assume)
             )
             assert found is not None, layout.name
             namespace.update(found[1])
             return found[0]
 
-        # PWM frames: one exact-size unpack and the packing's expressions (PWM_WORDS).
-        word_format, values = layouts.PWM_WORDS[self.pwm_packing]
-        namespace["_unpack_pwm"] = struct.Struct(word_format).unpack
+        # PWM frames: one exact-size unpack and two tables of the packing (PWM_VALUES).
+        namespace["_unpack_pwm"] = struct.Struct(layouts.PWM_FORMAT).unpack
+        namespace["_first"], namespace["_second"] = layouts.pwm_tables(self.pwm_packing)
         namespace["_pwm_builder"] = builder(PwmSet)
         namespace["_PwmSet"] = PwmSet
         first_channel: list[int | None] = [None] * 256
@@ -279,37 +284,52 @@ class Codec:
             "        command = data[0]",
             "        if not command:",
             "            if sender is _ARBITER:",
-            "                if data[1] == 0xFF:",
-            *body(layouts.STATUS_4X, 20, {"command", "header"}),
-            *body(layouts.SCORE, 16, {"command"}),
+            # Score first: a Status has 0xFF where a Score has its autopilot (0..3).
+            *body(
+                layouts.SCORE,
+                16,
+                {"command"},
+                f"return {to_status} if data[1] == 0xFF else {to_checked}",
+            ),
             "            if sender is _AUTOPILOT:",
             "                if data[1] == 0xFF:",
             *body(layouts.READY, 20, {"command", "header"}),
             *body(layouts.ARBITRATION_VARIABLE, 16, {"command"}),
-            "        elif data.__class__ is _bytes and sender.__class__ is _Sender:",
+            "        elif sender.__class__ is _Sender:",
             "            first_channel = _first_channel[command]",
             "            if first_channel is not None:",
-            "                _, h1, b3, h4, b6 = _unpack_pwm(data)",
+            "                b1, b2, b3, b4, b5, b6 = _unpack_pwm(data)",
             "                o = _pwm_builder()",
             "                o.first_channel = first_channel",
-            f"                o.values = {values}",
+            f"                o.values = {layouts.PWM_VALUES}",
             "                o.__class__ = _PwmSet",
             "                return o",
-            "            n = _len(data)",
             "            cls = _opaque[command]",
-            f"            if cls is not None and n <= {MAX_FRAME_BYTES}:",
+            "            if (",
+            "                cls is not None",
+            "                and data.__class__ is _bytes",
+            f"                and _len(data) <= {MAX_FRAME_BYTES}",
+            "            ):",
             "                o = _opaque_builder()",
-            "                o.payload = data[1:]",
+            "                o.payload = data[_AFTER_COMMAND]",
             "                o.__class__ = cls",
             "                return o",
-            "    except (IndexError, _struct_error):",
+            # A memoryview of another shape or item format fails here and not in the
+            # checked decoder, which reads its bytes.
+            "    except (IndexError, _struct_error, NotImplementedError):",
             "        pass",
             "    except TypeError:",
             "        _check_types(data, sender)",
-            "        raise",
             "    return _checked(data, sender=sender, allow_excess=allow_excess)",
         ]
-        exec(compile("\n".join(lines) + "\n", "<decode Codec fast>", "exec"), namespace)
+        # Status, with its 26 fields, in a function of its own: every local of `decode`
+        # costs each call its frame's set-up and clearing, whatever the frame's type.
+        status = [
+            "def _status(data, sender, allow_excess):",
+            *body(layouts.STATUS_4X, 4, {"command", "header"}),
+        ]
+        source = "\n".join(status + lines) + "\n"
+        exec(compile(source, "<decode Codec fast>", "exec"), namespace)
         decode: Callable[..., Message] = namespace["decode"]
         return decode
 

@@ -18,6 +18,24 @@ import enum
 from dataclasses import dataclass
 from typing import Any
 
+from veronte4x.errors import argument_type_error
+
+_Check = tuple[str, object, type | tuple[type, ...], str]
+
+
+def _require(function: str, *checks: _Check) -> None:
+    """Raise the policy's `TypeError` for the first (argument, value, type, wording) that fails.
+
+    A bool is never taken for an int or a float.
+    """
+    for argument, value, kind, expected in checks:
+        if isinstance(value, bool) or not isinstance(value, kind):
+            raise argument_type_error(function, argument, expected, value)
+
+
+_NUMBER = (int, float)
+_OPTIONAL_INT = (int, type(None))
+
 
 class ByteOrder(enum.Enum):
     """How the bytes of a frame form the integer its fields are cut from."""
@@ -54,6 +72,15 @@ class Linear:
     encoded_max: int
     decoded_min: float
     decoded_max: float
+
+    def __post_init__(self) -> None:
+        _require(
+            "Linear",
+            ("encoded_min", self.encoded_min, int, "an int"),
+            ("encoded_max", self.encoded_max, int, "an int"),
+            ("decoded_min", self.decoded_min, _NUMBER, "a number"),
+            ("decoded_max", self.decoded_max, _NUMBER, "a number"),
+        )
 
     @property
     def factor(self) -> float:
@@ -95,6 +122,21 @@ class Field:
     name: str = ""
     mapping: tuple[tuple[int, Any], ...] = ()
 
+    def __post_init__(self) -> None:
+        _require(
+            "Field",
+            ("kind", self.kind, Kind, "a Kind"),
+            ("bits", self.bits, int, "an int"),
+            ("attr", self.attr, (str, type(None)), "a str or None"),
+            ("index", self.index, _OPTIONAL_INT, "an int or None"),
+            ("value", self.value, int, "an int"),
+            ("maximum", self.maximum, _OPTIONAL_INT, "an int or None"),
+            ("scale", self.scale, (Linear, type(None)), "a Linear or None"),
+            ("description", self.description, str, "a str"),
+            ("name", self.name, str, "a str"),
+            ("mapping", self.mapping, tuple, "a tuple of (wire value, value) pairs"),
+        )
+
     @property
     def label(self) -> str:
         """The field's name as errors and docs show it."""
@@ -104,25 +146,68 @@ class Field:
 
 
 def constant(value: int, bits: int = 8, description: str = "", name: str = "constant") -> Field:
-    """A matcher: a fixed value that a frame must carry."""
+    """A matcher: a fixed value that a frame must carry.
+
+    Raises:
+        TypeError: An argument of the wrong type.
+    """
+    _require(
+        "constant",
+        ("value", value, int, "an int"),
+        ("bits", bits, int, "an int"),
+        ("description", description, str, "a str"),
+        ("name", name, str, "a str"),
+    )
     return Field(Kind.CONSTANT, bits, value=value, description=description, name=name)
 
 
 def skip(bits: int) -> Field:
-    """Padding: ignored when decoding, sent as zeros."""
+    """Padding: ignored when decoding, sent as zeros.
+
+    Raises:
+        TypeError: ``bits`` is not an int.
+    """
+    _require("skip", ("bits", bits, int, "an int"))
     return Field(Kind.PADDING, bits, description="ignored, sent as zeros", name="padding")
 
 
+def _check_integer(
+    function: str, name: object, bits: object, scale: object, description: object
+) -> None:
+    _require(
+        function,
+        ("name", name, str, "a str"),
+        ("bits", bits, int, "an int"),
+        ("scale", scale, (Linear, type(None)), "a Linear or None"),
+        ("description", description, str, "a str"),
+    )
+
+
 def unsigned(name: str, bits: int, scale: Linear | None = None, description: str = "") -> Field:
-    """An unsigned integer of `bits` bits, optionally linearly compressed."""
+    """An unsigned integer of `bits` bits, optionally linearly compressed.
+
+    Raises:
+        TypeError: An argument of the wrong type.
+    """
+    _check_integer("unsigned", name, bits, scale, description)
     return Field(Kind.UNSIGNED, bits, name, scale=scale, description=description)
 
 
 def signed(name: str, bits: int, scale: Linear | None = None, description: str = "") -> Field:
-    """A two's complement integer of `bits` bits, optionally linearly compressed."""
+    """A two's complement integer of `bits` bits, optionally linearly compressed.
+
+    Raises:
+        TypeError: An argument of the wrong type.
+    """
+    _check_integer("signed", name, bits, scale, description)
     return Field(Kind.SIGNED, bits, name, scale=scale, description=description)
 
 
 def float32(name: str, description: str = "") -> Field:
-    """An IEEE-754 binary32 value."""
+    """An IEEE-754 binary32 value.
+
+    Raises:
+        TypeError: An argument of the wrong type.
+    """
+    _require("float32", ("name", name, str, "a str"), ("description", description, str, "a str"))
     return Field(Kind.FLOAT32, 32, name, description=description)

@@ -9,6 +9,9 @@ their tables from them.
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
+
 from veronte4x.codec import messages as m
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant, float32
@@ -175,18 +178,54 @@ def _pwm(packing: PwmPacking) -> FrameLayout:
 PWM_SET: dict[PwmPacking, FrameLayout] = {packing: _pwm(packing) for packing in PwmPacking}
 """The PWM set layout of each packing; one layout serves the five PWM commands."""
 
-PWM_WORDS: dict[PwmPacking, tuple[str, str]] = {
-    PwmPacking.LSB_FIRST: (
-        "<BHBHB",
-        "(h1 & 0xFFF, h1 >> 12 | b3 << 4, h4 & 0xFFF, h4 >> 12 | b6 << 4)",
-    ),
-    PwmPacking.MSB_FIRST: (
-        ">BHBHB",
-        "(h1 >> 4, (h1 & 0xF) << 8 | b3, h4 >> 4, (h4 & 0xF) << 8 | b6)",
-    ),
-}
-"""The four values of each packing from a 7-byte frame read as ``_, h1, b3, h4, b6`` by the
-`struct` format: the same values as `PWM_SET`, for the codec's fast path."""
+PWM_FORMAT = "<xBBBBBB"
+"""The `struct` format that reads a 7-byte PWM frame's bytes 1-6 as ``b1`` .. ``b6``."""
+
+PWM_VALUES = "(_first[b2][b1], _second[b2][b3], _first[b5][b4], _second[b5][b6])"
+"""The four values of a PWM frame from ``b1`` .. ``b6`` and the `pwm_tables` of its packing
+(``_first``, ``_second``): the same values as `PWM_SET`, for the codec's fast path."""
+
+PwmTable = tuple[tuple[int, ...], ...]
+"""Indexed by a middle byte (2 or 5), then by its neighbour: a 12-bit value."""
+
+
+@functools.cache
+def pwm_tables(packing: PwmPacking) -> tuple[PwmTable, PwmTable]:
+    """The two tables of `PWM_VALUES` for a packing, built on first use.
+
+    Every 12-bit value spans one whole byte and half of a middle byte (2 or 5), so a value
+    is a table entry indexed by the middle byte, then the whole one: two tuple lookups
+    instead of shifts, masks and new int objects. The middle byte's other half does not
+    matter, so its 256 rows are 16 shared tuples (about 70 kB for both tables).
+    """
+    numbers = tuple(range(1 << 12))  # one int object per value, shared by every row
+
+    def table(value: Callable[[int, int], int], half: Callable[[int], int]) -> PwmTable:
+        rows = [
+            tuple(numbers[value(nibble, whole)] for whole in range(256)) for nibble in range(16)
+        ]
+        return tuple(rows[half(middle)] for middle in range(256))
+
+    def low(byte: int) -> int:
+        return byte & 0xF
+
+    def high(byte: int) -> int:
+        return byte >> 4
+
+    if packing is PwmPacking.LSB_FIRST:
+        # Little-endian word: a value is a whole byte plus the middle byte's low nibble
+        # above it (b1, b2 & 0xF), or the middle byte's high nibble plus a whole byte above.
+        return (
+            table(lambda nibble, whole: whole | nibble << 8, low),
+            table(lambda nibble, whole: nibble | whole << 4, high),
+        )
+    # Big-endian word: a whole byte above the middle byte's high nibble, or the middle
+    # byte's low nibble above a whole byte.
+    return (
+        table(lambda nibble, whole: whole << 4 | nibble, high),
+        table(lambda nibble, whole: nibble << 8 | whole, low),
+    )
+
 
 OPAQUE_CLASSES: tuple[type[m.OpaqueMessage], ...] = (
     m.ScorpionEscTelemetry,

@@ -9,7 +9,7 @@ from veronte4x.dronecan.definitions import DATA_TYPES, VALUE
 from veronte4x.dronecan.schema import Array, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.transfer import Transfer
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, argument_type_error
 
 T = TypeVar("T")
 
@@ -109,11 +109,14 @@ def from_builtin(cls: type[T], data: dict[str, Any]) -> T:
     No range check is made here: `encode` does that.
 
     Raises:
-        EncodeError: ``cls`` is not a DroneCAN class, or the data does not have its shape.
+        EncodeError: The data does not have the shape of ``cls``.
+        TypeError: ``cls`` is not a DroneCAN message class, or ``data`` not a dict.
     """
-    schema = _STRUCTS.get(cls)
+    schema = _STRUCTS.get(cls) if isinstance(cls, type) else None
     if schema is None:
-        raise EncodeError("from_builtin", "cls", cls, "a DroneCAN message class")
+        raise argument_type_error("from_builtin", "cls", "a DroneCAN message class", cls)
+    if not isinstance(data, dict):
+        raise argument_type_error("from_builtin", "data", "a dict", data)
     try:
         built: T = _build(schema, data, None, "")
     except (KeyError, TypeError) as error:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 from veronte4x.dronecan.messages import (
     BooleanValue,
@@ -24,7 +24,7 @@ from veronte4x.dronecan.messages import (
     StringValue,
     Value,
 )
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, argument_type_error
 
 NODE_NAME = "iq_motion.esc"
 """The GetNodeInfo ``name`` of Vertiq modules (Vertiq's DroneCAN support document, section 2.1)."""
@@ -77,13 +77,22 @@ MAX_ESCS = 20
 """Most entries of a RawCommand (DSDL ``int14[<=20] cmd``)."""
 
 
-def _name(name: str | Parameter) -> bytes:
+_VALUE_KINDS = "an int, float, bool, str, bytes or param.Value"
+
+
+def _name(function: str, name: str | Parameter) -> bytes:
+    if not isinstance(name, str):
+        raise argument_type_error(function, "name", "a str or Parameter", name)
     text = name.value if isinstance(name, Parameter) else name
     return text.encode("utf-8")
 
 
+def _is_number(value: object) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
 def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
-    """Wrap a Python value as a ``param.Value`` member."""
+    """Wrap a Python value as a ``param.Value`` member (`TypeError` for any other type)."""
     if value is None:
         return Empty()
     if isinstance(value, (Empty, IntegerValue, RealValue, BooleanValue, StringValue)):
@@ -98,13 +107,17 @@ def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
         return StringValue(value.encode("utf-8"))
     if isinstance(value, bytes):
         return StringValue(value)
-    raise EncodeError("uavcan.protocol.param.Value", "value", value, "int, float, bool, str")
+    raise argument_type_error("set_parameter", "value", _VALUE_KINDS, value)
 
 
 def get_parameter(name: str | Parameter) -> GetSetRequest:
     """A GetSet request reading parameter ``name`` (the recommended access, Vertiq's DroneCAN
-    support, 2.2)."""
-    return GetSetRequest(index=0, value=Empty(), name=_name(name))
+    support, 2.2).
+
+    Raises:
+        TypeError: ``name`` is not a str.
+    """
+    return GetSetRequest(index=0, value=Empty(), name=_name("get_parameter", name))
 
 
 def set_parameter(
@@ -114,13 +127,23 @@ def set_parameter(
 
     ``value`` may be an int (``IntegerValue``), a float, a bool, a str or a ready
     ``param.Value`` member.
+
+    Raises:
+        TypeError: ``name`` is not a str, or ``value`` none of these.
     """
-    return GetSetRequest(index=0, value=_value(value), name=_name(name))
+    encoded = _name("set_parameter", name)
+    return GetSetRequest(index=0, value=_value(value), name=encoded)
 
 
 def get_parameter_by_index(index: int) -> GetSetRequest:
     """A GetSet request reading the parameter at ``index`` (for discovery only, Vertiq's DroneCAN
-    support, 3)."""
+    support, 3).
+
+    Raises:
+        TypeError: ``index`` is not an int.
+    """
+    if isinstance(index, bool) or not isinstance(index, int):
+        raise argument_type_error("get_parameter_by_index", "index", "an int", index)
     return GetSetRequest(index=index, value=Empty(), name=b"")
 
 
@@ -128,7 +151,12 @@ def is_end_of_parameters(response: GetSetResponse) -> bool:
     """Whether a GetSet response is the empty reply that ends a discovery walk.
 
     The DSDL: an empty name and/or an empty value means there is no such parameter.
+
+    Raises:
+        TypeError: ``response`` is not a GetSetResponse.
     """
+    if not isinstance(response, GetSetResponse):
+        raise argument_type_error("is_end_of_parameters", "response", "a GetSetResponse", response)
     return not response.name or isinstance(response.value, Empty)
 
 
@@ -137,9 +165,20 @@ def discovered_parameters(responses: Sequence[GetSetResponse]) -> dict[str, Valu
 
     Returns:
         Parameter name (decoded as UTF-8, undecodable bytes replaced) to its value.
+
+    Raises:
+        TypeError: ``responses`` is not an iterable of GetSetResponse.
     """
+    if not isinstance(responses, Iterable):
+        raise argument_type_error(
+            "discovered_parameters", "responses", "a sequence of GetSetResponse", responses
+        )
     found: dict[str, Value] = {}
-    for response in responses:
+    for index, response in enumerate(responses):
+        if not isinstance(response, GetSetResponse):
+            raise argument_type_error(
+                "discovered_parameters", f"responses[{index}]", "a GetSetResponse", response
+            )
         if is_end_of_parameters(response):
             break
         found[response.name.decode("utf-8", "replace")] = response.value
@@ -148,7 +187,13 @@ def discovered_parameters(responses: Sequence[GetSetResponse]) -> dict[str, Valu
 
 def restart(bootloader: bool = False) -> RestartNodeRequest:
     """A RestartNode request: normal reboot, or into the ST bootloader (Vertiq's DroneCAN support,
-    2.3)."""
+    2.3).
+
+    Raises:
+        TypeError: ``bootloader`` is not a bool.
+    """
+    if not isinstance(bootloader, bool):
+        raise argument_type_error("restart", "bootloader", "a bool", bootloader)
     return RestartNodeRequest(BOOTLOADER_MAGIC if bootloader else RESTART_MAGIC)
 
 
@@ -162,9 +207,10 @@ def throttle_to_raw(throttle: float) -> int:
 
     Raises:
         EncodeError: ``throttle`` is outside [-1, 1] or not a finite number.
+        TypeError: ``throttle`` is not a number.
     """
-    if isinstance(throttle, bool) or not isinstance(throttle, (int, float)):
-        raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
+    if not _is_number(throttle):
+        raise argument_type_error("throttle_to_raw", "throttle", "a float", throttle)
     if not (math.isfinite(throttle) and -1.0 <= throttle <= 1.0):
         raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
     scaled = throttle * (RAW_COMMAND_MAX if throttle >= 0 else -RAW_COMMAND_MIN)
@@ -172,7 +218,17 @@ def throttle_to_raw(throttle: float) -> int:
 
 
 def raw_to_throttle(raw: int) -> float:
-    """Map a 14-bit setpoint back to a throttle fraction in [-1, 1] (inverse of the scale)."""
+    """Map a 14-bit setpoint back to a throttle fraction in [-1, 1] (inverse of the scale).
+
+    Raises:
+        TypeError: ``raw`` is not an int.
+    """
+    if isinstance(raw, bool) or not isinstance(raw, int):
+        raise argument_type_error("raw_to_throttle", "raw", "an int", raw)
+    return _fraction(raw)
+
+
+def _fraction(raw: int) -> float:
     return raw / (RAW_COMMAND_MAX if raw >= 0 else -RAW_COMMAND_MIN)
 
 
@@ -185,21 +241,40 @@ def raw_command(throttles: Sequence[float] | Mapping[int, float]) -> RawCommand:
             handles as its ``zero_behavior`` says).
 
     Raises:
-        EncodeError: More than 20 ESCs, an index out of 0..19, or a bad fraction.
+        EncodeError: More than 20 ESCs, an index out of 0..19, or a fraction out of [-1, 1].
+        TypeError: ``throttles`` is neither, an index is not an int or a fraction not a
+            number.
     """
     if isinstance(throttles, Mapping):
-        for index in throttles:
-            if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < MAX_ESCS:
+        for index, throttle in throttles.items():
+            if isinstance(index, bool) or not isinstance(index, int):
+                raise argument_type_error("raw_command", "throttles keys", "ints", index)
+            if not 0 <= index < MAX_ESCS:
                 raise EncodeError("RawCommand", "cmd", index, f"ESC indices 0..{MAX_ESCS - 1}")
+            if not _is_number(throttle):
+                raise argument_type_error("raw_command", f"throttles[{index}]", "a float", throttle)
         count = max(throttles, default=-1) + 1
         values = [throttles.get(i, 0.0) for i in range(count)]
-    else:
+    elif isinstance(throttles, Iterable):
         values = list(throttles)
+        for index, throttle in enumerate(values):
+            if not _is_number(throttle):
+                raise argument_type_error("raw_command", f"throttles[{index}]", "a float", throttle)
+    else:
+        raise argument_type_error(
+            "raw_command", "throttles", "a sequence or mapping of floats", throttles
+        )
     if len(values) > MAX_ESCS:
         raise EncodeError("RawCommand", "cmd", values, f"at most {MAX_ESCS} entries")
     return RawCommand(tuple(throttle_to_raw(v) for v in values))
 
 
 def throttles(command: RawCommand) -> tuple[float, ...]:
-    """The throttle fraction of each ESC index in a RawCommand."""
-    return tuple(raw_to_throttle(v) for v in command.cmd)
+    """The throttle fraction of each ESC index in a RawCommand.
+
+    Raises:
+        TypeError: ``command`` is not a RawCommand.
+    """
+    if not isinstance(command, RawCommand):
+        raise argument_type_error("throttles", "command", "a RawCommand", command)
+    return tuple(_fraction(v) for v in command.cmd)
