@@ -47,6 +47,7 @@ check: lint types test docs
 
 bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_codec.py
+	$(BIN)/python benchmarks/bench_decode_floor.py
 	$(BIN)/python benchmarks/bench_dronecan.py
 	$(BIN)/python benchmarks/bench_bitstruct.py
 	$(BIN)/python benchmarks/bench_capture.py
