@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 from veronte4x.capture.records import Record
@@ -49,12 +48,6 @@ class Stats:
                 self.first_timestamp = stamp
             if self.last_timestamp is None or stamp > self.last_timestamp:
                 self.last_timestamp = stamp
-
-    def counted(self, records: Iterable[Record]) -> Iterator[Record]:
-        """Pass records through, counting each."""
-        for record in records:
-            self.add(record)
-            yield record
 
     def report(self) -> str:
         """The counts as a plain-text report."""

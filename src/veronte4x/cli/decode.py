@@ -20,6 +20,7 @@ from veronte4x.capture.readable import format_message, readable_fields
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.interrupts import Interrupts
 from veronte4x.cli.notices import tell_truncation
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 from veronte4x.cli.options import live as live_bus
@@ -58,7 +59,7 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
-    records = counts.counted(tell_truncation(open_records(args, bus_map)))
+    records = tell_truncation(open_records(args, bus_map))
     out = sys.stdout
     clock = _Clock(args.relative_time)
     if args.output == "csv":
@@ -68,19 +69,22 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     live = args.file == "-" or live_bus(args)
     status = EXIT_OK
     try:
-        for record in records:
-            if record.error is not None:
-                if args.on_error == "skip":
-                    continue
-                if args.on_error == "raise":
-                    close()
-                    out.flush()
-                    print(f"veronte4x: {_describe(record, clock)}", file=sys.stderr)
-                    status = EXIT_BAD_FRAME
-                    break
-            write(record)
-            if live:
-                out.flush()
+        with Interrupts() as interrupts:
+            for record in records:
+                with interrupts.whole:  # counted and written, or neither
+                    counts.add(record)
+                    if record.error is not None:
+                        if args.on_error == "skip":
+                            continue
+                        if args.on_error == "raise":
+                            close()
+                            out.flush()
+                            print(f"veronte4x: {_describe(record, clock)}", file=sys.stderr)
+                            status = EXIT_BAD_FRAME
+                            break
+                    write(record)
+                    if live:
+                        out.flush()
     except KeyboardInterrupt:
         close()
         out.flush()
