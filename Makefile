@@ -31,8 +31,9 @@ lint: $(VENV)/.installed-dev
 types: $(VENV)/.installed-dev
 	$(BIN)/mypy
 
+# On one worker per CPU, four at most (each Dask test starts a cluster of its own).
 test: $(VENV)/.installed-dev
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest --numprocesses auto --maxprocesses 4
 
 # Not --quiet: it hides the warnings that --strict should count (mkdocstrings' broken
 # cross-references among them). Every WARNING line of the build fails it, whichever plugin
