@@ -287,7 +287,7 @@ def _damaged(draw: st.DrawFn) -> tuple[list[tuple[int, bytes]], float]:
             can_id ^= 1 << draw(st.integers(0, 30))
         elif change == "tail":
             data = data[:-1] + bytes([draw(st.integers(0, 255))])
-        elif change == "bit":
+        elif change == "bit" and data:
             bit = draw(st.integers(0, 8 * len(data) - 1))
             data = bytes(b ^ (1 << bit % 8) if i == bit // 8 else b for i, b in enumerate(data))
         elif change == "cut":
