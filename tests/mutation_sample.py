@@ -1,10 +1,11 @@
 """A sampled mutation run over the codec and DroneCAN modules.
 
-Every mutant of ``src/veronte4x/codec`` and ``src/veronte4x/dronecan`` is enumerated with
-``ast`` (operator, comparison and boolean swaps, integers off by one, ``True``/``False``,
-``is``/``is not``, ``in``/``not in``, ``not x`` made ``not not x``, a return, raise, break, continue
-or call statement replaced by ``pass``); 222 of them are drawn with seed 4792. Each mutant
-is written into a copy of the package put first on ``PYTHONPATH`` and its tests run in a
+Every mutant of ``src/veronte4x/codec`` and ``src/veronte4x/dronecan`` is enumerated
+with ``ast`` (operator, comparison and boolean swaps, integers off by one,
+``True``/``False``, ``is``/``is not``, ``in``/``not in``, ``not x`` made ``not not x``, a
+return, raise, break, continue or call statement replaced by ``pass``); 222 of them are
+drawn with seed 4792. Each mutant is written into a copy of the package put first on
+``PYTHONPATH``, and its tests (the module's doctests, then its package's tests) run in a
 fresh interpreter, since the package generates layouts and fast paths at import. A test
 failure, an import error or a timeout kills it. Run from the repository root::
 
@@ -36,6 +37,8 @@ PACKAGES = ("codec", "dronecan")
 SEED = 4792
 SIZE = 222
 COMMON_TESTS = ("tests/test_argument_types.py", "tests/test_errors.py")
+_SLOW = ("differential", "oracle")
+"""Test files that compare against a reference implementation: most of the time."""
 
 _PLUGIN = """\
 from hypothesis import settings
@@ -215,14 +218,23 @@ def sample(seed: int = SEED, size: int = SIZE) -> list[Mutant]:
     return [mutant for position, mutant in enumerate(mutants) if position in chosen]
 
 
-def _tests(module: str) -> list[str]:
-    """The test files and folders that a module's mutants are run against."""
-    return [f"tests/{module.split('/')[0]}", *COMMON_TESTS]
+def _tests(copy: Path, target: str) -> list[str]:
+    """What the mutants of ``target`` (a module, or a package for all) are run against.
+
+    First the doctests of the target's copy, then the package's test files with the slow
+    comparisons last: with ``-x`` a mutant dies at its first failing test.
+    """
+    files = sorted((ROOT / "tests" / target.split("/")[0]).glob("test_*.py"))
+    names = [path.relative_to(ROOT).as_posix() for path in files]
+    quick = [name for name in names if not any(word in name for word in _SLOW)]
+    slow = [name for name in names if name not in quick]
+    return [str(copy / "veronte4x" / target), *quick, *COMMON_TESTS, *slow]
 
 
 def _run(copy: Path, tests: list[str], timeout: float) -> str:
     """``killed``, ``survived`` or ``timeout``: the outcome of the tests on the copy."""
     command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
+    command += ["-c", str(ROOT / "pyproject.toml"), "--rootdir", str(ROOT)]
     command += ["-p", "_mutation_profile", "--hypothesis-profile=mutation", *tests]
     environment = dict(os.environ, PYTHONPATH=str(copy), PYTHONDONTWRITEBYTECODE="1")
     try:
@@ -242,7 +254,7 @@ def _baseline(copy: Path) -> dict[str, float]:
     times: dict[str, float] = {}
     for package in PACKAGES:
         start = time.monotonic()
-        if _run(copy, _tests(package), timeout=600) != "survived":
+        if _run(copy, _tests(copy, package), timeout=600) != "survived":
             raise SystemExit(f"the tests of {package} fail on the unmutated package")
         times[package] = time.monotonic() - start
     return times
@@ -279,7 +291,7 @@ def main() -> None:
             target.write_text(mutated_source(PACKAGE / mutant.module, mutant.index))
             package = mutant.module.split("/")[0]
             try:
-                outcome = _run(copy, _tests(mutant.module), timeout=3 * times[package] + 30)
+                outcome = _run(copy, _tests(copy, mutant.module), timeout=3 * times[package] + 30)
             finally:
                 target.write_text(original)
             killed += outcome != "survived"
