@@ -660,3 +660,26 @@ def test_decode_frames_names_what_is_wrong() -> None:
         "(data: 54 22 03 00 00 00 20 4e 20 4a d8 5c e1 10 1b 88)"
     )
     assert _decode_error([(first_id, bytes(8))] * 64) == "frame: 64 frames, not 1..63 (data: empty)"
+
+
+def test_a_bool_field_takes_the_ints_0_and_1_only() -> None:
+    """The fast encoder sends an int for a bool field to the generic serializer, which
+    takes 0 and 1 as False and True."""
+    datas = []
+    for ok in (0, 1):
+        frames = dronecan.encode(
+            dronecan.RestartNodeResponse(ok),  # type: ignore[arg-type]
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+        )
+        datas.append(frames[0].data)
+    assert datas == [bytes.fromhex("00c4"), bytes.fromhex("80c4")]
+    with pytest.raises(dronecan.EncodeError) as error:
+        dronecan.encode(
+            dronecan.RestartNodeResponse(2),  # type: ignore[arg-type]
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+        )
+    assert str(error.value) == "uavcan.protocol.RestartNode.Response.ok = 2: expected a bool"
