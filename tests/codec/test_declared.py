@@ -9,6 +9,7 @@ import pytest
 from veronte4x import codec
 from veronte4x.codec import ByteOrder, Linear
 from veronte4x.codec.compiler import FrameLayout
+from veronte4x.codec.float32 import bits_from_float
 
 ESC = codec.Layout(
     5,
@@ -152,3 +153,20 @@ def test_frame_layout_checks() -> None:
     ):
         with pytest.raises(codec.LayoutError, match=message):
             FrameLayout(codec.Ready, fields).check()
+
+
+def test_a_big_endian_nan_before_another_field_keeps_its_payload() -> None:
+    """The NaN path re-reads exactly the float's four bytes, not the field after them."""
+    layout = codec.Layout(
+        9, "Reading", [codec.float32("value"), codec.unsigned("tag", 8)], byte_order=ByteOrder.BIG
+    )
+    data = bytes.fromhex("097fa0000155")
+    dispatching = codec.Codec(layouts=[layout])
+    decoded: list[Any] = [
+        layout.decode(data),
+        dispatching.decode(data, sender=codec.Sender.AUTOPILOT),
+    ]
+    for message in decoded:
+        assert bits_from_float(message.value) == 0x7FA0_0001
+        assert message.tag == 0x55
+        assert layout.encode(message) == data

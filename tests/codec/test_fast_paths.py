@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 
 from tests.codec.strategies import MESSAGES
 from veronte4x import codec
+from veronte4x.codec import layouts
 from veronte4x.codec.compiler import builder
 
 CODECS = {
@@ -183,3 +184,20 @@ def test_no_builder_under_a_frozen_base() -> None:
     probe.autopilot, probe.score = 1, 2.0
     probe.__class__ = codec.Score
     assert probe == codec.Score(1, 2.0)
+
+
+def test_status_flags_decode_a_byte_at_a_time_and_each_tuple_is_checked_once() -> None:
+    decode_source, encode_source = layouts.STATUS_4X.source_code
+    lines = decode_source.splitlines()
+    assert "    f4, f5, f6, f7, f8, f9, f10, f11 = _BITS[b3]" in lines
+    assert "    f12, f13, f14, f15, f16, f17, f18, f19 = _BITS[b4]" in lines
+    assert "    f20, f21, f22, f23, f24, f25, f26, f27 = _BITS[b5]" in lines
+    checks = [
+        line for line in encode_source.splitlines() if line.startswith(("def ", "    t_alive ="))
+    ]
+    assert checks == [
+        "def encode_bits(m):",
+        "    t_alive = m.alive",
+        "def encode(m):",
+        "    t_alive = m.alive",
+    ]

@@ -3,7 +3,8 @@
 import pytest
 
 from veronte4x import codec
-from veronte4x.codec import Sender
+from veronte4x.codec import Sender, layouts
+from veronte4x.codec.compiler import FrameLayout
 
 ARB, AP = Sender.ARBITER, Sender.AUTOPILOT
 
@@ -91,3 +92,23 @@ def test_messages_are_frozen_slotted_and_hashable() -> None:
     assert not hasattr(msg, "__dict__")
     assert {msg, codec.Score(autopilot=1, score=0.5)} == {msg}
     assert all(isinstance(m, codec.Message) for _, _, m in GOLDEN)
+
+
+FIXED_LAYOUTS = [
+    layouts.READY,
+    layouts.SCORE,
+    layouts.STATUS_4X,
+    layouts.STATUS_CEX,
+    layouts.ARBITRATION_VARIABLE,
+    layouts.VERSION_REQUEST,
+    layouts.VERSION_RESPONSE,
+    *layouts.OPAQUE.values(),
+]
+
+
+@pytest.mark.parametrize("layout", FIXED_LAYOUTS, ids=lambda layout: layout.name)
+def test_each_message_class_is_frozen_and_its_command_is_its_layouts(layout: FrameLayout) -> None:
+    cls = layout.message
+    assert cls.__dataclass_params__.frozen  # type: ignore[attr-defined]
+    assert layout.fields[0].label == "command"
+    assert layout.fields[0].value == cls.COMMAND

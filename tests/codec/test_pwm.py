@@ -3,7 +3,7 @@
 import pytest
 
 from veronte4x import codec
-from veronte4x.codec import PwmPacking, PwmSet
+from veronte4x.codec import PwmPacking, PwmSet, layouts
 
 LSB = codec.Codec(pwm_packing=PwmPacking.LSB_FIRST)
 MSB = codec.Codec(pwm_packing=PwmPacking.MSB_FIRST)
@@ -80,3 +80,12 @@ def test_microseconds_custom_range() -> None:
         codec.from_microseconds(2000.5, min_us=1000, max_us=2000)
     with pytest.raises(codec.EncodeError, match=r"expected an int in 0\.\.4095"):
         codec.to_microseconds(4096)
+
+
+@pytest.mark.parametrize("packing", list(PwmPacking))
+def test_the_command_field_names_the_channels_of_each_command(packing: PwmPacking) -> None:
+    """The description that the documentation's layout tables show."""
+    assert layouts.PWM_SET[packing].fields[0].description == (
+        "message type, which names the first channel: 2 = PWMs 0-3, 3 = PWMs 4-7, "
+        "11 = PWMs 8-11, 12 = PWMs 12-15, 13 = PWMs 16-19"
+    )

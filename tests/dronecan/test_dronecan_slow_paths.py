@@ -15,9 +15,10 @@ import dronecan as reference
 from veronte4x import dronecan
 from veronte4x.dronecan import Problem, TransferKind
 from veronte4x.dronecan import codec as dronecan_codec
+from veronte4x.dronecan import messages as dronecan_messages
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.crc import crc16
-from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.definitions import DATA_TYPES, NESTED_SIGNATURES
 from veronte4x.dronecan.float16 import float16_bits
 from veronte4x.dronecan.serializer import Serializer
 from veronte4x.dronecan.tail import split_payload
@@ -206,6 +207,7 @@ FAST_MESSAGES = [
     dronecan.Temperature(3, 301.5, 0),
     dronecan.RawCommand((1000, -2000, 8191, 0)),
     dronecan.RawCommand(tuple(range(20))),
+    dronecan.EscStatus(3, 24.5, -12.25, 310.0, -4321, 55, 2),  # negative: masked, not refused
 ]
 
 
@@ -287,7 +289,7 @@ def _damaged(draw: st.DrawFn) -> tuple[list[tuple[int, bytes]], float]:
             can_id ^= 1 << draw(st.integers(0, 30))
         elif change == "tail":
             data = data[:-1] + bytes([draw(st.integers(0, 255))])
-        elif change == "bit":
+        elif change == "bit" and data:
             bit = draw(st.integers(0, 8 * len(data) - 1))
             data = bytes(b ^ (1 << bit % 8) if i == bit // 8 else b for i, b in enumerate(data))
         elif change == "cut":
@@ -341,6 +343,14 @@ def test_the_generic_serializer_takes_bools_only_for_bool_fields() -> None:
             saturate=saturate,
         )
         assert frames[0].data == bytes.fromhex("80c4")
+        false = dronecan.encode(
+            dronecan.RestartNodeResponse(False),
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+            saturate=saturate,
+        )
+        assert false[0].data == bytes.fromhex("00c4")
         with pytest.raises(dronecan.EncodeError, match="an int for"):
             dronecan.encode(
                 dronecan.NodeStatus(True, OK, OPERATIONAL, 0, 0),
@@ -450,3 +460,226 @@ def test_enum_values_are_the_dsdl_constants() -> None:
         assert member.value == getattr(status, f"HEALTH_{member.name}")
     for mode in dronecan.Mode:
         assert mode.value == getattr(status, f"MODE_{mode.name}")
+
+
+def test_the_defaults() -> None:
+    r = dronecan.Reassembler()
+    assert (r.timeout, r.max_sessions, r.problems.maxlen) == (2.0, 1024, 256)
+
+
+@pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
+def test_a_transfer_repeated_at_exactly_the_timeout_is_still_a_repeat(kind: type) -> None:
+    r = dronecan.Reassembler()
+    ((can_id, frame),) = _frames(dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7))
+    data = kind(frame)
+    assert r.feed(can_id, data, 10.0) is not None
+    assert r.feed(can_id, data, 11.0) is None
+    assert r.feed(can_id, data, 12.0) is None
+    assert r.counts[Problem.DUPLICATE_FRAME] == 2
+    out = r.feed(can_id, data, 12.5)  # past the timeout: a new transfer
+    assert out is not None
+    assert out.timestamp == 12.5
+
+
+def test_an_active_session_evicted_late_in_time_counts_as_evicted() -> None:
+    r = dronecan.Reassembler(max_sessions=1)
+    assert r.feed(*_frames(ESC, source=1)[0], 100.0) is None
+    assert r.feed(*_frames(ESC, source=2)[0], 100.5) is None
+    assert r.counts[Problem.EVICTED] == 1
+    assert sum(r.counts.values()) == 1
+
+
+@pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
+def test_a_payload_one_byte_too_long_is_refused_at_its_last_frame(kind: type) -> None:
+    """NodeStatus has 7 bytes: 8 with a good CRC are PAYLOAD_TOO_LONG, not BAD_PAYLOAD."""
+    payload = bytes(range(8))
+    seed = dronecan_codec.BY_CLASS[dronecan.NodeStatus].crc_seed
+    first, last = split_payload(payload, crc_hqx(payload, seed), 0)
+    can_id = dronecan.message_can_id(16, 341, 10)
+    r = dronecan.Reassembler()
+    assert r.feed(can_id, kind(first), 0.0) is None
+    assert r.feed(can_id, kind(last), 0.0) is None
+    assert r.counts[Problem.PAYLOAD_TOO_LONG] == 1
+    assert sum(r.counts.values()) == r.reported == 1
+    assert r.problems[-1].data == last
+
+
+_MESSAGE_CLASSES = [
+    cls
+    for cls in vars(dronecan_messages).values()
+    if isinstance(cls, type)
+    and dataclasses.is_dataclass(cls)
+    and cls.__module__ == dronecan_messages.__name__
+]
+
+
+@pytest.mark.parametrize("cls", _MESSAGE_CLASSES, ids=lambda cls: cls.__name__)
+def test_every_message_class_is_a_frozen_slotted_dataclass(cls: type) -> None:
+    assert cls.__dataclass_params__.frozen  # type: ignore[attr-defined]
+    assert "__slots__" in vars(cls)
+
+
+def test_nested_signatures_match_the_dronecan_package() -> None:
+    for name, signature in NESTED_SIGNATURES.items():
+        assert reference.TYPENAMES[name].get_data_type_signature() == signature, name
+
+
+_PROTOCOL = "uavcan.protocol."
+
+
+@pytest.mark.parametrize(
+    ("enum", "type_name", "part", "prefix"),
+    [
+        (
+            dronecan.FirmwareUpdateError,
+            _PROTOCOL + "file.BeginFirmwareUpdate",
+            "response_constants",
+            "ERROR_",
+        ),
+        (dronecan_messages.FileError, _PROTOCOL + "file.Error", "constants", ""),
+        (
+            dronecan_messages.Opcode,
+            _PROTOCOL + "param.ExecuteOpcode",
+            "request_constants",
+            "OPCODE_",
+        ),
+        (dronecan_messages.EntryTypeFlag, _PROTOCOL + "file.EntryType", "constants", "FLAG_"),
+        (
+            dronecan_messages.TemperatureErrorFlag,
+            "uavcan.equipment.device.Temperature",
+            "constants",
+            "ERROR_FLAG_",
+        ),
+        (
+            dronecan_messages.SoftwareVersionFlag,
+            _PROTOCOL + "SoftwareVersion",
+            "constants",
+            "OPTIONAL_FIELD_FLAG_",
+        ),
+    ],
+    ids=lambda value: getattr(value, "__name__", None),
+)
+def test_more_enum_values_are_the_dsdl_constants(
+    enum: Any, type_name: str, part: str, prefix: str
+) -> None:
+    constants = getattr(reference.TYPENAMES[type_name], part)
+    ours = {prefix + member.name: member.value for member in enum}
+    assert ours == {constant.name: constant.value for constant in constants}
+
+
+_CONSTANTS_PARTS = {
+    TransferKind.MESSAGE: "constants",
+    TransferKind.REQUEST: "request_constants",
+    TransferKind.RESPONSE: "response_constants",
+}
+_CONSTANT_HOLDERS = [
+    *((t.schema.cls, t.full_name, _CONSTANTS_PARTS[t.kind]) for t in DATA_TYPES),
+    (dronecan_messages.SoftwareVersion, "uavcan.protocol.SoftwareVersion", "constants"),
+    (dronecan_messages.Path, "uavcan.protocol.file.Path", "constants"),
+]
+
+
+@pytest.mark.parametrize(
+    ("cls", "type_name", "part"),
+    _CONSTANT_HOLDERS,
+    ids=lambda value: getattr(value, "__name__", None),
+)
+def test_class_constants_are_the_dsdl_constants(cls: type, type_name: str, part: str) -> None:
+    ours = {name: value for name, value in vars(cls).items() if name.isupper()}
+    theirs = {c.name: c.value for c in getattr(reference.TYPENAMES[type_name], part)}
+    shared = ours.keys() & theirs.keys()  # file.Read's MAX_DATA is this package's own
+    assert {name: ours[name] for name in shared} == {name: theirs[name] for name in shared}
+
+
+def test_a_trailing_array_with_a_partial_item_is_refused() -> None:
+    with pytest.raises(dronecan.DecodeError) as error:
+        dronecan.decode_payload(TransferKind.MESSAGE, 1030, bytes(3))
+    assert str(error.value) == (
+        "uavcan.equipment.esc.RawCommand.cmd: 24 bits left, not a whole int14 (data: 00 00 00)"
+    )
+
+
+def test_a_union_value_of_no_member_type_is_refused() -> None:
+    with pytest.raises(dronecan.EncodeError) as error:
+        dronecan.encode(
+            dronecan.GetSetRequest(value=3),  # type: ignore[arg-type]
+            source_node_id=1,
+            destination_node_id=2,
+            transfer_id=0,
+        )
+    assert str(error.value) == (
+        "uavcan.protocol.param.GetSet.Request.value = 3: "
+        "expected one of Empty, IntegerValue, RealValue, BooleanValue, StringValue"
+    )
+
+
+def test_an_anonymous_frame_is_no_message_of_the_type_its_bits_resemble() -> None:
+    """The fast path skips node id 0: anonymous type ids have two bits (here 341 & 3)."""
+    ((_, data),) = _frames(dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7))
+    can_id = dronecan.anonymous_can_id(16, 341 & 3, 341 >> 2)
+    with pytest.raises(dronecan.DecodeError, match="no message type with id 1"):
+        dronecan.decode_frames([(can_id, data)])
+
+
+def test_valid_transport_values_skip_their_full_check(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The checked path (saturate=True) tests the common case inline first."""
+    monkeypatch.setattr(transfer_module, "_check_transport", _refuse)
+    for source, tid, priority in ((1, 0, 0), (127, 31, 31)):
+        frames = dronecan.encode(
+            ESC, source_node_id=source, transfer_id=tid, priority=priority, saturate=True
+        )
+        transfer = dronecan.decode_frames([(f.can_id, f.data) for f in frames])
+        assert transfer.message == ESC
+        assert (transfer.source_node_id, transfer.transfer_id, transfer.priority) == (
+            source,
+            tid,
+            priority,
+        )
+
+
+def _decode_error(frames: list[tuple[int, bytes]]) -> str:
+    with pytest.raises(dronecan.DecodeError) as error:
+        dronecan.decode_frames(frames)
+    return str(error.value)
+
+
+def test_decode_frames_names_what_is_wrong() -> None:
+    """The checked path's messages, exactly: a 9-byte last frame, a toggled tail, a CRC."""
+    *head, (can_id, last) = _frames(ESC)
+    (first_id, first), *rest = _frames(ESC)
+    name = "uavcan.equipment.esc.Status"
+    long_last = last[:-1] + bytes(9 - len(last)) + last[-1:]
+    assert _decode_error([*head, (can_id, long_last)]) == (
+        f"{name}: frame 2 has 9 bytes (data: 1b 88 00 00 00 00 00 00 40)"
+    )
+    assert _decode_error([*head, (can_id, last[:-1] + bytes([last[-1] ^ 0x20]))]) == (
+        f"{name}: frame 2 tail byte 0x60, expected 0x40 (data: 1b 88 60)"
+    )
+    assert _decode_error([(first_id, bytes([first[0] ^ 1]) + first[1:]), *rest]) == (
+        f"{name}.crc: transfer CRC 0x2254, computed 0x2255 "
+        "(data: 54 22 03 00 00 00 20 4e 20 4a d8 5c e1 10 1b 88)"
+    )
+    assert _decode_error([(first_id, bytes(8))] * 64) == "frame: 64 frames, not 1..63 (data: empty)"
+
+
+def test_a_bool_field_takes_the_ints_0_and_1_only() -> None:
+    """The fast encoder sends an int for a bool field to the generic serializer, which
+    takes 0 and 1 as False and True."""
+    datas = []
+    for ok in (0, 1):
+        frames = dronecan.encode(
+            dronecan.RestartNodeResponse(ok),  # type: ignore[arg-type]
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+        )
+        datas.append(frames[0].data)
+    assert datas == [bytes.fromhex("00c4"), bytes.fromhex("80c4")]
+    with pytest.raises(dronecan.EncodeError) as error:
+        dronecan.encode(
+            dronecan.RestartNodeResponse(2),  # type: ignore[arg-type]
+            source_node_id=2,
+            destination_node_id=1,
+            transfer_id=4,
+        )
+    assert str(error.value) == "uavcan.protocol.RestartNode.Response.ok = 2: expected a bool"

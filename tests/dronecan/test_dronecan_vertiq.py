@@ -200,3 +200,10 @@ def test_saturation_is_opt_in() -> None:
     assert dronecan.decode_frames(frames).message == dronecan.EscStatus(
         2**32 - 1, 1.0, 1.0, 1.0, -(2**17), 127, 31
     )
+
+
+@pytest.mark.parametrize("index", [-1, 20, True])
+def test_raw_command_refuses_an_esc_index_out_of_range(index: int) -> None:
+    with pytest.raises(dronecan.EncodeError) as error:
+        vertiq.raw_command({index: 0.5})
+    assert str(error.value) == f"RawCommand.cmd = {index!r}: expected ESC indices 0..19"

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import pytest
 
 from veronte4x import dronecan
+from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.compiled import bit_runs
 from veronte4x.dronecan.crc import crc16, signature_seed
 from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.tail import split_payload, tail_byte
@@ -169,3 +172,69 @@ def test_services_need_a_destination() -> None:
     with pytest.raises(dronecan.EncodeError) as info:
         dronecan.encode(dronecan.RestartNodeResponse(True), source_node_id=1, transfer_id=0)
     assert info.value.field == "destination_node_id"
+
+
+# Each CAN ID builder, arguments in range, and (name, low, high) of its int arguments.
+_RANGES: list[tuple[Any, tuple[Any, ...], dict[int, tuple[str, int, int]]]] = [
+    (
+        dronecan.message_can_id,
+        (0, 341, 1),
+        {0: ("priority", 0, 31), 1: ("data_type_id", 0, 0xFFFF), 2: ("source_node_id", 1, 127)},
+    ),
+    (
+        dronecan.anonymous_can_id,
+        (0, 1, 0),
+        {0: ("priority", 0, 31), 1: ("data_type_id", 0, 3), 2: ("discriminator", 0, 0x3FFF)},
+    ),
+    (
+        dronecan.service_can_id,
+        (0, 1, True, 1, 2),
+        {
+            0: ("priority", 0, 31),
+            1: ("data_type_id", 0, 0xFF),
+            3: ("source_node_id", 1, 127),
+            4: ("destination_node_id", 1, 127),
+        },
+    ),
+]
+_RANGE_CASES = [
+    (function, args, position, *limits)
+    for function, args, ranges in _RANGES
+    for position, limits in ranges.items()
+]
+
+
+@pytest.mark.parametrize(
+    ("function", "args", "position", "name", "low", "high"),
+    _RANGE_CASES,
+    ids=[f"{case[0].__name__}-{case[3]}" for case in _RANGE_CASES],
+)
+def test_can_id_builders_take_each_range_edge_and_refuse_one_beyond(
+    function: Any, args: tuple[Any, ...], position: int, name: str, low: int, high: int
+) -> None:
+    for value in (low, high):
+        changed = (*args[:position], value, *args[position + 1 :])
+        assert getattr(dronecan.parse_can_id(function(*changed)), name) == value
+    for value in (low - 1, high + 1):
+        changed = (*args[:position], value, *args[position + 1 :])
+        with pytest.raises(dronecan.EncodeError) as error:
+            function(*changed)
+        assert str(error.value) == f"CanId.{name} = {value}: expected an int in {low}..{high}"
+
+
+def test_bit_runs_are_as_long_as_the_bit_order_allows() -> None:
+    """One shift and mask per run in the generated code: consecutive bits merge."""
+    assert bit_runs(0, 18) == [(0, 16, 0), (16, 2, 22)]
+    assert bit_runs(3, 18) == [(0, 3, 13), (3, 5, 0), (8, 3, 21), (11, 5, 8), (16, 2, 19)]
+
+
+def test_a_trailing_array_takes_no_length_in_the_largest_payload() -> None:
+    """Tail array optimization: RawCommand's 20 int14 are 35 bytes, with no length field."""
+    classes = (dronecan.NodeStatus, dronecan.EscStatus, dronecan.RawCommand)
+    assert [BY_CLASS[cls].max_payload for cls in classes] == [7, 14, 35]
+
+
+def test_schemas_are_frozen() -> None:
+    """The generated codecs are built from them once, at import: they must not change."""
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        DATA_TYPES[0].schema.name = "changed"  # type: ignore[misc]
