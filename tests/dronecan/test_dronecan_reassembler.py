@@ -302,3 +302,18 @@ def test_arbitrary_frames_never_raise(frames: list[tuple[int, bytes, float]]) ->
         with contextlib.suppress(dronecan.DecodeError):
             dronecan.decode_frames([(can_id, data)])
     assert r.session_count <= r.max_sessions
+
+
+def test_a_lost_transfer_0_is_not_taken_for_a_delivered_transfer_31() -> None:
+    """A lost transfer is marked apart from every transfer id (0..31): transfer 31 right
+    after a lost transfer 0 is new, not a repeat of what was delivered last."""
+    r = dronecan.Reassembler()
+    status = dronecan.EscStatus(1, 1.0, 2.0, 3.0, 4, 5, 6)
+    delivered = [r.feed(c, d, timestamp=0.0) for c, d in _frames(status, 10, 30)]
+    assert delivered[-1] is not None and delivered[-1].transfer_id == 30
+    lost = _frames(status, 10, 0)
+    del lost[1]  # transfer 0 loses its middle frame
+    assert [r.feed(c, d, timestamp=0.1) for c, d in lost] == [None, None]
+    assert _broken(r) == 1
+    last = [r.feed(c, d, timestamp=0.2) for c, d in _frames(status, 10, 31)][-1]
+    assert last is not None and last.transfer_id == 31 and last.message == status
