@@ -71,9 +71,7 @@ class CaptureDecoder:
                     if extended and dronecan:
                         # _dronecan, inlined: no generator per frame.
                         if channel != last_channel or reassembler is None:
-                            reassembler = self.reassemblers.get(channel)
-                            if reassembler is None:
-                                reassembler = self._reassembler(channel)
+                            reassembler = self._reassembler(channel)
                             last_channel, feed = channel, reassembler.feed
                         before = reassembler.reported
                         transfer = feed(can_id, data, 0.0 if timestamp is None else timestamp)
@@ -147,9 +145,7 @@ class CaptureDecoder:
                                 continue
                             # _dronecan, inlined: no Frame, no generator per frame.
                             if interface != last_channel or reassembler is None:
-                                reassembler = self.reassemblers.get(interface)
-                                if reassembler is None:
-                                    reassembler = self._reassembler(interface)
+                                reassembler = self._reassembler(interface)
                                 last_channel, feed = interface, reassembler.feed
                             before = reassembler.reported
                             transfer = feed(can_id, data, seconds)
@@ -183,8 +179,10 @@ class CaptureDecoder:
         return Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
 
     def _reassembler(self, channel: str) -> Reassembler:
-        """A new reassembler for a channel's first DroneCAN frame."""
-        reassembler = self.reassemblers[channel] = Reassembler()
+        """The reassembler of a channel, made on its first DroneCAN frame."""
+        reassembler = self.reassemblers.get(channel)
+        if reassembler is None:
+            reassembler = self.reassemblers[channel] = Reassembler()
         return reassembler
 
     @staticmethod
@@ -193,24 +191,6 @@ class CaptureDecoder:
         new = reassembler.reported - before
         for report in list(reassembler.problems)[-new:]:
             yield problem_record(report, channel)
-
-    @staticmethod
-    def _veronte(
-        timestamp: float | None,
-        channel: str,
-        can_id: int,
-        data: bytes,
-        route: Route,
-        excess: bool,
-    ) -> Record:
-        role, index, decode = route
-        try:
-            message = decode(data, excess)
-        except DecodeError as failure:
-            return _failed(timestamp, channel, can_id, role, index, data, failure)
-        return _new(
-            Record, (timestamp, channel, can_id, role, index, None, message, None, "", data, None)
-        )
 
     @staticmethod
     def _bad_line(item: BadLine) -> Record:
