@@ -105,9 +105,7 @@ class Codec:
         # arbitration, PWM and opaque layouts inlined, so a frame costs one Python call.
         self._checked = self._compile_checked()
         self.__dict__["decode"] = self._compile_fast(self._checked)
-        self._decoders = {
-            sender: self._compile_fast(self._checked, sender) for sender in (_ARBITER, _AUTOPILOT)
-        }
+        self._decoders: dict[Sender, Decoder] = {}  # made by `decoder` on first use
 
     def _install_built_in(self) -> None:
         status_4x, encode_4x = layouts.STATUS_4X.functions
@@ -381,7 +379,10 @@ class Codec:
         """
         if not isinstance(sender, Sender):
             raise argument_type_error("decoder", "sender", "a Sender", sender)
-        return self._decoders[sender]
+        decoder = self._decoders.get(sender)
+        if decoder is None:
+            decoder = self._decoders[sender] = self._compile_fast(self._checked, sender)
+        return decoder
 
     def encode(self, message: Message) -> bytes:
         """Encode a message into a frame's data bytes, validating every field.
