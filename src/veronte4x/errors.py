@@ -96,6 +96,25 @@ def argument_type_error(function: str, argument: str, expected: str, value: obje
     return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
 
 
+TypeCheck = tuple[str, object, type | tuple[type, ...], str]
+"""(argument, value, the type or types it must have, what the message says is expected)."""
+
+
+def check_types(function: str, *checks: TypeCheck) -> None:
+    """Raise `argument_type_error` for the first argument that fails its check; a bool never
+    passes for an int or a float.
+
+    Examples:
+        >>> check_types("skip", ("bits", 8, int, "an int"))
+        >>> check_types("skip", ("bits", True, int, "an int"))
+        Traceback (most recent call last):
+        TypeError: skip(): bits must be an int, not bool
+    """
+    for argument, value, kind, expected in checks:
+        if isinstance(value, bool) or not isinstance(value, kind):
+            raise argument_type_error(function, argument, expected, value)
+
+
 class SourceError(Veronte4xError, ValueError):
     """A capture that cannot be read as one: a directory, or a format veronte4x does not know.
 

@@ -17,7 +17,7 @@ from typing import Any
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant
 from veronte4x.codec.messages import Message
-from veronte4x.errors import BytesLike, LayoutError, argument_type_error
+from veronte4x.errors import BytesLike, LayoutError, argument_type_error, check_types
 
 _DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
 
@@ -63,13 +63,12 @@ class Layout:
             LayoutError: A layout that cannot describe a Veronte frame.
             TypeError: An argument of the wrong type.
         """
-        for argument, value, expected, kind in (
-            ("command", command, "an int", int),
-            ("name", name, "a str", str),
-            ("byte_order", byte_order, "a ByteOrder", ByteOrder),
-        ):
-            if not isinstance(value, kind) or isinstance(value, bool):
-                raise argument_type_error("Layout", argument, expected, value)
+        check_types(
+            "Layout",
+            ("command", command, int, "an int"),
+            ("name", name, str, "a str"),
+            ("byte_order", byte_order, ByteOrder, "a ByteOrder"),
+        )
         fields = tuple(fields)
         for f in fields:
             if not isinstance(f, Field):

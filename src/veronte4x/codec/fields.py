@@ -18,20 +18,7 @@ import enum
 from dataclasses import dataclass
 from typing import Any
 
-from veronte4x.errors import argument_type_error
-
-_Check = tuple[str, object, type | tuple[type, ...], str]
-
-
-def _require(function: str, *checks: _Check) -> None:
-    """Raise the policy's `TypeError` for the first (argument, value, type, wording) that fails.
-
-    A bool is never taken for an int or a float.
-    """
-    for argument, value, kind, expected in checks:
-        if isinstance(value, bool) or not isinstance(value, kind):
-            raise argument_type_error(function, argument, expected, value)
-
+from veronte4x.errors import check_types
 
 _NUMBER = (int, float)
 _OPTIONAL_INT = (int, type(None))
@@ -74,7 +61,7 @@ class Linear:
     decoded_max: float
 
     def __post_init__(self) -> None:
-        _require(
+        check_types(
             "Linear",
             ("encoded_min", self.encoded_min, int, "an int"),
             ("encoded_max", self.encoded_max, int, "an int"),
@@ -123,7 +110,7 @@ class Field:
     mapping: tuple[tuple[int, Any], ...] = ()
 
     def __post_init__(self) -> None:
-        _require(
+        check_types(
             "Field",
             ("kind", self.kind, Kind, "a Kind"),
             ("bits", self.bits, int, "an int"),
@@ -151,7 +138,7 @@ def constant(value: int, bits: int = 8, description: str = "", name: str = "cons
     Raises:
         TypeError: An argument of the wrong type.
     """
-    _require(
+    check_types(
         "constant",
         ("value", value, int, "an int"),
         ("bits", bits, int, "an int"),
@@ -167,14 +154,14 @@ def skip(bits: int) -> Field:
     Raises:
         TypeError: ``bits`` is not an int.
     """
-    _require("skip", ("bits", bits, int, "an int"))
+    check_types("skip", ("bits", bits, int, "an int"))
     return Field(Kind.PADDING, bits, description="ignored, sent as zeros", name="padding")
 
 
 def _check_integer(
     function: str, name: object, bits: object, scale: object, description: object
 ) -> None:
-    _require(
+    check_types(
         function,
         ("name", name, str, "a str"),
         ("bits", bits, int, "an int"),
@@ -209,5 +196,5 @@ def float32(name: str, description: str = "") -> Field:
     Raises:
         TypeError: An argument of the wrong type.
     """
-    _require("float32", ("name", name, str, "a str"), ("description", description, str, "a str"))
+    check_types("float32", ("name", name, str, "a str"), ("description", description, str, "a str"))
     return Field(Kind.FLOAT32, 32, name, description=description)

@@ -24,7 +24,7 @@ from veronte4x.dronecan.messages import (
     StringValue,
     Value,
 )
-from veronte4x.errors import EncodeError, argument_type_error
+from veronte4x.errors import EncodeError, argument_type_error, check_types
 
 NODE_NAME = "iq_motion.esc"
 """The GetNodeInfo ``name`` of Vertiq modules (Vertiq's DroneCAN support document, section 2.1)."""
@@ -78,6 +78,7 @@ MAX_ESCS = 20
 
 
 _VALUE_KINDS = "an int, float, bool, str, bytes or param.Value"
+_NUMBER = (int, float)
 
 
 def _name(function: str, name: str | Parameter) -> bytes:
@@ -85,10 +86,6 @@ def _name(function: str, name: str | Parameter) -> bytes:
         raise argument_type_error(function, "name", "a str or Parameter", name)
     text = name.value if isinstance(name, Parameter) else name
     return text.encode("utf-8")
-
-
-def _is_number(value: object) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
@@ -142,8 +139,7 @@ def get_parameter_by_index(index: int) -> GetSetRequest:
     Raises:
         TypeError: ``index`` is not an int.
     """
-    if isinstance(index, bool) or not isinstance(index, int):
-        raise argument_type_error("get_parameter_by_index", "index", "an int", index)
+    check_types("get_parameter_by_index", ("index", index, int, "an int"))
     return GetSetRequest(index=index, value=Empty(), name=b"")
 
 
@@ -209,8 +205,7 @@ def throttle_to_raw(throttle: float) -> int:
         EncodeError: ``throttle`` is outside [-1, 1] or not a finite number.
         TypeError: ``throttle`` is not a number.
     """
-    if not _is_number(throttle):
-        raise argument_type_error("throttle_to_raw", "throttle", "a float", throttle)
+    check_types("throttle_to_raw", ("throttle", throttle, _NUMBER, "a float"))
     if not (math.isfinite(throttle) and -1.0 <= throttle <= 1.0):
         raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
     scaled = throttle * (RAW_COMMAND_MAX if throttle >= 0 else -RAW_COMMAND_MIN)
@@ -223,8 +218,7 @@ def raw_to_throttle(raw: int) -> float:
     Raises:
         TypeError: ``raw`` is not an int.
     """
-    if isinstance(raw, bool) or not isinstance(raw, int):
-        raise argument_type_error("raw_to_throttle", "raw", "an int", raw)
+    check_types("raw_to_throttle", ("raw", raw, int, "an int"))
     return _fraction(raw)
 
 
@@ -247,19 +241,16 @@ def raw_command(throttles: Sequence[float] | Mapping[int, float]) -> RawCommand:
     """
     if isinstance(throttles, Mapping):
         for index, throttle in throttles.items():
-            if isinstance(index, bool) or not isinstance(index, int):
-                raise argument_type_error("raw_command", "throttles keys", "ints", index)
+            check_types("raw_command", ("throttles keys", index, int, "ints"))
             if not 0 <= index < MAX_ESCS:
                 raise EncodeError("RawCommand", "cmd", index, f"ESC indices 0..{MAX_ESCS - 1}")
-            if not _is_number(throttle):
-                raise argument_type_error("raw_command", f"throttles[{index}]", "a float", throttle)
+            check_types("raw_command", (f"throttles[{index}]", throttle, _NUMBER, "a float"))
         count = max(throttles, default=-1) + 1
         values = [throttles.get(i, 0.0) for i in range(count)]
     elif isinstance(throttles, Iterable):
         values = list(throttles)
         for index, throttle in enumerate(values):
-            if not _is_number(throttle):
-                raise argument_type_error("raw_command", f"throttles[{index}]", "a float", throttle)
+            check_types("raw_command", (f"throttles[{index}]", throttle, _NUMBER, "a float"))
     else:
         raise argument_type_error(
             "raw_command", "throttles", "a sequence or mapping of floats", throttles
