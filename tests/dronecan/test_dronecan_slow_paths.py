@@ -335,22 +335,15 @@ def test_decode_frames_refuses_can_ids_beyond_29_bits(extra: int, message: Any) 
 def test_the_generic_serializer_takes_bools_only_for_bool_fields() -> None:
     """saturate=True goes through the generic serializer, as do the types without fast paths."""
     for saturate in (False, True):
-        frames = dronecan.encode(
-            dronecan.RestartNodeResponse(True),
-            source_node_id=2,
-            destination_node_id=1,
-            transfer_id=4,
-            saturate=saturate,
-        )
-        assert frames[0].data == bytes.fromhex("80c4")
-        false = dronecan.encode(
-            dronecan.RestartNodeResponse(False),
-            source_node_id=2,
-            destination_node_id=1,
-            transfer_id=4,
-            saturate=saturate,
-        )
-        assert false[0].data == bytes.fromhex("00c4")
+        for ok, wire in ((True, "80c4"), (False, "00c4")):
+            frames = dronecan.encode(
+                dronecan.RestartNodeResponse(ok),
+                source_node_id=2,
+                destination_node_id=1,
+                transfer_id=4,
+                saturate=saturate,
+            )
+            assert frames[0].data == bytes.fromhex(wire)
         with pytest.raises(dronecan.EncodeError, match="an int for"):
             dronecan.encode(
                 dronecan.NodeStatus(True, OK, OPERATIONAL, 0, 0),
