@@ -1,5 +1,7 @@
 """Bad input anywhere gives records, never an exception."""
 
+import io
+
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -24,14 +26,47 @@ candump_like = st.builds(
 lines = st.lists(st.one_of(candump_like, st.text(max_size=40)), max_size=30)
 
 
+BREAKS = st.sampled_from(["\n", "\n", "\n", "\r\n", "\r"])
+"""Line breaks as files have them: mostly LF, some CRLF, a lone CR now and then."""
+
+
+def _as_bytes(data: st.DataObject, lines: list[str]) -> bytes:
+    """``lines`` as a file holds them: each with a drawn line break, the last one maybe
+    without; UTF-8, lone surrogates as the bytes a bad encoder writes."""
+    text = "".join(line + data.draw(BREAKS) for line in lines)
+    if text and data.draw(st.booleans()):
+        text = text.rstrip("\r\n")
+    return text.encode("utf-8", "surrogatepass")
+
+
+def _chunked(data: st.DataObject, raw: bytes) -> list[bytes]:
+    """``raw`` cut at drawn places: inside lines, between CR and LF, inside characters."""
+    cuts = sorted(data.draw(st.lists(st.integers(0, len(raw)), max_size=8)))
+    return [raw[a:b] for a, b in zip([0, *cuts], [*cuts, len(raw)], strict=True)]
+
+
+def _text_mode_lines(raw: bytes) -> list[str]:
+    """The lines `open` gives for ``raw`` in text mode, as `capture.read` used to read."""
+    return list(io.TextIOWrapper(io.BytesIO(raw), "utf-8", "replace"))
+
+
 @settings(max_examples=400)
-@given(lines, st.sampled_from([None, "can0"]))
-def test_any_text_gives_records(text: list[str], channel: str | None) -> None:
-    decoder = CaptureDecoder()
-    fused = list(decoder.decode_candump(text, channel))
-    two_stage = list(CaptureDecoder().decode(parse_candump(text, channel)))
+@given(st.data(), lines, st.sampled_from([None, "can0"]))
+def test_any_text_gives_records(data: st.DataObject, text: list[str], channel: str | None) -> None:
+    raw = _as_bytes(data, text)
+    fused = list(CaptureDecoder().decode_chunks(_chunked(data, raw), channel))
+    two_stage = list(CaptureDecoder().decode(parse_candump(_text_mode_lines(raw), channel)))
     assert fused == two_stage
     assert all(_well_formed(r) for r in fused)
+
+
+@settings(max_examples=200)
+@given(st.data(), lines)
+def test_where_chunks_are_cut_changes_nothing(data: st.DataObject, text: list[str]) -> None:
+    raw = _as_bytes(data, text)
+    whole = list(CaptureDecoder().decode_chunks([raw]))
+    assert list(CaptureDecoder().decode_chunks(_chunked(data, raw))) == whole
+    assert list(CaptureDecoder().decode_chunks(raw[i : i + 1] for i in range(len(raw)))) == whole
 
 
 frames = st.builds(
@@ -82,6 +117,12 @@ def _respelled(line: str, how: str) -> str:
     return f"{parts[0]} {parts[1]} {spelled}#{rest}"
 
 
+def _inserted(data: st.DataObject, line: str, text: str) -> str:
+    """``line`` with ``text`` inserted at a drawn place (inside a token or between two)."""
+    at = data.draw(st.integers(0, len(line))) if text else 0
+    return line[:at] + text + line[at:]
+
+
 def _reference(decoder: CaptureDecoder, lines: list[str], channel: str | None) -> list[Record]:
     """The records of the exact, line-by-line parser (`parse_line`), with no fast path."""
     items: list[Frame | BadLine] = []
@@ -98,9 +139,11 @@ def _reference(decoder: CaptureDecoder, lines: list[str], channel: str | None) -
 def test_fused_reader_agrees_with_the_exact_parser(
     data: st.DataObject, bus_map: BusMap, channel: str | None
 ) -> None:
-    """The fast paths (`decode_candump`, `parse_candump`) against `parse_line` line by line,
-    on generated captures: Veronte frames, DroneCAN transfers with drops, duplicates, swaps
-    and bit flips, foreign IDs, odd lines, identifiers in lower case or not quite hex."""
+    """The fast paths (`decode_chunks` on bytes, `parse_candump`) against `parse_line` line
+    by line, on generated captures: Veronte frames, DroneCAN transfers with drops,
+    duplicates, swaps and bit flips, foreign IDs, odd lines, identifiers in lower case or
+    not quite hex, any line break, bytes that are not ASCII or not UTF-8, chunks cut
+    anywhere."""
     lines = data.draw(captures(bus_map))
     spellings = st.sampled_from(
         ["", "", "", "lower", "0x", "plus", "underscore", "arabic digits", "short"]
@@ -108,10 +151,14 @@ def test_fused_reader_agrees_with_the_exact_parser(
     lines = [
         _respelled(line, how) if how else line for line in lines for how in [data.draw(spellings)]
     ]
-    expected = [repr(r) for r in _reference(CaptureDecoder(bus_map), lines, channel)]
-    fused = CaptureDecoder(bus_map)
-    assert [repr(r) for r in fused.decode_candump(lines, channel)] == expected
-    two_stage = CaptureDecoder(bus_map).decode(parse_candump(lines, channel))
+    odd = st.sampled_from(["", "", "", "", "", "", " é", "\x1c", "\x1f", "\x00", " \udcff"])
+    lines = [_inserted(data, line, data.draw(odd)) for line in lines]
+    raw = _as_bytes(data, lines)
+    read = _text_mode_lines(raw)
+    expected = [repr(r) for r in _reference(CaptureDecoder(bus_map), read, channel)]
+    fused = CaptureDecoder(bus_map).decode_chunks(_chunked(data, raw), channel)
+    assert [repr(r) for r in fused] == expected
+    two_stage = CaptureDecoder(bus_map).decode(parse_candump(read, channel))
     assert [repr(r) for r in two_stage] == expected
 
 
@@ -121,13 +168,16 @@ def test_identifiers_that_int_takes_but_are_not_hex_digits_are_bad_lines() -> No
         (item,) = parse_candump([line])
         assert isinstance(item, BadLine), ident
         assert item.reason == f"identifier {ident!r} is not 3 or 8 hex digits"
-        (record,) = CaptureDecoder().decode_candump([line])
+        (record,) = CaptureDecoder().decode_chunks([line.encode()])
         assert record.kind == "error: bad line"
 
 
 def test_lower_case_identifiers_decode_as_upper_case_ones() -> None:
     upper = ["(1.0) can0 00A#0000B19C453C", "(1.1) can0 1004060A#00000000000000C0"]
     lower = [line.lower() for line in upper]
-    assert [r.message for r in CaptureDecoder().decode_candump(lower)] == [
-        r.message for r in CaptureDecoder().decode_candump(upper)
-    ]
+
+    def messages(lines: list[str]) -> list[object]:
+        text = "\n".join(lines).encode()
+        return [r.message for r in CaptureDecoder().decode_chunks([text])]
+
+    assert messages(lower) == messages(upper)

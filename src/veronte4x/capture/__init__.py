@@ -23,7 +23,7 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
-from veronte4x.capture.source import Format, Source, Truncated, open_frames, open_lines, resolve
+from veronte4x.capture.source import Format, open_frames, read_chunks, resolve
 from veronte4x.capture.stats import Stats
 from veronte4x.extras import require
 
@@ -73,16 +73,8 @@ def read(
     source = resolve(path)
     decoder = CaptureDecoder(bus_map)
     if source.format is Format.CANDUMP:
-        return _decode_text(decoder, source, channel)
+        return decoder.decode_chunks(read_chunks(source), channel)
     return decoder.decode(read_with_python_can(source.path, channel))
-
-
-def _decode_text(decoder: CaptureDecoder, source: Source, channel: str | None) -> Iterator[Record]:
-    with open_lines(source) as lines:
-        try:
-            yield from decoder.decode_candump(lines, channel)
-        except Truncated as cut:
-            yield from decoder.decode((cut.bad_line(),))
 
 
 def stats(records: Iterable[Record]) -> Stats:

@@ -6,14 +6,21 @@ A bad frame becomes a record with its error and raw bytes; the stream never stop
 
 from __future__ import annotations
 
+import binascii
 import itertools
 import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.frames import BadLine, Frame, Truncation
-from veronte4x.capture.readers.candump import CAN_ERR_FLAG, Identifiers, parse_line
+from veronte4x.capture.readers.candump import (
+    CAN_ERR_FLAG,
+    Identifiers,
+    parse_candump,
+    parse_line,
+)
 from veronte4x.capture.records import Record
+from veronte4x.capture.source import Truncated
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.compiler import Decoder
 from veronte4x.dronecan import ProblemReport, Reassembler
@@ -88,82 +95,121 @@ class CaptureDecoder:
                 yield self._bad_line(item)  # type: ignore[arg-type]
 
     def decode_candump(self, lines: Iterable[str], channel: str | None = None) -> Iterator[Record]:
-        """Yield the records of candump text, reading and decoding in one pass.
+        """Yield the records of candump text lines: ``decode(parse_candump(lines, channel))``.
 
-        Equivalent to ``decode(parse_candump(lines, channel))``, but plain log-form frames,
-        the bulk of a capture, skip the intermediate `Frame` and the generic dispatch: an
-        11-bit frame on a Veronte ID is decoded inline, a 29-bit one goes straight to its
-        channel's DroneCAN reassembler. Every other line goes through `parse_line`.
+        Each item of ``lines`` is one line, with or without its line break. For text as it
+        comes from a file, a pipe or a socket, `decode_chunks` is faster.
+        """
+        return self.decode(parse_candump(lines, channel))
+
+    def decode_chunks(
+        self, chunks: Iterable[bytes], channel: str | None = None
+    ) -> Iterator[Record]:
+        """Yield the records of candump text that comes as bytes, in chunks cut anywhere.
+
+        The text is read as `open` reads a text file: UTF-8 (bytes that are not are
+        replaced) with ``\\n``, ``\\r\\n`` or ``\\r`` line breaks; each line gives the records
+        of `decode_candump`. Plain log-form frames, the bulk of a capture, are parsed as
+        bytes with no intermediate `Frame`: an 11-bit frame on a Veronte ID is decoded
+        inline, a 29-bit one goes straight to its channel's DroneCAN reassembler. Other
+        lines go through `parse_line`, and a block of lines with bytes that are not plain
+        ASCII through `parse_candump`. If ``chunks`` raises `Truncated` (gzip data that ends
+        early), the records end with a "truncated" record at the first line not read whole.
         """
         # Veronte routes by identifier text, in every case spelling: one dict lookup
         # replaces int() and the error-flag check (3 hex digits cannot hold the flag).
         veronte = {} if self.bus_map.extended else _routes_by_text(self._routes)
         dronecan = self.bus_map.dronecan and not self.bus_map.extended
         excess = self.bus_map.allow_excess
-        fromhex = bytes.fromhex
+        unhexlify = binascii.unhexlify
         identifiers = Identifiers()
         new, dronecan_role = _new, Role.DRONECAN
-        # The reassembler of the latest DroneCAN frame's channel (one lookup per change).
-        last_channel, reassembler = None, None
-        for number, line in enumerate(lines, 1):
-            parts = line.split()
-            if len(parts) == 3:
-                stamp, interface, body = parts
-                ident, separator, text = body.partition("#")
-                if separator and stamp[0] == "(" and stamp[-1] == ")":
-                    route = veronte.get(ident)
-                    if route is not None:
-                        try:
-                            seconds = float(stamp[1:-1])
-                            data = fromhex(text)
-                        except ValueError:
-                            seconds = math.nan
-                        # seconds - seconds is 0.0 for a finite time only.
-                        if seconds - seconds == 0.0:
-                            if channel is not None and interface != channel:
-                                continue
-                            can_id, role, index, decode = route
+        # The interface of the latest frame and its DroneCAN reassembler (or None, made on
+        # the first DroneCAN frame): looked up again only when the interface changes.
+        name_before, interface, reassembler = b"", "", None
+        number = 0  # lines read
+        try:
+            for block in _blocks_of_lines(chunks):
+                if not _is_plain(block):
+                    text_lines = _text_lines(block)
+                    yield from self.decode(parse_candump(text_lines, channel, number + 1))
+                    number += len(text_lines)
+                    continue
+                lines = block.split(b"\n")
+                lines.pop()  # the empty text after the block's last line feed
+                for line in lines:
+                    number += 1
+                    try:
+                        stamp, name, body = line.split()
+                    except ValueError:  # not three tokens
+                        if line.strip():
+                            yield from self._parsed_line(line.decode("ascii"), number, channel)
+                        continue
+                    ident, separator, text = body.partition(b"#")
+                    if separator and stamp[0] == 40 and stamp[-1] == 41:  # ( and )
+                        if name != name_before:
+                            name_before, reassembler = name, None
+                            interface = name.decode("ascii")
+                        route = veronte.get(ident)
+                        if route is not None:
                             try:
-                                message = decode(data, excess)
-                            except DecodeError as failure:
-                                yield _failed(seconds, interface, can_id, role, index, data,
-                                              failure)  # fmt: skip
-                            else:
-                                record = (seconds, interface, can_id, role, index, None,
-                                          message, None, "", data, None)  # fmt: skip
-                                yield new(Record, record)
-                            continue
-                    elif dronecan and len(ident) == 8:
-                        try:
-                            seconds = float(stamp[1:-1])
-                            can_id = identifiers[ident]
-                            data = fromhex(text)
-                        except ValueError:
-                            seconds = math.nan
-                        if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
-                            if channel is not None and interface != channel:
+                                seconds = float(stamp[1:-1])
+                                data = unhexlify(text)
+                            except ValueError:
+                                seconds = math.nan
+                            # seconds - seconds is 0.0 for a finite time only.
+                            if seconds - seconds == 0.0:
+                                if channel is not None and interface != channel:
+                                    continue
+                                can_id, role, index, decode = route
+                                try:
+                                    message = decode(data, excess)
+                                except DecodeError as failure:
+                                    yield _failed(seconds, interface, can_id, role, index, data,
+                                                  failure)  # fmt: skip
+                                else:
+                                    record = (seconds, interface, can_id, role, index, None,
+                                              message, None, "", data, None)  # fmt: skip
+                                    yield new(Record, record)
                                 continue
-                            # _dronecan, inlined: no Frame, no generator per frame.
-                            if interface != last_channel or reassembler is None:
-                                reassembler = self._reassembler(interface)
-                                last_channel, feed = interface, reassembler.feed
-                            before = reassembler.reported
-                            transfer = feed(can_id, data, seconds)
-                            if reassembler.reported != before:
-                                yield from self._problems(reassembler, before, interface)
-                            if transfer is not None:
-                                delivered = (seconds, interface, can_id, dronecan_role, None,
-                                             transfer.source_node_id, transfer.message, None,
-                                             "", data, transfer.destination_node_id)  # fmt: skip
-                                yield new(Record, delivered)
-                            continue
-            elif not parts:
-                continue
-            item = parse_line(line, number, parts)
-            if isinstance(item, BadLine):
-                yield self._bad_line(item)
-            elif channel is None or item.channel == channel:
-                yield from self.decode((item,))
+                        elif dronecan and len(ident) == 8:
+                            try:
+                                seconds = float(stamp[1:-1])
+                                can_id = identifiers[ident]
+                                data = unhexlify(text)
+                            except ValueError:
+                                seconds = math.nan
+                            if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
+                                if channel is not None and interface != channel:
+                                    continue
+                                # _dronecan, inlined: no Frame, no generator per frame.
+                                if reassembler is None:
+                                    reassembler = self._reassembler(interface)
+                                    feed = reassembler.feed
+                                before = reassembler.reported
+                                transfer = feed(can_id, data, seconds)
+                                if reassembler.reported != before:
+                                    yield from self._problems(reassembler, before, interface)
+                                if transfer is not None:
+                                    node = transfer.source_node_id
+                                    message = transfer.message
+                                    target = transfer.destination_node_id
+                                    delivered = (seconds, interface, can_id, dronecan_role,
+                                                 None, node, message, None, "", data,
+                                                 target)  # fmt: skip
+                                    yield new(Record, delivered)
+                                continue
+                    yield from self._parsed_line(line.decode("ascii"), number, channel)
+        except Truncated as cut:
+            yield self._bad_line(Truncated(cut.path, number + 1).bad_line())
+
+    def _parsed_line(self, line: str, number: int, channel: str | None) -> Iterator[Record]:
+        """The records of a line that only `parse_line`, the exact parser, reads."""
+        item = parse_line(line, number)
+        if isinstance(item, BadLine):
+            yield self._bad_line(item)
+        elif channel is None or item.channel == channel:
+            yield from self.decode((item,))
 
     def _odd_frame(self, frame: Frame) -> Record:
         """The record of a frame that is neither a plain Veronte nor a plain DroneCAN frame:
@@ -201,14 +247,52 @@ class CaptureDecoder:
         return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
 
 
-def _routes_by_text(routes: dict[int, Route]) -> dict[str, tuple[int, Role, int | None, Decoder]]:
+def _routes_by_text(
+    routes: dict[int, Route],
+) -> dict[bytes, tuple[int, Role, int | None, Decoder]]:
     """The 11-bit Veronte routes keyed by identifier text, each in every case spelling."""
     by_text = {}
     for can_id, (role, index, decode) in routes.items():
         if can_id <= 0xFFF:  # what 3 hex digits hold
             for spelling in itertools.product(*({c.lower(), c.upper()} for c in f"{can_id:03x}")):
-                by_text["".join(spelling)] = (can_id, role, index, decode)
+                by_text["".join(spelling).encode()] = (can_id, role, index, decode)
     return by_text
+
+
+def _blocks_of_lines(chunks: Iterable[bytes]) -> Iterator[bytes]:
+    """``chunks`` cut into blocks of whole lines: each block ends in a line feed, or in a
+    carriage return that no line feed follows; the last line gets a line feed if it has
+    none. Cutting at line breaks, which are ASCII, never splits a UTF-8 character."""
+    carry = b""
+    for chunk in chunks:
+        text = carry + chunk
+        cut = text.rfind(b"\n") + 1 or text.rfind(b"\r", 0, len(text) - 1) + 1
+        if cut:
+            yield text[:cut]
+        carry = text[cut:]
+    if carry:
+        yield carry + b"\n"
+
+
+_NOT_SPACE_TO_BYTES = (b"\x1c", b"\x1d", b"\x1e", b"\x1f")
+"""White space to `str.split` that `bytes.split` keeps in a token."""
+
+
+def _is_plain(block: bytes) -> bool:
+    """Whether bytes parsing reads ``block`` exactly as text parsing would: ASCII, no byte
+    that `str.split` alone takes for white space, and every carriage return in a CRLF."""
+    return (
+        block.isascii()
+        and not any(byte in block for byte in _NOT_SPACE_TO_BYTES)
+        and (b"\r" not in block or block.count(b"\r") == block.count(b"\r\n"))
+    )
+
+
+def _text_lines(block: bytes) -> list[str]:
+    """The lines of a block as `open` gives them in text mode: UTF-8 with replacement,
+    universal line breaks."""
+    text = block.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
+    return text.split("\n")[:-1]
 
 
 def _failed(

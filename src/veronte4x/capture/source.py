@@ -18,7 +18,7 @@ import zlib
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import IO
+from typing import IO, BinaryIO, cast
 
 from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.errors import SourceError
@@ -143,6 +143,7 @@ class Truncated(SourceError):
     """
 
     def __init__(self, path: str, line_number: int) -> None:
+        self.path = path
         self.line_number = line_number
         super().__init__(
             f"{path}: the gzip data ends early, at line {line_number}: the file is truncated"
@@ -170,6 +171,37 @@ def open_text(source: Source) -> Iterator[IO[str]]:
     opener = gzip.open if source.gzipped else open
     with opener(source.path, "rt", encoding="utf-8", errors="replace") as text:
         yield text
+
+
+@contextmanager
+def open_binary(source: Source) -> Iterator[BinaryIO]:
+    """Open candump text as bytes (gzip decompressed); standard input is not closed."""
+    if source.is_stdin:
+        yield sys.stdin.buffer
+    elif source.gzipped:
+        with gzip.open(source.path, "rb") as stream:
+            yield cast(BinaryIO, stream)
+    else:
+        with open(source.path, "rb") as stream:
+            yield stream
+
+
+def read_chunks(source: Source, size: int = 1 << 16) -> Iterator[bytes]:
+    """The bytes of candump text as they come, at most ``size`` at a time.
+
+    A read returns what is there without waiting for ``size`` bytes, so that the lines of a
+    live pipe come through as they are written. Gzip data that ends early raises
+    `Truncated` after the last bytes it held (its line number counts line feeds).
+    """
+    line_feeds = 0
+    with open_binary(source) as stream:
+        try:
+            read = cast(io.BufferedIOBase, stream).read1
+            while chunk := read(size):
+                line_feeds += chunk.count(b"\n")
+                yield chunk
+        except (EOFError, gzip.BadGzipFile, zlib.error):
+            raise Truncated(source.path, line_feeds + 1) from None
 
 
 @contextmanager

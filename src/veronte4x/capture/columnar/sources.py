@@ -14,7 +14,7 @@ import os
 import sys
 import zlib
 from collections.abc import Iterable
-from typing import Any, BinaryIO
+from typing import Any
 
 import numpy as np
 
@@ -22,7 +22,14 @@ from veronte4x.capture.columnar.candump import parse_stream, parse_text
 from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns, concat, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
-from veronte4x.capture.source import Format, Source, Truncated, open_lines, resolve
+from veronte4x.capture.source import (
+    Format,
+    Source,
+    Truncated,
+    open_binary,
+    open_lines,
+    resolve,
+)
 
 
 def read_frames(path: str | os.PathLike[str]) -> FrameColumns:
@@ -52,7 +59,7 @@ def _candump(source: Source) -> FrameColumns:
             return columns
         return _line_by_line(io.TextIOWrapper(io.BytesIO(text), "utf-8", "replace"), "-")
     try:
-        with _open_binary(source) as stream:
+        with open_binary(source) as stream:
             columns = parse_stream(stream)
     except (EOFError, gzip.BadGzipFile, zlib.error):
         columns = None  # a truncated gzip file: where it ends is the per-frame reader's call
@@ -60,12 +67,6 @@ def _candump(source: Source) -> FrameColumns:
         return columns
     with open_lines(source) as lines:
         return _line_by_line(lines, source.path)
-
-
-def _open_binary(source: Source) -> BinaryIO:
-    if source.gzipped:
-        return gzip.open(source.path, "rb")  # type: ignore[return-value]
-    return open(source.path, "rb")
 
 
 def _line_by_line(lines: Iterable[str], path: str) -> FrameColumns:

@@ -34,16 +34,16 @@ _ID_MASK = 0x1FFF_FFFF
 _MAX_IDENTIFIERS = 65_536
 
 
-class Identifiers(dict[str, int]):
-    """The CAN ID of each identifier text of the log form: a dict lookup per line instead
-    of `int`, and only 3 or 8 ASCII hex digits pass (`int` alone would take ``0x12345``,
-    ``+1234567`` or ``1_234567``).
+class Identifiers(dict[str | bytes, int]):
+    """The CAN ID of each identifier text of the log form, as `str` or ASCII `bytes`: a dict
+    lookup per line instead of `int`, and only 3 or 8 ASCII hex digits pass (`int` alone
+    would take ``0x12345``, ``+1234567`` or ``1_234567``).
 
     A text that is no identifier raises `ValueError`. Up to 65,536 texts are remembered
     (a bus holds far fewer distinct IDs); beyond, they are converted each time.
     """
 
-    def __missing__(self, ident: str) -> int:
+    def __missing__(self, ident: str | bytes) -> int:
         if len(ident) not in (3, 8) or not _is_hex(ident):
             raise ValueError(f"identifier {ident!r} is not 3 or 8 hex digits")
         can_id = int(ident, 16)
@@ -212,7 +212,10 @@ def _human_timestamp(stamp: str) -> float | None:
 
 
 _HEX_DIGITS = "0123456789abcdefABCDEF"
+_HEX_BYTES = _HEX_DIGITS.encode()
 
 
-def _is_hex(token: str) -> bool:
+def _is_hex(token: str | bytes) -> bool:
+    if isinstance(token, bytes):
+        return bool(token) and not token.strip(_HEX_BYTES)
     return bool(token) and not token.strip(_HEX_DIGITS)
