@@ -264,36 +264,23 @@ class Codec:
             namespace.update(found[1])
             return found[0]
 
-        # PWM frames: one exact-size unpack and two tables of the packing (PWM_VALUES).
-        namespace["_unpack_pwm"] = struct.Struct(layouts.PWM_FORMAT).unpack
-        namespace["_first"], namespace["_second"] = layouts.pwm_tables(self.pwm_packing)
-        namespace["_pwm_builder"] = builder(PwmSet)
-        namespace["_PwmSet"] = PwmSet
-        first_channel: list[int | None] = [None] * 256
-        for channel, command in PWM_COMMANDS.items():
-            first_channel[command] = channel
-        namespace["_first_channel"] = tuple(first_channel)
-        signature = ["def decode(data, *, sender, allow_excess=False):"]
-        if sender is not None:
-            signature = ["def decode(data, allow_excess=False):", "    sender = _SENDER"]
-        lines = [
-            *signature,
-            "    try:",
-            "        command = data[0]",
-            "        if not command:",
-            "            if sender is _ARBITER:",
-            # Score first: a Status has 0xFF where a Score has its autopilot (0..3).
-            *body(
-                layouts.SCORE,
-                16,
-                {"command"},
-                f"return {to_status} if data[1] == 0xFF else {to_checked}",
-            ),
-            "            if sender is _AUTOPILOT:",
-            "                if data[1] == 0xFF:",
-            *body(layouts.READY, 20, {"command", "header"}),
-            *body(layouts.ARBITRATION_VARIABLE, 16, {"command"}),
-            "        elif sender.__class__ is _Sender:",
+        # Command 0 (the arbitration frames): Score first for the arbiter, since a Status has
+        # 0xFF where a Score has its autopilot (0..3); Ready, then ArbitrationVariable for
+        # an autopilot.
+        arbiter = body(
+            layouts.SCORE,
+            12,
+            {"command"},
+            f"return {to_status} if data[1] == 0xFF else {to_checked}",
+        )
+        autopilot = [
+            "            if data[1] == 0xFF:",
+            *body(layouts.READY, 16, {"command", "header"}),
+            *body(layouts.ARBITRATION_VARIABLE, 12, {"command"}),
+        ]
+        # Other commands: PWM frames (one exact-size unpack and two tables of the packing,
+        # PWM_VALUES) and opaque ones (a slice), the same whoever sent them.
+        either = [
             "            first_channel = _first_channel[command]",
             "            if first_channel is not None:",
             "                b1, b2, b3, b4, b5, b6 = _unpack_pwm(data)",
@@ -312,6 +299,42 @@ class Codec:
             "                o.payload = data[_AFTER_COMMAND]",
             "                o.__class__ = cls",
             "                return o",
+        ]
+        namespace["_unpack_pwm"] = struct.Struct(layouts.PWM_FORMAT).unpack
+        namespace["_first"], namespace["_second"] = layouts.pwm_tables(self.pwm_packing)
+        namespace["_pwm_builder"] = builder(PwmSet)
+        namespace["_PwmSet"] = PwmSet
+        first_channel: list[int | None] = [None] * 256
+        for channel, command in PWM_COMMANDS.items():
+            first_channel[command] = channel
+        namespace["_first_channel"] = tuple(first_channel)
+        if sender is None:
+            dispatch = [
+                "def decode(data, *, sender, allow_excess=False):",
+                "    try:",
+                "        command = data[0]",
+                "        if not command:",
+                "            if sender is _ARBITER:",
+                *_indented(arbiter, 4),
+                "            if sender is _AUTOPILOT:",
+                *_indented(autopilot, 4),
+                "        elif sender.__class__ is _Sender:",
+                *either,
+            ]
+        else:
+            # One sender's decoder: its own arbitration branch, no check of the sender.
+            dispatch = [
+                "def decode(data, allow_excess=False):",
+                "    sender = _SENDER",
+                "    try:",
+                "        command = data[0]",
+                "        if not command:",
+                *(arbiter if sender is Sender.ARBITER else autopilot),
+                "        else:",
+                *either,
+            ]
+        lines = [
+            *dispatch,
             # A memoryview of another shape or item format fails here and not in the
             # checked decoder, which reads its bytes.
             "    except (IndexError, _struct_error, NotImplementedError):",
@@ -401,3 +424,8 @@ class Codec:
                 type(message).__name__, "message", message, "a veronte4x.codec message"
             )
         return encode(message)
+
+
+def _indented(lines: list[str], spaces: int) -> list[str]:
+    """Source lines moved right by ``spaces``."""
+    return [" " * spaces + line for line in lines]
