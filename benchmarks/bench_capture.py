@@ -10,7 +10,8 @@ up to ``--frames`` lines:
   RawCommand, Temperature, NodeStatus, GetNodeInfo) and only enough Veronte frames, in
   order, for DroneCAN to be a third of the frames.
 
-For each file, in one run, best of ``--repeat`` runs each, it times:
+For each file, in one run, best of ``--repeat`` rounds (one run of each reader per round, so
+that all see the same machine load), it times:
 - python-can's candump reader alone (`can.CanutilsLogReader`, messages only);
 - python-can's reader plus cantools decoding each Veronte frame with an equivalent DBC
   built in memory (cantools cannot reassemble DroneCAN transfers, so those frames are only
@@ -117,15 +118,19 @@ def veronte4x_dataframe(path: Path) -> int:
     return len(capture.to_dataframe(capture.read(str(path))))
 
 
-def _timed(function: Callable[[Path], int], path: Path, repeat: int) -> tuple[int, float]:
-    """The count and the best time of ``repeat`` runs."""
-    best = math.inf
-    count = 0
+def _best_times(
+    functions: list[tuple[str, Callable[[Path], int]]], path: Path, repeat: int
+) -> dict[str, tuple[int, float]]:
+    """Each function's count and best time of ``repeat`` runs, run in turns (one run of
+    each per round) so that all of them see the same machine load."""
+    best = {name: (0, math.inf) for name, _ in functions}
     for _ in range(repeat):
-        start = time.perf_counter()
-        count = function(path)
-        best = min(best, time.perf_counter() - start)
-    return count, best
+        for name, function in functions:
+            start = time.perf_counter()
+            count = function(path)
+            seconds = time.perf_counter() - start
+            best[name] = (count, min(best[name][1], seconds))
+    return best
 
 
 def main() -> None:
@@ -142,16 +147,16 @@ def main() -> None:
             written = make_file(path, args.frames, texts)
             dronecan = sum(len(t.split()[2].partition("#")[0]) == 8 for t in texts) / len(texts)
             print(f"\n{mix}: {written} frames, {dronecan:.1%} DroneCAN, {path.stat().st_size} B")
-            baseline = 0.0
-            for name, function in (
+            functions = [
                 ("python-can reader alone", python_can_reader),
                 ("python-can + cantools", python_can_and_cantools),
                 ("veronte4x to records", veronte4x_records),
                 ("veronte4x to DataFrame", veronte4x_dataframe),
-            ):
-                count, seconds = _timed(function, path, args.repeat)
+            ]
+            best = _best_times(functions, path, args.repeat)
+            baseline = best["python-can reader alone"][1]
+            for name, (count, seconds) in best.items():
                 rate = written / seconds
-                baseline = baseline or seconds
                 print(
                     f"{name:26} {rate:10.0f} frames/s  {baseline / seconds:5.2f}x reader"
                     f"  ({count} items, {seconds:.2f} s;"

@@ -192,8 +192,8 @@ def main() -> None:
             seconds,
         )
         print(
-            f"{case.name:38} {ours:10.0f} {theirs:10.0f} {floor:10.0f} {ours / theirs:10.1f}"
-            f" {ours_enc:10.0f} {theirs_enc:10.0f} {ours_enc / theirs_enc:10.1f}"
+            f"{case.name:38} {ours:10.0f} {theirs:10.0f} {floor:10.0f} {ours / theirs:10.2f}"
+            f" {ours_enc:10.0f} {theirs_enc:10.0f} {ours_enc / theirs_enc:10.2f}"
         )
 
 

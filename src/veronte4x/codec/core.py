@@ -314,10 +314,11 @@ class Codec:
                 "    try:",
                 "        command = data[0]",
                 "        if not command:",
-                "            if sender is _ARBITER:",
-                *_indented(arbiter, 4),
+                # The autopilots' frames first: three of them stream arbitration variables.
                 "            if sender is _AUTOPILOT:",
                 *_indented(autopilot, 4),
+                "            if sender is _ARBITER:",
+                *_indented(arbiter, 4),
                 "        elif sender.__class__ is _Sender:",
                 *either,
             ]
