@@ -181,3 +181,13 @@ def test_lower_case_identifiers_decode_as_upper_case_ones() -> None:
         return [r.message for r in CaptureDecoder().decode_chunks([text])]
 
     assert messages(lower) == messages(upper)
+
+
+def test_a_line_longer_than_many_chunks_is_one_line() -> None:
+    frame = b"(1.0) can0 009#00FF01\n"
+    long = b"(2.0) can0 009#" + b"00" * 100_000 + b"\n"
+    raw = frame + long + frame
+    chunks = [raw[i : i + 4096] for i in range(0, len(raw), 4096)]
+    records = list(CaptureDecoder().decode_chunks(chunks))
+    assert [r.kind for r in records] == ["Ready", "error: decode error", "Ready"]
+    assert records[1].data == bytes(100_000)

@@ -262,16 +262,24 @@ def _routes_by_text(
 def _blocks_of_lines(chunks: Iterable[bytes]) -> Iterator[bytes]:
     """``chunks`` cut into blocks of whole lines: each block ends in a line feed, or in a
     carriage return that no line feed follows; the last line gets a line feed if it has
-    none. Cutting at line breaks, which are ASCII, never splits a UTF-8 character."""
-    carry = b""
+    none. Cutting at line breaks, which are ASCII, never splits a UTF-8 character; the
+    pieces of a long line are joined once, when its end arrives."""
+    pending: list[bytes] = []  # the start of a line, cut by the chunks
     for chunk in chunks:
-        text = carry + chunk
-        cut = text.rfind(b"\n") + 1 or text.rfind(b"\r", 0, len(text) - 1) + 1
-        if cut:
-            yield text[:cut]
-        carry = text[cut:]
-    if carry:
-        yield carry + b"\n"
+        cut = chunk.rfind(b"\n") + 1 or chunk.rfind(b"\r", 0, len(chunk) - 1) + 1
+        if not cut:
+            pending.append(chunk)
+            continue
+        if pending:
+            pending.append(chunk[:cut])
+            yield b"".join(pending)
+            pending.clear()
+        else:
+            yield chunk[:cut]
+        if cut < len(chunk):
+            pending.append(chunk[cut:])
+    if any(pending):
+        yield b"".join(pending) + b"\n"
 
 
 _NOT_SPACE_TO_BYTES = (b"\x1c", b"\x1d", b"\x1e", b"\x1f")
