@@ -2,6 +2,8 @@
 
 from pathlib import Path
 
+import pytest
+
 from veronte4x import codec
 from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.decoder import CaptureDecoder
@@ -120,3 +122,18 @@ def test_foreign_traffic_is_undecoded_and_counted_apart() -> None:
     assert counts.errors == {"unknown command": 1}
     assert "Record" not in counts.by_type and sum(counts.by_type.values()) == 0
     assert "records: 6, undecoded: 5, errors: 1" in counts.report()
+
+
+def test_decode_chunks_takes_any_bytes_like_chunk_and_refuses_text() -> None:
+    line = b"(1.0) can0 009#00FF01\n"
+    expected = list(CaptureDecoder().decode_chunks([line]))
+    for chunk in (bytearray(line), memoryview(line)):
+        assert list(CaptureDecoder().decode_chunks([chunk])) == expected
+    with pytest.raises(
+        TypeError, match=r"^decode_chunks\(\): each chunk must be bytes-like, not str$"
+    ):
+        list(CaptureDecoder().decode_chunks([line.decode()]))  # type: ignore[list-item]
+    with pytest.raises(
+        TypeError, match=r"^decode_chunks\(\): channel must be a str or None, not int$"
+    ):
+        list(CaptureDecoder().decode_chunks([line], 0))  # type: ignore[arg-type]

@@ -25,6 +25,7 @@ from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.compiler import Decoder
 from veronte4x.dronecan import ProblemReport, Reassembler
 from veronte4x.dronecan.reassembler import Problem
+from veronte4x.errors import BytesLike, argument_type_error
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 _new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
@@ -103,7 +104,7 @@ class CaptureDecoder:
         return self.decode(parse_candump(lines, channel))
 
     def decode_chunks(
-        self, chunks: Iterable[bytes], channel: str | None = None
+        self, chunks: Iterable[BytesLike], channel: str | None = None
     ) -> Iterator[Record]:
         """Yield the records of candump text that comes as bytes, in chunks cut anywhere.
 
@@ -115,7 +116,13 @@ class CaptureDecoder:
         lines go through `parse_line`, and a block of lines with bytes that are not plain
         ASCII through `parse_candump`. If ``chunks`` raises `Truncated` (gzip data that ends
         early), the records end with a "truncated" record at the first line not read whole.
+
+        Raises:
+            TypeError: A chunk is not bytes-like (lines of text go to `decode_candump`), or
+                ``channel`` is not a str.
         """
+        if channel is not None and not isinstance(channel, str):
+            raise argument_type_error("decode_chunks", "channel", "a str or None", channel)
         # Veronte routes by identifier text, in every case spelling: one dict lookup
         # replaces int() and the error-flag check (3 hex digits cannot hold the flag).
         veronte = {} if self.bus_map.extended else _routes_by_text(self._routes)
@@ -259,13 +266,15 @@ def _routes_by_text(
     return by_text
 
 
-def _blocks_of_lines(chunks: Iterable[bytes]) -> Iterator[bytes]:
+def _blocks_of_lines(chunks: Iterable[BytesLike]) -> Iterator[bytes]:
     """``chunks`` cut into blocks of whole lines: each block ends in a line feed, or in a
     carriage return that no line feed follows; the last line gets a line feed if it has
     none. Cutting at line breaks, which are ASCII, never splits a UTF-8 character; the
     pieces of a long line are joined once, when its end arrives."""
     pending: list[bytes] = []  # the start of a line, cut by the chunks
     for chunk in chunks:
+        if chunk.__class__ is not bytes:
+            chunk = _as_bytes(chunk)
         cut = chunk.rfind(b"\n") + 1 or chunk.rfind(b"\r", 0, len(chunk) - 1) + 1
         if not cut:
             pending.append(chunk)
@@ -280,6 +289,13 @@ def _blocks_of_lines(chunks: Iterable[bytes]) -> Iterator[bytes]:
             pending.append(chunk[cut:])
     if any(pending):
         yield b"".join(pending) + b"\n"
+
+
+def _as_bytes(chunk: object) -> bytes:
+    """A bytes-like chunk as bytes, else the `TypeError` of the library's policy."""
+    if isinstance(chunk, (bytes, bytearray, memoryview)):
+        return bytes(chunk)
+    raise argument_type_error("decode_chunks", "each chunk", "bytes-like", chunk)
 
 
 _NOT_SPACE_TO_BYTES = (b"\x1c", b"\x1d", b"\x1e", b"\x1f")
