@@ -35,6 +35,7 @@ from veronte4x.arbiter.state import (
     DecisionKind,
     SystemChecks,
 )
+from veronte4x.errors import BytesLike, argument_type_error, check_types
 
 Frame = tuple[int, bytes]
 _AUTOPILOTS = range(4)
@@ -68,6 +69,10 @@ class Arbiter:
     """
 
     def __init__(self, config: ArbiterConfig, *, checks: SystemChecks | None = None) -> None:
+        if not isinstance(config, ArbiterConfig):
+            raise argument_type_error("Arbiter", "config", "an ArbiterConfig", config)
+        if checks is not None and not isinstance(checks, SystemChecks):
+            raise argument_type_error("Arbiter", "checks", "a SystemChecks or None", checks)
         self.config = config
         self._checks = SystemChecks() if checks is None else checks
         self._phase = Phase.IDLE
@@ -98,7 +103,7 @@ class Arbiter:
 
     # ----------------------------------------------------------------- inputs
 
-    def receive(self, can_id: int, data: bytes, timestamp: float) -> codec.Message | None:
+    def receive(self, can_id: int, data: BytesLike, timestamp: float) -> codec.Message | None:
         """Take one frame sent to the arbiter.
 
         Frames on an ID other than a taking-part autopilot's are ignored (``None``).
@@ -108,7 +113,15 @@ class Arbiter:
         Raises:
             DecodeError: the frame is not a valid Veronte message.
             InputError: ``timestamp`` is earlier than the previous one.
+            TypeError: An argument of the wrong type.
         """
+        if can_id.__class__ is not int or data.__class__ is not bytes:
+            check_types(
+                "receive",
+                ("can_id", can_id, int, "an int"),
+                ("data", data, (bytes, bytearray, memoryview), "bytes-like"),
+            )
+        _check_time("receive", timestamp)
         self.advance(timestamp)
         autopilot = self._sources.get(can_id)
         if autopilot is None:
@@ -125,6 +138,9 @@ class Arbiter:
 
     def set_checks(self, timestamp: float, checks: SystemChecks) -> None:
         """Report the arbiter's system checks; in Idle, all OK means Normal mode."""
+        _check_time("set_checks", timestamp)
+        if not isinstance(checks, SystemChecks):
+            raise argument_type_error("set_checks", "checks", "a SystemChecks", checks)
         self.advance(timestamp)
         self._checks = checks
         if self._phase is Phase.IDLE and checks.all_ok:
@@ -133,16 +149,19 @@ class Arbiter:
     def set_fts(self, timestamp: float, autopilot: int, ok: bool) -> None:
         """Report an autopilot's FTS signal: not OK means "System Not OK" (4x Software Manual,
         section 4)."""
+        _check_signal("set_fts", timestamp, autopilot, ok)
         self._set_signal(self._fts_ok, AutopilotEvent.FTS_BAD, timestamp, autopilot, ok)
 
     def set_watchdog(self, timestamp: float, autopilot: int, ok: bool) -> None:
         """Report an autopilot's watchdog signal (4x Software Manual, section 4: "The watchdog
         signal ... is
         not ok" kills it)."""
+        _check_signal("set_watchdog", timestamp, autopilot, ok)
         self._set_signal(self._watchdog_ok, AutopilotEvent.WATCHDOG_BAD, timestamp, autopilot, ok)
 
     def command_maintenance(self, timestamp: float) -> None:
         """The maintenance command (t_cmd_maint), from wherever it comes."""
+        _check_time("command_maintenance", timestamp)
         self.advance(timestamp)
         self._enter(Event.MAINTENANCE_COMMAND, timestamp, "maintenance command")
 
@@ -153,7 +172,9 @@ class Arbiter:
 
         Raises:
             InputError: ``timestamp`` is earlier than the previous one.
+            TypeError: ``timestamp`` is not a number.
         """
+        _check_time("advance", timestamp)
         if not math.isfinite(timestamp):
             raise InputError("timestamp", timestamp, "a finite number of seconds")
         if self._time is not None and timestamp < self._time:
@@ -177,6 +198,7 @@ class Arbiter:
         ``score_period`` in Normal mode when ``send_score`` is set; nothing while Idle
         (4x Software Manual, section 4, "Status message"). A late poll sends each message once.
         """
+        _check_time("poll", timestamp)
         self.advance(timestamp)
         frames: list[Frame] = []
         arbiter_id = self.config.arbiter_id
@@ -448,3 +470,17 @@ class Arbiter:
         else:
             self._arbitrate(time)
         return True
+
+
+def _check_time(function: str, timestamp: object) -> None:
+    """The `TypeError` of the library's policy for a timestamp that is not a number."""
+    if timestamp.__class__ is not float:
+        check_types(function, ("timestamp", timestamp, (int, float), "a number of seconds"))
+
+
+def _check_signal(function: str, timestamp: object, autopilot: object, ok: object) -> None:
+    """The `TypeError` of the library's policy for the arguments of a signal report."""
+    _check_time(function, timestamp)
+    check_types(function, ("autopilot", autopilot, int, "an int"))
+    if not isinstance(ok, bool):
+        raise argument_type_error(function, "ok", "a bool", ok)
