@@ -96,6 +96,21 @@ def argument_type_error(function: str, argument: str, expected: str, value: obje
     return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
 
 
+def check_seconds(function: str, argument: str, value: object) -> None:
+    """Raise `argument_type_error` unless ``value`` is a number of seconds (an int or a
+    float, never a bool).
+
+    Examples:
+        >>> check_seconds("poll", "now", "1.5")
+        Traceback (most recent call last):
+        TypeError: poll(): now must be a number of seconds, not str
+    """
+    if value.__class__ is not float and (
+        isinstance(value, bool) or not isinstance(value, (int, float))
+    ):
+        raise argument_type_error(function, argument, "a number of seconds", value)
+
+
 TypeCheck = tuple[str, object, type | tuple[type, ...], str]
 """(argument, value, the type or types it must have, what the message says is expected)."""
 

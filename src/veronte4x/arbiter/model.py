@@ -35,7 +35,7 @@ from veronte4x.arbiter.state import (
     DecisionKind,
     SystemChecks,
 )
-from veronte4x.errors import BytesLike, argument_type_error, check_types
+from veronte4x.errors import BytesLike, argument_type_error, check_seconds, check_types
 
 Frame = tuple[int, bytes]
 _AUTOPILOTS = range(4)
@@ -121,7 +121,7 @@ class Arbiter:
                 ("can_id", can_id, int, "an int"),
                 ("data", data, (bytes, bytearray, memoryview), "bytes-like"),
             )
-        _check_time("receive", timestamp)
+        check_seconds("receive", "timestamp", timestamp)
         self.advance(timestamp)
         autopilot = self._sources.get(can_id)
         if autopilot is None:
@@ -138,7 +138,7 @@ class Arbiter:
 
     def set_checks(self, timestamp: float, checks: SystemChecks) -> None:
         """Report the arbiter's system checks; in Idle, all OK means Normal mode."""
-        _check_time("set_checks", timestamp)
+        check_seconds("set_checks", "timestamp", timestamp)
         if not isinstance(checks, SystemChecks):
             raise argument_type_error("set_checks", "checks", "a SystemChecks", checks)
         self.advance(timestamp)
@@ -161,7 +161,7 @@ class Arbiter:
 
     def command_maintenance(self, timestamp: float) -> None:
         """The maintenance command (t_cmd_maint), from wherever it comes."""
-        _check_time("command_maintenance", timestamp)
+        check_seconds("command_maintenance", "timestamp", timestamp)
         self.advance(timestamp)
         self._enter(Event.MAINTENANCE_COMMAND, timestamp, "maintenance command")
 
@@ -174,7 +174,7 @@ class Arbiter:
             InputError: ``timestamp`` is earlier than the previous one.
             TypeError: ``timestamp`` is not a number.
         """
-        _check_time("advance", timestamp)
+        check_seconds("advance", "timestamp", timestamp)
         if not math.isfinite(timestamp):
             raise InputError("timestamp", timestamp, "a finite number of seconds")
         if self._time is not None and timestamp < self._time:
@@ -198,7 +198,7 @@ class Arbiter:
         ``score_period`` in Normal mode when ``send_score`` is set; nothing while Idle
         (4x Software Manual, section 4, "Status message"). A late poll sends each message once.
         """
-        _check_time("poll", timestamp)
+        check_seconds("poll", "timestamp", timestamp)
         self.advance(timestamp)
         frames: list[Frame] = []
         arbiter_id = self.config.arbiter_id
@@ -472,15 +472,9 @@ class Arbiter:
         return True
 
 
-def _check_time(function: str, timestamp: object) -> None:
-    """The `TypeError` of the library's policy for a timestamp that is not a number."""
-    if timestamp.__class__ is not float:
-        check_types(function, ("timestamp", timestamp, (int, float), "a number of seconds"))
-
-
 def _check_signal(function: str, timestamp: object, autopilot: object, ok: object) -> None:
     """The `TypeError` of the library's policy for the arguments of a signal report."""
-    _check_time(function, timestamp)
+    check_seconds(function, "timestamp", timestamp)
     check_types(function, ("autopilot", autopilot, int, "an int"))
     if not isinstance(ok, bool):
         raise argument_type_error(function, "ok", "a bool", ok)

@@ -12,7 +12,7 @@ from collections.abc import Mapping, Sequence
 
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.messages import RawCommand
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, check_seconds
 
 DEFAULT_RATE = 50.0
 """RawCommand per second unless told otherwise."""
@@ -65,7 +65,9 @@ class Commander:
 
         Raises:
             EncodeError: A fraction out of range, more than 20 ESCs or a bad index.
+            TypeError: A throttle that is not a number, or ``now`` that is not one.
         """
+        check_seconds("set", "now", now)
         self._cmd = vertiq.raw_command(throttles).cmd
         self._refreshed = now
         self.tripped = False
@@ -84,6 +86,7 @@ class Commander:
         Due times are ``first set + k * period``, counted rather than summed so that they do
         not drift; a poll more than a period late sends once and restarts the grid.
         """
+        check_seconds("poll", "now", now)
         due = self.next_time()
         if due is None or now + EPSILON < due:
             return None

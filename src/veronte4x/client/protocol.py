@@ -28,7 +28,7 @@ from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest
 from veronte4x.dronecan.reassembler import Reassembler
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, check_seconds
 
 DEFAULT_NODE_ID = 127
 """The client's node id unless told otherwise: the DroneCAN GUI tool's default."""
@@ -101,6 +101,7 @@ class ClientProtocol:
 
     def receive(self, can_id: int, data: bytes, timestamp: float) -> list[Event]:
         """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``."""
+        check_seconds("receive", "timestamp", timestamp)
         transfer = self.reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return []

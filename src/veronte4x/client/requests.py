@@ -16,7 +16,7 @@ from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
-from veronte4x.errors import EncodeError
+from veronte4x.errors import EncodeError, check_seconds
 
 DEFAULT_TIMEOUT = 1.0
 """Seconds to wait for a response before retrying: the DroneCAN GUI tool's default."""
@@ -130,7 +130,10 @@ class Requester:
 
         Raises:
             EncodeError: Not a request class, or a field out of range.
+            TypeError: ``now`` or ``timeout`` is not a number of seconds.
         """
+        check_seconds("request", "now", now)
+        check_seconds("request", "timeout", timeout)
         codec = BY_CLASS.get(type(message))
         if codec is None or codec.data_type.kind is not TransferKind.REQUEST:
             raise EncodeError("request", "message", message, "a DroneCAN service request")
@@ -192,6 +195,7 @@ class Requester:
 
     def poll(self, now: float) -> list[TimedOut]:
         """Retry the requests whose attempt timed out at ``now``; return those out of retries."""
+        check_seconds("poll", "now", now)
         failed = []
         for handle, pending in list(self._pending.items()):
             if now < pending.deadline:
