@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import enum
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from operator import attrgetter, methodcaller
 from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
@@ -13,6 +15,7 @@ from veronte4x.capture.records import Record
 from veronte4x.units import unit
 
 if TYPE_CHECKING:
+    import numpy
     import pandas
 
 
@@ -31,12 +34,15 @@ _SCALARS = frozenset({int, float, bool, str, bytes, type(None)})
 _FIELD_NAMES: dict[type, tuple[str, ...]] = {}
 
 
-def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
-    cls = type(message)
+def _field_names(cls: type) -> tuple[str, ...]:
     names = _FIELD_NAMES.get(cls)
     if names is None:  # dataclasses.fields() is slow: once per class
-        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(message))
-    for field in names:
+        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(cls))
+    return names
+
+
+def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
+    for field in _field_names(type(message)):
         value = getattr(message, field)
         name = prefix + field
         if type(value) in _SCALARS:
@@ -82,7 +88,7 @@ def to_dataframe(
         relative_time: Timestamps in seconds from the first timestamped record, as
             ``candump -t z`` and ``veronte4x decode --relative-time`` show them.
     """
-    import pandas
+    import pandas  # noqa: F401  (without the pandas extra, fail first, either way)
 
     if isinstance(source, (str, os.PathLike)):
         from veronte4x.capture import _columnar
@@ -91,51 +97,162 @@ def to_dataframe(
             source, bus_map, channel, relative_time
         )
         return frame
-    records = source
-    units: dict[str, str] = {"timestamp": "s"}
-    start: float | None = None
+    return _records_frame(list(source), relative_time)
 
-    head: dict[str, list[Any]] = {name: [] for name in _HEAD_COLUMNS}
-    columns: dict[str, list[Any]] = {}
-    kinds: dict[str, set[type]] = {}
-    rows = 0
-    for record in records:
-        stamp = record.timestamp
-        if relative_time and stamp is not None:
-            start = stamp if start is None else start
-            stamp -= start
-        head["timestamp"].append(stamp)
-        head["channel"].append(record.channel)
-        head["can_id"].append(record.can_id)
-        head["sender"].append(record.sender)
-        head["message"].append(None if record.message is None else type(record.message).__name__)
-        head["error"].append(record.error)
-        head["detail"].append(record.detail)
-        head["data"].append(record.data.hex())
-        for name, value in fields(record.message).items():
-            column = columns.get(name)
-            if column is None:
-                column = columns[name] = []
-                kinds[name] = set()
-                symbol = unit(type(record.message).__name__, name)
+
+def _records_frame(records: list[Record], relative_time: bool) -> pandas.DataFrame:
+    """`to_dataframe` of records: the messages grouped by class, each field a column."""
+    import pandas
+
+    stamps = list(map(attrgetter("timestamp"), records))
+    if relative_time:
+        start = next((stamp for stamp in stamps if stamp is not None), None)
+        stamps = [stamp if stamp is None else stamp - start for stamp in stamps]
+    messages = list(map(attrgetter("message"), records))
+    data: dict[str, Any] = {
+        "timestamp": stamps,
+        "channel": list(map(attrgetter("channel"), records)),
+        "can_id": list(map(attrgetter("can_id"), records)),
+        "sender": list(map(attrgetter("sender"), records)),
+        "message": [None if m is None else type(m).__name__ for m in messages],
+        "error": list(map(attrgetter("error"), records)),
+        "detail": list(map(attrgetter("detail"), records)),
+        "data": list(map(methodcaller("hex"), map(attrgetter("data"), records))),
+    }
+    units: dict[str, str] = {"timestamp": "s"}
+    pieces: dict[str, list[tuple[numpy.ndarray, list[Any]]]] = {}
+    for class_name, rows, columns in sorted(_parts(messages), key=lambda part: part[1][0]):
+        for name, values in columns:
+            if name not in pieces:  # first seen: the column's place and unit
+                pieces[name] = []
+                symbol = unit(class_name, name)
                 if symbol is not None:
                     units[name] = symbol
-            if len(column) < rows:  # rows whose message had no such field
-                column.extend([None] * (rows - len(column)))
-            column.append(value)
-            if value is not None:
-                kinds[name].add(type(value))
-        rows += 1
-    data: dict[str, Any] = dict(head)
-    for name, values in columns.items():
-        values.extend([None] * (rows - len(values)))
-        data[name] = pandas.array(values, dtype=_dtype(kinds[name]))
+            pieces[name].append((rows, values))
+    for name, column in pieces.items():
+        data[name] = _column(column, len(records))
     frame = pandas.DataFrame(data)
     frame.attrs["units"] = units
     return frame
 
 
-_HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
+_Part = tuple[str, "numpy.ndarray", list[tuple[str, list[Any]]]]
+
+
+def _parts(messages: list[Any]) -> Iterator[_Part]:
+    """The field columns of each message class, or of each shape of a class's messages
+    when the class has no single shape (tuples of several lengths, a union of classes)."""
+    import numpy
+
+    classes: dict[type, tuple[list[int], list[Any]]] = {}
+    for row, message in enumerate(messages):
+        group = classes.get(type(message))
+        if group is None:
+            group = classes[type(message)] = ([], [])
+        group[0].append(row)
+        group[1].append(message)
+    for cls, (rows, instances) in classes.items():
+        if not dataclasses.is_dataclass(cls):
+            continue
+        columns = _class_columns("", cls, instances)
+        if columns is not None:
+            yield cls.__name__, numpy.array(rows), columns
+            continue
+        shapes: dict[tuple[str, ...], tuple[list[int], list[tuple[Any, ...]]]] = {}
+        for row, message in zip(rows, instances, strict=True):
+            flat = fields(message)
+            shape = shapes.setdefault(tuple(flat), ([], []))
+            shape[0].append(row)
+            shape[1].append(tuple(flat.values()))
+        for names, (shape_rows, shape_values) in shapes.items():
+            transposed = zip(*shape_values, strict=True)
+            columns = [(name, list(v)) for name, v in zip(names, transposed, strict=True)]
+            yield cls.__name__, numpy.array(shape_rows), columns
+
+
+def _class_columns(
+    prefix: str, cls: type, instances: list[Any]
+) -> list[tuple[str, list[Any]]] | None:
+    """The columns `fields` gives every instance of one class, field by field; None when
+    the instances differ in shape or two columns share a name."""
+    columns: list[tuple[str, list[Any]]] = []
+    for field in _field_names(cls):
+        name = prefix + field
+        values = list(map(attrgetter(field), instances))
+        kinds = set(map(type, values))
+        shapes = set(map(_shape, kinds))
+        if shapes == {"value"}:
+            columns.append((name, values))
+        elif shapes <= {"value", "enum"}:
+            columns.append((name, [v.value if isinstance(v, enum.Enum) else v for v in values]))
+        elif shapes == {"tuple"} and len(set(map(len, values))) == 1:
+            items = zip(*values, strict=True)
+            columns += [(f"{name}_{index}", list(item)) for index, item in enumerate(items)]
+        elif shapes == {"dataclass"} and len(kinds) == 1:
+            nested = _class_columns(name + ".", kinds.pop(), values)
+            if nested is None:
+                return None
+            columns += nested
+        else:
+            return None
+    if len({name for name, _ in columns}) < len(columns):
+        return None
+    return columns
+
+
+def _shape(kind: type) -> str:
+    """How `_flatten` flattens a value of this type."""
+    if kind in _SCALARS:
+        return "value"
+    if issubclass(kind, tuple):
+        return "tuple"
+    if issubclass(kind, enum.Enum):
+        return "enum"
+    if dataclasses.is_dataclass(kind):
+        return "dataclass"
+    return "value"
+
+
+def _column(pieces: list[tuple[numpy.ndarray, list[Any]]], length: int) -> Any:
+    """A full-length column from its values at some rows, missing elsewhere: NumPy builds
+    flag, integer and float columns, pandas infers the others from the Python values."""
+    import pandas
+
+    kinds: set[type] = set().union(*(map(type, values) for _, values in pieces))
+    dtype = _dtype(kinds - {type(None)})
+    if dtype == "float64" or (dtype is not None and type(None) not in kinds):
+        with contextlib.suppress(OverflowError):  # beyond int64 or float64: as pandas has it
+            return _numpy_column(dtype, pieces, length)
+    full: list[Any] = [None] * length
+    for rows, values in pieces:
+        for row, value in zip(rows.tolist(), values, strict=True):
+            full[row] = value
+    return pandas.array(full, dtype=dtype)
+
+
+def _numpy_column(
+    dtype: str, pieces: list[tuple[numpy.ndarray, list[Any]]], length: int
+) -> numpy.ndarray | pandas.api.extensions.ExtensionArray:
+    """`_column` of values that NumPy holds as they are: no None, unless floats."""
+    import numpy
+    import pandas
+
+    rows = numpy.concatenate([rows for rows, _ in pieces])
+    dense = numpy.concatenate([numpy.array(values, dtype=_NUMPY[dtype]) for _, values in pieces])
+    if dtype == "float64":
+        column = numpy.full(length, numpy.nan)
+        column[rows] = dense
+        return column
+    data = numpy.zeros(length, dtype=dense.dtype)
+    data[rows] = dense
+    mask = numpy.ones(length, dtype=bool)
+    mask[rows] = False
+    if dtype == "boolean":
+        return pandas.arrays.BooleanArray(data, mask)
+    return pandas.arrays.IntegerArray(data, mask)
+
+
+_NUMPY = {"boolean": "bool", "Int64": "int64", "float64": "float64"}
 
 
 def _dtype(kinds: set[type]) -> str | None:
