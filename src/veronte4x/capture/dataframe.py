@@ -7,7 +7,7 @@ import dataclasses
 import enum
 import os
 from collections.abc import Iterable, Iterator
-from operator import attrgetter, methodcaller
+from operator import attrgetter, itemgetter, methodcaller
 from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
@@ -35,6 +35,7 @@ _FIELD_NAMES: dict[type, tuple[str, ...]] = {}
 
 
 def _field_names(cls: type) -> tuple[str, ...]:
+    """A dataclass's field names, in order."""
     names = _FIELD_NAMES.get(cls)
     if names is None:  # dataclasses.fields() is slow: once per class
         names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(cls))
@@ -137,6 +138,7 @@ def _records_frame(records: list[Record], relative_time: bool) -> pandas.DataFra
 
 
 _Part = tuple[str, "numpy.ndarray", list[tuple[str, list[Any]]]]
+"""A message class name, the rows of its messages, and their columns: name and values."""
 
 
 def _parts(messages: list[Any]) -> Iterator[_Part]:
@@ -185,9 +187,9 @@ def _class_columns(
             columns.append((name, values))
         elif shapes <= {"value", "enum"}:
             columns.append((name, [v.value if isinstance(v, enum.Enum) else v for v in values]))
-        elif shapes == {"tuple"} and len(set(map(len, values))) == 1:
-            items = zip(*values, strict=True)
-            columns += [(f"{name}_{index}", list(item)) for index, item in enumerate(items)]
+        elif shapes == {"tuple"} and len(lengths := set(map(len, values))) == 1:
+            items = range(lengths.pop())  # by itemgetter: zip(*values) makes a tracked iterator
+            columns += [(f"{name}_{i}", list(map(itemgetter(i), values))) for i in items]
         elif shapes == {"dataclass"} and len(kinds) == 1:
             nested = _class_columns(name + ".", kinds.pop(), values)
             if nested is None:
