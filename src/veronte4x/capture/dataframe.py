@@ -7,7 +7,7 @@ import dataclasses
 import enum
 import os
 from collections.abc import Iterable, Iterator
-from operator import attrgetter, itemgetter, methodcaller
+from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
@@ -98,31 +98,24 @@ def to_dataframe(
             source, bus_map, channel, relative_time
         )
         return frame
-    return _records_frame(list(source), relative_time)
+    return _records_frame(source, relative_time)
 
 
-def _records_frame(records: list[Record], relative_time: bool) -> pandas.DataFrame:
+_Classes = dict[type, tuple[list[int], list[Any]]]
+"""Messages grouped by class: their rows and themselves."""
+
+
+def _records_frame(records: Iterable[Record], relative_time: bool) -> pandas.DataFrame:
     """`to_dataframe` of records: the messages grouped by class, each field a column."""
     import pandas
 
-    stamps = list(map(attrgetter("timestamp"), records))
+    data, classes = _gather(records)
     if relative_time:
-        start = next((stamp for stamp in stamps if stamp is not None), None)
-        stamps = [stamp if stamp is None else stamp - start for stamp in stamps]
-    messages = list(map(attrgetter("message"), records))
-    data: dict[str, Any] = {
-        "timestamp": stamps,
-        "channel": list(map(attrgetter("channel"), records)),
-        "can_id": list(map(attrgetter("can_id"), records)),
-        "sender": list(map(attrgetter("sender"), records)),
-        "message": [None if m is None else type(m).__name__ for m in messages],
-        "error": list(map(attrgetter("error"), records)),
-        "detail": list(map(attrgetter("detail"), records)),
-        "data": list(map(methodcaller("hex"), map(attrgetter("data"), records))),
-    }
+        start = next((stamp for stamp in data["timestamp"] if stamp is not None), None)
+        data["timestamp"] = [t if t is None else t - start for t in data["timestamp"]]
     units: dict[str, str] = {"timestamp": "s"}
     pieces: dict[str, list[tuple[numpy.ndarray, list[Any]]]] = {}
-    for class_name, rows, columns in sorted(_parts(messages), key=lambda part: part[1][0]):
+    for class_name, rows, columns in sorted(_parts(classes), key=lambda part: part[1][0]):
         for name, values in columns:
             if name not in pieces:  # first seen: the column's place and unit
                 pieces[name] = []
@@ -130,29 +123,50 @@ def _records_frame(records: list[Record], relative_time: bool) -> pandas.DataFra
                 if symbol is not None:
                     units[name] = symbol
             pieces[name].append((rows, values))
+    length = len(data["timestamp"])
     for name, column in pieces.items():
-        data[name] = _column(column, len(records))
+        data[name] = _column(column, length)
     frame = pandas.DataFrame(data)
     frame.attrs["units"] = units
     return frame
+
+
+def _gather(records: Iterable[Record]) -> tuple[dict[str, list[Any]], _Classes]:
+    """The records' own columns, and their messages by class. Records are not kept: the
+    garbage collector would walk every one of them again and again."""
+    head: dict[str, list[Any]] = {name: [] for name in _HEAD}
+    stamps, channels, can_ids, senders, names, errors, details, data = head.values()
+    classes: _Classes = {}
+    for row, record in enumerate(records):
+        message = record.message
+        stamps.append(record.timestamp)
+        channels.append(record.channel)
+        can_ids.append(record.can_id)
+        senders.append(record.sender)
+        names.append(None if message is None else type(message).__name__)
+        errors.append(record.error)
+        details.append(record.detail)
+        data.append(record.data.hex())
+        group = classes.get(type(message))
+        if group is None:
+            group = classes[type(message)] = ([], [])
+        group[0].append(row)
+        group[1].append(message)
+    return head, classes
+
+
+_HEAD = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
 
 
 _Part = tuple[str, "numpy.ndarray", list[tuple[str, list[Any]]]]
 """A message class name, the rows of its messages, and their columns: name and values."""
 
 
-def _parts(messages: list[Any]) -> Iterator[_Part]:
+def _parts(classes: _Classes) -> Iterator[_Part]:
     """The field columns of each message class, or of each shape of a class's messages
     when the class has no single shape (tuples of several lengths, a union of classes)."""
     import numpy
 
-    classes: dict[type, tuple[list[int], list[Any]]] = {}
-    for row, message in enumerate(messages):
-        group = classes.get(type(message))
-        if group is None:
-            group = classes[type(message)] = ([], [])
-        group[0].append(row)
-        group[1].append(message)
     for cls, (rows, instances) in classes.items():
         if not dataclasses.is_dataclass(cls):
             continue
