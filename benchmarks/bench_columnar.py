@@ -41,7 +41,7 @@ from pathlib import Path
 import can
 import numpy as np
 from asammdf import MDF
-from bench_capture import make_file
+from bench_capture import flight_lines, make_file
 
 from veronte4x import capture
 from veronte4x.capture.columnar.sources import read_frames
@@ -168,7 +168,7 @@ def fleet_rows(small: Path, root: Path, files: int, repeat: int) -> list[tuple[s
             dask.config.set(
                 {f"distributed.nanny.pre-spawn-environ.{k}": v for k, v in environ.items()}
             ),
-            LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster,
+            LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0") as cluster,
             Client(cluster) as client,
         ):
             convert(client)  # the workers import veronte4x once
@@ -210,7 +210,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as folder:
         root = Path(folder)
         big, small, head = root / "big.log", root / "small.log", root / "head.log"
-        written = make_file(big, args.frames)
+        written = make_file(big, args.frames, flight_lines(None))
         _head(big, args.small, small)
         _head(big, args.per_frame, head)
         mf4, dbc = root / "big.mf4", root / "veronte.dbc"

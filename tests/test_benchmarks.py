@@ -1,0 +1,55 @@
+"""Every benchmark of `make bench` runs to its end on tiny inputs and prints its rows: a
+change of the library or of a shared helper cannot break one unnoticed. No figure is
+checked (timings are for the performance page, never for tests)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+BENCHMARKS = Path(__file__).resolve().parent.parent / "benchmarks"
+
+RUNS = [
+    ("bench_codec.py", ["--seconds", "0.001"], ["ArbitrationVariable", "JetiTemperature"]),
+    ("bench_decode_floor.py", ["--seconds", "0.001"], ["PwmSet", "ceiling"]),
+    ("bench_dronecan.py", ["--seconds", "0.001"], ["NodeStatus"]),
+    ("bench_bitstruct.py", ["--seconds", "0.001"], ["Status"]),
+    (
+        "bench_capture.py",
+        ["--frames", "3000", "--repeat", "1"],
+        ["third DroneCAN", "veronte4x to records", "veronte4x to DataFrame"],
+    ),
+    (
+        "bench_columnar.py",
+        [
+            "--frames",
+            "20000",
+            "--small",
+            "5000",
+            "--per-frame",
+            "2000",
+            "--repeat",
+            "1",
+            "--files",
+            "2",
+        ],
+        ["asammdf", "read_tables, 20000 frames", "LocalCluster 2 workers"],
+    ),
+]
+
+
+@pytest.mark.parametrize(("script", "args", "rows"), RUNS, ids=[run[0] for run in RUNS])
+def test_the_benchmark_runs(script: str, args: list[str], rows: list[str]) -> None:
+    done = subprocess.run(
+        [sys.executable, str(BENCHMARKS / script), *args],
+        capture_output=True,
+        text=True,
+        cwd=BENCHMARKS.parent,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    for row in rows:
+        assert row in done.stdout
