@@ -105,10 +105,8 @@ def check_seconds(function: str, argument: str, value: object) -> None:
         Traceback (most recent call last):
         TypeError: poll(): now must be a number of seconds, not str
     """
-    if value.__class__ is not float and (
-        isinstance(value, bool) or not isinstance(value, (int, float))
-    ):
-        raise argument_type_error(function, argument, "a number of seconds", value)
+    if value.__class__ is not float:
+        check_types(function, (argument, value, (int, float), "a number of seconds"))
 
 
 TypeCheck = tuple[str, object, type | tuple[type, ...], str]
