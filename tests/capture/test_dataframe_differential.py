@@ -16,6 +16,7 @@ from tests.capture.columnar_support import BUS_MAPS, captures
 from veronte4x import capture
 from veronte4x.capture import BusMap, CaptureDecoder, Record
 from veronte4x.capture.busmap import Role
+from veronte4x.capture.dataframe import _dtype  # the dtype rule both algorithms share
 from veronte4x.units import unit
 
 pandas = pytest.importorskip("pandas")
@@ -62,16 +63,6 @@ def reference(records: Iterable[Record], relative_time: bool = False) -> Any:
     frame = pandas.DataFrame(data)
     frame.attrs["units"] = units
     return frame
-
-
-def _dtype(kinds: set[type]) -> str | None:
-    if kinds == {bool}:
-        return "boolean"
-    if kinds and all(issubclass(k, int) and not issubclass(k, bool) for k in kinds):
-        return "Int64"
-    if kinds and all(issubclass(k, (int, float)) and not issubclass(k, bool) for k in kinds):
-        return "float64"
-    return None
 
 
 def assert_same(records: list[Record]) -> None:
