@@ -113,7 +113,9 @@ def test_request_times_out_by_the_clock(buses: tuple[can.BusABC, can.BusABC]) ->
 def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.BusABC]) -> None:
     esc_bus, client_bus = buses
     clock = StepClock(0.01)
-    node = EscNode(esc_bus, SimulatedEsc(ESC, telem_frequency=10, start_time=0.0), clock=clock)
+    node = EscNode(
+        esc_bus, SimulatedEsc(ESC, telem_frequency=10, command_timeout=None), clock=clock
+    )
     other = BusClient(client_bus, 10, clock=clock)
     other.broadcast(vertiq.raw_command([0.2]))
     node.run(1.5, max_wait=0.001)  # real seconds blocked per wait on the empty bus

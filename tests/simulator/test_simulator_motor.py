@@ -60,7 +60,7 @@ def test_zero_behaviors() -> None:
 
 
 def test_reverse_throttle_gives_negative_rpm() -> None:
-    esc = SimulatedEsc(ESC)
+    esc = SimulatedEsc(ESC, command_timeout=None)
     feed(esc, vertiq.raw_command([-0.25]), 0.0)
     esc.poll(0.0)
     status = decode(esc.poll(2.0))[1].message
@@ -69,7 +69,7 @@ def test_reverse_throttle_gives_negative_rpm() -> None:
 
 
 def test_temperatures_rise_then_fall_and_flag_overheating() -> None:
-    esc = SimulatedEsc(ESC, telem_frequency=1)
+    esc = SimulatedEsc(ESC, telem_frequency=1, command_timeout=None)
     feed(esc, vertiq.raw_command([1.0]), 0.0)
     flags = []
     for second in range(0, 121):
@@ -96,7 +96,7 @@ def test_temperatures_rise_then_fall_and_flag_overheating() -> None:
 
 def test_custom_model_constants() -> None:
     model = MotorModel(max_rpm=2000.0, supply_voltage=12.0)
-    esc = SimulatedEsc(ESC, model=model)
+    esc = SimulatedEsc(ESC, model=model, command_timeout=None)
     feed(esc, vertiq.raw_command([1.0]), 0.0)
     esc.poll(100.0)
     assert round(esc.state.rpm) == 2000

@@ -265,7 +265,7 @@ def test_requests_to_other_nodes_and_responses_are_ignored() -> None:
 
 
 def test_raw_command_at_its_index() -> None:
-    esc = SimulatedEsc(ESC, 3)
+    esc = SimulatedEsc(ESC, 3, command_timeout=None)
     feed(esc, vertiq.raw_command({3: -1.0}), 0.0)
     assert esc.state.throttle == -1.0
     esc.poll(DEFAULT_MODEL.drive_time_constant)

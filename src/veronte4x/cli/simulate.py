@@ -12,6 +12,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.extras import require
+from veronte4x.simulator.esc import COMMAND_TIMEOUT
 
 
 def _node_list(text: str) -> list[int]:
@@ -22,6 +23,25 @@ def _node_list(text: str) -> list[int]:
     if not nodes or any(not 1 <= n <= 127 for n in nodes) or len(set(nodes)) != len(nodes):
         raise argparse.ArgumentTypeError(f"{text!r}: distinct node ids in 1..127 expected")
     return nodes
+
+
+def _not_negative(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not value >= 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError(f"{text} must be a finite number, 0 or above")
+    return value
+
+
+_OPTIONS = {
+    "telem_frequency": "--telem-frequency",
+    "command_timeout": "--command-timeout",
+    "node_id": "--nodes",
+    "esc_index": "--nodes (esc_index)",
+}
+"""The option of each `SimulatedEsc` argument, for error lines in the user's words."""
 
 
 def add_parser(commands: Any) -> None:
@@ -49,6 +69,14 @@ def add_parser(commands: Any) -> None:
         metavar="BYTES",
         help="fault: hang during a firmware update after reading BYTES",
     )
+    esc.add_argument(
+        "--command-timeout",
+        type=_not_negative,
+        default=COMMAND_TIMEOUT,
+        metavar="S",
+        help="a RawCommand setpoint holds S seconds without a new one, then zero throttle "
+        f"({COMMAND_TIMEOUT:g}; 0: never, to test a tool against an ESC without one)",
+    )
     esc.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
     add_bus_options(esc)
     esc.set_defaults(run=run, bus_map=None)
@@ -70,11 +98,13 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
                 telem_frequency=args.telem_frequency,
                 supports_firmware_update=not args.no_firmware_update,
                 update_stall_offset=args.stall_update_at,
+                command_timeout=args.command_timeout or None,
             )
             for index, node in enumerate(args.nodes)
         ]
     except EncodeError as error:
-        print(f"veronte4x: {error}", file=sys.stderr)
+        option = _OPTIONS.get(error.field, error.field)
+        print(f"veronte4x: {option} {error.value!r} is refused: {error.allowed}", file=sys.stderr)
         return EXIT_USAGE
     bus = open_bus(**bus_settings(args))
     stop = threading.Event()

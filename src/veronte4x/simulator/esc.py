@@ -93,6 +93,13 @@ FILE_REQUEST_TIMEOUT = 0.5
 FILE_REQUEST_RETRIES = 3
 """Retries of a file request before the simulator gives the update up."""
 
+COMMAND_TIMEOUT = 0.2
+"""Seconds a RawCommand setpoint holds without a new one; then the ESC takes a zero
+setpoint (its ``zero_behavior``). Vertiq's DroneCAN document gives no figure: this is an
+assumption, ArduPilot's AP_Periph ESC default (its ``ESC_CMD_TIMO`` parameter: 200 ms, 0 to
+disable, "hold the last driven ESC command before timing out and zeroing the ESC
+outputs")."""
+
 UNIQUE_ID_PREFIX = b"veronte4x.sim\x00\x00"
 """First 15 bytes of the 16-byte unique id; the last is the node id given at construction."""
 
@@ -176,6 +183,9 @@ class SimulatedEsc:
             bytes. None (the default) for a module that does not hang.
         priority: CAN priority of the messages it publishes, 0 (highest) to 31.
         model: The motor model's constants.
+        command_timeout: Seconds a RawCommand setpoint holds without a new command
+            (`COMMAND_TIMEOUT`); then a zero setpoint takes over, as when a ground tool is
+            killed or loses the bus. None never times out (a fault to test with).
 
     The arguments are also the parameters' defaults (``default_value`` in GetSet replies).
 
@@ -196,6 +206,7 @@ class SimulatedEsc:
         priority: int = DEFAULT_PRIORITY,
         model: MotorModel = DEFAULT_MODEL,
         update_stall_offset: int | None = None,
+        command_timeout: float | None = COMMAND_TIMEOUT,
     ) -> None:
         given = (
             ("node_id", node_id),
@@ -209,6 +220,16 @@ class SimulatedEsc:
             for r, (argument, value) in zip(parameters.PARAMETERS, given, strict=True)
         )
         self._priority = _check("priority", priority, 0, 31)
+        if command_timeout is not None and (
+            isinstance(command_timeout, bool)
+            or not isinstance(command_timeout, (int, float))
+            or not (math.isfinite(command_timeout) and command_timeout > 0)
+        ):
+            raise EncodeError(
+                "SimulatedEsc", "command_timeout", command_timeout, "seconds above 0, or None"
+            )
+        self._command_timeout = command_timeout
+        self._command_deadline: float | None = None
         self._values = list(self._defaults)
         self._supports_firmware_update = supports_firmware_update
         self._model = model
@@ -275,6 +296,15 @@ class SimulatedEsc:
         return max(0, math.floor(timestamp - self._boot_time))
 
     def _advance(self, timestamp: float) -> None:
+        deadline = self._command_deadline
+        if deadline is not None and deadline <= timestamp:
+            self._command_deadline = None
+            if deadline > self._now:
+                self._motor = motor.advance(self._motor, deadline - self._now, self._model)
+                self._now = deadline
+            if self._motor.driven:  # the setpoint timed out: a zero setpoint takes over
+                behavior = ZeroBehavior(self._value(Parameter.ZERO_BEHAVIOR))
+                self._motor = motor.command(self._motor, 0.0, behavior)
         if timestamp > self._now:
             self._motor = motor.advance(self._motor, timestamp - self._now, self._model)
             self._now = timestamp
@@ -293,6 +323,7 @@ class SimulatedEsc:
         self._node_status.restart(NODE_STATUS_FREQUENCY, timestamp)
         self._telemetry.restart(self._value(Parameter.TELEM_FREQUENCY), timestamp)
         self._motor = motor.release(self._motor)
+        self._command_deadline = None
 
     def power_cycle(self, timestamp: float) -> None:
         """Switch the module off and on at ``timestamp`` (the way out of the bootloader).
@@ -341,6 +372,8 @@ class SimulatedEsc:
             return
         behavior = ZeroBehavior(self._value(Parameter.ZERO_BEHAVIOR))
         self._motor = motor.command(self._motor, raw_to_throttle(command.cmd[index]), behavior)
+        if self._command_timeout is not None:
+            self._command_deadline = self._now + self._command_timeout
 
     def _serve(self, request: Transfer, timestamp: float) -> None:
         message = request.message
