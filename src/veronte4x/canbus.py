@@ -6,6 +6,7 @@ decoding itself stays sans-IO in `veronte4x.capture.decoder`.
 
 from __future__ import annotations
 
+import configparser
 import os
 from collections.abc import Callable
 from typing import Any
@@ -56,7 +57,14 @@ def open_bus(
     if config_file is not None:
         if not os.path.isfile(config_file):
             raise BusOpenError(f"python-can configuration file {config_file!r} not found")
-        settings.update(can.util.load_file_config(config_file))
+        try:
+            settings.update(can.util.load_file_config(config_file))
+        except (configparser.Error, UnicodeDecodeError) as error:
+            reason = str(error).splitlines()[0] if str(error) else type(error).__name__
+            raise BusOpenError(
+                f"python-can configuration file {config_file!r} is not a UTF-8 INI file "
+                f"with a [default] section: {reason}"
+            ) from None
     given = {"interface": interface, "channel": channel, "bitrate": bitrate}
     settings.update({k: v for k, v in given.items() if v is not None})
     settings.update(options or {})
