@@ -172,7 +172,7 @@ def test_a_killed_spin_stops_the_motors(bus: list[str]) -> None:
     spin.send_signal(signal.SIGTERM)
     _, stderr = spin.communicate(timeout=10)
     assert spin.returncode == 130
-    assert stderr == "veronte4x: interrupted\n"
+    assert stderr == "veronte4x: interrupted; zero throttle sent to esc_index 0 (3 times)\n"
     assert set(_duty(running.stdout, 21)) == {50}
     stopped = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
     assert _duty(stopped.stdout, 21) and set(_duty(stopped.stdout, 21)) == {0}

@@ -18,6 +18,7 @@ import pytest
 from veronte4x import dronecan
 from veronte4x.client import (
     FirmwareUpdateError,
+    InvalidRequestError,
     NoResponseError,
     ParameterError,
     Phase,
@@ -88,15 +89,15 @@ def test_every_parameter_set_saved_and_read_back(buses: tuple[can.BusABC, can.Bu
     assert client.get_param(21, "esc_index").value == dronecan.IntegerValue(7)
     client.erase_params(21)
     assert client.get_param(21, "esc_index").value == dronecan.IntegerValue(0)
-    by_index = client.set_param(21, 4, 25)  # telem_frequency, by index
+    by_index = client.set_param(21, None, 25, index=4)  # telem_frequency, by index
     assert (by_index.name, by_index.value, by_index.index) == (
         "telem_frequency",
         dronecan.IntegerValue(25),
         4,
     )
-    assert client.get_param(21, 4).as_dict()["value"] == 25
+    assert client.get_param(21, index=4).as_dict()["value"] == 25
     with pytest.raises(ParameterError, match=r"^node 21 has no parameter at index 5$"):
-        client.get_param(21, 5)
+        client.get_param(21, index=5)
 
 
 def test_bad_parameter_name_and_value(buses: tuple[can.BusABC, can.BusABC]) -> None:
@@ -105,7 +106,9 @@ def test_bad_parameter_name_and_value(buses: tuple[can.BusABC, can.BusABC]) -> N
         client.get_param(21, "esc_idx")
     with pytest.raises(ParameterError, match=r"^node 21: 20 is out of range for esc_index: 0..19$"):
         client.set_param(21, "esc_index", 20)
-    with pytest.raises(ParameterError, match=r"^node 21: esc_index takes an integer, not 'two'$"):
+    with pytest.raises(
+        InvalidRequestError, match=r"^node 21: esc_index takes an integer, not 'two'$"
+    ):
         client.set_param(21, "esc_index", "two")
     assert client.get_param(21, "esc_index").value == dronecan.IntegerValue(0)
 

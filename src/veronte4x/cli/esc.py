@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import (
+    EXIT_FINDINGS,
     EXIT_INTERRUPTED,
     EXIT_NO_ANSWER,
     EXIT_OK,
@@ -30,13 +31,15 @@ from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.client.errors import (
     ClientError,
     FirmwareUpdateError,
+    InvalidRequestError,
     NoResponseError,
 )
-from veronte4x.client.firmware import Phase, UpdateProgress
+from veronte4x.client.firmware import MAX_IMAGE_SIZE, Phase, UpdateProgress, check_image
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
 from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
@@ -45,6 +48,7 @@ from veronte4x.dronecan.messages import (
     IntegerValue,
     SoftwareVersionFlag,
 )
+from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError
 from veronte4x.extras import require
 
@@ -78,14 +82,16 @@ def add_parser(commands: Any) -> None:
     params = action("params", "every parameter: name, value, default, range", _params)
     _node(params)
 
-    get = action("get", "read one parameter by name (or index)", _get)
+    get = action("get", "read one parameter by name (or by index with --by-index)", _get)
     _node(get)
-    get.add_argument("name", type=_name_or_index, help="parameter name, e.g. esc_index, or index")
+    get.add_argument("name", help="parameter name, e.g. esc_index (an index with --by-index)")
+    _by_index(get)
 
-    set_ = action("set", "set one parameter by name or index (range checked first)", _set)
+    set_ = action("set", "set one parameter by name (range checked first)", _set)
     _node(set_)
-    set_.add_argument("name", type=_name_or_index, help="parameter name, or index")
+    set_.add_argument("name", help="parameter name (an index with --by-index)")
     set_.add_argument("value", help="new value, of the parameter's type")
+    _by_index(set_)
 
     save = action("save", "save the parameters to non-volatile storage (ExecuteOpcode)", _save)
     _node(save)
@@ -102,33 +108,92 @@ def add_parser(commands: Any) -> None:
     update = action(
         "update", "update the firmware: the node pulls the image via file.Read", _update
     )
-    update.add_argument("node", type=int, help="node id")
+    update.add_argument("node", type=node_id, help="node id, 1..127")
     update.add_argument("firmware", help="firmware image file")
     update.add_argument("--path", help="name the node is told to read (default: the file name)")
     update.add_argument("--start-timeout", type=float, default=10.0, metavar="S")
     update.add_argument("--read-timeout", type=float, default=5.0, metavar="S")
     update.add_argument("--restart-timeout", type=float, default=30.0, metavar="S")
+    update.add_argument(
+        "--max-image-size",
+        type=int,
+        default=MAX_IMAGE_SIZE,
+        metavar="BYTES",
+        help=f"refuse a larger image before sending anything ({MAX_IMAGE_SIZE})",
+    )
     _options(update)
 
     spin = action("spin", "spin motors with RawCommand at a rate (needs --yes)", _spin)
-    spin.add_argument("nodes", type=int, nargs="+", metavar="NODE", help="node ids")
+    spin.add_argument("nodes", type=node_id, nargs="+", metavar="NODE", help="node ids")
     spin.add_argument("--throttle", type=float, required=True, help="fraction in [-1, 1]")
     spin.add_argument("--duration", type=float, required=True, metavar="S", help="seconds")
     spin.add_argument("--rate", type=float, default=50.0, help="commands per second (50)")
     spin.add_argument(
         "--watchdog", type=float, default=0.5, metavar="S", help="zero throttle after S (0.5)"
     )
+    spin.add_argument(
+        "--silence",
+        type=float,
+        default=DEFAULT_SILENCE,
+        metavar="S",
+        help="stop every motor when a node sends no esc.Status or NodeStatus for S "
+        f"({DEFAULT_SILENCE:g})",
+    )
+    spin.add_argument(
+        "--max-temperature",
+        type=float,
+        metavar="DEG_C",
+        help="stop every motor when an esc.Status temperature exceeds this, in degrees C",
+    )
+    spin.add_argument(
+        "--max-current",
+        type=float,
+        metavar="A",
+        help="stop every motor when an esc.Status current exceeds this, in amperes",
+    )
     spin.add_argument("--yes", action="store_true", help="confirm: this moves motors")
     _options(spin)
 
 
-def _name_or_index(text: str) -> str | int:
-    """A parameter name, or an index when the argument is a whole number."""
-    return int(text) if text.isdigit() else text
+def node_id(text: str) -> int:
+    """A DroneCAN node id from the command line, 1..127 (argparse type)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a node id (1..127)") from None
+    if not 1 <= value <= 127:
+        raise argparse.ArgumentTypeError(f"node id {value} is out of range: 1..127")
+    return value
+
+
+def _by_index(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--by-index",
+        action="store_true",
+        help="NAME is the parameter's index (discovery order; may change with the firmware)",
+    )
+
+
+def _parameter(args: argparse.Namespace) -> tuple[str | None, int | None]:
+    """The parameter's name, or its index with ``--by-index``: never one for the other.
+
+    Raises:
+        InvalidRequestError: An index that is not a whole number, or a name that looks like
+            an index without ``--by-index``.
+    """
+    if args.by_index:
+        if not args.name.isdigit():
+            raise InvalidRequestError(f"--by-index needs a whole number, not {args.name!r}")
+        return None, int(args.name)
+    if args.name.isdigit():
+        raise InvalidRequestError(
+            f"{args.name!r} is an index, not a parameter name; add --by-index to use it as one"
+        )
+    return args.name, None
 
 
 def _node(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", type=int, help="node id, 1..127")
+    parser.add_argument("node", type=node_id, help="node id, 1..127")
     _options(parser)
 
 
@@ -136,9 +201,9 @@ def _options(parser: argparse.ArgumentParser, *, timeout: bool = True) -> None:
     add_bus_options(parser)
     parser.add_argument(
         "--node-id",
-        type=int,
+        type=node_id,
         default=DEFAULT_NODE_ID,
-        help=f"this tool's node id ({DEFAULT_NODE_ID})",
+        help=f"this tool's node id ({DEFAULT_NODE_ID}); give each tool on the bus its own",
     )
     if timeout:
         parser.add_argument(
@@ -183,6 +248,9 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
         except FirmwareUpdateError as error:
             _error(str(error))
             return EXIT_NO_ANSWER if error.timed_out else EXIT_REFUSED
+        except InvalidRequestError as error:
+            _error(str(error))
+            return EXIT_USAGE
         except ClientError as error:
             _error(str(error))
             return EXIT_REFUSED
@@ -333,7 +401,8 @@ def _params(client: BusClient, args: argparse.Namespace) -> int:
 
 
 def _get(client: BusClient, args: argparse.Namespace) -> int:
-    p = client.get_param(args.node, args.name)
+    name, index = _parameter(args)
+    p = client.get_param(args.node, name, index=index)
     if args.json:
         _print_json(p.as_dict())
     else:
@@ -342,7 +411,8 @@ def _get(client: BusClient, args: argparse.Namespace) -> int:
 
 
 def _set(client: BusClient, args: argparse.Namespace) -> int:
-    p = client.set_param(args.node, args.name, args.value)
+    name, index = _parameter(args)
+    p = client.set_param(args.node, name, args.value, index=index)
     if args.json:
         _print_json(p.as_dict())
     else:
@@ -376,9 +446,36 @@ def _restart(client: BusClient, args: argparse.Namespace) -> int:
 # -- firmware update ---------------------------------------------------------------------------
 
 
+MAX_PATH = 200
+"""Bytes of a path in a file request (DSDL ``uavcan.protocol.file.Path``: ``uint8[<=200]``)."""
+
+
+def read_image(file: str, max_size: int) -> bytes:
+    """The firmware image in ``file``, reading no more than one byte past ``max_size``.
+
+    Raises:
+        InvalidRequestError: The image is empty or larger than ``max_size``.
+        OSError: The file cannot be read.
+    """
+    with open(file, "rb") as stream:
+        image = stream.read(max_size + 1)
+    if len(image) > max_size:
+        raise InvalidRequestError(
+            f"{file} has more than {max_size} bytes, the firmware image limit; nothing was "
+            "sent (raise --max-image-size if the image is right)"
+        )
+    check_image(image, max_size)
+    return image
+
+
 def _update(client: BusClient, args: argparse.Namespace) -> int:
-    image = Path(args.firmware).read_bytes()
+    image = read_image(args.firmware, args.max_image_size)
     path = args.path or Path(args.firmware).name
+    if len(path.encode("utf-8")) > MAX_PATH:
+        raise InvalidRequestError(
+            f"the path the node is told to read has more than {MAX_PATH} bytes; "
+            "give a shorter one with --path"
+        )
     tty = sys.stderr.isatty()
     shown = {"phase": Phase.STARTING, "tenth": -1}
 
@@ -402,6 +499,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
         start_timeout=args.start_timeout,
         read_timeout=args.read_timeout,
         restart_timeout=args.restart_timeout,
+        max_image_size=args.max_image_size,
     )
     crc = crc64we(image)
     data = _info_dict(args.node, info)
@@ -428,29 +526,56 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
     if not args.yes:
         _error("esc spin moves motors: add --yes to confirm that they are free to turn")
         return EXIT_USAGE
-    vertiq.throttle_to_raw(args.throttle)  # EncodeError for a throttle outside [-1, 1]
+    if not -1.0 <= args.throttle <= 1.0:
+        raise InvalidRequestError(f"--throttle {args.throttle:g} is outside -1..1")
     if not args.duration > 0:
-        raise EncodeError("esc spin", "duration", args.duration, "seconds above 0")
+        raise InvalidRequestError(f"--duration {args.duration:g} must be above 0 seconds")
+    for option in ("silence", "rate", "watchdog"):
+        if not 0 < getattr(args, option) < float("inf"):
+            raise InvalidRequestError(f"--{option} {getattr(args, option):g} must be above 0")
     indices = {}
     for node in args.nodes:
         value = client.get_param(node, vertiq.Parameter.ESC_INDEX.value).value
         if not isinstance(value, IntegerValue):
-            raise EncodeError("esc spin", "esc_index", plain(value), "an integer parameter")
+            raise InvalidRequestError(
+                f"node {node} reports esc_index {plain(value)!r}, not a number"
+            )
         indices[node] = value.value
     setpoint = {index: args.throttle for index in indices.values()}
     signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
-    by_index = {index: node for node, index in indices.items()}
     rpm: dict[int, list[int]] = {node: [] for node in args.nodes}
-    with client.command_stream(args.rate, args.watchdog) as stream:
-        end = client.clock() + args.duration
-        while client.clock() < end:
-            stream.set(setpoint)
-            for event in client.spin_once(0.02):
-                if isinstance(event, Received) and isinstance(event.transfer.message, EscStatus):
-                    status = event.transfer.message
-                    node = by_index.get(status.esc_index)
-                    if node == event.transfer.source_node_id:
-                        rpm[node].append(status.rpm)
+    monitor = SpinMonitor(
+        args.nodes,
+        client.clock(),
+        silence=args.silence,
+        max_temperature=args.max_temperature,
+        max_current=args.max_current,
+    )
+    stream = client.command_stream(args.rate, args.watchdog)
+    reason: str | None = None
+    interrupted = False
+    try:
+        with stream:
+            end = client.clock() + args.duration
+            while client.clock() < end and reason is None:
+                stream.set(setpoint)
+                for event in client.spin_once(0.02):
+                    if isinstance(event, Received):
+                        monitor.observe(event.transfer)
+                        _telemetry(event.transfer, rpm)
+                reason = monitor.check(client.clock())
+    except KeyboardInterrupt:
+        interrupted = True
+    zeros = (
+        f"zero throttle sent to esc_index {', '.join(str(i) for i in sorted(setpoint))} "
+        f"({stream.STOP_REPEATS} times)"
+    )
+    if interrupted:
+        _error(f"interrupted; {zeros}")
+        return EXIT_INTERRUPTED
+    if reason is not None:
+        _error(f"{reason}; every motor stopped: {zeros}")
+        return EXIT_FINDINGS if monitor.over_limit else EXIT_NO_ANSWER
     settle = time.monotonic() + 0.2  # let the zero throttle reach the ESCs' telemetry
     while time.monotonic() < settle:
         client.spin_once(0.02)
@@ -473,4 +598,11 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
                 f"node {row['node_id']} (esc_index {row['esc_index']}): throttle "
                 f"{args.throttle:g} for {args.duration:g} s, {peak}; zero throttle sent"
             )
+    _error(zeros)
     return EXIT_OK
+
+
+def _telemetry(transfer: Transfer, rpm: dict[int, list[int]]) -> None:
+    """Keep the rpm of an esc.Status from a spun node."""
+    if isinstance(transfer.message, EscStatus) and transfer.source_node_id in rpm:
+        rpm[transfer.source_node_id].append(transfer.message.rpm)

@@ -14,14 +14,21 @@ from veronte4x.client.commander import Commander
 from veronte4x.client.errors import (
     ClientError,
     FirmwareUpdateError,
+    InvalidRequestError,
     NoResponseError,
     ParameterError,
     RejectedError,
 )
 from veronte4x.client.files import FileRead, FileServer
-from veronte4x.client.firmware import FirmwareUpdate, Phase, UpdateProgress
+from veronte4x.client.firmware import (
+    MAX_IMAGE_SIZE,
+    FirmwareUpdate,
+    Phase,
+    UpdateProgress,
+    check_image,
+)
 from veronte4x.client.nodes import OFFLINE_TIMEOUT, NodeEntry, NodeTable
-from veronte4x.client.params import ParameterInfo, plain
+from veronte4x.client.params import ParameterInfo, parameter_request, plain
 from veronte4x.client.protocol import (
     DEFAULT_NODE_ID,
     ClientProtocol,
@@ -30,11 +37,14 @@ from veronte4x.client.protocol import (
     Received,
     StatusSeen,
 )
-from veronte4x.client.requests import Answered, Pending, Requester, TimedOut
+from veronte4x.client.requests import Answered, Pending, Requester, TimedOut, answers
+from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.client.transfer_ids import TransferIds
 
 __all__ = [
     "DEFAULT_NODE_ID",
+    "DEFAULT_SILENCE",
+    "MAX_IMAGE_SIZE",
     "OFFLINE_TIMEOUT",
     "Answered",
     "ClientError",
@@ -46,6 +56,7 @@ __all__ = [
     "FileServer",
     "FirmwareUpdate",
     "FirmwareUpdateError",
+    "InvalidRequestError",
     "NoResponseError",
     "NodeEntry",
     "NodeTable",
@@ -56,9 +67,13 @@ __all__ = [
     "Received",
     "RejectedError",
     "Requester",
+    "SpinMonitor",
     "StatusSeen",
     "TimedOut",
     "TransferIds",
     "UpdateProgress",
+    "answers",
+    "check_image",
+    "parameter_request",
     "plain",
 ]

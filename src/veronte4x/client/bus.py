@@ -19,20 +19,23 @@ from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.errors import (
     FirmwareUpdateError,
+    InvalidRequestError,
     NoResponseError,
     ParameterError,
     RejectedError,
 )
 from veronte4x.client.firmware import (
+    MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
     FirmwareUpdate,
     Phase,
     UpdateProgress,
+    check_image,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.params import ParameterInfo, plain
+from veronte4x.client.params import ParameterInfo, parameter_request, plain
 from veronte4x.client.protocol import (
     DEFAULT_NODE_ID,
     ClientProtocol,
@@ -238,27 +241,30 @@ class BusClient:
         response: GetNodeInfoResponse = self.call(GetNodeInfoRequest(), node_id)
         return response
 
-    def get_param(self, node_id: int, name: str | int) -> ParameterInfo:
-        """Read one parameter by name, or by index given an int.
+    def get_param(
+        self, node_id: int, name: str | None = None, *, index: int | None = None
+    ) -> ParameterInfo:
+        """Read one parameter by name, or by ``index`` when asked for explicitly.
 
         Vertiq's modules are best read by name: their indices may change between firmware
-        versions and serve for discovery only.
+        versions and serve for discovery only. An empty name is refused: GetSet reads by
+        index when the name is empty, and index 0 is ``uavcan_node_id``.
 
         Raises:
+            InvalidRequestError: An empty name, or both or neither of name and index.
             ParameterError: The node has no such parameter.
         """
-        if isinstance(name, int):
-            request = vertiq.get_parameter_by_index(name)
-        else:
-            request = vertiq.get_parameter(name)
-        return self._parameter(node_id, name, self.call(request, node_id))
+        request = parameter_request(name, index)
+        return self._parameter(node_id, name, index, self.call(request, node_id))
 
     @staticmethod
-    def _parameter(node_id: int, name: str | int, response: GetSetResponse) -> ParameterInfo:
+    def _parameter(
+        node_id: int, name: str | None, index: int | None, response: GetSetResponse
+    ) -> ParameterInfo:
         if vertiq.is_end_of_parameters(response):
-            where = f"at index {name}" if isinstance(name, int) else repr(name)
+            where = f"at index {index}" if name is None else repr(name)
             raise ParameterError(f"node {node_id} has no parameter {where}")
-        return ParameterInfo.from_response(response, name if isinstance(name, int) else None)
+        return ParameterInfo.from_response(response, index)
 
     def list_params(self, node_id: int) -> list[ParameterInfo]:
         """Every parameter, walking the indices from 0 to the first empty answer."""
@@ -271,36 +277,44 @@ class BusClient:
         return found
 
     def set_param(
-        self, node_id: int, name: str | int, value: int | float | bool | str | Value
+        self,
+        node_id: int,
+        name: str | None,
+        value: int | float | bool | str | Value,
+        *,
+        index: int | None = None,
     ) -> ParameterInfo:
-        """Set a parameter by name (or by index given an int); return what the node reports
-        after the set.
+        """Set a parameter by name (or by ``index``, given with ``name=None``); return what
+        the node reports after the set.
 
         The parameter is read first: a ``str`` is parsed as a value of its type, and a value
         of another type or outside the node's range is refused before anything is set.
 
         Raises:
+            InvalidRequestError: An empty name, both or neither of name and index, or a
+                text value that does not parse as the parameter's type.
             ParameterError: No such parameter, a wrong type or a value out of range.
             RejectedError: The node kept another value.
         """
-        current = self.get_param(node_id, name)
+        parameter_request(name, index)  # refuse an ambiguous parameter before any request
+        current = self.get_param(node_id, name, index=index)
         if isinstance(value, _VALUES):
             wanted: Value = value
         elif isinstance(value, str) and not isinstance(current.value, StringValue):
             try:
                 wanted = current.parse(value)
             except ValueError as error:
-                raise ParameterError(f"node {node_id}: {error}") from None
+                raise InvalidRequestError(f"node {node_id}: {error}") from None
         else:
             wanted = vertiq.set_parameter(current.name, value).value
         problem = current.check(wanted)
         if problem is not None:
             raise ParameterError(f"node {node_id}: {problem}")
-        if isinstance(name, int):
-            request = GetSetRequest(index=name, value=wanted)
+        if name is None:
+            request = GetSetRequest(index=index or 0, value=wanted)
         else:
             request = GetSetRequest(value=wanted, name=name.encode("utf-8"))
-        after = self._parameter(node_id, name, self.call(request, node_id))
+        after = self._parameter(node_id, name, index, self.call(request, node_id))
         if plain(after.value) != plain(wanted):
             raise RejectedError(
                 f"node {node_id} kept {after.name} at {plain(after.value)!r} "
@@ -346,6 +360,7 @@ class BusClient:
         start_timeout: float = START_TIMEOUT,
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
+        max_image_size: int = MAX_IMAGE_SIZE,
     ) -> GetNodeInfoResponse:
         """Update a node's firmware: BeginFirmwareUpdate, serve its reads, wait for it.
 
@@ -357,14 +372,18 @@ class BusClient:
             start_timeout: Seconds from accepting to the first read.
             read_timeout: Seconds without a read that count as a stall.
             restart_timeout: Seconds after the last read for the node to run again.
+            max_image_size: Bytes above which an image is refused (`MAX_IMAGE_SIZE`).
 
         Returns:
             The node's GetNodeInfo after the update.
 
         Raises:
+            InvalidRequestError: An empty image or one above ``max_image_size``, refused
+                before anything is sent.
             FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
             NoResponseError: GetNodeInfo after the update got no answer.
         """
+        check_image(image, max_image_size)
         name = path.encode("utf-8")
         now = self.clock()
         update = FirmwareUpdate(

@@ -49,3 +49,8 @@ class FirmwareUpdateError(ClientError):
     def __init__(self, message: str, *, timed_out: bool = False) -> None:
         super().__init__(message)
         self.timed_out = timed_out
+
+
+class InvalidRequestError(ClientError, ValueError):
+    """A request refused before anything was sent: an empty parameter name, a value that
+    does not parse as the parameter's type, an empty or oversized firmware image."""

@@ -13,6 +13,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
+from veronte4x.client.errors import InvalidRequestError
 from veronte4x.client.files import FileRead
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.dronecan.messages import BeginFirmwareUpdateResponse, FirmwareUpdateError, Mode
@@ -25,6 +26,27 @@ READ_TIMEOUT = 5.0
 
 RESTART_TIMEOUT = 30.0
 """Seconds after the last read within which the node must report that it runs again."""
+
+
+MAX_IMAGE_SIZE = 2 * 1024 * 1024
+"""Bytes an image may have unless told otherwise: 2 MiB, twice the flash of the largest
+ESC microcontrollers in use (an assumption, not a DroneCAN or Vertiq figure), so that a
+wrong file (a log, a disk image) is refused before a node erases its flash."""
+
+
+def check_image(image: bytes, max_size: int = MAX_IMAGE_SIZE) -> None:
+    """Refuse an image that cannot be a firmware: empty, or larger than ``max_size`` bytes.
+
+    Raises:
+        InvalidRequestError: The image is empty or too large.
+    """
+    if not image:
+        raise InvalidRequestError("the firmware image is empty (0 bytes); nothing was sent")
+    if len(image) > max_size:
+        raise InvalidRequestError(
+            f"the firmware image has {len(image)} bytes, more than the limit of {max_size}; "
+            "nothing was sent (raise the limit if the image is right)"
+        )
 
 
 class Phase(enum.Enum):

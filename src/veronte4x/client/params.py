@@ -5,9 +5,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from veronte4x.client.errors import InvalidRequestError
+from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.messages import (
     BooleanValue,
     Empty,
+    GetSetRequest,
     GetSetResponse,
     IntegerValue,
     NumericValue,
@@ -29,6 +32,36 @@ def plain(value: Value | NumericValue) -> Plain:
     if isinstance(value, StringValue):
         return value.value.decode("utf-8", "replace")
     return value.value
+
+
+def parameter_request(name: str | None, index: int | None = None) -> GetSetRequest:
+    """The GetSet request reading one parameter by name, or by index when only ``index`` is
+    given.
+
+    DroneCAN's GetSet reads by index when the name is empty (DSDL ``param.GetSet``), and
+    index 0 of a Vertiq module is ``uavcan_node_id``: so an empty name is refused rather
+    than taken for index 0, and by-index access needs ``index`` said explicitly.
+
+    Raises:
+        InvalidRequestError: An empty name, both a name and an index, or neither.
+        TypeError: A name that is not a str or an index that is not an int.
+    """
+    if name is not None and index is not None:
+        raise InvalidRequestError(
+            f"give a parameter name ({name!r}) or an index ({index}), not both"
+        )
+    if index is not None:
+        return vertiq.get_parameter_by_index(index)
+    if name is None:
+        raise InvalidRequestError("give a parameter name, or an index to read by index")
+    if not isinstance(name, str):
+        raise TypeError(f"a parameter name is a str, not {name!r}; to read by index, give index=")
+    if not name:
+        raise InvalidRequestError(
+            "an empty parameter name is refused (DroneCAN would read index 0, uavcan_node_id); "
+            "give the name, or the index explicitly"
+        )
+    return vertiq.get_parameter(name)
 
 
 @dataclass(frozen=True, slots=True)
@@ -77,8 +110,7 @@ class ParameterInfo:
     def check(self, value: Value) -> str | None:
         """Why ``value`` cannot be set here (wrong type, out of range), or None if it can."""
         if type(value) is not type(self.value) and not isinstance(self.value, Empty):
-            kind = type(self.value).__name__.removesuffix("Value").lower()
-            return f"{self.name} takes a {kind} value, not {plain(value)!r}"
+            return f"{self.name} takes {_KINDS[type(self.value)]}, not {plain(value)!r}"
         if isinstance(value, (IntegerValue, RealValue)):
             low, high = plain(self.minimum), plain(self.maximum)
             number = value.value
@@ -114,3 +146,12 @@ class ParameterInfo:
                 raise ValueError(f"{self.name} takes true or false, not {text!r}")
             return BooleanValue(words[text.lower()])
         return StringValue(text.encode("utf-8"))
+
+
+_KINDS: dict[type, str] = {
+    IntegerValue: "an integer",
+    RealValue: "a number",
+    BooleanValue: "true or false",
+    StringValue: "text",
+}
+"""What a parameter of each value type takes, in words."""

@@ -15,6 +15,7 @@ from veronte4x.client.transfer_ids import TransferIds
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.messages import GetSetRequest, GetSetResponse
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.errors import EncodeError, check_seconds
 
@@ -23,6 +24,22 @@ DEFAULT_TIMEOUT = 1.0
 
 DEFAULT_RETRIES = 2
 """Times a request is sent again after a timeout before it fails."""
+
+
+def answers(request: Any, response: Any) -> bool:
+    """Whether ``response`` can be the answer to ``request``, as far as its data tells.
+
+    Source, destination, data type and transfer id are matched by `Requester.receive`;
+    this checks what the response says about its request. A GetSet response names the
+    parameter (DSDL ``param.GetSet``): a reply naming another parameter answers another
+    request, e.g. of another tool using the same node id and transfer id. An empty reply
+    (no such parameter) and a reply to a request by index name nothing that can be
+    checked. The other services' responses (GetNodeInfo, ExecuteOpcode, RestartNode,
+    BeginFirmwareUpdate, file.GetInfo, file.Read) carry nothing of their request.
+    """
+    if isinstance(request, GetSetRequest) and isinstance(response, GetSetResponse):
+        return not request.name or not response.name or response.name == request.name
+    return True
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,6 +133,9 @@ class Requester:
         self._pending: dict[int, Pending] = {}
         self._outbox: list[Frame] = []
         self._handles = 0
+        self.mismatched = 0
+        """Responses that matched a request's node, type and transfer id but answered
+        another request (see `answers`): discarded, the request still waits."""
 
     def request(
         self,
@@ -177,20 +197,26 @@ class Requester:
         """Match a received transfer with a pending request.
 
         A response matches when it comes from the node asked, to this node, with the
-        request's data type and the transfer id of one of its attempts.
+        request's data type and the transfer id of one of its attempts, and its data
+        `answers` the request; one that fails only the last test is counted in
+        `mismatched` and discarded.
         """
         if transfer.kind is not TransferKind.RESPONSE or transfer.destination_node_id != (
             self.node_id
         ):
             return None
+        mismatched = False
         for handle, pending in self._pending.items():
             if (
                 pending.destination == transfer.source_node_id
                 and pending.data_type_id == transfer.data_type_id
                 and transfer.transfer_id in pending.transfer_ids
             ):
-                del self._pending[handle]
-                return Answered(pending, transfer)
+                if answers(pending.message, transfer.message):
+                    del self._pending[handle]
+                    return Answered(pending, transfer)
+                mismatched = True
+        self.mismatched += mismatched
         return None
 
     def poll(self, now: float) -> list[TimedOut]:
