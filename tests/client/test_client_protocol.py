@@ -218,7 +218,7 @@ def test_protocol_serves_file_reads_to_any_node() -> None:
     assert (answer.transfer_id, answer.destination_node_id) == (7, 21)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(
     frames=st.lists(
         st.tuples(st.integers(0, 2**29 - 1), st.binary(min_size=0, max_size=8)), max_size=30
