@@ -40,13 +40,6 @@ COMMON_TESTS = ("tests/test_argument_types.py", "tests/test_errors.py")
 _SLOW = ("differential", "oracle")
 """Test files that compare against a reference implementation: most of the time."""
 
-_PLUGIN = """\
-from hypothesis import settings
-
-settings.register_profile("mutation", derandomize=True, database=None, deadline=None)
-settings.load_profile("mutation")
-"""
-
 _OPERATORS: dict[type[ast.AST], type[ast.AST]] = {
     ast.Add: ast.Sub,
     ast.Sub: ast.Add,
@@ -235,7 +228,7 @@ def _run(copy: Path, tests: list[str], timeout: float) -> str:
     """``killed``, ``survived`` or ``timeout``: the outcome of the tests on the copy."""
     command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
     command += ["-c", str(ROOT / "pyproject.toml"), "--rootdir", str(ROOT)]
-    command += ["-p", "_mutation_profile", "--hypothesis-profile=mutation", *tests]
+    command += ["--hypothesis-profile=derandomized", *tests]
     environment = dict(os.environ, PYTHONPATH=str(copy), PYTHONDONTWRITEBYTECODE="1")
     try:
         result = subprocess.run(
@@ -282,7 +275,6 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as temporary:
         copy = Path(temporary)
         shutil.copytree(PACKAGE, copy / "veronte4x", ignore=shutil.ignore_patterns("__pycache__"))
-        (copy / "_mutation_profile.py").write_text(_PLUGIN)
         times = _baseline(copy)
         killed = 0
         for mutant in mutants:

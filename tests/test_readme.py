@@ -8,6 +8,7 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -85,6 +86,25 @@ def test_readme_command_runs_clean_on_the_demo_flight(command: str, demo: Path) 
         assert SUMMARY.fullmatch(summary), summary
 
 
-def test_readme_python_runs() -> None:
-    for block in _blocks("python"):
-        exec(compile(block, "README.md", "exec"), {})
+def test_readme_python_runs(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each Python block runs from the checkout and gives what its comments say."""
+    from veronte4x import codec
+
+    monkeypatch.chdir(ROOT)
+    first, second = _blocks("python")
+    names: dict[str, Any] = {}
+    exec(compile(first, "README.md", "exec"), names)
+    assert names["msg"] == codec.Ready(ready=True)
+
+    names = {}
+    exec(compile(second, "README.md", "exec"), names)
+    assert "Status" in names["tables"]
+    status = names["status"]
+    columns = ["timestamp", "can_id", "selected", "arbitrating", "alive_2", "alive_3"]
+    columns += ["ready_2", "ready_3", "cbit_ok", "normal_mode"]
+    # examples/capture.log lines 18-19: 0FF#00FF8177FFFF (the 4x form) and 0FF#00FF8177
+    # (the 1x form, no check bytes): AP2 selected, arbitrating, AP1-AP3 alive and ready.
+    assert status[columns].to_numpy().tolist() == [
+        [1763737200.25, 255, 1, True, True, False, True, False, True, True],
+        [1763737200.251, 255, 1, True, True, False, True, False, None, None],
+    ]

@@ -5,7 +5,15 @@ from __future__ import annotations
 import struct
 
 import pytest
-from arbiter_support import SEED_VALUES, SEED_VARIABLES, Rig, f32
+from arbiter_support import (
+    READY,
+    SEED_VALUES,
+    SEED_VARIABLES,
+    STATUS_AP2_ALL_ALIVE,
+    Rig,
+    f32,
+    variable,
+)
 
 from veronte4x.arbiter import Arbiter, ArbiterConfig, SystemChecks, VariableConfig, compute_scores
 
@@ -64,12 +72,34 @@ def test_score_only() -> None:
 
 
 def test_a_late_poll_sends_each_message_once() -> None:
+    """The autopilots keep talking every 0.05 s; the arbiter is polled at a few times only.
+
+    A poll 40 Status periods and 3 Score periods late sends one Status and one Score per
+    autopilot, and the due times stay on the grid of their start (Status next at 10.25 s,
+    Scores at 12.0 s).
+    """
     arb = Arbiter(CONFIG)
-    assert len(arb.poll(0.0)) == 1  # Status; no scores yet, so no Score frame
-    assert len(arb.poll(0.1)) == 0
-    assert len(arb.poll(10.0)) == 1  # 40 Status periods and 3 Score periods late
-    assert len(arb.poll(10.2)) == 0
-    assert len(arb.poll(10.25)) == 1
+    status = (255, STATUS_AP2_ALL_ALIVE)
+    scores = [(255, bytes([0, ap]) + struct.pack("<f", s)) for ap, s in wire_scores().items()]
+    polls = {0.0: [status, *scores], 0.1: [], 10.0: [status, *scores], 10.2: []}
+    polls |= {10.25: [status], 11.95: [status], 12.0: [status, *scores]}
+    sent = {}
+    for tick in range(round(12.0 / 0.05) + 1):
+        time = round(tick * 0.05, 9)
+        for autopilot, can_id in enumerate(CONFIG.autopilot_ids[:3]):
+            arb.receive(can_id, READY, time)
+            for number, value in enumerate(SEED_VALUES[autopilot]):
+                arb.receive(can_id, variable(number, value), time)
+        if time in polls:
+            sent[time] = arb.poll(time)
+    assert sent == polls
+
+
+def test_a_late_poll_with_no_autopilot_heard_sends_one_status() -> None:
+    arb = Arbiter(CONFIG)
+    # Nothing selected, not arbitrating, nothing alive or ready, every check OK; no scores.
+    nobody = [(255, bytes.fromhex("00ff0000ffff"))]
+    assert [arb.poll(t) for t in (0.0, 0.1, 10.0, 10.2, 10.25)] == [nobody, [], nobody, [], nobody]
 
 
 def test_scores_beyond_float32_go_out_as_infinity() -> None:

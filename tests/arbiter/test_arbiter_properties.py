@@ -91,7 +91,7 @@ def drive(
     return seen
 
 
-@settings(max_examples=250, deadline=None)
+@settings(max_examples=250)
 @given(configs(), steps(40))
 def test_never_a_dead_selection_while_one_lives_and_never_a_revival(
     config: ArbiterConfig, schedule: list[Step]
@@ -109,7 +109,7 @@ def test_never_a_dead_selection_while_one_lives_and_never_a_revival(
             assert state.selected == config.preferred
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=100)
 @given(configs(), steps(40), st.sampled_from([Method.FIXED_0, Method.FIXED_1, Method.FIXED_2]))
 def test_a_fixed_method_stays_fixed(
     config: ArbiterConfig, schedule: list[Step], method: Method
@@ -125,7 +125,7 @@ def test_a_fixed_method_stays_fixed(
         assert not state.arbitrating
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=100)
 @given(configs(), steps(40))
 def test_only_frames_the_codec_decodes(config: ArbiterConfig, schedule: list[Step]) -> None:
     for _, status, frames in drive(config, schedule):

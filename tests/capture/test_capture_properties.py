@@ -134,7 +134,7 @@ def _reference(decoder: CaptureDecoder, lines: list[str], channel: str | None) -
     return list(decoder.decode(items))
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=300, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
 def test_fused_reader_agrees_with_the_exact_parser(
     data: st.DataObject, bus_map: BusMap, channel: str | None

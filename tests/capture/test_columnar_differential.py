@@ -13,7 +13,7 @@ from veronte4x import capture
 from veronte4x.capture import BusMap
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
 def test_generated_captures_agree(
     data: st.DataObject, bus_map: BusMap, channel: str | None
@@ -26,7 +26,7 @@ def test_generated_captures_agree(
     assert_same_tables(got, expected)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(st.lists(st.text(max_size=60), max_size=20))
 def test_arbitrary_text_agrees(lines: list[str]) -> None:
     with tempfile.TemporaryDirectory() as folder:
@@ -43,7 +43,7 @@ stamps = st.one_of(
 )
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(
     st.lists(
         st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
@@ -68,7 +68,7 @@ human_stamps = st.one_of(
 )
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(st.lists(st.tuples(human_stamps, st.booleans()), min_size=1, max_size=12))
 def test_human_view_times_agree(lines: list[tuple[str, bool]]) -> None:
     frame = ["0FF   [3]  00 FF 01", "1004060A   [8]  00 00 00 00 00 00 00 C0"]

@@ -80,7 +80,7 @@ def assert_same(records: list[Record]) -> None:
         assert list(got.attrs["units"].items()) == list(expected.attrs["units"].items())
 
 
-@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=100, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS)
 def test_decoded_captures(data: st.DataObject, bus_map: BusMap) -> None:
     lines = data.draw(captures(bus_map))
@@ -154,7 +154,7 @@ def records(draw: st.DrawFn) -> Record:
     )
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(st.lists(records(), max_size=12))
 def test_messages_of_any_shape(generated: list[Record]) -> None:
     assert_same(generated)

@@ -40,7 +40,7 @@ def read_back(out: Path, source: str | None = None) -> dict[str, pa.Table]:
     return tables
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]), st.integers(1, 400))
 def test_dataset_equals_read_tables(
     data: st.DataObject, bus_map: BusMap, channel: str | None, batch_bytes: int

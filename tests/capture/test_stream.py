@@ -40,7 +40,7 @@ def batched(
         return {k: pa.concat_tables(t).unify_dictionaries() for k, t in parts.items()}
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=60, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
 def test_generated_captures_in_random_batches(
     data: st.DataObject, bus_map: BusMap, channel: str | None

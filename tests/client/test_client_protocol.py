@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from veronte4x import dronecan
@@ -19,11 +19,11 @@ from veronte4x.client import (
     NodeTable,
     Phase,
     Requester,
-    StatusSeen,
     TimedOut,
     TransferIds,
 )
 from veronte4x.client.files import FileRead
+from veronte4x.client.protocol import Received
 from veronte4x.errors import EncodeError
 
 K = dronecan.TransferKind
@@ -218,20 +218,126 @@ def test_protocol_serves_file_reads_to_any_node() -> None:
     assert (answer.transfer_id, answer.destination_node_id) == (7, 21)
 
 
-@settings(max_examples=300, deadline=None)
-@given(
-    frames=st.lists(
-        st.tuples(st.integers(0, 2**29 - 1), st.binary(min_size=0, max_size=8)), max_size=30
+_CLIENT, _ASKED = 100, 21
+
+
+def _transfer_frames(
+    message: Any, source: int, destination: int, transfer_id: int
+) -> list[tuple[int, bytes]]:
+    frames = dronecan.encode(
+        message, source_node_id=source, destination_node_id=destination, transfer_id=transfer_id
     )
+    return [(f.can_id, f.data) for f in frames]
+
+
+_SERVICE_MESSAGES = st.sampled_from(
+    [
+        _INFO,  # the response the client waits for: one transfer id matches, 31 do not
+        dronecan.GetNodeInfoRequest(),
+        dronecan.RestartNodeResponse(True),
+        dronecan.FileReadRequest(0, dronecan.Path(b"fw")),
+        dronecan.FileReadRequest(300, dronecan.Path(b"none")),
+    ]
+)
+
+
+@st.composite
+def _service_transfer(draw: st.DrawFn) -> list[tuple[int, bytes]]:
+    """The frames of one service transfer, most from the node asked to the client.
+
+    Sometimes damaged: a frame dropped, repeated or with a byte changed.
+    """
+    message = draw(st.just(_INFO) | _SERVICE_MESSAGES)
+    nodes = st.sampled_from([_CLIENT, _ASKED]) | st.integers(1, 127)
+    source = draw(st.just(_ASKED) | nodes)
+    destination = draw((st.just(_CLIENT) | nodes).filter(lambda node: node != source))
+    transfer_id = draw(st.sampled_from([0, 0, 1, 31]) | st.integers(0, 31))
+    frames = _transfer_frames(message, source, destination, transfer_id)
+    fault = draw(st.sampled_from(["none", "none", "drop", "repeat", "byte"]))
+    position = draw(st.integers(0, len(frames) - 1))
+    if fault == "drop":
+        del frames[position]
+    elif fault == "repeat":
+        frames.insert(position, frames[position])
+    elif fault == "byte":
+        can_id, data = frames[position]
+        index = draw(st.integers(0, len(data) - 1))
+        data = data[:index] + bytes([data[index] ^ draw(st.integers(1, 255))]) + data[index + 1 :]
+        frames[position] = (can_id, data)
+    return frames
+
+
+_RANDOM_FRAME = st.tuples(st.integers(0, 2**29 - 1), st.binary(min_size=0, max_size=8))
+_FRAMES = st.lists(
+    _service_transfer() | st.lists(_RANDOM_FRAME, min_size=1, max_size=3), max_size=12
+).map(lambda pieces: [frame for piece in pieces for frame in piece])
+
+
+def _expected(transfer: dronecan.Transfer, waiting: bool) -> list[str]:
+    """The events a transfer should give (spec 4.1), ``waiting`` for the GetNodeInfo answer."""
+    names = ["Received"]
+    if isinstance(transfer.message, dronecan.NodeStatus):
+        names.append("StatusSeen")
+    if transfer.destination_node_id != _CLIENT:
+        return names
+    if transfer.kind is K.RESPONSE:
+        if (
+            waiting
+            and transfer.source_node_id == _ASKED
+            and isinstance(transfer.message, dronecan.GetNodeInfoResponse)
+            and transfer.transfer_id == 0
+        ):
+            names.append("Answered")
+    elif isinstance(transfer.message, dronecan.FileReadRequest):
+        names.append("FileServed")
+    return names
+
+
+@settings(max_examples=300)
+@given(frames=_FRAMES)
+@example(  # the answer with the wrong transfer id, then twice with the right one
+    frames=[
+        *_transfer_frames(_INFO, _ASKED, _CLIENT, 1),
+        *_transfer_frames(_INFO, _ASKED, _CLIENT, 0),
+        *_transfer_frames(_INFO, _ASKED, _CLIENT, 0),
+    ]
 )
 def test_any_frames_give_events_or_nothing(frames: list[tuple[int, bytes]]) -> None:
-    client = ClientProtocol(node_id=100)
-    client.request(dronecan.GetNodeInfoRequest(), 21, now=0.0)
+    """Frames of every kind, intact or damaged: each transfer gives exactly its events.
+
+    A GetNodeInfo response from the node asked, to the client, with the request's transfer
+    id answers the request once; any other transfer id, source, destination or type does
+    not. A file read request to the client is served with the same transfer id; anything
+    else is only reported as received.
+    """
+    client = ClientProtocol(node_id=_CLIENT)
+    client.files.add(b"fw", b"\x01" * 10)
+    handle = client.request(dronecan.GetNodeInfoRequest(), _ASKED, now=0.0)
+    client.take_frames()
+    waiting = True
     for number, (can_id, data) in enumerate(frames):
         events = client.receive(can_id, data, number * 0.01)
-        assert all(
-            isinstance(e, (Answered, FileServed, StatusSeen)) or type(e).__name__ == "Received"
-            for e in events
-        )
+        if not events:
+            continue
+        assert isinstance(events[0], Received)
+        transfer = events[0].transfer
+        assert [type(e).__name__ for e in events] == _expected(transfer, waiting)
+        for event in events:
+            if isinstance(event, Answered):
+                waiting = False
+                assert event.request.handle == handle
+                assert event.transfer.message == _INFO
+            elif isinstance(event, FileServed):
+                reply = dronecan.decode_frames([(f.can_id, f.data) for f in client.take_frames()])
+                assert (reply.source_node_id, reply.destination_node_id) == (
+                    _CLIENT,
+                    transfer.source_node_id,
+                )
+                assert (reply.transfer_id, reply.priority) == (
+                    transfer.transfer_id,
+                    transfer.priority,
+                )
+        assert client.take_frames() == []
+    assert (client.requests.pending(handle) is None) is not waiting
     client.poll(10.0)
     client.take_frames()

@@ -175,7 +175,7 @@ def test_every_type_has_a_strategy() -> None:
 
 
 @pytest.mark.parametrize("key", list(STRATEGIES), ids=[f"{n}-{k.name}" for n, k in STRATEGIES])
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(data=st.data())
 def test_frames_identical_and_cross_decoded(
     key: tuple[str, dronecan.TransferKind], data: st.DataObject

@@ -115,7 +115,7 @@ def _sorted(items: list[Any]) -> list[Any]:
     return sorted(items, key=repr)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(
     sessions=st.lists(_SESSION, min_size=1, max_size=4, unique_by=lambda s: s[0]),
     faults=st.lists(st.sampled_from([0, 0, 0, 1, 2, 3]), max_size=20),
@@ -284,7 +284,7 @@ def test_memory_stays_bounded() -> None:
     assert r.counts[Problem.EVICTED] == 2 * 127 - 16
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(
     st.lists(
         st.tuples(

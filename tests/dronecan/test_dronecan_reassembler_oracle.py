@@ -170,7 +170,7 @@ def _intact(sent: list[Sent], wire: list[OnWire], times: list[float]) -> dict[in
     return intact
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(scenario=_scenario())
 def test_every_intact_transfer_is_delivered(
     scenario: tuple[list[Sent], list[OnWire], list[float]],
@@ -211,7 +211,7 @@ def test_every_intact_transfer_is_delivered(
     assert r.session_count <= r.max_sessions
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(scenario=_scenario(), limit=st.integers(1, 4))
 def test_a_small_session_table_stays_bounded(
     scenario: tuple[list[Sent], list[OnWire], list[float]], limit: int

@@ -26,7 +26,7 @@ _ANYTHING = st.one_of(
 
 
 @pytest.mark.parametrize("data_type", DATA_TYPES, ids=lambda t: f"{t.full_name}-{t.kind.name}")
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=100)
 @given(payload=st.binary(max_size=400))
 def test_any_payload_decodes_or_raises_decode_error(data_type: Any, payload: bytes) -> None:
     try:
@@ -38,7 +38,7 @@ def test_any_payload_decodes_or_raises_decode_error(data_type: Any, payload: byt
 
 
 @pytest.mark.parametrize("data_type", DATA_TYPES, ids=lambda t: f"{t.full_name}-{t.kind.name}")
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=100)
 @given(data=st.data())
 def test_any_field_values_encode_or_raise_encode_error(data_type: Any, data: Any) -> None:
     cls = data_type.schema.cls
@@ -59,7 +59,7 @@ def test_any_field_values_encode_or_raise_encode_error(data_type: Any, data: Any
         assert all(1 <= len(f.data) <= 8 for f in frames)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(
     can_id=st.integers(-(2**30), 2**30),
     frames=st.lists(st.binary(max_size=9), max_size=6),

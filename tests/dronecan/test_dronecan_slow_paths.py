@@ -313,7 +313,7 @@ def _decoded(function: Any, frames: Any, timestamp: float) -> Any:
         return str(error)
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=500)
 @given(case=_damaged())
 def test_decode_frames_fast_path_agrees_with_the_checked_path(
     case: tuple[list[tuple[int, bytes]], float],
@@ -423,7 +423,7 @@ _FAST_MESSAGES = [
 
 
 @pytest.mark.parametrize("valid", _FAST_MESSAGES, ids=lambda m: type(m).__name__)
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(data=st.data())
 def test_generated_encoders_agree_with_the_generic_serializer(valid: Any, data: Any) -> None:
     """A valid message with one field replaced by anything."""

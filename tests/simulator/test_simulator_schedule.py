@@ -106,7 +106,7 @@ def test_periodic_tolerates_float_rounding() -> None:
     assert not schedule.due(100.0)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(
     st.lists(st.floats(0.0, 30.0, allow_nan=False), min_size=1, max_size=60),
     st.sampled_from([0, 1, 7, 10, 50]),

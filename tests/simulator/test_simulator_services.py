@@ -308,7 +308,7 @@ def test_bad_constructor_arguments(argument: str, value: object) -> None:
     assert error.value.value is value or math.isnan(error.value.value)  # type: ignore[arg-type]
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(
     st.lists(
         st.tuples(st.integers(0, 0x1FFFFFFF), st.binary(min_size=0, max_size=9)),
