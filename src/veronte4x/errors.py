@@ -12,6 +12,8 @@ raises :class:`TypeError` for them, naming the argument and the type expected (s
 
 from __future__ import annotations
 
+import numbers
+import operator
 from typing import Union
 
 BytesLike = Union[bytes, bytearray, memoryview]  # noqa: UP007  (a run-time alias on 3.10)
@@ -96,17 +98,105 @@ def argument_type_error(function: str, argument: str, expected: str, value: obje
     return TypeError(f"{function}(): {argument} must be {expected}, not {type(value).__name__}")
 
 
-def check_seconds(function: str, argument: str, value: object) -> None:
-    """Raise `argument_type_error` unless ``value`` is a number of seconds (an int or a
-    float, never a bool).
+def _is_numpy_bool(value: object) -> bool:
+    """Whether ``value`` is a NumPy bool (``numpy.bool_``), told by its type's module and
+    name so that NumPy is never imported."""
+    kind = value.__class__
+    return kind.__module__ == "numpy" and kind.__name__ in ("bool_", "bool")
+
+
+def integer(value: object) -> int | None:
+    """``value`` as a Python int if it is an integer, else None: the one rule for every place
+    that takes an int (codec and DroneCAN encoders, argument checks).
+
+    An int, a NumPy integer or any object whose ``__index__`` gives its exact value (told
+    with `operator.index`, so NumPy is never imported) is an integer; a bool or a NumPy
+    bool is not, nor is a float, even ``1.0``: a value is never narrowed.
+
+    Examples:
+        >>> integer(7), integer(True), integer(1.0), integer("1")
+        (7, None, None, None)
+    """
+    if value.__class__ is int:
+        return value
+    if isinstance(value, bool) or _is_numpy_bool(value):
+        return None
+    try:
+        return operator.index(value)  # type: ignore[arg-type]
+    except TypeError:
+        return None
+
+
+def real(value: object) -> int | float | None:
+    """``value`` as a Python int or float if it is a real number that converts exactly, else
+    None: the one rule for every place that takes a float.
+
+    Integers are taken as `integer` takes them (and stay ints). A float, or any
+    `numbers.Real` (NumPy's float16, float32 and float64 register themselves, so NumPy is
+    never imported) whose ``float()`` equals it, gives that float; a NaN gives its NaN. A
+    value ``float()`` would round (a ``longdouble`` beyond float64, ``Fraction(1, 3)``) is
+    refused: a value is never narrowed silently. Bools are not numbers here.
+
+    Examples:
+        >>> real(0.5), real(2), real(False), real("0.5")
+        (0.5, 2, None, None)
+    """
+    if value.__class__ is float:
+        return value
+    whole = integer(value)
+    if whole is not None:
+        return whole
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        return None
+    converted = float(value)
+    if converted == value or converted != converted:
+        return converted
+    return None
+
+
+def boolean(value: object) -> bool | None:
+    """``value`` as a Python bool if it is a bool or a NumPy bool, else None (never 0 or 1).
+
+    Examples:
+        >>> boolean(True), boolean(1)
+        (True, None)
+    """
+    if value is True or value is False:
+        return value
+    if _is_numpy_bool(value):
+        return bool(value)
+    return None
+
+
+def int_argument(function: str, argument: str, value: object, expected: str = "an int") -> int:
+    """``value`` as a Python int by the rule of `integer`; else raise `argument_type_error`."""
+    whole = integer(value)
+    if whole is None:
+        raise argument_type_error(function, argument, expected, value)
+    return whole
+
+
+def real_argument(function: str, argument: str, value: object, expected: str = "a float") -> float:
+    """``value`` as a Python int or float by the rule of `real`; else raise
+    `argument_type_error`."""
+    number = real(value)
+    if number is None:
+        raise argument_type_error(function, argument, expected, value)
+    return number
+
+
+def check_seconds(function: str, argument: str, value: object) -> float:
+    """``value`` as a number of seconds (an int or a float, Python's or NumPy's, see `real`;
+    never a bool); else raise `argument_type_error`.
 
     Examples:
         >>> check_seconds("poll", "now", "1.5")
         Traceback (most recent call last):
         TypeError: poll(): now must be a number of seconds, not str
     """
-    if value.__class__ is not float:
-        check_types(function, (argument, value, (int, float), "a number of seconds"))
+    if value.__class__ is float:
+        return value
+    return real_argument(function, argument, value, "a number of seconds")
 
 
 TypeCheck = tuple[str, object, type | tuple[type, ...], str]
@@ -114,8 +204,12 @@ TypeCheck = tuple[str, object, type | tuple[type, ...], str]
 
 
 def check_types(function: str, *checks: TypeCheck) -> None:
-    """Raise `argument_type_error` for the first argument that fails its check; a bool never
-    passes for an int or a float.
+    """Raise `argument_type_error` for the first argument that fails its check.
+
+    A bool never passes for an int or a float; where an int passes, so does any integer
+    `integer` takes (a NumPy integer), and where a float passes, any real `real` takes (a
+    NumPy float). The value is not converted: a caller that keeps or computes with it
+    converts it with `integer` or `real`.
 
     Examples:
         >>> check_types("skip", ("bits", 8, int, "an int"))
@@ -124,7 +218,16 @@ def check_types(function: str, *checks: TypeCheck) -> None:
         TypeError: skip(): bits must be an int, not bool
     """
     for argument, value, kind, expected in checks:
-        if isinstance(value, bool) or not isinstance(value, kind):
+        kinds = kind if isinstance(kind, tuple) else (kind,)
+        if isinstance(value, bool) or _is_numpy_bool(value):
+            fits = False
+        elif isinstance(value, kinds):
+            fits = True
+        elif float in kinds:
+            fits = real(value) is not None
+        else:
+            fits = int in kinds and integer(value) is not None
+        if not fits:
             raise argument_type_error(function, argument, expected, value)
 
 

@@ -14,10 +14,12 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from veronte4x.arbiter.errors import ConfigError
+from veronte4x.errors import boolean, integer, real
 
 #: Autopilot numbers as the Status and Score messages use them (4x Software Manual, section 3.1.1).
 AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external AP")
@@ -112,6 +114,9 @@ class VariableConfig:
     absolute: bool = False
     max_error: float = math.inf
 
+    def __post_init__(self) -> None:
+        _as_python(self, floats=("weight", "max_error"), bools=("absolute",))
+
 
 @dataclass(frozen=True, slots=True)
 class ArbiterConfig:
@@ -161,7 +166,15 @@ class ArbiterConfig:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "variables", tuple(self.variables))
-        object.__setattr__(self, "autopilot_ids", tuple(self.autopilot_ids))
+        ids = tuple(self.autopilot_ids)
+        object.__setattr__(self, "autopilot_ids", tuple(_python(integer, i) for i in ids))
+        floats = ("holding_time", "hysteresis", "status_period", "score_period")
+        _as_python(
+            self,
+            floats=(*floats, "message_timeout", "boot_timeout"),
+            ints=("preferred", "arbiter_id"),
+            bools=("external_enabled", "extended_ids", "send_status", "send_score"),
+        )
         self._validate()
 
     @property
@@ -203,3 +216,23 @@ class ArbiterConfig:
                 raise ConfigError("autopilot_ids/arbiter_id", can_id, f"a CAN ID 0..{top_id:#x}")
         if len(set(ids)) != len(ids):
             raise ConfigError("autopilot_ids/arbiter_id", ids, "five different CAN IDs")
+
+
+def _python(rule: Callable[[object], object], value: object) -> Any:
+    """``value`` as Python's number or bool by ``rule`` (`veronte4x.errors.integer`, `real`
+    or `boolean`: a NumPy scalar converts exactly), or unchanged for the checks to refuse."""
+    converted = rule(value)
+    return value if converted is None else converted
+
+
+def _as_python(
+    config: object,
+    *,
+    floats: tuple[str, ...] = (),
+    ints: tuple[str, ...] = (),
+    bools: tuple[str, ...] = (),
+) -> None:
+    """Store the named fields of a frozen ``config`` as Python numbers and bools."""
+    for names, rule in ((floats, real), (ints, integer), (bools, boolean)):
+        for name in names:
+            object.__setattr__(config, name, _python(rule, getattr(config, name)))

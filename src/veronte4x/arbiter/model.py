@@ -35,7 +35,14 @@ from veronte4x.arbiter.state import (
     DecisionKind,
     SystemChecks,
 )
-from veronte4x.errors import BytesLike, argument_type_error, check_seconds, check_types
+from veronte4x.errors import (
+    BytesLike,
+    argument_type_error,
+    boolean,
+    check_seconds,
+    check_types,
+    int_argument,
+)
 
 Frame = tuple[int, bytes]
 _AUTOPILOTS = range(4)
@@ -116,12 +123,9 @@ class Arbiter:
             TypeError: An argument of the wrong type.
         """
         if can_id.__class__ is not int or data.__class__ is not bytes:
-            check_types(
-                "receive",
-                ("can_id", can_id, int, "an int"),
-                ("data", data, (bytes, bytearray, memoryview), "bytes-like"),
-            )
-        check_seconds("receive", "timestamp", timestamp)
+            can_id = int_argument("receive", "can_id", can_id)
+            check_types("receive", ("data", data, (bytes, bytearray, memoryview), "bytes-like"))
+        timestamp = check_seconds("receive", "timestamp", timestamp)
         self.advance(timestamp)
         autopilot = self._sources.get(can_id)
         if autopilot is None:
@@ -138,7 +142,7 @@ class Arbiter:
 
     def set_checks(self, timestamp: float, checks: SystemChecks) -> None:
         """Report the arbiter's system checks; in Idle, all OK means Normal mode."""
-        check_seconds("set_checks", "timestamp", timestamp)
+        timestamp = check_seconds("set_checks", "timestamp", timestamp)
         if not isinstance(checks, SystemChecks):
             raise argument_type_error("set_checks", "checks", "a SystemChecks", checks)
         self.advance(timestamp)
@@ -149,19 +153,19 @@ class Arbiter:
     def set_fts(self, timestamp: float, autopilot: int, ok: bool) -> None:
         """Report an autopilot's FTS signal: not OK means "System Not OK" (4x Software Manual,
         section 4)."""
-        _check_signal("set_fts", timestamp, autopilot, ok)
+        timestamp, autopilot, ok = _check_signal("set_fts", timestamp, autopilot, ok)
         self._set_signal(self._fts_ok, AutopilotEvent.FTS_BAD, timestamp, autopilot, ok)
 
     def set_watchdog(self, timestamp: float, autopilot: int, ok: bool) -> None:
         """Report an autopilot's watchdog signal (4x Software Manual, section 4: "The watchdog
         signal ... is
         not ok" kills it)."""
-        _check_signal("set_watchdog", timestamp, autopilot, ok)
+        timestamp, autopilot, ok = _check_signal("set_watchdog", timestamp, autopilot, ok)
         self._set_signal(self._watchdog_ok, AutopilotEvent.WATCHDOG_BAD, timestamp, autopilot, ok)
 
     def command_maintenance(self, timestamp: float) -> None:
         """The maintenance command (t_cmd_maint), from wherever it comes."""
-        check_seconds("command_maintenance", "timestamp", timestamp)
+        timestamp = check_seconds("command_maintenance", "timestamp", timestamp)
         self.advance(timestamp)
         self._enter(Event.MAINTENANCE_COMMAND, timestamp, "maintenance command")
 
@@ -174,7 +178,7 @@ class Arbiter:
             InputError: ``timestamp`` is earlier than the previous one.
             TypeError: ``timestamp`` is not a number.
         """
-        check_seconds("advance", "timestamp", timestamp)
+        timestamp = check_seconds("advance", "timestamp", timestamp)
         if not math.isfinite(timestamp):
             raise InputError("timestamp", timestamp, "a finite number of seconds")
         if self._time is not None and timestamp < self._time:
@@ -198,7 +202,7 @@ class Arbiter:
         ``score_period`` in Normal mode when ``send_score`` is set; nothing while Idle
         (4x Software Manual, section 4, "Status message"). A late poll sends each message once.
         """
-        check_seconds("poll", "timestamp", timestamp)
+        timestamp = check_seconds("poll", "timestamp", timestamp)
         self.advance(timestamp)
         frames: list[Frame] = []
         arbiter_id = self.config.arbiter_id
@@ -472,9 +476,14 @@ class Arbiter:
         return True
 
 
-def _check_signal(function: str, timestamp: object, autopilot: object, ok: object) -> None:
-    """The `TypeError` of the library's policy for the arguments of a signal report."""
-    check_seconds(function, "timestamp", timestamp)
-    check_types(function, ("autopilot", autopilot, int, "an int"))
-    if not isinstance(ok, bool):
+def _check_signal(
+    function: str, timestamp: object, autopilot: object, ok: object
+) -> tuple[float, int, bool]:
+    """The arguments of a signal report as Python values (NumPy scalars taken, see
+    `veronte4x.errors.integer`), or the `TypeError` of the library's policy."""
+    seconds = check_seconds(function, "timestamp", timestamp)
+    number = int_argument(function, "autopilot", autopilot)
+    flag = boolean(ok)
+    if flag is None:
         raise argument_type_error(function, "ok", "a bool", ok)
+    return seconds, number, flag

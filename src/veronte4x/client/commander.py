@@ -67,7 +67,7 @@ class Commander:
             EncodeError: A fraction out of range, more than 20 ESCs or a bad index.
             TypeError: A throttle that is not a number, or ``now`` that is not one.
         """
-        check_seconds("set", "now", now)
+        now = check_seconds("set", "now", now)
         self._cmd = vertiq.raw_command(throttles).cmd
         self._refreshed = now
         self.tripped = False
@@ -86,7 +86,7 @@ class Commander:
         Due times are ``first set + k * period``, counted rather than summed so that they do
         not drift; a poll more than a period late sends once and restarts the grid.
         """
-        check_seconds("poll", "now", now)
+        now = check_seconds("poll", "now", now)
         due = self.next_time()
         if due is None or now + EPSILON < due:
             return None

@@ -101,7 +101,7 @@ class ClientProtocol:
 
     def receive(self, can_id: int, data: bytes, timestamp: float) -> list[Event]:
         """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``."""
-        check_seconds("receive", "timestamp", timestamp)
+        timestamp = check_seconds("receive", "timestamp", timestamp)
         transfer = self.reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return []

@@ -152,8 +152,8 @@ class Requester:
             EncodeError: Not a request class, or a field out of range.
             TypeError: ``now`` or ``timeout`` is not a number of seconds.
         """
-        check_seconds("request", "now", now)
-        check_seconds("request", "timeout", timeout)
+        now = check_seconds("request", "now", now)
+        timeout = check_seconds("request", "timeout", timeout)
         codec = BY_CLASS.get(type(message))
         if codec is None or codec.data_type.kind is not TransferKind.REQUEST:
             raise EncodeError("request", "message", message, "a DroneCAN service request")
@@ -221,7 +221,7 @@ class Requester:
 
     def poll(self, now: float) -> list[TimedOut]:
         """Retry the requests whose attempt timed out at ``now``; return those out of retries."""
-        check_seconds("poll", "now", now)
+        now = check_seconds("poll", "now", now)
         failed = []
         for handle, pending in list(self._pending.items()):
             if now < pending.deadline:

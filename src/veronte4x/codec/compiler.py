@@ -21,7 +21,7 @@ from typing import Any
 from veronte4x.codec.fields import ByteOrder, Field, Kind
 from veronte4x.codec.float32 import bits_from_float, float_from_bits
 from veronte4x.codec.messages import Message
-from veronte4x.errors import DecodeError, EncodeError, LayoutError
+from veronte4x.errors import DecodeError, EncodeError, LayoutError, boolean, integer, real
 
 Decoder = Callable[[bytes, bool], Message]
 Encoder = Callable[[Message], bytes]
@@ -186,10 +186,11 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         "_bytes": bytes,
         "_len": len,
         "_isinstance": isinstance,
+        "_integer": integer,
+        "_real": real,
+        "_boolean": boolean,
         "_int": int,
         "_float": float,
-        "_number": (int, float),
-        "_bool": bool,
         "_tuple": tuple,
         "_round": round,
         "_raw": (bytes, bytearray),
@@ -709,6 +710,15 @@ def _encode_field(
     place = f" << {shift}" if shift else ""
     if f.kind is Kind.MAPPED:
         allowed = "one of " + ", ".join(repr(value) for _, value in f.mapping)
+        if all(value.__class__ is int for _, value in f.mapping):
+            # Integers (a NumPy one too) by value; never a bool or a float equal to one.
+            lines += [
+                "    if v.__class__ is not _int:",
+                "        i = _integer(v)",
+                "        if i is None:",
+                f"            raise _eerr('{label}', v, {allowed!r})",
+                "        v = i",
+            ]
         return [
             *lines,
             "    try:",
@@ -721,15 +731,20 @@ def _encode_field(
         return [
             *lines,
             "    if v is not True and v is not False:",
-            f"        raise _eerr('{label}', v, 'a bool')",
+            "        b = _boolean(v)",
+            "        if b is None:",
+            f"            raise _eerr('{label}', v, 'a bool')",
+            "        v = b",
             f"    {target} |= v{place}",
         ]
     if f.kind is Kind.FLOAT32 and float_var is not None:
         return [
             *lines,
-            "    if v.__class__ is not _float and (not _isinstance(v, _number) "
-            "or _isinstance(v, _bool)):",
-            f"        raise _eerr('{label}', v, 'a float')",
+            "    if v.__class__ is not _float:",
+            "        r = _real(v)",
+            "        if r is None:",
+            f"            raise _eerr('{label}', v, 'a float')",
+            "        v = r",
             "    if v != v:",
             "        return encode_bits(m)",
             f"    {float_var} = v",
@@ -737,9 +752,11 @@ def _encode_field(
     if f.kind is Kind.FLOAT32:
         return [
             *lines,
-            "    if v.__class__ is not _float and (not _isinstance(v, _number) "
-            "or _isinstance(v, _bool)):",
-            f"        raise _eerr('{label}', v, 'a float')",
+            "    if v.__class__ is not _float:",
+            "        r = _real(v)",
+            "        if r is None:",
+            f"            raise _eerr('{label}', v, 'a float')",
+            "        v = r",
             "    try:",
             "        v = _from_bytes(_pack_f32(v), 'little') if v == v else _bits_from_float(v)",
             "    except _OverflowError:",
@@ -755,8 +772,12 @@ def _encode_field(
     mask = (1 << f.bits) - 1
     if f.scale is None:
         lines += [
-            "    if (v.__class__ is not _int and (not _isinstance(v, _int) "
-            f"or _isinstance(v, _bool))) or not {low} <= v <= {high}:",
+            "    if v.__class__ is not _int:",
+            "        i = _integer(v)",
+            "        if i is None:",
+            f"            raise _eerr('{label}', v, 'an int in {low}..{high}')",
+            "        v = i",
+            f"    if not {low} <= v <= {high}:",
             f"        raise _eerr('{label}', v, 'an int in {low}..{high}')",
         ]
     else:
@@ -764,8 +785,11 @@ def _encode_field(
         lo_value, hi_value = sorted((low * s.factor + s.offset, high * s.factor + s.offset))
         allowed = f"a number in {lo_value!r}..{hi_value!r} (wire {low}..{high})"
         lines += [
-            "    if not _isinstance(v, _number) or _isinstance(v, _bool):",
-            f"        raise _eerr('{label}', v, {allowed!r})",
+            "    if v.__class__ is not _float:",
+            "        r = _real(v)",
+            "        if r is None:",
+            f"            raise _eerr('{label}', v, {allowed!r})",
+            "        v = r",
             "    try:",
             f"        r = _round((v - {s.offset!r}) / {s.factor!r})",
             "    except (_OverflowError, _ValueError):",

@@ -17,7 +17,7 @@ from typing import Any
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, Field, Kind, constant
 from veronte4x.codec.messages import Message
-from veronte4x.errors import BytesLike, LayoutError, argument_type_error, check_types
+from veronte4x.errors import BytesLike, LayoutError, argument_type_error, check_types, integer
 
 _DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
 
@@ -69,6 +69,9 @@ class Layout:
             ("name", name, str, "a str"),
             ("byte_order", byte_order, ByteOrder, "a ByteOrder"),
         )
+        whole = integer(command)  # a NumPy integer as a Python int
+        assert whole is not None
+        command = whole
         fields = tuple(fields)
         for f in fields:
             if not isinstance(f, Field):

@@ -18,7 +18,7 @@ import enum
 from dataclasses import dataclass
 from typing import Any
 
-from veronte4x.errors import check_types
+from veronte4x.errors import check_types, integer, real
 
 _NUMBER = (int, float)
 _OPTIONAL_INT = (int, type(None))
@@ -68,6 +68,10 @@ class Linear:
             ("decoded_min", self.decoded_min, _NUMBER, "a number"),
             ("decoded_max", self.decoded_max, _NUMBER, "a number"),
         )
+        for attribute in ("encoded_min", "encoded_max"):  # a NumPy integer as a Python int
+            object.__setattr__(self, attribute, integer(getattr(self, attribute)))
+        for attribute in ("decoded_min", "decoded_max"):
+            object.__setattr__(self, attribute, real(getattr(self, attribute)))
 
     @property
     def factor(self) -> float:
@@ -123,6 +127,10 @@ class Field:
             ("name", self.name, str, "a str"),
             ("mapping", self.mapping, tuple, "a tuple of (wire value, value) pairs"),
         )
+        for attribute in ("bits", "index", "value", "maximum"):  # NumPy integers as ints
+            number = getattr(self, attribute)
+            if number is not None:
+                object.__setattr__(self, attribute, integer(number))
 
     @property
     def label(self) -> str:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import enum
 
-from veronte4x.errors import EncodeError, argument_type_error
+from veronte4x.errors import EncodeError, argument_type_error, integer, real
 
 PWM_MAX = 4095
 """The largest normalised PWM value: "12 bits all with ones"."""
@@ -37,9 +37,12 @@ class PwmPacking(enum.Enum):
     MSB_FIRST = "msb_first"
 
 
-def _check_number(function: str, argument: str, value: object) -> None:
-    if not isinstance(value, (int, float)) or isinstance(value, bool):
+def _number(function: str, argument: str, value: object) -> float:
+    """``value`` as a Python number (a NumPy one too, see `veronte4x.errors.real`)."""
+    number = real(value)
+    if number is None:
         raise argument_type_error(function, argument, "a number", value)
+    return number
 
 
 def to_microseconds(
@@ -51,10 +54,12 @@ def to_microseconds(
         EncodeError: ``value`` out of 0..4095.
         TypeError: ``value`` not an int, or a bound not a number.
     """
-    _check_number("to_microseconds", "min_us", min_us)
-    _check_number("to_microseconds", "max_us", max_us)
-    if not isinstance(value, int) or isinstance(value, bool):
+    min_us = _number("to_microseconds", "min_us", min_us)
+    max_us = _number("to_microseconds", "max_us", max_us)
+    whole = integer(value)
+    if whole is None:
         raise argument_type_error("to_microseconds", "value", "an int", value)
+    value = whole
     if not 0 <= value <= PWM_MAX:
         raise EncodeError("PwmSet", "values", value, f"an int in 0..{PWM_MAX}")
     return min_us + (max_us - min_us) * value / PWM_MAX
@@ -69,8 +74,9 @@ def from_microseconds(
         EncodeError: The pulse lies outside min_us..max_us.
         TypeError: An argument that is not a number.
     """
-    for argument, number in (("pulse_us", pulse_us), ("min_us", min_us), ("max_us", max_us)):
-        _check_number("from_microseconds", argument, number)
+    pulse_us = _number("from_microseconds", "pulse_us", pulse_us)
+    min_us = _number("from_microseconds", "min_us", min_us)
+    max_us = _number("from_microseconds", "max_us", max_us)
     low, high = sorted((min_us, max_us))
     if not low <= pulse_us <= high:
         raise EncodeError("PwmSet", "values", pulse_us, f"a pulse in {low}..{high} us")

@@ -24,7 +24,15 @@ from veronte4x.dronecan.messages import (
     StringValue,
     Value,
 )
-from veronte4x.errors import EncodeError, argument_type_error, check_types
+from veronte4x.errors import (
+    EncodeError,
+    argument_type_error,
+    boolean,
+    int_argument,
+    integer,
+    real,
+    real_argument,
+)
 
 NODE_NAME = "iq_motion.esc"
 """The GetNodeInfo ``name`` of Vertiq modules (Vertiq's DroneCAN support document, section 2.1)."""
@@ -78,7 +86,6 @@ MAX_ESCS = 20
 
 
 _VALUE_KINDS = "an int, float, bool, str, bytes or param.Value"
-_NUMBER = (int, float)
 
 
 def _name(function: str, name: str | Parameter) -> bytes:
@@ -94,12 +101,14 @@ def _value(value: int | float | bool | str | bytes | Value | None) -> Value:
         return Empty()
     if isinstance(value, (Empty, IntegerValue, RealValue, BooleanValue, StringValue)):
         return value
-    if isinstance(value, bool):
-        return BooleanValue(int(value))
-    if isinstance(value, int):
-        return IntegerValue(int(value))
-    if isinstance(value, float):
-        return RealValue(value)
+    # Python's numbers and NumPy's alike (see veronte4x.errors.integer and .real).
+    flag, whole, number = boolean(value), integer(value), real(value)
+    if flag is not None:
+        return BooleanValue(int(flag))
+    if whole is not None:
+        return IntegerValue(whole)
+    if number is not None:
+        return RealValue(number)
     if isinstance(value, str):
         return StringValue(value.encode("utf-8"))
     if isinstance(value, bytes):
@@ -139,7 +148,7 @@ def get_parameter_by_index(index: int) -> GetSetRequest:
     Raises:
         TypeError: ``index`` is not an int.
     """
-    check_types("get_parameter_by_index", ("index", index, int, "an int"))
+    index = int_argument("get_parameter_by_index", "index", index)
     return GetSetRequest(index=index, value=Empty(), name=b"")
 
 
@@ -188,9 +197,10 @@ def restart(bootloader: bool = False) -> RestartNodeRequest:
     Raises:
         TypeError: ``bootloader`` is not a bool.
     """
-    if not isinstance(bootloader, bool):
+    flag = boolean(bootloader)
+    if flag is None:
         raise argument_type_error("restart", "bootloader", "a bool", bootloader)
-    return RestartNodeRequest(BOOTLOADER_MAGIC if bootloader else RESTART_MAGIC)
+    return RestartNodeRequest(BOOTLOADER_MAGIC if flag else RESTART_MAGIC)
 
 
 def throttle_to_raw(throttle: float) -> int:
@@ -205,7 +215,7 @@ def throttle_to_raw(throttle: float) -> int:
         EncodeError: ``throttle`` is outside [-1, 1] or not a finite number.
         TypeError: ``throttle`` is not a number.
     """
-    check_types("throttle_to_raw", ("throttle", throttle, _NUMBER, "a float"))
+    throttle = real_argument("throttle_to_raw", "throttle", throttle)
     if not (math.isfinite(throttle) and -1.0 <= throttle <= 1.0):
         raise EncodeError("RawCommand", "throttle", throttle, "a float in [-1, 1]")
     scaled = throttle * (RAW_COMMAND_MAX if throttle >= 0 else -RAW_COMMAND_MIN)
@@ -218,8 +228,7 @@ def raw_to_throttle(raw: int) -> float:
     Raises:
         TypeError: ``raw`` is not an int.
     """
-    check_types("raw_to_throttle", ("raw", raw, int, "an int"))
-    return _fraction(raw)
+    return _fraction(int_argument("raw_to_throttle", "raw", raw))
 
 
 def _fraction(raw: int) -> float:
@@ -241,16 +250,16 @@ def raw_command(throttles: Sequence[float] | Mapping[int, float]) -> RawCommand:
     """
     if isinstance(throttles, Mapping):
         for index, throttle in throttles.items():
-            check_types("raw_command", ("throttles keys", index, int, "ints"))
+            index = int_argument("raw_command", "throttles keys", index, "ints")
             if not 0 <= index < MAX_ESCS:
                 raise EncodeError("RawCommand", "cmd", index, f"ESC indices 0..{MAX_ESCS - 1}")
-            check_types("raw_command", (f"throttles[{index}]", throttle, _NUMBER, "a float"))
+            real_argument("raw_command", f"throttles[{index}]", throttle)
         count = max(throttles, default=-1) + 1
         values = [throttles.get(i, 0.0) for i in range(count)]
     elif isinstance(throttles, Iterable):
         values = list(throttles)
         for index, throttle in enumerate(values):
-            check_types("raw_command", (f"throttles[{index}]", throttle, _NUMBER, "a float"))
+            real_argument("raw_command", f"throttles[{index}]", throttle)
     else:
         raise argument_type_error(
             "raw_command", "throttles", "a sequence or mapping of floats", throttles

@@ -331,7 +331,7 @@ class SimulatedEsc:
         Like a normal restart: uptime restarts, a new ``uavcan_node_id`` takes effect, the
         motor coasts; frames not yet polled are lost.
         """
-        check_seconds("power_cycle", "timestamp", timestamp)
+        timestamp = check_seconds("power_cycle", "timestamp", timestamp)
         self._advance(timestamp)
         self._outbox.clear()
         self._boot(timestamp)
@@ -346,7 +346,7 @@ class SimulatedEsc:
         its response for `poll`. Other frames and bad frames are ignored (the
         reassembler counts them).
         """
-        check_seconds("receive", "timestamp", timestamp)
+        timestamp = check_seconds("receive", "timestamp", timestamp)
         if timestamp < self._start_time or self._in_bootloader:
             return
         self._advance(timestamp)
@@ -533,7 +533,7 @@ class SimulatedEsc:
         stale telemetry after a gap. Nothing before ``start_time``; only already queued
         responses while in the bootloader.
         """
-        check_seconds("poll", "timestamp", timestamp)
+        timestamp = check_seconds("poll", "timestamp", timestamp)
         if timestamp < self._start_time:
             return []
         self._advance(timestamp)
