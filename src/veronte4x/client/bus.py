@@ -44,7 +44,6 @@ from veronte4x.client.protocol import (
     Received,
     StatusSeen,
 )
-from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT, Answered, TimedOut
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
@@ -69,6 +68,7 @@ from veronte4x.dronecan.messages import (
     Value,
 )
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT, Answered, TimedOut
 
 __all__ = ["BusClient", "CommandStream"]
 
