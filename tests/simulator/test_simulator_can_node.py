@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import itertools
+import subprocess
+import sys
 from collections.abc import Iterator
 
 import can
@@ -123,3 +125,14 @@ def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.Bus
     heard = [type(t.message).__name__ for t in other.listen(0.0)]
     assert heard.count("NodeStatus") == 2
     assert heard.count("EscStatus") == heard.count("Temperature") > 10
+
+
+def test_the_simulator_does_not_import_the_ground_client() -> None:
+    code = (
+        "import sys, veronte4x.simulator, veronte4x.simulator.can_node; "
+        "print(sorted(m for m in sys.modules if m.startswith('veronte4x.client')))"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=60
+    )
+    assert result.stdout == "[]\n"

@@ -38,7 +38,6 @@ from veronte4x.client.firmware import MAX_IMAGE_SIZE, Phase, UpdateProgress, che
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
-from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.image_crc import crc64we
@@ -51,6 +50,7 @@ from veronte4x.dronecan.messages import (
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError
 from veronte4x.extras import require
+from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 
 if TYPE_CHECKING:
     from veronte4x.client.bus import BusClient

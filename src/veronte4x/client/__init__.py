@@ -37,9 +37,9 @@ from veronte4x.client.protocol import (
     Received,
     StatusSeen,
 )
-from veronte4x.client.requests import Answered, Pending, Requester, TimedOut, answers
 from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
-from veronte4x.client.transfer_ids import TransferIds
+from veronte4x.node.requests import Answered, Pending, Requester, TimedOut, answers
+from veronte4x.node.transfer_ids import TransferIds
 
 __all__ = [
     "DEFAULT_NODE_ID",

@@ -11,66 +11,44 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 import can
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.client import operations
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
-from veronte4x.client.errors import (
-    FirmwareUpdateError,
-    InvalidRequestError,
-    NoResponseError,
-    ParameterError,
-    RejectedError,
-)
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
-    FirmwareUpdate,
-    Phase,
     UpdateProgress,
-    check_image,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.params import ParameterInfo, parameter_request, plain
+from veronte4x.client.operations import Operation, Runner, Task
+from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import (
     DEFAULT_NODE_ID,
     ClientProtocol,
     Event,
-    FileServed,
     Received,
-    StatusSeen,
 )
-from veronte4x.client.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT, Answered, TimedOut
-from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.frame import Frame
-from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
-    BeginFirmwareUpdateRequest,
-    BooleanValue,
-    Empty,
-    ExecuteOpcodeRequest,
-    GetNodeInfoRequest,
     GetNodeInfoResponse,
-    GetSetRequest,
-    GetSetResponse,
-    IntegerValue,
     Opcode,
-    Path,
     RawCommand,
-    RealValue,
-    SoftwareVersionFlag,
-    StringValue,
     Value,
 )
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 
 __all__ = ["BusClient", "CommandStream"]
+
+T = TypeVar("T")
 
 MAX_WAIT = 0.05
 """Longest single wait on the bus, in seconds."""
@@ -78,12 +56,8 @@ MAX_WAIT = 0.05
 WAIT_STEP = 0.001
 """Longest single wait while a ``while_waiting`` callback runs."""
 
-MAX_PARAMETERS = 8192
-"""Indices a parameter walk tries at most (GetSet ``index`` is 13 bits)."""
 
 _RAW_COMMAND_ID = BY_CLASS[RawCommand].data_type.data_type_id
-
-_VALUES = (Empty, IntegerValue, RealValue, BooleanValue, StringValue)
 
 
 class BusClient:
@@ -128,9 +102,8 @@ class BusClient:
     ) -> None:
         self.bus = bus
         self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
+        self.runner = Runner(self.protocol, timeout, retries)
         self.clock = clock
-        self.timeout = timeout
-        self.retries = retries
         self.while_waiting = while_waiting
         self._lock = threading.Lock()
 
@@ -138,6 +111,24 @@ class BusClient:
     def node_id(self) -> int:
         """This client's node id."""
         return self.protocol.node_id
+
+    @property
+    def timeout(self) -> float:
+        """Seconds to wait for each response."""
+        return self.runner.timeout
+
+    @timeout.setter
+    def timeout(self, value: float) -> None:
+        self.runner.timeout = value
+
+    @property
+    def retries(self) -> int:
+        """Times a request is sent again after a timeout."""
+        return self.runner.retries
+
+    @retries.setter
+    def retries(self, value: int) -> None:
+        self.runner.retries = value
 
     # -- I/O ----------------------------------------------------------------------------
 
@@ -160,9 +151,9 @@ class BusClient:
             self.while_waiting()
             max_wait = min(max_wait, WAIT_STEP)
         now = self.clock()
-        deadline = self.protocol.next_deadline()
-        if deadline is not None:
-            max_wait = max(0.0, min(max_wait, deadline - now))
+        for deadline in (self.protocol.next_deadline(), self.runner.next_deadline()):
+            if deadline is not None:
+                max_wait = max(0.0, min(max_wait, deadline - now))
         events: list[Event] = []
         message = self.bus.recv(timeout=max_wait)
         while message is not None:
@@ -171,11 +162,57 @@ class BusClient:
                     message.arbitration_id, bytes(message.data), self.clock()
                 )
             message = self.bus.recv(timeout=0.0)
-        events += self.protocol.poll(self.clock())
+        now = self.clock()
+        events += self.protocol.poll(now)
+        self.runner.feed(events, now)
+        self.runner.poll(now)
         self._flush()
         return events
 
-    # -- services -------------------------------------------------------------------------
+    # -- operations -------------------------------------------------------------------------
+
+    def run(self, operation: Operation[T]) -> T:
+        """Run one operation of `veronte4x.client.operations` to its end; return its result.
+
+        Raises:
+            Exception: The operation's error (`NoResponseError`, `ParameterError`, ...).
+        """
+        task = self.runner.start(operation, self.clock())
+        self._flush()
+        try:
+            while not task.done:
+                self.spin_once()
+        finally:
+            if not task.done:  # e.g. KeyboardInterrupt: forget its requests
+                self.runner.cancel(task)
+        return task.result()
+
+    def run_all(self, operations: Sequence[Operation[Any]], limit: int = 8) -> list[Task[Any]]:
+        """Run operations concurrently, at most ``limit`` at a time; return their tasks, done,
+        in the order given (each holds its result or its error).
+
+        Operations on different nodes proceed side by side: each waits only for its own
+        answers, as the bus carries every node's traffic interleaved.
+        """
+        waiting = list(operations)
+        waiting.reverse()
+        tasks: list[Task[Any]] = []
+        running: list[Task[Any]] = []
+        try:
+            while waiting or running:
+                while waiting and len(running) < limit:
+                    task = self.runner.start(waiting.pop(), self.clock())
+                    tasks.append(task)
+                    running.append(task)
+                self._flush()
+                running = [t for t in running if not t.done]
+                if running:
+                    self.spin_once()
+                    running = [t for t in running if not t.done]
+        finally:
+            for task in running:
+                self.runner.cancel(task)
+        return tasks
 
     def call(
         self,
@@ -191,23 +228,7 @@ class BusClient:
             NoResponseError: No response after every retry.
             EncodeError: The request cannot be encoded.
         """
-        timeout = self.timeout if timeout is None else timeout
-        handle = self.protocol.request(
-            request,
-            node_id,
-            self.clock(),
-            timeout=timeout,
-            retries=self.retries if retries is None else retries,
-        )
-        self._flush()
-        while True:
-            for event in self.spin_once():
-                if isinstance(event, Answered) and event.request.handle == handle:
-                    return event.transfer.message
-                if isinstance(event, TimedOut) and event.request.handle == handle:
-                    raise NoResponseError(
-                        node_id, event.request.request_name, event.attempts, timeout
-                    )
+        return self.run(operations.call(request, node_id, timeout, retries))
 
     def broadcast(self, message: Any) -> None:
         """Send a message now (e.g. one RawCommand); transfer ids count per data type."""
@@ -231,15 +252,11 @@ class BusClient:
         Nodes publish NodeStatus at least once a second (DSDL MAX_BROADCASTING_PERIOD_MS),
         so the default hears every node once.
         """
-        end = self.clock() + duration
-        while self.clock() < end:
-            self.spin_once(min(MAX_WAIT, max(0.0, end - self.clock())))
-        return self.protocol.nodes.online(self.clock())
+        return self.run(operations.discover(self.protocol, duration))
 
     def node_info(self, node_id: int) -> GetNodeInfoResponse:
         """GetNodeInfo: status, software and hardware version, name."""
-        response: GetNodeInfoResponse = self.call(GetNodeInfoRequest(), node_id)
-        return response
+        return self.run(operations.node_info(node_id))
 
     def get_param(
         self, node_id: int, name: str | None = None, *, index: int | None = None
@@ -254,27 +271,11 @@ class BusClient:
             InvalidRequestError: An empty name, or both or neither of name and index.
             ParameterError: The node has no such parameter.
         """
-        request = parameter_request(name, index)
-        return self._parameter(node_id, name, index, self.call(request, node_id))
-
-    @staticmethod
-    def _parameter(
-        node_id: int, name: str | None, index: int | None, response: GetSetResponse
-    ) -> ParameterInfo:
-        if vertiq.is_end_of_parameters(response):
-            where = f"at index {index}" if name is None else repr(name)
-            raise ParameterError(f"node {node_id} has no parameter {where}")
-        return ParameterInfo.from_response(response, index)
+        return self.run(operations.get_param(node_id, name, index=index))
 
     def list_params(self, node_id: int) -> list[ParameterInfo]:
         """Every parameter, walking the indices from 0 to the first empty answer."""
-        found = []
-        for index in range(MAX_PARAMETERS):
-            response = self.call(vertiq.get_parameter_by_index(index), node_id)
-            if vertiq.is_end_of_parameters(response):
-                break
-            found.append(ParameterInfo.from_response(response, index))
-        return found
+        return self.run(operations.list_params(node_id))
 
     def set_param(
         self,
@@ -296,47 +297,15 @@ class BusClient:
             ParameterError: No such parameter, a wrong type or a value out of range.
             RejectedError: The node kept another value.
         """
-        parameter_request(name, index)  # refuse an ambiguous parameter before any request
-        current = self.get_param(node_id, name, index=index)
-        if isinstance(value, _VALUES):
-            wanted: Value = value
-        elif isinstance(value, str) and not isinstance(current.value, StringValue):
-            try:
-                wanted = current.parse(value)
-            except ValueError as error:
-                raise InvalidRequestError(f"node {node_id}: {error}") from None
-        else:
-            wanted = vertiq.set_parameter(current.name, value).value
-        problem = current.check(wanted)
-        if problem is not None:
-            raise ParameterError(f"node {node_id}: {problem}")
-        if name is None:
-            request = GetSetRequest(index=index or 0, value=wanted)
-        else:
-            request = GetSetRequest(value=wanted, name=name.encode("utf-8"))
-        after = self._parameter(node_id, name, index, self.call(request, node_id))
-        if plain(after.value) != plain(wanted):
-            raise RejectedError(
-                f"node {node_id} kept {after.name} at {plain(after.value)!r} "
-                f"instead of {plain(wanted)!r}"
-            )
-        return after
-
-    def _opcode(self, node_id: int, opcode: Opcode) -> None:
-        response = self.call(ExecuteOpcodeRequest(opcode, 0), node_id)
-        if not response.ok:
-            raise RejectedError(
-                f"node {node_id} refused to {opcode.name.lower()} its parameters "
-                f"(error {response.argument})"
-            )
+        return self.run(operations.set_param(node_id, name, value, index=index))
 
     def save_params(self, node_id: int) -> None:
         """Save the parameters to non-volatile storage (ExecuteOpcode SAVE)."""
-        self._opcode(node_id, Opcode.SAVE)
+        self.run(operations.opcode(node_id, Opcode.SAVE))
 
     def erase_params(self, node_id: int) -> None:
         """Clear the stored parameters back to defaults (ExecuteOpcode ERASE)."""
-        self._opcode(node_id, Opcode.ERASE)
+        self.run(operations.opcode(node_id, Opcode.ERASE))
 
     def restart(self, node_id: int, *, bootloader: bool = False) -> None:
         """RestartNode with the magic number (Vertiq's bootloader one with ``bootloader``).
@@ -344,11 +313,7 @@ class BusClient:
         Raises:
             RejectedError: The node answered that it does not restart.
         """
-        response = self.call(vertiq.restart(bootloader), node_id)
-        if not response.ok:
-            raise RejectedError(f"node {node_id} refused to restart")
-
-    # -- firmware update --------------------------------------------------------------------
+        self.run(operations.restart(node_id, bootloader=bootloader))
 
     def update_firmware(
         self,
@@ -383,60 +348,19 @@ class BusClient:
             FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
             NoResponseError: GetNodeInfo after the update got no answer.
         """
-        check_image(image, max_image_size)
-        name = path.encode("utf-8")
-        now = self.clock()
-        update = FirmwareUpdate(
-            node_id,
-            name,
-            len(image),
-            now,
-            start_timeout=start_timeout,
-            read_timeout=read_timeout,
-            restart_timeout=restart_timeout,
+        return self.run(
+            operations.update_firmware(
+                self.protocol,
+                node_id,
+                image,
+                path,
+                progress=progress,
+                start_timeout=start_timeout,
+                read_timeout=read_timeout,
+                restart_timeout=restart_timeout,
+                max_image_size=max_image_size,
+            )
         )
-        self.protocol.files.add(name, image)
-        request = BeginFirmwareUpdateRequest(self.node_id, Path(name))
-        handle = self.protocol.request(request, node_id, now)
-        self._flush()
-        last = update.progress
-        try:
-            while not last.finished:
-                for event in self.spin_once():
-                    now = self.clock()
-                    if isinstance(event, Answered) and event.request.handle == handle:
-                        update.accepted(event.transfer.message, now)
-                    elif isinstance(event, TimedOut) and event.request.handle == handle:
-                        error = NoResponseError(
-                            node_id, event.request.request_name, event.attempts, self.timeout
-                        )
-                        update.no_answer(str(error))
-                    elif isinstance(event, FileServed):
-                        update.served(event.node_id, event.read, now)
-                    elif isinstance(event, StatusSeen):
-                        update.status(event.entry, now)
-                current = update.poll(self.clock())
-                if current != last and progress is not None:
-                    progress(current)
-                last = current
-        finally:
-            self.protocol.files.remove(name)
-            self.protocol.requests.cancel(handle)  # no retry of BeginFirmwareUpdate after this
-        if last.phase is not Phase.DONE:
-            raise FirmwareUpdateError(
-                last.error or f"node {node_id}: update failed", timed_out=last.timed_out
-            )
-        info = self.node_info(node_id)
-        version = info.software_version
-        expected = crc64we(image)
-        if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC and (
-            version.image_crc != expected
-        ):
-            raise FirmwareUpdateError(
-                f"node {node_id} reports image CRC {version.image_crc:#018x}, but the "
-                f"image's CRC-64-WE is {expected:#018x}"
-            )
-        return info
 
     # -- motors -----------------------------------------------------------------------------
 

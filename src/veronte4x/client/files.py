@@ -55,14 +55,22 @@ class FileServer:
 
     def __init__(self) -> None:
         self._files: dict[bytes, bytes] = {}
+        self._users: dict[bytes, int] = {}
 
     def add(self, path: bytes, data: bytes) -> None:
-        """Serve ``data`` at ``path`` (replacing what was there)."""
+        """Serve ``data`` at ``path`` (replacing what was there) until as many `remove`
+        calls as `add` calls: several updates of one image share it."""
         self._files[path] = bytes(data)
+        self._users[path] = self._users.get(path, 0) + 1
 
     def remove(self, path: bytes) -> None:
-        """Stop serving ``path``."""
-        self._files.pop(path, None)
+        """Stop serving ``path`` once every `add` of it has been removed."""
+        users = self._users.get(path, 0) - 1
+        if users > 0:
+            self._users[path] = users
+        else:
+            self._users.pop(path, None)
+            self._files.pop(path, None)
 
     def get_info(self, request: FileGetInfoRequest) -> FileGetInfoResponse:
         """The answer to a GetInfo: size, OK and a readable file, or NOT_FOUND."""

@@ -200,6 +200,15 @@ class FirmwareUpdate:
                 f"and runs its old firmware"
             )
 
+    def next_deadline(self) -> float | None:
+        """When `poll` next may time the update out, or None when nothing times out."""
+        timeout = {
+            Phase.WAITING: self.start_timeout,
+            Phase.READING: self.read_timeout,
+            Phase.RESTARTING: self.restart_timeout,
+        }.get(self._phase)
+        return None if timeout is None else self._since + timeout
+
     def poll(self, now: float) -> UpdateProgress:
         """Check the timeouts at ``now``; return where the update stands."""
         waited = now - self._since

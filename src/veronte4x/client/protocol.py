@@ -14,14 +14,6 @@ from typing import Any
 
 from veronte4x.client.files import FileRead, FileServer
 from veronte4x.client.nodes import NodeEntry, NodeTable
-from veronte4x.client.requests import (
-    DEFAULT_RETRIES,
-    DEFAULT_TIMEOUT,
-    Answered,
-    Requester,
-    TimedOut,
-)
-from veronte4x.client.transfer_ids import TransferIds
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.frame import Frame
@@ -29,6 +21,14 @@ from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest
 from veronte4x.dronecan.reassembler import Reassembler
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.errors import EncodeError, check_seconds
+from veronte4x.node.requests import (
+    DEFAULT_RETRIES,
+    DEFAULT_TIMEOUT,
+    Answered,
+    Requester,
+    TimedOut,
+)
+from veronte4x.node.transfer_ids import TransferIds
 
 DEFAULT_NODE_ID = 127
 """The client's node id unless told otherwise: the DroneCAN GUI tool's default."""

@@ -11,8 +11,9 @@ the request's transfer id and priority (spec 4.1; as libcanard and the dronecan 
 
 After an accepted BeginFirmwareUpdate the simulator pulls the image as section 2.4 says a
 module does: ``file.GetInfo`` on the file server, then ``file.Read`` from offset 0 until a
-short read, through the client's sans-IO `Requester` (timeouts and retries included). It
-then restarts with the image's CRC-64-WE in its software version. A file server that stops
+short read, through the sans-IO `veronte4x.node.Requester` it shares with the ground
+client (timeouts and retries included). It then restarts with the image's CRC-64-WE in its
+software version. A file server that stops
 answering ends the update: the module restarts into its old firmware. param.ExecuteOpcode
 SAVE is accepted (sets are kept at once, which the DSDL allows) and ERASE restores the
 defaults.
@@ -27,7 +28,6 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-from veronte4x.client.requests import Answered, Requester
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.image_crc import crc64we
@@ -72,6 +72,7 @@ from veronte4x.dronecan.vertiq import (
     raw_to_throttle,
 )
 from veronte4x.errors import EncodeError, check_seconds
+from veronte4x.node.requests import Answered, Requester
 from veronte4x.simulator import motor, parameters
 from veronte4x.simulator.motor import DEFAULT_MODEL, MotorModel, MotorState
 from veronte4x.simulator.schedule import Periodic

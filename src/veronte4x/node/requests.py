@@ -11,13 +11,13 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any
 
-from veronte4x.client.transfer_ids import TransferIds
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.messages import GetSetRequest, GetSetResponse
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.errors import EncodeError, check_seconds
+from veronte4x.node.transfer_ids import TransferIds
 
 DEFAULT_TIMEOUT = 1.0
 """Seconds to wait for a response before retrying: the DroneCAN GUI tool's default."""
