@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+import random
 import struct
 from pathlib import Path
 
@@ -18,7 +20,9 @@ from veronte4x.arbiter import (
     ArbiterConfig,
     DecisionKind,
     Disagreement,
+    DisorderedError,
     InputError,
+    Restart,
     SystemChecks,
     replay,
 )
@@ -110,9 +114,53 @@ def test_replay_compares_the_mode_bit() -> None:
     assert (only.field, only.recorded, only.modelled) == ("mode", "Maintenance", "Normal")
 
 
-def test_replay_needs_time_order() -> None:
+def test_a_frame_a_little_late_is_taken_at_the_latest_time() -> None:
+    """Two adjacent lines swapped 100 us apart, as a logger merging two queues writes them."""
+    capture = failure_capture()
+    capture = [(t + 0.0001, i, d) if i == 9 else (t, i, d) for t, i, d in capture]
+    capture.sort(key=lambda frame: frame[0])
+    swapped = list(capture)
+    at = next(n for n, (t, can_id, _) in enumerate(swapped) if can_id == 9 and t > 0.1)
+    assert swapped[at - 1][1] == 10
+    swapped[at - 1], swapped[at] = swapped[at], swapped[at - 1]
+    assert swapped[at][0] == swapped[at - 1][0] - 0.0001
+    result, reference = replay(swapped, CONFIG), replay(capture, CONFIG)
+    assert result.late == 1 and reference.late == 0
+    assert result.restarts == ()
+    assert result.decisions == reference.decisions
+    assert result.disagreements == reference.disagreements
+
+
+def test_two_logs_joined_restart_the_model() -> None:
+    once = replay(failure_capture(), CONFIG)
+    twice = replay(failure_capture() * 2, CONFIG)
+    firsts = (len(once.decisions), len(once.disagreements), len(once.errors))
+    assert twice.restarts == (Restart(0.0, 3.0, firsts),)
+    assert twice.decisions == once.decisions * 2
+    assert twice.disagreements == once.disagreements * 2
+    assert twice.late == 0
+    lines = twice.timeline().splitlines()
+    half = len(once.timeline().splitlines())
+    assert lines[:half] == once.timeline().splitlines()
+    assert lines[half] == (
+        "     0.000 s  RESTART     the capture's time steps back 3.000000 s (from 3.000 s): "
+        "the model starts again, as at boot"
+    )
+    assert lines[half + 1 :] == once.timeline().splitlines()
+
+
+def test_a_capture_out_of_time_order_is_refused() -> None:
+    shuffled = failure_capture()
+    random.Random(1).shuffle(shuffled)
+    with pytest.raises(DisorderedError) as raised:
+        replay(shuffled, CONFIG)
+    assert isinstance(raised.value, InputError)
+    assert raised.value.steps == 11
+
+
+def test_a_timestamp_that_is_no_number_is_refused() -> None:
     with pytest.raises(InputError):
-        replay([(1.0, 8, READY), (0.5, 8, READY)], CONFIG)
+        replay([(1.0, 8, READY), (math.nan, 8, READY)], CONFIG)
 
 
 def test_replay_of_a_candump_file_as_in_the_how_to(tmp_path: Path) -> None:

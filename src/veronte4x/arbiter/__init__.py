@@ -32,7 +32,15 @@ from veronte4x.arbiter.machine import (
     Phase,
 )
 from veronte4x.arbiter.model import Arbiter
-from veronte4x.arbiter.replay import CapturedFrame, Disagreement, FrameError, ReplayResult, replay
+from veronte4x.arbiter.replay import (
+    CapturedFrame,
+    Disagreement,
+    DisorderedError,
+    FrameError,
+    ReplayResult,
+    Restart,
+    replay,
+)
 from veronte4x.arbiter.scores import Contribution, compute_scores, explain_scores
 from veronte4x.arbiter.state import ArbiterState, Decision, DecisionKind, Mode, SystemChecks
 
@@ -50,6 +58,7 @@ __all__ = [
     "Decision",
     "DecisionKind",
     "Disagreement",
+    "DisorderedError",
     "Event",
     "Failover",
     "FrameError",
@@ -60,6 +69,7 @@ __all__ = [
     "Phase",
     "RelativeMean",
     "ReplayResult",
+    "Restart",
     "SystemChecks",
     "VariableConfig",
     "autopilot_name",

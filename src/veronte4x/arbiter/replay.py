@@ -2,6 +2,13 @@
 
 The autopilots' frames drive an `Arbiter`; the real arbiter's Status and Score frames in
 the capture (on ``config.arbiter_id``) are compared with the model at their timestamps.
+
+The model's time only goes forward; a capture's does not always. A frame up to
+``max_step_back`` earlier than the latest one (lines swapped by a logger, two interfaces'
+clocks merged) is taken at the latest time and counted as late; a larger step back (two
+logs joined one after the other) starts the model again, as at boot, and is shown on the
+timeline. A capture that steps back more often than that is not in time order at all: it
+raises `DisorderedError`.
 """
 
 from __future__ import annotations
@@ -12,6 +19,7 @@ from dataclasses import dataclass
 
 from veronte4x import codec
 from veronte4x.arbiter.config import ArbiterConfig, autopilot_name
+from veronte4x.arbiter.errors import InputError
 from veronte4x.arbiter.machine import Phase
 from veronte4x.arbiter.model import Arbiter
 from veronte4x.arbiter.state import ArbiterState, Decision, SystemChecks
@@ -84,6 +92,51 @@ class FrameError:
 
 
 @dataclass(frozen=True, slots=True)
+class Restart:
+    """Where the capture's time steps back further than ``max_step_back``: the model starts
+    again there, as at boot (two logs joined one after the other, a recorder's clock reset).
+
+    Attributes:
+        time: The time of the first frame after the step back, s.
+        previous: The latest time before it, s.
+        firsts: The index in the result's ``decisions``, ``disagreements`` and ``errors``
+            of the first item after the restart.
+    """
+
+    time: float
+    previous: float
+    firsts: tuple[int, int, int] = (0, 0, 0)
+
+    def __str__(self) -> str:
+        return f"{self.time:10.3f} s  {self.body()}"
+
+    def body(self, when: Callable[[float], str] | None = None) -> str:
+        """The restart without its time; ``when`` formats the time before the step."""
+        previous = f"{self.previous:.3f} s" if when is None else when(self.previous)
+        return (
+            f"RESTART     the capture's time steps back {self.previous - self.time:.6f} s "
+            f"(from {previous}): the model starts again, as at boot"
+        )
+
+
+class DisorderedError(InputError):
+    """A capture whose timestamps step back too often to be replayed: it is not in time
+    order (shuffled lines, or many logs joined). Sort it by time first.
+
+    Attributes:
+        steps: The steps back met so far.
+        frames: The frames read so far.
+    """
+
+    def __init__(self, steps: int, frames: int) -> None:
+        super().__init__(
+            "timestamps", f"{steps} steps back in {frames} frames", "a capture in time order"
+        )
+        self.steps = steps
+        self.frames = frames
+
+
+@dataclass(frozen=True, slots=True)
 class ReplayResult:
     """What a replay found.
 
@@ -92,12 +145,17 @@ class ReplayResult:
         disagreements: Every run of real-arbiter frames disagreeing with the model.
         errors: Frames that did not decode (they are otherwise skipped).
         state: The model's state after the last frame.
+        late: Frames up to ``max_step_back`` earlier than the one before, taken at the
+            latest time.
+        restarts: Where the time steps back further, and the model starts again.
     """
 
     decisions: tuple[Decision, ...]
     disagreements: tuple[Disagreement, ...]
     errors: tuple[FrameError, ...]
     state: ArbiterState
+    late: int = 0
+    restarts: tuple[Restart, ...] = ()
 
     def timeline(self, when: Callable[[float], str] | None = None) -> str:
         """Decisions, disagreements and bad frames as text, one a line, in time order.
@@ -112,6 +170,7 @@ class ReplayResult:
             ]
             entries += [(item.start, 1, str(item)) for item in self.disagreements]
             entries += [(item.time, 2, str(item)) for item in self.errors]
+            entries += [(item.time, -1, str(item)) for item in self.restarts]
         else:
             entries = [
                 (item.time, 0, f"{when(item.time)}  {item.body()}") for item in self.decisions
@@ -121,7 +180,21 @@ class ReplayResult:
                 for item in self.disagreements
             ]
             entries += [(item.time, 2, f"{when(item.time)}  {item.body()}") for item in self.errors]
-        return "\n".join(line for _, _, line in sorted(entries, key=lambda e: (e[0], e[1])))
+            entries += [
+                (item.time, -1, f"{when(item.time)}  {item.body(when)}") for item in self.restarts
+            ]
+        # Time starts again at each restart: in time order within each stretch between them.
+        stretch = [0] * len(self.decisions) + [0] * len(self.disagreements)
+        stretch += [0] * len(self.errors)
+        offsets = (0, len(self.decisions), len(self.decisions) + len(self.disagreements))
+        for number, restart in enumerate(self.restarts, 1):
+            for offset, first, end in zip(
+                offsets, restart.firsts, (*offsets[1:], len(stretch)), strict=True
+            ):
+                stretch[offset + first : end] = [number] * (end - offset - first)
+        stretch += range(1, len(self.restarts) + 1)
+        order = sorted(range(len(entries)), key=lambda i: (stretch[i], *entries[i][:2]))
+        return "\n".join(entries[i][2] for i in order)
 
 
 def _show(field: str, value: Value) -> str:
@@ -209,12 +282,23 @@ def _compare_status(compare: _Comparer, time: float, arb: Arbiter, status: codec
             )
 
 
+MAX_STEP_BACK = 0.01
+"""How far back, in seconds, a frame's time may step and still be taken as late: a tenth of
+the default message timeout (0.1 s), so that moving it to the latest time changes no
+timeout the model keeps."""
+
+_DISORDER = 10
+"""A capture steps back more than this many times, and in more than one frame in this many,
+is not in time order."""
+
+
 def replay(
     frames: Iterable[CapturedFrame],
     config: ArbiterConfig,
     *,
     checks: SystemChecks | None = None,
     score_tolerance: float = 1e-5,
+    max_step_back: float = MAX_STEP_BACK,
 ) -> ReplayResult:
     """Run a capture through the model and compare it with the real arbiter's frames.
 
@@ -226,6 +310,9 @@ def replay(
         checks: The arbiter's system checks at boot (default: all OK).
         score_tolerance: Relative difference up to which a recorded score equals the
             model's: the float32 rounding of the arbiter's own arithmetic.
+        max_step_back: A frame up to this many seconds earlier than the latest one is taken
+            at the latest time (counted in ``late``); further back, the model starts again
+            (a `Restart`).
 
     Returns:
         The model's decisions, the disagreements, the frames that did not decode, and the
@@ -233,12 +320,33 @@ def replay(
         as inputs.
 
     Raises:
-        InputError: A timestamp is earlier than the previous one.
+        DisorderedError: The time steps back more than 10 times, in more than one frame in
+            10: the capture is not in time order.
+        InputError: A timestamp is not a finite number.
     """
     arb = Arbiter(config, checks=checks)
     compare = _Comparer(score_tolerance)
+    decisions: list[Decision] = []
+    disagreements: list[Disagreement] = []
     errors: list[FrameError] = []
+    restarts: list[Restart] = []
+    late = count = 0
+    latest = -math.inf
     for time, can_id, data in frames:
+        count += 1
+        if time < latest:
+            if latest - time <= max_step_back:
+                late += 1
+                time = latest
+            else:
+                if len(restarts) + late >= _DISORDER and (len(restarts) + late) * _DISORDER > count:
+                    raise DisorderedError(len(restarts) + late + 1, count)
+                decisions += arb.decisions
+                disagreements += compare.finish()
+                firsts = (len(decisions), len(disagreements), len(errors))
+                restarts.append(Restart(time, latest, firsts))
+                arb, compare = Arbiter(config, checks=checks), _Comparer(score_tolerance)
+        latest = time
         try:
             if can_id != config.arbiter_id:
                 arb.receive(can_id, data, time)
@@ -254,4 +362,8 @@ def replay(
             scores = arb.state.scores
             field = f"score {autopilot_name(message.autopilot)}"
             compare.check(time, field, message.score, scores.get(message.autopilot))
-    return ReplayResult(tuple(arb.decisions), compare.finish(), tuple(errors), arb.state)
+    decisions += arb.decisions
+    disagreements += compare.finish()
+    return ReplayResult(
+        tuple(decisions), tuple(disagreements), tuple(errors), arb.state, late, tuple(restarts)
+    )

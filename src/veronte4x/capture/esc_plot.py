@@ -3,7 +3,8 @@
 One line per node in each panel: speed and supply current from ``uavcan.equipment.esc.Status``,
 supply voltage, and the temperatures: the coils' from esc.Status and the microcontroller's
 from ``uavcan.equipment.device.Temperature`` (Vertiq "Standard DroneCAN Support", sections
-1.2 and 1.3).
+1.2 and 1.3). The time axis and legends are drawn as on the arbitration plot
+(`veronte4x.capture.plot.time_axis`).
 """
 
 from __future__ import annotations
@@ -53,25 +54,35 @@ def esc_series(records: Iterable[Record]) -> dict[int, _Series]:
 
 def esc_telemetry(records: Iterable[Record]) -> Figure:
     """Draw speed, current, voltage and temperatures of every ESC; return the figure."""
+    return draw_esc_telemetry(esc_series(records))
+
+
+def draw_esc_telemetry(nodes: dict[int, _Series]) -> Figure:
+    """Draw the series `esc_series` gathers; return the figure."""
     from matplotlib.figure import Figure
 
-    nodes = esc_series(records)
-    figure = Figure(figsize=(10, 8))
+    from veronte4x.capture.plot import legend_outside, time_axis
+
+    figure = Figure(figsize=(10, 8), layout="constrained")
     speed, current, voltage, heat = figure.subplots(4, 1, sharex=True)
+    starts = [t[0] for s in nodes.values() for t in (s.times, s.mcu_times) if t]
+    origin, label = time_axis(min(starts, default=None))
     for node, s in sorted(nodes.items()):
-        label = f"node {node}"
-        speed.plot(s.times, s.rpm, label=label)
-        current.plot(s.times, s.current, label=label)
-        voltage.plot(s.times, s.voltage, label=label)
-        line = heat.plot(s.times, s.coil, label=f"{label} coils")[0]
-        heat.plot(s.mcu_times, s.mcu, linestyle="--", color=line.get_color(), label=f"{label} MCU")
+        name = f"node {node}"
+        times = [t - origin for t in s.times]
+        speed.plot(times, s.rpm, label=name)
+        current.plot(times, s.current, label=name)
+        voltage.plot(times, s.voltage, label=name)
+        line = heat.plot(times, s.coil, label=f"{name} coils")[0]
+        mcu_times = [t - origin for t in s.mcu_times]
+        heat.plot(mcu_times, s.mcu, linestyle="--", color=line.get_color(), label=f"{name} MCU")
     speed.set_ylabel("speed (rpm)")
     current.set_ylabel("current (A)")
     voltage.set_ylabel("voltage (V)")
     heat.set_ylabel("temperature (K)")
-    heat.set_xlabel("time (s)")
+    heat.set_xlabel(label)
     if nodes:
-        speed.legend(loc="upper right")
-        heat.legend(loc="upper right", fontsize="small")
+        legend_outside(speed)
+        legend_outside(heat, fontsize="small")
     figure.suptitle("ESC telemetry" if nodes else "ESC telemetry: none in this capture")
     return figure

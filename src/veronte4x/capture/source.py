@@ -68,9 +68,10 @@ def resolve(path: str | os.PathLike[str]) -> Source:
     """Decide how a capture is read from its path, and its content where the suffix is silent.
 
     candump text (``.log``, ``.txt``, ``.candump``, gzipped or not, or ``-`` for standard
-    input) is parsed natively; ``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4`` and ``.trc`` go
-    through python-can's ``LogReader``. A file with any other suffix, or none, is read as
-    candump text if its first lines are candump frames; a pipe without a suffix is read as
+    input) is parsed natively, gzip recognised by its first bytes whatever the name; ``.asc``,
+    ``.blf``, ``.csv``, ``.db``, ``.mf4`` and ``.trc`` go through python-can's
+    ``LogReader``. A file with any other suffix, or none, is read as candump text if its
+    first lines are candump frames; a pipe without a suffix is read as
     candump text.
 
     Raises:
@@ -79,13 +80,16 @@ def resolve(path: str | os.PathLike[str]) -> Source:
     """
     name = os.fspath(path)
     if name == STDIN:
-        return Source(name, Format.CANDUMP)
+        return Source(name, Format.CANDUMP, _stdin_is_gzip())
     if os.path.isdir(name):
         raise SourceError(f"{name} is a directory: give a capture file")
     lower = name.lower()
     gzipped = lower.endswith(".gz")
     stem = lower[:-3] if gzipped else lower
     if stem.endswith(CANDUMP_SUFFIXES):
+        if os.path.isfile(name):  # its first bytes say whether it is gzip, not its name
+            with open(name, "rb") as file:
+                gzipped = file.read(len(_GZIP_MAGIC)) == _GZIP_MAGIC
         return Source(name, Format.CANDUMP, gzipped)
     if stem.endswith(PYTHON_CAN_SUFFIXES):
         return Source(name, Format.PYTHON_CAN, gzipped)
@@ -105,6 +109,13 @@ def resolve(path: str | os.PathLike[str]) -> Source:
         f"{name}: not candump text, and its suffix is none of {known}: convert it, or rename "
         "it to the suffix of its format"
     )
+
+
+def _stdin_is_gzip() -> bool:
+    """Whether standard input starts with gzip's magic bytes, looked at without reading
+    them (waits for the first bytes of a pipe)."""
+    peek = getattr(sys.stdin.buffer, "peek", None) if sys.stdin is not None else None
+    return peek is not None and peek(len(_GZIP_MAGIC))[: len(_GZIP_MAGIC)] == _GZIP_MAGIC
 
 
 def _gunzip_head(name: str) -> bytes:
@@ -145,8 +156,9 @@ class Truncated(SourceError):
     def __init__(self, path: str, line_number: int) -> None:
         self.path = path
         self.line_number = line_number
+        where = "standard input" if path == STDIN else path
         super().__init__(
-            f"{path}: the gzip data ends early, at line {line_number}: the file is truncated"
+            f"{where}: the gzip data ends early, at line {line_number}: the file is truncated"
         )
 
     def bad_line(self) -> Truncation:
@@ -162,7 +174,10 @@ def open_text(source: Source) -> Iterator[IO[str]]:
     `open_lines` turns that into `Truncated`.
     """
     if source.is_stdin:
-        stream = io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
+        binary: IO[bytes] = sys.stdin.buffer
+        if source.gzipped:
+            binary = cast(IO[bytes], gzip.GzipFile(fileobj=binary, mode="rb"))
+        stream = io.TextIOWrapper(binary, encoding="utf-8", errors="replace")
         try:
             yield stream
         finally:
@@ -176,7 +191,9 @@ def open_text(source: Source) -> Iterator[IO[str]]:
 @contextmanager
 def open_binary(source: Source) -> Iterator[BinaryIO]:
     """Open candump text as bytes (gzip decompressed); standard input is not closed."""
-    if source.is_stdin:
+    if source.is_stdin and source.gzipped:
+        yield cast(BinaryIO, gzip.GzipFile(fileobj=sys.stdin.buffer, mode="rb"))
+    elif source.is_stdin:
         yield sys.stdin.buffer
     elif source.gzipped:
         with gzip.open(source.path, "rb") as stream:

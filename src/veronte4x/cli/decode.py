@@ -21,7 +21,7 @@ from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
-from veronte4x.cli.notices import tell_truncation
+from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 from veronte4x.cli.options import live as live_bus
 from veronte4x.times import format_time
@@ -59,7 +59,8 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
-    records = tell_truncation(open_records(args, bus_map))
+    watch = InputWatch(None if live_bus(args) else args.file)
+    records = watch.records(open_records(args, bus_map))
     out = sys.stdout
     clock = _Clock(args.relative_time)
     if args.output == "csv":
@@ -92,7 +93,11 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         return EXIT_INTERRUPTED
     if status == EXIT_OK:
         close()
-    print(f"veronte4x: {_summary(counts)} ({args.on_error})", file=sys.stderr)
+    note = watch.note()
+    print(
+        f"veronte4x: {_summary(counts)} ({args.on_error})" + (f"; {note}" if note else ""),
+        file=sys.stderr,
+    )
     return status
 
 

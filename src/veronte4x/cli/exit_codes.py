@@ -14,6 +14,9 @@ EXIT_NO_ANSWER = 3
 """A node did not answer: none on the bus, a request timed out, an update stalled."""
 EXIT_REFUSED = 4
 """A node answered no: unknown parameter, value out of range, refused or failed update."""
+EXIT_NOT_IN_TIME_ORDER = 5
+"""``replay``: the capture's timestamps step back too often to replay it (it is not in time
+order: shuffled lines, many logs joined); sort it by time."""
 EXIT_INTERRUPTED = 130
 """Interrupted by Ctrl-C (SIGINT), as shells report it; or SIGTERM during ``esc spin``
 (motors were sent zero throttle first)."""

@@ -8,6 +8,7 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, open_records
 from veronte4x.extras import require
 
@@ -33,19 +34,27 @@ def add_parser(commands: Any) -> None:
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
-    """Draw the figure and save or show it."""
+    """Draw the figure and save or show it; with nothing to draw, say so and draw nothing."""
     matplotlib = require("matplotlib", "plot", "veronte4x plot")
     if args.output:
         matplotlib.use("Agg")
-    records = open_records(args, bus_map)
+    watch = InputWatch(args.file)
+    records = watch.records(open_records(args, bus_map))
+    name = "standard input" if args.file == "-" else args.file
     if args.kind == "esc":
-        from veronte4x.capture.esc_plot import esc_telemetry
+        from veronte4x.capture.esc_plot import draw_esc_telemetry, esc_series
 
-        figure = esc_telemetry(records)
+        nodes = esc_series(records)
+        if not nodes:
+            return _nothing(watch, name, "no ESC status or temperature of a DroneCAN node")
+        figure = draw_esc_telemetry(nodes)
     else:
-        from veronte4x.capture.plot import arbitration_timeline
+        from veronte4x.capture.plot import draw_timeline, timeline
 
-        figure = arbitration_timeline(records)
+        data = timeline(records)
+        if data.empty:
+            return _nothing(watch, name, "no Score or Status frame of the arbiter")
+        figure = draw_timeline(data)
     if args.output:
         figure.savefig(args.output)
         print(f"veronte4x: wrote {args.output}", file=sys.stderr)
@@ -58,3 +67,16 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     plt.figure(figure)
     plt.show()
     return EXIT_OK
+
+
+def _nothing(watch: InputWatch, name: str, what: str) -> int:
+    """Say there is nothing to plot, and why; return the exit code."""
+    if not watch.frames:
+        what = "no frames at all"
+    other = "arbitration" if what.startswith("no ESC") else "esc"
+    print(
+        f"veronte4x: nothing to plot: {name} has {what}; try --kind {other}, or check the "
+        "capture and --channel",
+        file=sys.stderr,
+    )
+    return EXIT_USAGE

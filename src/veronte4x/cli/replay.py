@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import argparse
 import sys
+from itertools import chain
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
-from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK
-from veronte4x.cli.options import add_capture_options, add_live_options, open_frame_source
+from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_NOT_IN_TIME_ORDER, EXIT_OK
+from veronte4x.cli.notices import InputWatch
+from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
 from veronte4x.times import format_time
 
 
@@ -38,10 +40,12 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Replay the capture through the arbiter model and print its timeline.
 
-    Exit code 1 when the recorded arbiter disagrees with the model, as a checker does.
+    Exit code 1 when the recorded arbiter disagrees with the model, as a checker does; 5
+    when the capture is not in time order.
     """
     from veronte4x import arbiter
     from veronte4x.arbiter.config_file import load_config
+    from veronte4x.arbiter.replay import DisorderedError
 
     if args.config:
         config = load_config(args.config)
@@ -52,24 +56,48 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             extended_ids=bus_map.extended,
         )
     clock = _Clock(args.relative_time)
+    watch = InputWatch(None if live(args) else args.file)
     frames = (
         (clock.see(frame.timestamp), frame.can_id, frame.data)
-        for frame in open_frame_source(args)
+        for frame in watch.frame_items(open_frame_source(args))
         if isinstance(frame, Frame)
         and frame.timestamp is not None
         and not (frame.error or frame.remote or frame.fd)
         and frame.extended == config.extended_ids
     )
-    if not args.config:  # said once the capture opened: an error about it comes first
+    first = next(frames, None)  # an error about the capture comes before the warning
+    if not args.config:
         print(NO_CONFIG, file=sys.stderr)
-    result = arbiter.replay(frames, config)
+    try:
+        result = arbiter.replay(chain((first,) if first else (), frames), config)
+    except DisorderedError as error:
+        sys.stdout.flush()
+        print(
+            f"veronte4x: {_name(args)} is not in time order ({error.steps} steps back in "
+            f"{error.frames} frames): replay needs it sorted by time; sort the capture first",
+            file=sys.stderr,
+        )
+        return EXIT_NOT_IN_TIME_ORDER
     print(result.timeline(clock.format))
-    print(
+    summary = (
         f"veronte4x: {len(result.decisions)} decisions, {len(result.disagreements)} "
-        f"disagreements, {len(result.errors)} bad frames",
-        file=sys.stderr,
+        f"disagreements, {len(result.errors)} bad frames"
     )
+    if result.late:
+        summary += f", {_count(result.late, 'frame')} out of time order (taken late)"
+    if result.restarts:
+        summary += f", {_count(len(result.restarts), 'restart')} (the time steps back)"
+    note = watch.note()
+    print(summary + (f"; {note}" if note else ""), file=sys.stderr)
     return EXIT_FINDINGS if result.disagreements else EXIT_OK
+
+
+def _count(number: int, noun: str) -> str:
+    return f"{number} {noun}" if number == 1 else f"{number} {noun}s"
+
+
+def _name(args: argparse.Namespace) -> str:
+    return "the bus" if live(args) else "standard input" if args.file == "-" else args.file
 
 
 NO_CONFIG = (

@@ -8,8 +8,8 @@ from typing import Any
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK
-from veronte4x.cli.notices import tell_truncation
-from veronte4x.cli.options import add_capture_options, add_live_options, open_records
+from veronte4x.cli.notices import InputWatch, tell
+from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 
 
 def add_parser(commands: Any) -> None:
@@ -23,6 +23,9 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Print the counts of the capture."""
-    records = tell_truncation(open_records(args, bus_map))
-    print(capture.stats(records).report())
+    watch = InputWatch(None if live(args) else args.file)
+    print(capture.stats(watch.records(open_records(args, bus_map))).report())
+    note = watch.note()
+    if note:
+        tell(note)
     return EXIT_OK

@@ -41,12 +41,20 @@ def read_frames(path: str | os.PathLike[str]) -> FrameColumns:
     source = resolve(path)
     if source.format is Format.CANDUMP:
         return _candump(source)
+    from veronte4x.capture.readers.pythoncan import (
+        collect_quietly,
+        quiet_parsers,
+        read_with_python_can,
+    )
+
     if source.path.lower().endswith(".mf4"):
         try:
-            return _mf4(source.path)
+            with quiet_parsers():
+                return _mf4(source.path)
         except ImportError:
             pass  # python-can says which extra is missing
-    from veronte4x.capture.readers.pythoncan import read_with_python_can
+        except Exception:  # a damaged file: python-can's reader says how, or what it can read
+            collect_quietly()
 
     return from_frames(list(enumerate(read_with_python_can(source.path), 1)))
 
