@@ -82,6 +82,12 @@ SERVICES = st.one_of(
 )
 
 
+ODD_CHANNELS = ("can1\x00", "can1\x7f", "can1\x0b", "can1\x1f", "cän1")
+"""Interface names with bytes the column parser leaves to the per-line parser (a control
+character, DEL, white space to ``str.split``, non-ASCII), one character longer than can1."""
+LINE_ENDINGS = st.sampled_from(["\n", "\r\n"])
+
+
 def veronte_payloads(sender: codec.Sender) -> st.SearchStrategy[bytes]:
     """Valid frames of every type the sender sends, and arbitrary bytes."""
     from tests.codec.strategies import MESSAGES
@@ -178,7 +184,7 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
             continue
         can_id, data, extended = item
         ident = f"{can_id:08X}" if extended else f"{can_id:03X}"
-        channel = draw(st.sampled_from(["can0", "can0", "can1"]))
+        channel = draw(st.sampled_from(["can0", "can0", "can1", *ODD_CHANNELS]))
         if draw(st.floats(0, 1)) < human:
             lines.append(f"({stamp:.6f})  {channel}  {ident}   [{len(data)}]  {data.hex(' ')}")
         else:
@@ -186,8 +192,8 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
     return lines
 
 
-def write(path: Path, lines: list[str]) -> Path:
-    path.write_text("".join(line + "\n" for line in lines))
+def write(path: Path, lines: list[str], ending: str = "\n") -> Path:
+    path.write_bytes("".join(line + ending for line in lines).encode())
     return path
 
 
