@@ -111,6 +111,7 @@ def regular_sessions(
     tail: npt.NDArray[np.uint8],
     types: npt.NDArray[np.int16],
     timeout: float = TRANSFER_ID_TIMEOUT,
+    table: bool = True,
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
     """Sort frames by session and find the regular sessions.
 
@@ -119,6 +120,9 @@ def regular_sessions(
             code, CAN ID, timestamp as the reassembler is fed it, data length, tail byte
             and type index (all >= 0).
         timeout: The transfer-ID timeout.
+        table: Make the sessions of a channel the session table could reach irregular
+            (`table_safe`, the frames given in capture order); False where the caller
+            checks that itself.
 
     Returns:
         The frames' order by session (capture order within one), and for each frame in
@@ -166,7 +170,7 @@ def regular_sessions(
     sessions = session[-1] + 1 if n else 0
     broken = np.bincount(session[bad], minlength=sessions) > 0 if n else np.zeros(0, np.bool_)
     regular = ~broken[session] if n else np.zeros(0, np.bool_)
-    if n:
+    if n and table:
         channels = channel[order]
         crowded = ~table_safe(channels[opens], order, opens, start, ~broken)
         regular &= ~crowded[channels]
@@ -211,23 +215,11 @@ def table_safe(
     safe = counts <= MAX_SESSIONS
     if safe.all():
         return safe
-    span = np.int64(position.max(initial=0)) + 2
     heads = np.flatnonzero(opens)
     tails = np.append(heads[1:] - 1, len(position) - 1)
     first, last = position[heads], position[tails]
-    base = session_channel.astype(np.int64) * span
-    firsts, lasts = np.sort(base + first), np.sort(base + last)
-
-    def overlapping(channel: np.ndarray, after: np.ndarray, before: np.ndarray) -> np.ndarray:
-        """Most sessions of ``channel`` (other than the one asked about, whose frames
-        ``after`` and ``before`` are) with a frame between ``after`` and ``before``: those
-        alive across, and never more than the frames between."""
-        offset = channel.astype(np.int64) * span
-        began = np.searchsorted(firsts, offset + before, "left")
-        ended = np.searchsorted(lasts, offset + after, "right")
-        count: np.ndarray = np.minimum(began - ended - 1, before - after - 1)
-        return count
-
+    spans = Spans(session_channel, first, last)
+    overlapping = spans.reach
     irregular = np.flatnonzero(~session_regular)
     too_many = np.bincount(session_channel[irregular], minlength=size) > MAX_SESSIONS
     reach = overlapping(session_channel[irregular], first[irregular], last[irregular])
@@ -245,6 +237,39 @@ def table_safe(
     unsafe = unsafe + np.bincount(owner, weights=reach >= MAX_SESSIONS, minlength=size)
     result: npt.NDArray[np.bool_] = safe | ((unsafe == 0) & ~too_many)
     return result
+
+
+class Spans:
+    """The first and last frame positions of sessions, to bound how many sessions used the
+    table between two frames (see `table_safe`)."""
+
+    def __init__(
+        self,
+        channel: npt.NDArray[np.int32],
+        first: npt.NDArray[np.int64],
+        last: npt.NDArray[np.int64],
+    ) -> None:
+        self.span = np.int64(last.max(initial=0)) + 2
+        base = channel.astype(np.int64) * self.span
+        self.firsts, self.lasts = np.sort(base + first), np.sort(base + last)
+
+    def reach(self, channel: np.ndarray, after: np.ndarray, before: np.ndarray) -> np.ndarray:
+        """Most sessions of ``channel`` (other than the one asked about, whose frames
+        ``after`` and ``before`` are) with a frame between ``after`` and ``before``: those
+        alive across, and never more than the frames between."""
+        offset = channel.astype(np.int64) * self.span
+        began = np.searchsorted(self.firsts, offset + before, "left")
+        ended = np.searchsorted(self.lasts, offset + after, "right")
+        count: np.ndarray = np.minimum(began - ended - 1, before - after - 1)
+        return count
+
+    def later(self, channel: np.ndarray, last: np.ndarray) -> np.ndarray:
+        """Sessions of ``channel`` whose last frame comes after ``last``."""
+        offset = channel.astype(np.int64) * self.span
+        after: np.ndarray = np.searchsorted(self.lasts, offset + self.span, "left") - (
+            np.searchsorted(self.lasts, offset + last, "right")
+        )
+        return after
 
 
 def dropped_after(
