@@ -182,6 +182,84 @@ def fleet_rows(small: Path, root: Path, files: int, repeat: int) -> list[tuple[s
     return rows
 
 
+SESSION_COUNTS = (10, 1_000, 10_000, 100_000)
+
+
+def session_kinds() -> list[tuple[object, bool]]:
+    """Single-frame DroneCAN kinds the column decoders take, and whether each is a service."""
+    from veronte4x import dronecan
+
+    return [
+        (dronecan.GetNodeInfoRequest(), True),
+        (dronecan.RestartNodeRequest(magic_number=0xACCE551B1E), True),
+        (dronecan.RestartNodeResponse(ok=True), True),
+        (dronecan.ExecuteOpcodeRequest(opcode=0, argument=7), True),
+        (dronecan.ExecuteOpcodeResponse(argument=-3, ok=False), True),
+        (
+            dronecan.NodeStatus(
+                uptime_sec=5,
+                health=dronecan.Health.OK,
+                mode=0,
+                sub_mode=0,
+                vendor_specific_status_code=0,
+            ),
+            False,
+        ),
+    ]
+
+
+def write_sessions(path: Path, sessions: int, frames: int) -> int:
+    """A DroneCAN bus of ``sessions`` distinct sessions (services between any two nodes,
+    messages from any node; over two interfaces beyond one's 80,774), one after another,
+    each sending its share of ``frames`` single-frame transfers 1 ms apart. Returns the
+    frames written."""
+    import random
+
+    from veronte4x import dronecan
+
+    kinds = session_kinds()
+    keys = [
+        (channel, kind, source, target)
+        for channel in ("can0", "can1")
+        for kind, (_, service) in enumerate(kinds)
+        for source in range(1, 128)
+        for target in (range(1, 128) if service else (None,))
+    ]
+    one_bus = len(keys) // 2
+    picked = random.Random(sessions).sample(
+        keys[:one_bus] if sessions <= one_bus else keys, sessions
+    )
+    each = max(1, frames // sessions)
+    stamp = 1_700_000_000.0
+    written = 0
+    with path.open("w") as out:
+        for channel, kind, source, target in picked:
+            frame = dronecan.encode(
+                kinds[kind][0], source_node_id=source, transfer_id=0, destination_node_id=target
+            )[0]
+            head, tail = frame.data[:-1].hex().upper(), frame.data[-1]
+            lines = []
+            for tid in range(each):
+                stamp += 0.001
+                lines.append(
+                    f"({stamp:.6f}) {channel} {frame.can_id:08X}#{head}{tail | tid % 32:02X}\n"
+                )
+            out.writelines(lines)
+            written += each
+    return written
+
+
+def session_rows(root: Path, frames: int, repeat: int) -> list[tuple[int, int, float]]:
+    """read_tables on buses of 10 to 100,000 distinct sessions: (sessions, frames, s)."""
+    rows = []
+    for sessions in SESSION_COUNTS:
+        path = root / f"sessions-{sessions}.log"
+        written = write_sessions(path, sessions, max(frames, sessions))
+        rows.append((sessions, written, _timed(lambda p=path: columnar_tables(p), repeat)))
+        path.unlink()
+    return rows
+
+
 def _timed(function: Callable[[], int], repeat: int) -> float:
     """The best of ``repeat`` runs, in seconds."""
     best = float("inf")
@@ -205,6 +283,9 @@ def main() -> None:
     parser.add_argument("--per-frame", type=int, default=200_000, help="frames for the old path")
     parser.add_argument("--repeat", type=int, default=2, help="runs of each reader (best kept)")
     parser.add_argument("--files", type=int, default=4, help="files for the cluster rows")
+    parser.add_argument(
+        "--session-frames", type=int, default=200_000, help="frames of each sessions bus"
+    )
     args = parser.parse_args()
     repeat = args.repeat
     with tempfile.TemporaryDirectory() as folder:
@@ -265,6 +346,10 @@ def main() -> None:
             print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {peak:8.0f}")
         hour = 63_000_000 * seconds / frames
         print(f"one hour of two buses (63 M frames) at this rate: {hour:.0f} s, same peak memory")
+        print(f"\n{'read_tables, distinct DroneCAN sessions':48} {'frames/s':>12} {'us/frame':>8}")
+        for sessions, frames, seconds in session_rows(root, args.session_frames, repeat):
+            name = f"{sessions:,} sessions, {frames:,} frames"
+            print(f"{name:48} {frames / seconds:12,.0f} {1e6 * seconds / frames:8.2f}")
         rows = fleet_rows(small, root, args.files, repeat)
         print(f"\n{'several files':48} {'frames/s':>12} {'seconds':>8} {'speed-up':>8}")
         for name, frames, seconds in rows:

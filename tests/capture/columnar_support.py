@@ -82,6 +82,12 @@ SERVICES = st.one_of(
 )
 
 
+ODD_CHANNELS = ("can1\x00", "can1\x7f", "can1\x0b", "can1\x1f", "cän1")
+"""Interface names with bytes the column parser leaves to the per-line parser (a control
+character, DEL, white space to ``str.split``, non-ASCII), one character longer than can1."""
+LINE_ENDINGS = st.sampled_from(["\n", "\r\n"])
+
+
 def veronte_payloads(sender: codec.Sender) -> st.SearchStrategy[bytes]:
     """Valid frames of every type the sender sends, and arbitrary bytes."""
     from tests.codec.strategies import MESSAGES
@@ -178,7 +184,7 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
             continue
         can_id, data, extended = item
         ident = f"{can_id:08X}" if extended else f"{can_id:03X}"
-        channel = draw(st.sampled_from(["can0", "can0", "can1"]))
+        channel = draw(st.sampled_from(["can0", "can0", "can1", *ODD_CHANNELS]))
         if draw(st.floats(0, 1)) < human:
             lines.append(f"({stamp:.6f})  {channel}  {ident}   [{len(data)}]  {data.hex(' ')}")
         else:
@@ -186,8 +192,8 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
     return lines
 
 
-def write(path: Path, lines: list[str]) -> Path:
-    path.write_text("".join(line + "\n" for line in lines))
+def write(path: Path, lines: list[str], ending: str = "\n") -> Path:
+    path.write_bytes("".join(line + ending for line in lines).encode())
     return path
 
 
@@ -208,3 +214,94 @@ def assert_same_tables(got: dict[str, Any], expected: dict[str, Any]) -> None:
     for kind, table in expected.items():
         assert got[kind].schema == table.schema, kind
         assert rows(got[kind]) == rows(table), kind
+
+
+def _session_messages() -> list[tuple[Any, bool]]:
+    """One message of each kind the session generator uses, and whether it is a service."""
+    return [
+        (dronecan.GetNodeInfoRequest(), True),
+        (dronecan.RestartNodeRequest(magic_number=0xACCE551B1E), True),
+        (dronecan.RestartNodeResponse(ok=True), True),
+        (dronecan.ExecuteOpcodeRequest(opcode=0, argument=7), True),
+        (dronecan.ExecuteOpcodeResponse(argument=-3, ok=False), True),
+        (dronecan.GetSetRequest(index=3, name=b"a parameter"), True),  # three frames
+        (dronecan.GetSetResponse(name=b"esc"), True),
+        (
+            dronecan.NodeStatus(
+                uptime_sec=5,
+                health=dronecan.Health.OK,
+                mode=0,
+                sub_mode=0,
+                vendor_specific_status_code=0,
+            ),
+            False,
+        ),
+    ]
+
+
+def many_sessions(
+    count: int, concurrent: bool, faults: float = 0.0, transfers: int = 2, seed: int = 0
+) -> list[str]:
+    """candump lines of ``count`` distinct DroneCAN sessions on one bus (up to 114,427:
+    services between any two nodes, messages from any node), ``transfers`` each.
+
+    Args:
+        concurrent: Sessions take turns, transfer by transfer, all open through the
+            capture; else each sends its transfers and falls silent before the next begins.
+        faults: Share of transfers with a fault: a frame dropped, doubled or bit-flipped.
+        seed: Of the random choices (which sessions, which faults).
+    """
+    import random
+
+    chooser = random.Random(seed)
+    kinds = _session_messages()
+    keys = [
+        (kind, source, target)
+        for kind, (_, service) in enumerate(kinds)
+        for source in range(1, 128)
+        for target in (range(1, 128) if service else (None,))
+    ]
+    # ExecuteOpcode only where the others do not suffice: the 256 names of its uint8 opcode
+    # dictionary are more than pyarrow's unify_dictionaries joins (tables of batches).
+    plain = [key for key in keys if not kinds[key[0]][0].__class__.__name__.startswith("Exec")]
+    picked = chooser.sample(plain if count <= len(plain) else keys, count)
+    tids = [chooser.randrange(32) for _ in picked]
+    turns = [
+        (session, turn)
+        for turn, session in (
+            ((t, s) for t in range(transfers) for s in range(count))
+            if concurrent
+            else ((t, s) for s in range(count) for t in range(transfers))
+        )
+    ]
+    lines = []
+    stamp = 1_700_000_000.0
+    step = 1e-4 if concurrent else 1e-3
+    for session, turn in turns:
+        kind, source, target = picked[session]
+        message, _ = kinds[kind]
+        frames = [
+            (f.can_id, f.data)
+            for f in dronecan.encode(
+                message,
+                source_node_id=source,
+                transfer_id=(tids[session] + turn) % 32,
+                destination_node_id=target,
+            )
+        ]
+        if faults and chooser.random() < faults:
+            at = chooser.randrange(len(frames))
+            fault = chooser.randrange(3)
+            if fault == 0:
+                del frames[at]
+            elif fault == 1:
+                frames.insert(at, frames[at])
+            else:
+                can_id, data = frames[at]
+                flipped = bytearray(data)
+                flipped[chooser.randrange(len(data))] ^= 1 << chooser.randrange(8)
+                frames[at] = (can_id, bytes(flipped))
+        for can_id, data in frames:
+            stamp += step
+            lines.append(f"({stamp:.6f}) can0 {can_id:08X}#{data.hex().upper()}")
+    return lines

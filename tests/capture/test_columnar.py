@@ -220,3 +220,17 @@ def test_relative_time(flight: Path) -> None:
     per_record = capture.to_dataframe(capture.read(flight), relative_time=True)
     assert frame["timestamp"].tolist() == per_record["timestamp"].tolist()
     assert frame["timestamp"].iloc[0] == 0.0
+
+
+def test_importing_the_columnar_path_loads_neither_pandas_nor_matplotlib() -> None:
+    """Issue 19, lean imports: an Arrow or Polars user never asked for pandas. (Building
+    the first Arrow array is pyarrow's own business: it imports pandas when installed.)"""
+    code = (
+        "import sys\n"
+        "from veronte4x import capture\n"
+        "from veronte4x.capture.columnar import dataset, engine, fleet, stream, tables\n"
+        "print(sorted(m for m in ('pandas', 'matplotlib') if m in sys.modules))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "[]"

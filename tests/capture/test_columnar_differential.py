@@ -8,19 +8,25 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
+from tests.capture.columnar_support import (
+    BUS_MAPS,
+    LINE_ENDINGS,
+    assert_same_tables,
+    captures,
+    write,
+)
 from veronte4x import capture
 from veronte4x.capture import BusMap
 
 
 @settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
-@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
+@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0", "can1"]), LINE_ENDINGS)
 def test_generated_captures_agree(
-    data: st.DataObject, bus_map: BusMap, channel: str | None
+    data: st.DataObject, bus_map: BusMap, channel: str | None, ending: str
 ) -> None:
     lines = data.draw(captures(bus_map))
     with tempfile.TemporaryDirectory() as folder:
-        path = write(Path(folder) / "capture.log", lines)
+        path = write(Path(folder) / "capture.log", lines, ending)
         expected = capture.tables_from_records(capture.read(path, bus_map, channel), bus_map)
         got = capture.read_tables(path, bus_map, channel)
     assert_same_tables(got, expected)
@@ -79,3 +85,13 @@ def test_human_view_times_agree(lines: list[tuple[str, bool]]) -> None:
         expected = capture.tables_from_records(capture.read(path))
         got = capture.read_tables(path)
     assert_same_tables(got, expected)
+
+
+def test_an_odd_channel_does_not_name_the_next_line_crlf(tmp_path: Path) -> None:
+    """Issue 20 item 14: ``can1\\x00`` then ``can1`` in a CRLF file: two channels."""
+    path = tmp_path / "capture.log"
+    path.write_bytes(b"(1.000000) can1\x00 123#11\r\n(2.000000) can1 123#22\r\n")
+    got = capture.read_tables(path, channel="can1")
+    assert sum(table.num_rows for table in got.values()) == 1
+    assert_same_tables(got, capture.tables_from_records(capture.read(path, channel="can1")))
+    assert_same_tables(capture.read_tables(path), capture.tables_from_records(capture.read(path)))

@@ -11,9 +11,16 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
+from tests.capture.columnar_support import (
+    BUS_MAPS,
+    assert_same_tables,
+    captures,
+    many_sessions,
+    write,
+)
 from veronte4x import capture, dronecan
 from veronte4x.capture import BusMap
+from veronte4x.capture.columnar import dronecan as dronecan_columns
 from veronte4x.capture.columnar import stream
 from veronte4x.capture.columnar.frames import FrameColumns
 from veronte4x.capture.columnar.sources import read_frames
@@ -34,6 +41,7 @@ def batched(
             for batch in stream.split(frames, sizes):
                 for kind, table in decoder.feed(batch).items():
                     parts.setdefault(kind, []).append(table)
+            decoder.finish()
         except stream.TooManySessions as signal:
             per_frame.append(signal.channel)
             continue
@@ -93,25 +101,46 @@ def test_every_cut_in_multi_frame_transfers() -> None:
         assert_same_tables(batched(frames, [size] * len(frames)), expected)
 
 
-def test_many_sessions_on_one_channel_start_over_frame_by_frame() -> None:
-    lines = []
-    stamp = 1.0
-    for source in range(1, 128):
-        for destination in range(1, 11):
-            stamp += 0.001
-            frame = dronecan.encode(
-                dronecan.GetNodeInfoRequest(),
-                source_node_id=source,
-                transfer_id=0,
-                destination_node_id=destination,
-            )[0]
-            lines.append(f"({stamp:.6f}) can0 {frame.can_id:08X}#{frame.data.hex().upper()}")
+def test_many_sessions_one_after_another_stay_column_wise() -> None:
+    """1,270 sessions, never two open at once: no start over (issue 19, no cliff)."""
+    lines = many_sessions(1_270, concurrent=False, transfers=2)
     with tempfile.TemporaryDirectory() as folder:
         path = write(Path(folder) / "busy.log", lines)
-        expected = capture.read_tables(path)
+        expected = capture.tables_from_records(capture.read(path))
+        frames = read_frames(path)
+    decoder = stream.StreamDecoder()
+    for batch in stream.split(frames, [500] * 10):
+        decoder.feed(batch)
+    decoder.finish()
+    assert not decoder.decoder.reassemblers  # nothing went frame by frame
+    assert_same_tables(batched(frames, [500] * 10), expected)
+
+
+@pytest.mark.parametrize(
+    ("count", "concurrent", "faults"),
+    [(1_100, True, 0.0), (1_500, True, 0.05), (1_500, False, 0.05), (3_000, False, 0.02)],
+)
+def test_many_sessions_in_batches_agree(count: int, concurrent: bool, faults: float) -> None:
+    lines = many_sessions(count, concurrent, faults, seed=count)
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "busy.log", lines)
+        expected = capture.tables_from_records(capture.read(path))
+        frames = read_frames(path)
+    assert_same_tables(batched(frames, [700] * 20), expected)
+
+
+def test_a_session_left_open_before_a_thousand_others_starts_over() -> None:
+    request = dronecan.GetSetRequest(index=1, name=b"a long parameter name")
+    made = dronecan.encode(request, source_node_id=126, transfer_id=3, destination_node_id=127)
+    cut = f"(1699999999.000000) can0 {made[0].can_id:08X}#{made[0].data.hex()}"
+    lines = [cut, *many_sessions(dronecan_columns.MAX_SESSIONS + 3, False, transfers=1)]
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "busy.log", lines)
+        expected = capture.tables_from_records(capture.read(path))
         frames = read_frames(path)
     decoder = stream.StreamDecoder()
     with pytest.raises(stream.TooManySessions):
-        for batch in stream.split(frames, [500] * 10):
+        for batch in stream.split(frames, [400] * 10):
             decoder.feed(batch)
-    assert_same_tables(batched(frames, [500] * 10), expected)
+        decoder.finish()
+    assert_same_tables(batched(frames, [400] * 10), expected)

@@ -147,7 +147,9 @@ def _clean_lines(
     """Lines with no control character and no non-ASCII byte (see `_ODD`)."""
     clean = np.ones(len(starts), np.bool_)
     body = a[: ends[-1] + 1]
-    controls = np.count_nonzero(body < 32) - len(starts) - np.count_nonzero(body == 13)
+    # Line breaks are not odd (the last line's may lie past ``body`` when it is CRLF).
+    breaks = np.count_nonzero(body == 10) + np.count_nonzero(body == 13)
+    controls = np.count_nonzero(body < 32) - breaks
     if controls or body.max() >= 128:
         clean[np.searchsorted(ends, np.flatnonzero(_ODD[body]))] = False
     return clean
@@ -497,7 +499,8 @@ def _interfaces(
     left = np.flatnonzero(codes < 0)
     while len(left):
         row = left[0]
-        same = np.flatnonzero((low == low[row]) & (high == high[row]) & (codes < 0))
+        same = (low == low[row]) & (high == high[row]) & (sizes == sizes[row])
+        same = np.flatnonzero(same & (codes < 0))
         codes[same] = len(names)
         text = (int(low[row]) | int(high[row]) << 64).to_bytes(16, "little")
         names.append(text[: sizes[row]].decode("ascii"))

@@ -118,6 +118,7 @@ def convert_file(
                     writer.write(kind, table)
                 if progress is not None and batch.position is not None:
                     progress(batch.position)
+            decoder.finish()
         except TooManySessions as signal:
             writer.abort()
             per_frame.append(signal.channel)

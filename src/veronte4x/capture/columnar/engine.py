@@ -10,6 +10,7 @@ gives, whichever path decoded them.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 
@@ -47,18 +48,61 @@ def decode_into(
     bus_map = bus_map or BusMap()
     if channel is not None:
         frames = only_channel(frames, channel)
+    whole = np.zeros(len(frames.channels) + 1, np.bool_)
+    while True:
+        tables, decoder, rows = _decode(frames, bus_map, whole)
+        dropped = _dropped_channels(frames, rows, decoder, whole)
+        if not dropped:
+            return tables
+        whole[dropped] = True  # rare: decode those channels again, frame by frame
+
+
+def _decode(
+    frames: FrameColumns, bus_map: BusMap, whole: npt.NDArray[np.bool_]
+) -> tuple[Tables, CaptureDecoder, npt.NDArray[np.int64]]:
+    """Decode, the DroneCAN frames of ``whole`` channels all frame by frame; also return
+    the per-frame decoder and the DroneCAN frames that use the reassembler's table."""
     tables = Tables(all_specs(bus_map.codec()), list(frames.channels))
     plain, sender_code = _routes(frames, bus_map)
     dronecan_rows = np.flatnonzero(plain & frames.extended & (sender_code < 0))
     if not bus_map.dronecan:
         dronecan_rows = dronecan_rows[:0]
     with ThreadPoolExecutor(1) as pool:  # DroneCAN beside Veronte: NumPy frees the GIL
-        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, tables)
+        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, tables, whole)
         done = _decode_senders(frames, bus_map, sender_code, tables)
         done[taken.result()] = True
     decoder = CaptureDecoder(bus_map)
     tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
-    return tables
+    return tables, decoder, dronecan_inputs(frames, dronecan_rows)[0]
+
+
+def _dropped_channels(
+    frames: FrameColumns,
+    rows: npt.NDArray[np.int64],
+    decoder: CaptureDecoder,
+    whole: npt.NDArray[np.bool_],
+) -> list[int]:
+    """Channels (codes) where the full reassembler's table could have dropped an irregular
+    session after its last frame while it held a transfer, which would have reported it:
+    see `dronecan.table_safe`. The per-frame decoder's reassemblers hold just those
+    sessions; expiring them all tells which still hold a transfer."""
+    found = []
+    for name, reassembler in decoder.reassemblers.items():
+        code = frames.channels.index(name)
+        if whole[code] or reassembler.session_count == 0:
+            continue
+        before = reassembler.reported
+        reassembler.expire(math.inf)
+        new = reassembler.reported - before
+        keys = [
+            report.can_id
+            for report in list(reassembler.problems)[len(reassembler.problems) - new :]
+        ]
+        if new > len(reassembler.problems) or (
+            keys and dronecan.dropped_after(frames.channel[rows], frames.can_id[rows], code, keys)
+        ):
+            found.append(code)
+    return found
 
 
 def decode_veronte(
@@ -156,10 +200,15 @@ def _decode_veronte(
 
 
 def _decode_dronecan(
-    frames: FrameColumns, rows: npt.NDArray[np.int64], tables: Tables
+    frames: FrameColumns,
+    rows: npt.NDArray[np.int64],
+    tables: Tables,
+    whole: npt.NDArray[np.bool_],
 ) -> npt.NDArray[np.int64]:
-    """Reassemble and decode the regular sessions column-wise; return the rows taken."""
+    """Reassemble and decode the regular sessions column-wise, but for the ``whole``
+    channels; return the rows taken."""
     rows, types, stamp = dronecan_inputs(frames, rows)
+    rows = rows[~whole[frames.channel[rows]]]
     if not len(rows):
         return rows
     tail = frames.data[rows, frames.length[rows] - 1]
@@ -328,14 +377,31 @@ def per_frame(
     frames: FrameColumns, rows: npt.NDArray[np.int64], decoder: CaptureDecoder
 ) -> Iterator[tuple[int, Record]]:
     """The records of ``rows`` and the bad lines, through the per-frame decoder, in order."""
-    items: list[tuple[int, Frame | BadLine]] = [
-        (int(frames.order[row]), frames.frame(row)) for row in rows.tolist()
-    ]
+    orders: list[int] = frames.order[rows].tolist()
+    items: list[Frame | BadLine] = [*frames.frames_of(rows)]
     if frames.bad_lines:
-        items = sorted([*items, *frames.bad_lines], key=lambda item: item[0])
-    for order, item in items:
-        for sub, record in enumerate(decoder.decode((item,))):
-            yield order * SUB + sub, record
+        both = sorted([*zip(orders, items, strict=True), *frames.bad_lines], key=_first)
+        orders, items = [order for order, _ in both], [item for _, item in both]
+    # One decode over all items: the record of each item comes before the next item is
+    # read, so the item in hand numbers the records it gives.
+    at, sub, current = -1, 0, -1
+    source = iter(items)
+
+    def counted() -> Iterator[Frame | BadLine]:
+        nonlocal at
+        for item in source:
+            at += 1
+            yield item
+
+    for record in decoder.decode(counted()):
+        if at != current:
+            current, sub = at, 0
+        yield orders[at] * SUB + sub, record
+        sub += 1
+
+
+def _first(item: tuple[int, object]) -> int:
+    return item[0]
 
 
 def tables_from_records(

@@ -97,6 +97,38 @@ class FrameColumns:
             bool(self.error[row]),
         )
 
+    def frames_of(self, rows: npt.NDArray[np.int64]) -> list[Frame]:
+        """The frames of ``rows``, as `frame` gives them, built a column at a time."""
+        names = self.channels
+        stamps = np.where(self.has_time[rows], self.timestamp[rows], np.nan).tolist()
+        lengths = self.length[rows].tolist()
+        blob = self.data[rows].tobytes()
+        long_data = self.long_data
+        new = tuple.__new__
+        out = []
+        for at, (row, stamp, channel, can_id, size, extended, remote, fd, error) in enumerate(
+            zip(
+                rows.tolist(),
+                stamps,
+                self.channel[rows].tolist(),
+                self.can_id[rows].tolist(),
+                lengths,
+                self.extended[rows].tolist(),
+                self.remote[rows].tolist(),
+                self.fd[rows].tolist(),
+                self.error[rows].tolist(),
+                strict=True,
+            )
+        ):
+            data = long_data.get(row) if long_data else None
+            if data is None:
+                data = blob[at * MAX_DATA : at * MAX_DATA + size]
+            time = None if stamp != stamp else stamp  # NaN: no timestamp
+            out.append(
+                new(Frame, (time, names[channel], can_id, data, extended, remote, fd, error))
+            )
+        return out
+
 
 def from_frames(items: list[tuple[int, Frame | BadLine]]) -> FrameColumns:
     """Columns from frames made one by one (python-can readers, odd candump lines).

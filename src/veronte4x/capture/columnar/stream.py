@@ -20,9 +20,13 @@ frame or column by column with no state between batches, except the DroneCAN rea
   leaves the session's state as that transfer left it in one piece (a session's state after
   a transfer depends on that transfer only, while its sessions never fill the table), and
   the reassembler takes the session's frames from there on.
-- A channel with more sessions than the reassembler's table goes to the per-frame decoder
-  whole; the batches seen so far are then wrong, and `TooManySessions` says to start over
-  with that channel in ``per_frame_channels``.
+- A channel with more sessions than the reassembler's table stays column-wise while the
+  table cannot reach a transfer in progress or an irregular session (the rule of
+  `veronte4x.capture.columnar.dronecan.table_safe`, checked with every session's first
+  and last frame so far, and at `finish` for sessions left holding a transfer). Where it
+  could, the channel goes to the per-frame decoder whole; the batches seen so far are
+  then wrong, and `TooManySessions` says to start over with that channel in
+  ``per_frame_channels``.
 
 Records always belong to a frame of the batch that completes them, so rows never go back
 in capture order across batches.
@@ -30,6 +34,7 @@ in capture order across batches.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Iterator
 
 import numpy as np
@@ -49,11 +54,14 @@ _START = 0x80
 
 
 class TooManySessions(Exception):
-    """A channel has more DroneCAN sessions than the reassembler's table: decode the capture
-    again with this channel in ``per_frame_channels``."""
+    """A channel has more DroneCAN sessions than the reassembler's table and the table could
+    drop one that matters: decode the capture again with this channel in
+    ``per_frame_channels``."""
 
     def __init__(self, channel: str) -> None:
-        super().__init__(f"more than {dronecan.MAX_SESSIONS} DroneCAN sessions on {channel}")
+        super().__init__(
+            f"more than {dronecan.MAX_SESSIONS} DroneCAN sessions at once on {channel}"
+        )
         self.channel = channel
 
 
@@ -81,7 +89,10 @@ class StreamDecoder:
         self._context = np.zeros(0, np.bool_)
         self._channel_ids: dict[str, int] = {}
         self._irregular = np.zeros(0, np.int64)
-        self._seen: dict[str, set[int]] = {}
+        # Every session's key, first and last frame position so far (keys sorted).
+        self._keys_seen = np.zeros(0, np.int64)
+        self._first = np.zeros(0, np.int64)
+        self._last = np.zeros(0, np.int64)
 
     def feed(self, frames: FrameColumns) -> dict[str, pa.Table]:
         """The rows the next batch completes, by kind (kinds without rows left out).
@@ -120,7 +131,7 @@ class StreamDecoder:
         if not len(rows):
             return taken
         keys = self._keys(frames, rows)
-        self._count_sessions(frames, rows, keys)
+        self._add_spans(keys, frames.order[rows])
         column = ~np.isin(keys, self._irregular)
         if self.per_frame_channels:
             names = np.array([c in self.per_frame_channels for c in frames.channels], np.bool_)
@@ -146,11 +157,18 @@ class StreamDecoder:
         checked = tail.copy()
         checked[open_end] |= _END
         order, in_order = dronecan.regular_sessions(
-            frames.channel[rows], frames.can_id[rows], stamp[rows], length, checked, types[rows]
+            frames.channel[rows],
+            frames.can_id[rows],
+            stamp[rows],
+            length,
+            checked,
+            types[rows],
+            table=False,
         )
         regular = np.empty(len(rows), np.bool_)
         regular[order] = in_order
         self._leave_column_path(frames, rows, keys, stamp, context, ~regular & opens)
+        self._check_table(frames, rows, keys, regular & ~carried, tail)
         decoded = regular & ~carried
         engine.decode_transfers(frames, rows[decoded], types, stamp, tables, skip=context)
         taken[rows[regular]] = True
@@ -169,16 +187,99 @@ class StreamDecoder:
         keys: npt.NDArray[np.int64] = channel << 24 | (frames.can_id[rows] & 0xFFFFFF)
         return keys
 
-    def _count_sessions(
-        self, frames: FrameColumns, rows: npt.NDArray[np.int64], keys: npt.NDArray[np.int64]
-    ) -> None:
-        unique, first = np.unique(keys, return_index=True)
-        for key, row in zip(unique.tolist(), rows[first].tolist(), strict=True):
-            name = frames.channels[frames.channel[row]]
-            seen = self._seen.setdefault(name, set())
-            seen.add(key)
-            if len(seen) > dronecan.MAX_SESSIONS and name not in self.per_frame_channels:
+    def finish(self) -> None:
+        """Check the end of the capture, after its last batch.
+
+        Raises:
+            TooManySessions: The session table of the full reassembler would have dropped
+                a session holding a transfer after its last frame (and reported it).
+        """
+        spans, crowded = self._crowded()
+        pending = self._pending
+        if pending is not None and len(pending):  # transfers still open, column-wise
+            rows = np.flatnonzero(~self._context)
+            keys = np.unique(self._keys(pending, rows))
+            channel = (keys >> 24).astype(np.int32)
+            last = self._last[np.searchsorted(self._keys_seen, keys)]
+            late = crowded[channel] & (spans.later(channel, last) >= dronecan.MAX_SESSIONS)
+            if late.any():
+                names = {code: name for name, code in self._channel_ids.items()}
+                raise TooManySessions(names[int(channel[late][0])])
+        for name, reassembler in self.decoder.reassemblers.items():
+            code = self._channel_ids.get(name)
+            if code is None or not crowded[code] or name in self.per_frame_channels:
+                continue
+            before = reassembler.reported
+            reassembler.expire(math.inf)
+            new = reassembler.reported - before
+            if new > len(reassembler.problems):
                 raise TooManySessions(name)
+            reports = list(reassembler.problems)[len(reassembler.problems) - new :]
+            keys = np.array([code << 24 | report.can_id for report in reports], np.int64)
+            last = self._last[np.searchsorted(self._keys_seen, keys)]
+            channel = np.full(len(keys), code, np.int32)
+            if (spans.later(channel, last) >= dronecan.MAX_SESSIONS).any():
+                raise TooManySessions(name)
+
+    def _add_spans(self, keys: npt.NDArray[np.int64], positions: npt.NDArray[np.int64]) -> None:
+        """Take the sessions' frames of a batch into their first and last positions."""
+        joined = np.concatenate([self._keys_seen, keys])
+        unique, where = np.unique(joined, return_inverse=True)
+        first = np.full(len(unique), np.iinfo(np.int64).max, np.int64)
+        last = np.full(len(unique), -1, np.int64)
+        np.minimum.at(first, where, np.concatenate([self._first, positions]))
+        np.maximum.at(last, where, np.concatenate([self._last, positions]))
+        self._keys_seen, self._first, self._last = unique, first, last
+
+    def _crowded(self) -> tuple[dronecan.Spans, npt.NDArray[np.bool_]]:
+        """The sessions' spans, and per channel code whether it has more sessions than the
+        table (and is not decoded frame by frame)."""
+        channel = (self._keys_seen >> 24).astype(np.int32)
+        spans = dronecan.Spans(channel, self._first, self._last)
+        crowded = np.bincount(channel, minlength=len(self._channel_ids) + 1) > (
+            dronecan.MAX_SESSIONS
+        )
+        for name in self.per_frame_channels:
+            if name in self._channel_ids:
+                crowded[self._channel_ids[name]] = False
+        return spans, crowded
+
+    def _check_table(
+        self,
+        frames: FrameColumns,
+        rows: npt.NDArray[np.int64],
+        keys: npt.NDArray[np.int64],
+        whole: npt.NDArray[np.bool_],
+        tail: npt.NDArray[np.uint8],
+    ) -> None:
+        """Raise `TooManySessions` for a channel whose table could drop an irregular session
+        within its frames or a regular one within a multi-frame transfer (of ``rows``, in
+        session order, those ``whole``)."""
+        spans, crowded = self._crowded()
+        if not crowded.any():
+            return
+        names = {code: name for name, code in self._channel_ids.items()}
+        size = len(crowded)
+        at = np.searchsorted(self._keys_seen, self._irregular)
+        channel = (self._irregular >> 24).astype(np.int32)
+        reach = spans.reach(channel, self._first[at], self._last[at])
+        reach[self._first[at] == self._last[at]] = 0
+        bad = np.bincount(channel, weights=reach >= dronecan.MAX_SESSIONS, minlength=size) > 0
+        bad |= np.bincount(channel, minlength=size) > dronecan.MAX_SESSIONS
+        # Multi-frame transfers of regular sessions (rows in session order).
+        begins = np.flatnonzero(whole & ((tail & _START) != 0))
+        ends = np.flatnonzero(whole & ((tail & _END) != 0))
+        if len(begins) == len(ends):
+            multi = ends > begins
+            begins, ends = begins[multi], ends[multi]
+            owner = (keys[begins] >> 24).astype(np.int32)
+            position = frames.order[rows]
+            reach = spans.reach(owner, position[begins], position[ends])
+            bad |= np.bincount(owner, weights=reach >= dronecan.MAX_SESSIONS, minlength=size) > 0
+        else:  # cannot happen for regular sessions; be safe
+            bad |= crowded
+        for code in np.flatnonzero(bad & crowded).tolist():
+            raise TooManySessions(names[code])
 
     def _leave_column_path(
         self,

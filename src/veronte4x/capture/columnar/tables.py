@@ -8,6 +8,7 @@ rows come out in capture order whatever path decoded them.
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections.abc import Iterable, Mapping
 from typing import Any
@@ -29,7 +30,12 @@ from veronte4x.capture.records import Record
 SUB = 16
 """Sort keys are ``position * SUB + index among the records of that position``."""
 
-_SENDER_NAMES = pa.array(SENDERS, pa.string())
+
+@functools.cache
+def _sender_names() -> pa.Array:
+    """The sender names as Arrow strings: made on first use, since pyarrow imports pandas
+    (when installed) on building its first array, which importing this module must not."""
+    return pa.array(SENDERS, pa.string())
 
 
 class Tables:
@@ -144,7 +150,7 @@ class Tables:
                 if field.name == "channel":
                     column = _dictionary(np.concatenate(pieces)[order], field.type, channel_names)
                 elif field.name == "sender":
-                    column = _dictionary(np.concatenate(pieces)[order], field.type, _SENDER_NAMES)
+                    column = _dictionary(np.concatenate(pieces)[order], field.type, _sender_names())
                 else:
                     joined = pa.concat_arrays(pieces) if len(pieces) > 1 else pieces[0]
                     column = joined if ordered else joined.take(pa.array(order))
