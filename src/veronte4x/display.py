@@ -11,10 +11,9 @@ This module imports nothing of the library at import time: the codecs import it.
 
 Examples:
     >>> from veronte4x import codec
-    >>> print(to_html(codec.Score(autopilot=1, score=0.5)))  # doctest: +NORMALIZE_WHITESPACE
-    <table class="veronte4x"><caption>Score</caption><thead><tr><th>field</th><th>value</th>\
-<th>unit</th></tr></thead><tbody><tr><td>autopilot</td><td>1</td><td></td></tr><tr>\
-<td>score</td><td>0.5</td><td></td></tr></tbody></table>
+    >>> html = to_html(codec.Score(autopilot=1, score=0.5))
+    >>> html.startswith('<table class="dataframe veronte4x">'), "<td>score</td><td>0.5</td>" in html
+    (True, True)
 """
 
 from __future__ import annotations
@@ -105,7 +104,7 @@ def _record(record: Any) -> str:
     parts = [table(f"Record: {record.kind}", ("", ""), head, header=False)]
     if record.message is not None:
         parts.append(message_html(record.message))
-    return "".join(parts)
+    return side_by_side(parts)
 
 
 def _transfer(transfer: Any) -> str:
@@ -124,7 +123,9 @@ def _transfer(transfer: Any) -> str:
         ("time", format_time(transfer.timestamp)),
     ]
     name = type(transfer.message).__name__
-    return table(f"Transfer: {name}", ("", ""), head, header=False) + message_html(transfer.message)
+    return side_by_side(
+        [table(f"Transfer: {name}", ("", ""), head, header=False), message_html(transfer.message)]
+    )
 
 
 def _stats(stats: Any) -> str:
@@ -148,7 +149,7 @@ def _stats(stats: Any) -> str:
     ):
         if counter:
             parts.append(table(title, ("", "count"), sorted(counter.items())))
-    return "".join(parts)
+    return side_by_side(parts)
 
 
 def _nodes(entries: Iterable[Any], caption: str) -> str:
@@ -183,10 +184,22 @@ def _nodes(entries: Iterable[Any], caption: str) -> str:
     return table(caption, columns, rows)
 
 
+_CAPTION = 'style="text-align: left; font-weight: bold"'
+"""Captions on the left, in bold (a notebook centres them)."""
+
+_SIDE_BY_SIDE = '<div style="display: flex; flex-wrap: wrap; gap: 1.5em; align-items: flex-start">'
+"""Several tables of one object next to each other, wrapping when the page is narrow."""
+
+
+def side_by_side(tables: Iterable[str]) -> str:
+    """Tables in one row (``class="dataframe"``: styled as pandas' in Jupyter and the docs)."""
+    return _SIDE_BY_SIDE + "".join(tables) + "</div>"
+
+
 def table(caption: str, columns: Sequence[str], rows: Iterable[Row], header: bool = True) -> str:
     """An HTML table with a caption, column names (unless ``header`` is False) and rows;
     every cell is escaped."""
-    out = [f'<table class="veronte4x"><caption>{escape(caption)}</caption>']
+    out = [f'<table class="dataframe veronte4x"><caption {_CAPTION}>{escape(caption)}</caption>']
     if header:
         out.append("<thead><tr>")
         out += [f"<th>{escape(name)}</th>" for name in columns]
