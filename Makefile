@@ -10,12 +10,13 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
+# The package with what the README's snippets and examples/flight.ipynb use.
 $(VENV)/.installed-run: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e .
+	$(BIN)/python -m pip install --quiet -e '.[notebook]'
 	touch $@
 
 $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e '.[dev,can,pandas,plot]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,can,pandas,plot,notebook]'
 	touch $@ $(VENV)/.installed-run
 
 demo: $(VENV)/.installed-run
@@ -23,6 +24,7 @@ demo: $(VENV)/.installed-run
 	$(BIN)/veronte4x decode examples/flight.log | head -n 25
 	$(BIN)/veronte4x stats examples/flight.log
 	$(BIN)/veronte4x replay examples/flight.log --config examples/arbiter.toml
+	@echo "next: open examples/flight.ipynb in Jupyter with the kernel .venv/bin/python (README)"
 
 lint: $(VENV)/.installed-dev
 	$(BIN)/ruff check src tests examples benchmarks docs

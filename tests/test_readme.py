@@ -7,10 +7,14 @@ import re
 import shutil
 import subprocess
 import sys
+from importlib import metadata
 from pathlib import Path
 from typing import Any
 
 import pytest
+import tomli
+from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
 
 ROOT = Path(__file__).resolve().parent.parent
 README = (ROOT / "README.md").read_text()
@@ -86,11 +90,109 @@ def test_readme_command_runs_clean_on_the_demo_flight(command: str, demo: Path) 
         assert SUMMARY.fullmatch(summary), summary
 
 
-def test_readme_python_runs(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Each Python block runs from the checkout and gives what its comments say."""
-    from veronte4x import codec
+PROJECT = tomli.loads((ROOT / "pyproject.toml").read_text())["project"]
+NEEDS = re.compile(r"# needs (?:no extra|the (.+) extras?)\b")
+DEMO_EXTRA = "notebook"
+"""The extra `make demo` installs."""
 
-    monkeypatch.chdir(ROOT)
+
+def _extras(block: str) -> list[str]:
+    """The extras a snippet names on its first line: ``# needs no extra`` or ``# needs the
+    arrow and pandas extras``."""
+    found = NEEDS.match(block)
+    assert found, f"a README snippet does not say which extras it needs:\n{block}"
+    names = re.split(r", | and ", found.group(1)) if found.group(1) else []
+    assert set(names) <= set(PROJECT["optional-dependencies"]), names
+    return names
+
+
+def _distributions(extras: list[str]) -> set[str]:
+    """The installed distributions that these extras of veronte4x bring, with theirs."""
+    todo = [Requirement(r) for name in extras for r in PROJECT["optional-dependencies"][name]]
+    seen: set[str] = set()
+    while todo:
+        requirement = todo.pop()
+        name = canonicalize_name(requirement.name)
+        if name in seen:
+            continue
+        seen.add(name)
+        try:
+            found = metadata.distribution(name)
+        except metadata.PackageNotFoundError:
+            continue
+        for text in found.requires or []:
+            needed = Requirement(text)
+            wanted = requirement.extras or {""}
+            if needed.marker is None or any(needed.marker.evaluate({"extra": e}) for e in wanted):
+                todo.append(needed)
+    return seen
+
+
+def _modules(extras: list[str]) -> list[str]:
+    """The top-level modules a snippet may import: the standard library, veronte4x's, and
+    those of the distributions its extras bring."""
+    allowed = _distributions(extras) | {"veronte4x"}
+    return sorted(
+        module
+        for module, names in metadata.packages_distributions().items()
+        if any(canonicalize_name(name) in allowed for name in names)
+    )
+
+
+GUARD = """
+import importlib.abc, sys
+ALLOWED = set(sys.argv[1].split(",")) | set(sys.stdlib_module_names)
+class OnlyTheExtras(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        top = name.partition(".")[0]
+        if top in ALLOWED or top.startswith("_"):
+            return None
+        raise ModuleNotFoundError(f"{name}: not in the extras the snippet names", name=name)
+sys.meta_path.insert(0, OnlyTheExtras())
+exec(compile(sys.stdin.read(), "README.md", "exec"), {"__name__": "__main__"})
+"""
+
+
+def test_every_readme_snippet_runs_in_make_demos_environment() -> None:
+    """Each extra a snippet names is one that `make demo` installs."""
+    installed = _distributions([DEMO_EXTRA])
+    for block in _blocks("python"):
+        assert _distributions(_extras(block)) <= installed, block
+
+
+@pytest.mark.parametrize("block", _blocks("python"))
+def test_readme_python_runs_with_only_the_extras_it_names(block: str, demo: Path) -> None:
+    """In the demo's directory, in a process where only the standard library, veronte4x
+    and the modules of the extras the snippet names can be imported."""
+    result = subprocess.run(
+        [sys.executable, "-c", GUARD, ",".join(_modules(_extras(block)))],
+        input=block,
+        cwd=demo,
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode == 0, result.stderr
+
+
+def test_the_guard_refuses_what_the_extras_do_not_bring(demo: Path) -> None:
+    result = subprocess.run(
+        [sys.executable, "-c", GUARD, ",".join(_modules([]))],
+        input="import pyarrow\n",
+        cwd=demo,
+        capture_output=True,
+        text=True,
+    )
+    assert "ModuleNotFoundError: pyarrow: not in the extras the snippet names" in result.stderr
+
+
+def test_readme_python_gives_what_its_comments_say(
+    demo: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The first block decodes ``Ready(ready=True)``; the second gives the demo flight's
+    Status frames as a DataFrame, row for row those that `capture.read` decodes."""
+    from veronte4x import capture, codec
+
+    monkeypatch.chdir(demo)
     first, second = _blocks("python")
     names: dict[str, Any] = {}
     exec(compile(first, "README.md", "exec"), names)
@@ -98,13 +200,11 @@ def test_readme_python_runs(monkeypatch: pytest.MonkeyPatch) -> None:
 
     names = {}
     exec(compile(second, "README.md", "exec"), names)
-    assert "Status" in names["tables"]
     status = names["status"]
-    columns = ["timestamp", "can_id", "selected", "arbitrating", "alive_2", "alive_3"]
-    columns += ["ready_2", "ready_3", "cbit_ok", "normal_mode"]
-    # examples/capture.log lines 18-19: 0FF#00FF8177FFFF (the 4x form) and 0FF#00FF8177
-    # (the 1x form, no check bytes): AP2 selected, arbitrating, AP1-AP3 alive and ready.
-    assert status[columns].to_numpy().tolist() == [
-        [1763737200.25, 255, 1, True, True, False, True, False, True, True],
-        [1763737200.251, 255, 1, True, True, False, True, False, None, None],
+    expected = [
+        record.message.selected
+        for record in capture.read("examples/flight.log")
+        if isinstance(record.message, codec.Status)
     ]
+    assert len(expected) > 100
+    assert status["selected"].tolist() == expected

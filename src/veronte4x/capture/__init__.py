@@ -90,6 +90,7 @@ def read_tables(
     bus_map: BusMap | None = None,
     channel: str | None = None,
     relative_time: bool = False,
+    progress: bool | None = None,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -112,6 +113,9 @@ def read_tables(
         channel: Keep only this interface's frames.
         relative_time: Timestamps in seconds from each capture's first timestamped frame,
             as ``candump -t z`` shows them.
+        progress: Show a progress bar over the captures' bytes (tqdm's, in a terminal or
+            a notebook); None shows it when standard error is a terminal or in a
+            notebook, and tqdm is installed.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -130,7 +134,7 @@ def read_tables(
         ['unknown command']
     """
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
-        source, bus_map, channel, relative_time
+        source, bus_map, channel, relative_time, progress
     )
     return tables
 

@@ -64,3 +64,9 @@ class Record(NamedTuple):
         if self.message is None:
             return "unknown"
         return type(self.message).__name__
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the record and its message as tables (`veronte4x.display`)."""
+        from veronte4x.display import to_html
+
+        return to_html(self)

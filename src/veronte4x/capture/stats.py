@@ -6,11 +6,12 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 from veronte4x.capture.records import Record
+from veronte4x.display import HtmlDisplay
 from veronte4x.times import format_time
 
 
 @dataclass
-class Stats:
+class Stats(HtmlDisplay):
     """Running counts of decoded records.
 
     Attributes:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from veronte4x.display import HtmlDisplay
 from veronte4x.dronecan.messages import Health, Mode, NodeStatus
 from veronte4x.dronecan.transfer import Transfer
 
@@ -12,7 +13,7 @@ OFFLINE_TIMEOUT = NodeStatus.OFFLINE_TIMEOUT_MS / 1000
 
 
 @dataclass(frozen=True, slots=True)
-class NodeEntry:
+class NodeEntry(HtmlDisplay):
     """What the latest NodeStatus of a node said, and when it came.
 
     Attributes:
@@ -42,7 +43,7 @@ class NodeEntry:
         return now - self.last_seen < OFFLINE_TIMEOUT
 
 
-class NodeTable:
+class NodeTable(HtmlDisplay):
     """Nodes by id, updated from NodeStatus transfers given with their timestamps.
 
     Examples:

@@ -13,6 +13,8 @@ import enum
 from dataclasses import dataclass
 from typing import ClassVar
 
+from veronte4x.display import HtmlDisplay
+
 Flags4 = tuple[bool, bool, bool, bool]
 
 
@@ -23,11 +25,12 @@ class Sender(enum.Enum):
     AUTOPILOT = "autopilot"
 
 
-class Message:
+class Message(HtmlDisplay):
     """Base class of every Veronte 4x message; each message is a frozen, slotted dataclass.
 
     The base itself holds nothing: a plain slotted class, so that the decoders can build
-    messages through a class of identical layout (see `veronte4x.codec.compiler`).
+    messages through a class of identical layout (see `veronte4x.codec.compiler`). It
+    gives Jupyter an HTML table of the fields (`veronte4x.display.HtmlDisplay`).
 
     Attributes:
         COMMAND: The message type (byte 0 of the frame), or ``None`` where it depends

@@ -49,6 +49,12 @@ class Transfer(NamedTuple):
     kind: TransferKind
     data_type_id: int
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the transfer and its message as tables (`veronte4x.display`)."""
+        from veronte4x.display import to_html
+
+        return to_html(self)
+
 
 _FAST = {cls: codec.fast.frames for cls, codec in BY_CLASS.items() if codec.fast is not None}
 

@@ -20,6 +20,7 @@ import pyarrow as pa
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import frame
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
+from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.sources import read_frames
 from veronte4x.capture.columnar.tables import relative_time as make_relative
 
@@ -33,11 +34,20 @@ def read_tables(
     bus_map: BusMap | None = None,
     channel: str | None = None,
     relative_time: bool = False,
+    progress: bool | None = False,
 ) -> dict[str, pa.Table]:
     """See `veronte4x.capture.read_tables`."""
     paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
-    parts = [keyed_tables(path, bus_map, channel, relative_time) for path in paths]
-    parts = [{kind: table for kind, (table, _) in part.items()} for part in parts]
+    sizes = [_size(path) for path in paths]
+    bar = Bar(progress, sum(sizes), "B", "decoding")
+    try:
+        parts = []
+        for path, size in zip(paths, sizes, strict=True):
+            keyed = keyed_tables(path, bus_map, channel, relative_time)
+            parts.append({kind: table for kind, (table, _) in keyed.items()})
+            bar.update(size)
+    finally:
+        bar.close()
     if len(parts) == 1:
         return parts[0]
     kinds = list(dict.fromkeys(kind for part in parts for kind in part))
@@ -45,6 +55,15 @@ def read_tables(
         kind: pa.concat_tables([part[kind] for part in parts if kind in part]).unify_dictionaries()
         for kind in kinds
     }
+
+
+def _size(path: Source) -> int:
+    """Bytes of a capture file, for the progress bar (0 for standard input or a bad path,
+    which the reader reports)."""
+    try:
+        return os.path.getsize(path) if os.fspath(path) != "-" else 0
+    except OSError:
+        return 0
 
 
 def keyed_tables(

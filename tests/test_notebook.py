@@ -1,0 +1,86 @@
+"""examples/flight.ipynb runs top to bottom on the demo flight, as a user opens it after
+`make demo`, and is kept in git without outputs."""
+
+from __future__ import annotations
+
+import os
+import runpy
+import shutil
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+nbformat = pytest.importorskip("nbformat")
+nbclient = pytest.importorskip("nbclient")
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+NOTEBOOK = EXAMPLES / "flight.ipynb"
+
+
+def test_the_notebook_is_kept_without_outputs() -> None:
+    notebook = nbformat.read(NOTEBOOK, as_version=4)
+    nbformat.validate(notebook)
+    code = [cell for cell in notebook.cells if cell.cell_type == "code"]
+    assert code
+    assert [cell.outputs for cell in code if cell.outputs] == []
+    assert [cell.execution_count for cell in code if cell.execution_count] == []
+
+
+def test_the_docs_show_the_notebook() -> None:
+    link = EXAMPLES.parent / "docs" / "flight.ipynb"
+    assert link.resolve() == NOTEBOOK
+    assert "flight.ipynb" in (EXAMPLES.parent / "mkdocs.yml").read_text()
+
+
+@pytest.fixture(scope="module")
+def executed(tmp_path_factory: pytest.TempPathFactory) -> Any:
+    """The notebook run top to bottom next to the demo flight, as `make demo` leaves it;
+    any error in a cell fails the run."""
+    folder = tmp_path_factory.mktemp("examples")
+    generate = runpy.run_path(str(EXAMPLES / "make_capture.py"))["generate"]
+    generate(2.0, 60.0, 4).write(folder / "flight.log")
+    shutil.copy(EXAMPLES / "arbiter.toml", folder)
+    notebook = nbformat.read(NOTEBOOK, as_version=4)
+    saved = os.environ.pop("VERONTE4X_FLIGHT", None)
+    try:
+        nbclient.NotebookClient(
+            notebook,
+            timeout=None,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(folder)}},
+        ).execute()
+    finally:
+        if saved is not None:
+            os.environ["VERONTE4X_FLIGHT"] = saved
+    return notebook
+
+
+def _outputs(notebook: Any, mime: str) -> list[str]:
+    return [
+        output["data"][mime]
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+        if output.get("output_type") in ("execute_result", "display_data")
+        and mime in output["data"]
+    ]
+
+
+def test_the_notebook_runs_and_shows_its_results(executed: Any) -> None:
+    errors = [
+        output
+        for cell in executed.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+        if output.get("output_type") == "error" or output.get("name") == "stderr"
+    ]
+    assert errors == []
+    html = "\n".join(_outputs(executed, "text/html"))
+    assert "Record: EscStatus" in html  # the record's rich view
+    assert "<td>V</td>" in html  # units
+    assert "OPERATIONAL" in html  # the node table, enums by name
+    assert "by message type" in html  # Stats
+    assert "2025-11-21 15:01:00.262+00:00" in html  # the switch to AP3, time as time
+    assert "AP2 dead" in html  # the replay's reason
+    assert len(_outputs(executed, "image/png")) == 2  # the two plots, inline
