@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
+from veronte4x.capture.dbc import export_dbc, write_dbc
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
@@ -41,6 +42,7 @@ __all__ = [
     "Record",
     "Role",
     "Stats",
+    "export_dbc",
     "fields",
     "open_frames",
     "read",
@@ -49,6 +51,7 @@ __all__ = [
     "tables_from_records",
     "to_dataframe",
     "to_parquet",
+    "write_dbc",
 ]
 
 
