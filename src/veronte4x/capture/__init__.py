@@ -17,6 +17,7 @@ import os
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.dbc import export_dbc, write_dbc
@@ -34,6 +35,7 @@ if TYPE_CHECKING:
     from veronte4x.capture.columnar.dataset import Summary
 
 __all__ = [
+    "AlignError",
     "BadLine",
     "BusMap",
     "BusMapError",
@@ -42,6 +44,7 @@ __all__ = [
     "Record",
     "Role",
     "Stats",
+    "align",
     "export_dbc",
     "fields",
     "open_frames",
