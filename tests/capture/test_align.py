@@ -5,9 +5,12 @@ from __future__ import annotations
 import datetime
 import itertools
 import math
+import subprocess
+import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pandas as pd
 import pyarrow as pa
 import pytest
@@ -204,3 +207,51 @@ def test_the_example_on_a_10ms_grid() -> None:
     assert "errors" not in {name.split("/")[0] for name in grid.column_names}
     frame = grid.to_pandas()
     assert len(frame) == grid.num_rows
+
+
+def convert(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "veronte4x", "convert", *args],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+def test_convert_to_an_aligned_csv(tmp_path: Path) -> None:
+    example = ROOT / "examples" / "capture.log"
+    out = tmp_path / "flight.csv"
+    done = convert(str(example), "--to", "csv", str(out), "--every", "10ms", "--tolerance", "50ms")
+    assert (done.returncode, done.stdout) == (0, "")
+    aligned = align(capture.read_tables(example), every="10ms", tolerance="50ms")
+    frame = pd.read_csv(out)
+    assert (
+        done.stderr
+        == f"veronte4x: {aligned.num_rows} rows, {len(frame.columns)} columns, in {out}\n"
+    )
+    assert frame["time"].tolist() == aligned.column("timestamp").to_pylist()
+    for name in ["Score/arbiter/autopilot=1/score", "PwmSet/AP2/first_channel=0/values_0"]:
+        want = [None if v is None else float(v) for v in aligned.column(name).to_pylist()]
+        got = [None if math.isnan(v) else float(np.float32(v)) for v in frame[name]]  # float32 form
+        assert got == want, name
+    ready = aligned.column("Ready/AP1/ready").to_pylist()
+    assert [None if math.isnan(v) else bool(v) for v in frame["Ready/AP1/ready"]] == ready
+    assert not any(c.startswith("ScorpionEscTelemetry") for c in frame.columns)  # raw bytes
+
+
+def test_convert_to_csv_usage_errors(tmp_path: Path) -> None:
+    example = str(ROOT / "examples" / "capture.log")
+    out = str(tmp_path / "x.csv")
+    done = convert(example, "--to", "csv", out)
+    assert (done.returncode, done.stderr) == (
+        2,
+        "veronte4x: --to csv needs one of --every PERIOD (10ms) or --on TABLE\n",
+    )
+    done = convert(example, "--to", "csv", out, "--every", "soon")
+    assert (done.returncode, done.stderr) == (
+        2,
+        "veronte4x: every='soon': expected a time such as 10ms, 0.5s, 250us\n",
+    )
+    done = convert(example, "--to", "csv", out, "--on", "Nope")
+    assert done.returncode == 2
+    assert done.stderr.startswith("veronte4x: on='Nope' names no table; the tables are Status, ")

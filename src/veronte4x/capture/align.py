@@ -16,6 +16,7 @@ float seconds or as an Arrow timestamp.
 from __future__ import annotations
 
 import datetime
+import os
 import math
 import re
 from collections.abc import Mapping, Sequence
@@ -259,3 +260,45 @@ def _period(value: float | str | datetime.timedelta, name: str) -> int:
     if not math.isfinite(micros) or round(micros) <= 0:
         raise AlignError(f"{name}={value!r}: expected a positive time of 1 us or more")
     return round(micros)
+
+
+def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
+    """Write an `align` result as a flat CSV that PlotJuggler or a spreadsheet opens.
+
+    The first column, ``time``, holds epoch seconds (microsecond precision); numbers keep
+    their shortest form, flags are 0 or 1, enums their names, and a missing value is an
+    empty cell. Columns a plot cannot use (raw bytes, lists) are left out.
+
+    Returns:
+        The number of columns written, time included.
+
+    Raises:
+        OSError: The file cannot be written.
+    """
+    import pyarrow as pa
+    import pyarrow.compute as pc
+    import pyarrow.csv
+
+    time = aligned.column(0)
+    if pa.types.is_timestamp(time.type):
+        seconds = pc.divide(pc.cast(time, pa.int64()).cast(pa.float64()), 1e6)
+    else:
+        seconds = time.cast(pa.float64())
+    names, columns = ["time"], [seconds]
+    for name, column in zip(aligned.column_names[1:], aligned.columns[1:], strict=True):
+        kind = column.type
+        if pa.types.is_boolean(kind):
+            column = column.cast(pa.uint8())
+        elif pa.types.is_dictionary(kind):
+            column = column.cast(kind.value_type)
+        elif not (pa.types.is_integer(kind) or pa.types.is_floating(kind)):
+            continue
+        names.append(name)
+        columns.append(column)
+    with open(path, "wb") as file:
+        pyarrow.csv.write_csv(
+            pa.table(columns, names=names),
+            file,
+            pyarrow.csv.WriteOptions(quoting_style="needed"),
+        )
+    return len(names)
