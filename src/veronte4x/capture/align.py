@@ -16,8 +16,8 @@ float seconds or as an Arrow timestamp.
 from __future__ import annotations
 
 import datetime
-import os
 import math
+import os
 import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any

@@ -177,7 +177,7 @@ def write_dbc(path: str | os.PathLike[str], bus_map: BusMap | None = None) -> No
 def _signals(bus_map: BusMap, arbiter: bool) -> list[Signal]:
     """The signals of one Veronte CAN ID: the arbiter's or an autopilot's."""
     codec = bus_map.codec()
-    command_names = _command_names(codec.layouts)
+    names = command_names(codec.layouts)
     if arbiter:
         header_text = "0xFF for a Status, else the autopilot of a Score"
         header_choices = (*((i, f"Score {ap}") for i, ap in enumerate(layouts.AUTOPILOTS)),)
@@ -193,7 +193,7 @@ def _signals(bus_map: BusMap, arbiter: bool) -> list[Signal]:
             maximum=255,
             is_multiplexer=True,
             comment=f"message type (byte 0); {layouts.MANUAL_TABLE}",
-            choices=tuple(sorted(command_names.items())),
+            choices=tuple(sorted(names.items())),
         ),
         Signal(
             "header",
@@ -229,8 +229,8 @@ def _signals(bus_map: BusMap, arbiter: bool) -> list[Signal]:
     return signals
 
 
-def _command_names(declared: tuple[Layout, ...]) -> dict[int, str]:
-    """Message type names for the ``command`` value table."""
+def command_names(declared: tuple[Layout, ...] = ()) -> dict[int, str]:
+    """Message type names by command byte (the ``command`` value table), with declared ones."""
     names = {0: "Arbitration", 1: "Version"}
     for first, command in PWM_COMMANDS.items():
         names[command] = f"PwmSet {first}-{first + 3}"
