@@ -218,3 +218,17 @@ def test_stats_rates_in_a_subprocess(tmp_path: Path) -> None:
         "bus load (worst-case bit stuffing):",
         f"  can0: {len(frames)} frames, {load.percent:.3g} % of 500 kbit/s (given)",
     ]
+
+
+def test_monitor_rates_after_its_table(tmp_path: Path) -> None:
+    example = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
+    done = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "monitor", str(example), "--rates"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0
+    lines = done.stdout.splitlines()
+    assert "  can0 AP1 0x008 Ready: 1 at -, jitter -, longest gap 0 ms" in lines
+    assert lines[-1] == "  can0: 39 frames, 6.51 % of 125 kbit/s (detected: the lowest that fits)"

@@ -20,6 +20,7 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
+from veronte4x.cli import rates
 from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
@@ -43,6 +44,7 @@ def add_parser(commands: Any) -> None:
     )
     add_capture_options(parser)
     add_live_options(parser)
+    rates.add_options(parser)
     parser.set_defaults(run=run)
 
 
@@ -55,7 +57,11 @@ class _Reader:
         self.stop = threading.Event()
         self.done = threading.Event()
         self.failure: BaseException | None = None
-        self._records = open_records(args, bus_map, self.stop)
+        self.rates = rates.tracker(args, bus_map)
+        if self.rates is None:
+            self._records = open_records(args, bus_map, self.stop)
+        else:
+            self._records = rates.records(args, bus_map, self.rates, self.stop)
         self._thread = threading.Thread(target=self._run, name="veronte4x-monitor", daemon=True)
 
     def _run(self) -> None:
@@ -107,6 +113,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         _print_rich(reader, args.filter)
     else:
         print(reader.text(args.filter), end="", flush=True)
+    if reader.rates is not None:
+        print(rates.report(reader.rates), flush=True)
     print(f"veronte4x: {state.summary()}", file=sys.stderr)
     return EXIT_OK
 
