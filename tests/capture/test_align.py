@@ -5,6 +5,7 @@ from __future__ import annotations
 import datetime
 import itertools
 import math
+import runpy
 import subprocess
 import sys
 from pathlib import Path
@@ -207,6 +208,18 @@ def test_the_example_on_a_10ms_grid() -> None:
     assert "errors" not in {name.split("/")[0] for name in grid.column_names}
     frame = grid.to_pandas()
     assert len(frame) == grid.num_rows
+    assert grid.schema.field("timestamp").metadata == {b"unit": b"s"}
+
+
+def test_units_carry_over(tmp_path: Path) -> None:
+    runpy.run_path(str(ROOT / "examples" / "make_capture.py"))["generate"](0.05, 15.0, 4).write(
+        tmp_path / "flight.log"
+    )
+    tables = capture.read_tables(tmp_path / "flight.log")
+    grid = align(tables, on="EscStatus")
+    field = grid.schema.field("EscStatus/node 21/esc_index=1/temperature")
+    assert field.metadata == tables["EscStatus"].schema.field("temperature").metadata
+    assert field.metadata == {b"unit": b"K"}
 
 
 def convert(*args: str) -> subprocess.CompletedProcess[str]:

@@ -82,7 +82,8 @@ def align(
     Returns:
         An Arrow table: the time column (named and typed as the tables' own: float seconds,
         or ``timestamp[us, tz=UTC]``), then one column per stream and value column, null
-        where no row is within the tolerance. ``.to_pandas()`` makes it a DataFrame.
+        where no row is within the tolerance, with its unit in the field metadata as in the
+        tables. ``.to_pandas()`` makes it a DataFrame, ``polars.from_arrow`` a Polars one.
 
     Raises:
         AlignError: Neither or both of ``on`` and ``every``, ``on`` naming no table, a
@@ -132,7 +133,8 @@ def align(
         time_column = pa.array(grid, pa.int64()).cast(pa.timestamp("us", tz="UTC"))
     else:
         time_column = pa.array(grid / 1e6, pa.float64())
-    names = [time_name]
+    unit = None if timestamp else {"unit": "s"}
+    fields = [pa.field(time_name, time_column.type, metadata=unit)]
     columns = [time_column]
     for name, table in kept.items():
         values, valid = times[name]
@@ -143,9 +145,10 @@ def align(
             for column in table.column_names:
                 if column in ROUTING_COLUMNS or column in table_keys or column in TIME_COLUMNS:
                     continue
-                names.append("/".join([name, *label, column]))
+                source = table.schema.field(column)  # keeps its unit (field metadata)
+                fields.append(source.with_name("/".join([name, *label, column])))
                 columns.append(table.column(column).take(indices))
-    return pa.table(columns, names=names)
+    return pa.table(columns, schema=pa.schema(fields))
 
 
 def _time_name(table: pyarrow.Table) -> str:
