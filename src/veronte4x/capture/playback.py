@@ -162,3 +162,29 @@ class Player:
         """How late the frames taken so far were, against their due times."""
         mean = self._late_sum / self._sent if self._sent else 0.0
         return Timing(self._sent, mean, self._late_max)
+
+
+class Pacer:
+    """The same spacing for a stream of timestamped items read one by one (no list kept):
+    how long to wait before each, given the time now.
+
+    Args:
+        speed: 2 runs twice as fast, 0.5 at half speed.
+    """
+
+    def __init__(self, speed: float = 1.0) -> None:
+        if not (isinstance(speed, (int, float)) and math.isfinite(speed) and speed > 0):
+            raise PlaybackError(f"speed {speed!r}: expected a positive number, e.g. 2 or 0.5")
+        self.speed = speed
+        self._anchor: tuple[float, float] | None = None  # (first timestamp, time it came)
+        self._offset = 0.0
+
+    def delay(self, timestamp: float | None, now: float) -> float:
+        """Seconds to wait (0 or more) before the item with this timestamp, seen at ``now``."""
+        if timestamp is None:
+            return 0.0
+        if self._anchor is None:
+            self._anchor = (timestamp, now)
+        first, start = self._anchor
+        self._offset = max(self._offset, (timestamp - first) / self.speed)
+        return max(0.0, start + self._offset - now)

@@ -9,13 +9,15 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
+import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
-from veronte4x.capture.playback import IdFilter, PlaybackError, Player
+from veronte4x.capture.playback import IdFilter, Pacer, PlaybackError, Player
+from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import bus_settings
@@ -34,7 +36,7 @@ def add_parser(commands: Any) -> None:
         "udp_multicast:239.74.163.2, pcan:PCAN_USBBUS1 (needs veronte4x[can])",
     )
     parser.add_argument(
-        "--speed", type=float, default=1.0, metavar="X", help="2 plays twice as fast (1)"
+        "--speed", type=speed, default=1.0, metavar="X", help="2 plays twice as fast (1)"
     )
     parser.add_argument(
         "--channel-map",
@@ -73,6 +75,33 @@ def add_parser(commands: Any) -> None:
         help="another keyword argument of the python-can bus, e.g. port=43113 (repeatable)",
     )
     parser.set_defaults(run=run, bus_map=None)
+
+
+def speed(text: str) -> float:
+    """``--speed``: a positive number, else argparse's usage error."""
+    try:
+        value = float(text)
+        Pacer(value)
+    except (ValueError, PlaybackError):
+        raise argparse.ArgumentTypeError(
+            f"{text!r}: expected a positive number, e.g. 2 or 0.5"
+        ) from None
+    return value
+
+
+def paced(
+    records: Iterable[Record],
+    speed: float,
+    stop: threading.Event,
+    clock: Callable[[], float] = time.monotonic,
+) -> Iterator[Record]:
+    """Records with their capture's spacing over ``speed``, until ``stop`` is set."""
+    pacer = Pacer(speed)
+    for record in records:
+        wait = pacer.delay(record.timestamp, clock())
+        if wait > 0 and stop.wait(wait):
+            return
+        yield record
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
