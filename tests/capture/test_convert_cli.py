@@ -42,10 +42,10 @@ def test_convert_keeps_one_channel(tmp_path: Path) -> None:
 
 
 def test_usage_errors_exit_2_with_one_line(tmp_path: Path) -> None:
-    result = convert(str(FLIGHT), "--to", "csv", str(tmp_path))
+    result = convert(str(FLIGHT), "--to", "xlsx", str(tmp_path))
     assert (result.returncode, result.stderr) == (
         2,
-        "veronte4x: cannot convert to 'csv': the formats are parquet\n",
+        "veronte4x: cannot convert to 'xlsx': the formats are parquet, csv\n",
     )
     missing = tmp_path / "missing.log"
     result = convert(str(FLIGHT), str(missing), "--to", "parquet", str(tmp_path / "out"))

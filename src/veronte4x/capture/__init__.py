@@ -17,8 +17,10 @@ import os
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
+from veronte4x.capture.dbc import export_dbc, write_dbc
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
@@ -33,6 +35,7 @@ if TYPE_CHECKING:
     from veronte4x.capture.columnar.dataset import Summary
 
 __all__ = [
+    "AlignError",
     "BadLine",
     "BusMap",
     "BusMapError",
@@ -41,6 +44,8 @@ __all__ = [
     "Record",
     "Role",
     "Stats",
+    "align",
+    "export_dbc",
     "fields",
     "open_frames",
     "read",
@@ -49,6 +54,7 @@ __all__ = [
     "tables_from_records",
     "to_dataframe",
     "to_parquet",
+    "write_dbc",
 ]
 
 

@@ -21,12 +21,24 @@ from collections.abc import Sequence
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import convert, decode, esc, monitor, plot, replay, simulate, stats
+from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
 from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.errors import SourceError
 
-COMMANDS = (decode, stats, replay, monitor, plot, list_command, esc, simulate, convert)
+COMMANDS = (
+    decode,
+    stats,
+    replay,
+    monitor,
+    plot,
+    list_command,
+    esc,
+    simulate,
+    convert,
+    export,
+    play,
+)
 """The command modules, in the order ``--help`` lists them."""
 
 

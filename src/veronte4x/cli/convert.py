@@ -8,11 +8,12 @@ from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
+from veronte4x.cli import aligned
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import add_capture_options
 from veronte4x.extras import require
 
-FORMATS = ("parquet",)
+FORMATS = ("parquet", "csv")
 """What ``--to`` writes."""
 
 
@@ -28,7 +29,8 @@ def add_parser(commands: Any) -> None:
         nargs=2,
         required=True,
         metavar=("FORMAT", "OUT_DIR"),
-        help="the format (parquet) and the dataset's directory",
+        help="the format and where: parquet and the dataset's directory, or csv and a file "
+        "(with --every or --on)",
     )
     parser.add_argument(
         "--scheduler",
@@ -37,6 +39,7 @@ def add_parser(commands: Any) -> None:
         "needs veronte4x[dask]); OUT_DIR must be a directory every worker sees",
     )
     add_capture_options(parser)
+    aligned.add_options(parser)
     parser.set_defaults(run=run)
 
 
@@ -49,6 +52,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             file=sys.stderr,
         )
         return EXIT_USAGE
+    if format_ == "csv":
+        return aligned.run_csv(args, bus_map, out_dir)
     client = None
     if args.scheduler:
         distributed = require("distributed", "dask", "--scheduler")

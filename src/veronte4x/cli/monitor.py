@@ -20,6 +20,7 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
+from veronte4x.cli import play, rates
 from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
@@ -43,6 +44,13 @@ def add_parser(commands: Any) -> None:
     )
     add_capture_options(parser)
     add_live_options(parser)
+    rates.add_options(parser)
+    parser.add_argument(
+        "--speed",
+        type=play.speed,
+        metavar="X",
+        help="a capture: show it as if live, at its own pace times X (2: twice as fast)",
+    )
     parser.set_defaults(run=run)
 
 
@@ -55,7 +63,13 @@ class _Reader:
         self.stop = threading.Event()
         self.done = threading.Event()
         self.failure: BaseException | None = None
-        self._records = open_records(args, bus_map, self.stop)
+        self.rates = rates.tracker(args, bus_map)
+        if self.rates is None:
+            self._records = open_records(args, bus_map, self.stop)
+        else:
+            self._records = rates.records(args, bus_map, self.rates, self.stop)
+        if args.speed is not None and not live(args):
+            self._records = play.paced(self._records, args.speed, self.stop)
         self._thread = threading.Thread(target=self._run, name="veronte4x-monitor", daemon=True)
 
     def _run(self) -> None:
@@ -93,7 +107,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     reader = _Reader(args, bus_map, state)
     reader.start()
     try:
-        if not live(args):
+        if not live(args) and args.speed is None:
             reader.done.wait()
         elif sys.stdout.isatty() and sys.stdin.isatty():
             _interactive(reader, args.filter)
@@ -107,6 +121,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         _print_rich(reader, args.filter)
     else:
         print(reader.text(args.filter), end="", flush=True)
+    if reader.rates is not None:
+        print(rates.report(reader.rates), flush=True)
     print(f"veronte4x: {state.summary()}", file=sys.stderr)
     return EXIT_OK
 

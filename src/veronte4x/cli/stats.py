@@ -7,6 +7,7 @@ from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
+from veronte4x.cli import rates
 from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.notices import InputWatch, tell
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
@@ -18,13 +19,21 @@ def add_parser(commands: Any) -> None:
     parser.add_argument("file", nargs="?", help="capture file, or - for stdin")
     add_capture_options(parser)
     add_live_options(parser)
+    rates.add_options(parser)
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Print the counts of the capture."""
     watch = InputWatch(None if live(args) else args.file)
-    print(capture.stats(watch.records(open_records(args, bus_map))).report())
+    tracker = rates.tracker(args, bus_map)
+    if tracker is None:
+        records = open_records(args, bus_map)
+    else:
+        records = rates.records(args, bus_map, tracker)
+    print(capture.stats(watch.records(records)).report())
+    if tracker is not None:
+        print(rates.report(tracker))
     note = watch.note()
     if note:
         tell(note)

@@ -1,0 +1,316 @@
+"""Message rates, period jitter, gaps and bus load, from frames and their times (sans-IO).
+
+Fed one frame at a time (its time, CAN ID and data: from a capture or a live bus, the
+caller decides), a `RateTracker` keeps per stream (a CAN ID; a Veronte CAN ID's message
+type, by its bytes 0 and 1; or a DroneCAN session: data type, source and destination node)
+the count, rate, period jitter and longest gap, and per channel the bus load. It never
+reads a clock: `RateTracker.streams` takes the time "now".
+
+Bus load counts each frame's bits with the usual worst-case bit-stuffing estimate of
+Davis, Burns, Bril and Lukkien, "Controller Area Network (CAN) schedulability analysis:
+Refuted, revisited and revised", Real-Time Systems 35 (2007), equation (2):
+``g + 8s + 13 + floor((g + 8s - 1) / 4)`` bits for ``s`` data bytes, with ``g`` = 34 for
+an 11-bit ID and 54 for a 29-bit one (the 13 are the CRC delimiter, ACK, end of frame and
+interframe space, which are not stuffed). A frame of 8 bytes with an 11-bit ID counts 135
+bits; the same frame without stuffing 111 (`frame_bits`).
+
+A stream is flagged ``stopped`` when it has been silent for more than 3 of its periods (its
+usual one, or its recent one if longer; a
+DroneCAN node whose NodeStatus is silent that long is offline: the DroneCAN data type
+``uavcan.protocol.NodeStatus`` sets OFFLINE_TIMEOUT_MS = 3000 for MAX_BROADCASTING_PERIOD_MS
+= 1000), ``slow``
+when its last 16 periods run at under half its usual rate, and counts its ``gaps`` (periods
+longer than 3 usual ones).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass, field
+
+from veronte4x.capture.busmap import AUTOPILOT_NAMES, BusMap, Role
+from veronte4x.capture.dbc import command_names
+from veronte4x.dronecan.can_id import TransferKind, parse_can_id
+from veronte4x.dronecan.definitions import DATA_TYPES
+
+STANDARD_BITRATES = (125_000, 250_000, 500_000, 1_000_000)
+"""The bit rates `detect_bitrate` chooses from."""
+
+STOP_PERIODS = 3
+"""A stream silent for more than this many periods has stopped; a longer period is a gap."""
+
+SLOW_FACTOR = 2.0
+"""A stream whose recent period is this many times its usual one is slow."""
+
+RECENT = 16
+"""Periods that make a stream's recent rate."""
+
+_BINS_PER_OCTAVE = 64
+_MIN_PERIOD = 1e-6
+_NAMES = {(t.kind, t.data_type_id): t.full_name for t in DATA_TYPES}
+
+
+def frame_bits(data_bytes: int, extended: bool, stuffing: bool = True) -> int:
+    """Bits a classic CAN frame takes on the bus, interframe space included.
+
+    Args:
+        data_bytes: 0..8.
+        extended: A 29-bit ID.
+        stuffing: Count the worst-case stuff bits (Davis et al. 2007, equation (2)).
+    """
+    g = 54 if extended else 34
+    bits = g + 8 * data_bytes + 13
+    return bits + (g + 8 * data_bytes - 1) // 4 if stuffing else bits
+
+
+@dataclass
+class _Stream:
+    label: str
+    channel: str
+    count: int = 0
+    first: float = math.nan
+    last: float = math.nan
+    mean: float = 0.0  # of the periods (Welford)
+    m2: float = 0.0
+    longest: float = 0.0
+    gaps: int = 0
+    bins: dict[int, int] = field(default_factory=dict)  # log-binned periods, for the median
+    recent: deque[float] = field(default_factory=lambda: deque(maxlen=RECENT))
+    cached: float | None = None  # `usual`, refreshed every RECENT periods while counting
+
+    def add(self, time: float) -> None:
+        if self.count:
+            period = time - self.last
+            if self.count % RECENT == 1 or self.cached is None:
+                self.cached = self.usual()
+            usual = self.cached
+            if usual is not None and period > STOP_PERIODS * usual:
+                self.gaps += 1
+            n = self.count  # periods so far + 1
+            delta = period - self.mean
+            self.mean += delta / n
+            self.m2 += delta * (period - self.mean)
+            self.longest = max(self.longest, period)
+            key = _bin(period)
+            self.bins[key] = self.bins.get(key, 0) + 1
+            self.recent.append(period)
+        else:
+            self.first = time
+        self.count += 1
+        self.last = time
+
+    def usual(self) -> float | None:
+        """The median period (to 1/64 octave), or None before the first."""
+        total = sum(self.bins.values())
+        if not total:
+            return None
+        seen = 0
+        for key in sorted(self.bins):
+            seen += self.bins[key]
+            if 2 * seen >= total:
+                return _unbin(key)
+        raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _bin(period: float) -> int:
+    return math.floor(math.log2(max(period, _MIN_PERIOD)) * _BINS_PER_OCTAVE)
+
+
+def _unbin(key: int) -> float:
+    return float(2 ** ((key + 0.5) / _BINS_PER_OCTAVE))
+
+
+@dataclass(frozen=True, slots=True)
+class StreamRate:
+    """What `RateTracker.streams` reports of one stream.
+
+    Attributes:
+        channel: Interface name.
+        label: The stream: ``arbiter 0x0FF``, ``0x123``, or a DroneCAN session
+            (``uavcan.protocol.NodeStatus from node 20``).
+        count: Frames, or DroneCAN transfers.
+        rate: Count per second over the stream's span (NaN below 2).
+        period: Usual (median) period in seconds, to 1/64 octave (NaN below 2).
+        jitter: Standard deviation of the periods, in seconds (NaN below 3).
+        longest_gap: Longest period, in seconds (0 below 2).
+        silent: Seconds since the stream's last frame, at the time asked.
+        gaps: Periods longer than 3 usual ones.
+        flags: ``stopped`` (silent > 3 periods), ``slow`` (recent rate < half the usual).
+    """
+
+    channel: str
+    label: str
+    count: int
+    rate: float
+    period: float
+    jitter: float
+    longest_gap: float
+    silent: float
+    gaps: int
+    flags: tuple[str, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class BusLoad:
+    """One channel's bus load.
+
+    Attributes:
+        channel: Interface name.
+        frames: Frames counted.
+        bits: Their bits, worst-case stuffing included (`frame_bits`).
+        seconds: From the first frame to the last.
+        bitrate: Bit rate in bit/s (given, or detected: `detect_bitrate`), or None.
+        detected: The bit rate was detected rather than given.
+        percent: bits / (seconds x bitrate) x 100, or NaN without a bit rate or a span.
+    """
+
+    channel: str
+    frames: int
+    bits: int
+    seconds: float
+    bitrate: int | None
+    detected: bool
+    percent: float
+
+
+class RateTracker:
+    """Per-stream rates and per-channel bus load, fed frames and their times.
+
+    Args:
+        bus_map: Tells Veronte IDs (labelled by role) and DroneCAN frames (grouped by
+            session, counted per transfer) from the rest.
+        bitrate: The bus bit rate in bit/s; None detects it per channel.
+    """
+
+    def __init__(self, bus_map: BusMap | None = None, bitrate: int | None = None) -> None:
+        self.bus_map = bus_map or BusMap()
+        self.bitrate = bitrate
+        self._streams: dict[tuple[str, tuple[int, ...], bool], _Stream] = {}
+        self._bits: dict[str, int] = {}
+        self._frames: dict[str, int] = {}
+        self._span: dict[str, tuple[float, float]] = {}
+        self._needed: dict[str, float] = {}  # highest bit rate two close frames imply
+        self._previous: dict[str, float] = {}
+        self._commands = command_names(self.bus_map.layouts)
+
+    def add(
+        self, time: float, can_id: int, data: bytes, extended: bool = False, channel: str = ""
+    ) -> None:
+        """Count one frame (a data frame of 0..8 bytes) seen at ``time`` seconds."""
+        size = min(len(data), 8)
+        self._bits[channel] = self._bits.get(channel, 0) + frame_bits(size, extended)
+        self._frames[channel] = self._frames.get(channel, 0) + 1
+        first, _ = self._span.get(channel, (time, time))
+        self._span[channel] = (min(first, time), time)
+        previous = self._previous.get(channel)
+        if previous is not None and time > previous:
+            # A receiver stamps a frame once it is whole: two frames cannot be closer than
+            # the second one's bits without stuffing.
+            needed = frame_bits(size, extended, stuffing=False) / (time - previous)
+            self._needed[channel] = max(self._needed.get(channel, 0.0), needed)
+        self._previous[channel] = time
+        role, _ = self.bus_map.role(can_id, extended)
+        key: tuple[int, ...] = (can_id,)
+        if role is Role.DRONECAN:
+            if not data or not data[-1] & 0x80:
+                return  # not the first frame of a transfer: counted once, at its start
+            key = (_session(can_id),)
+        elif role in (Role.ARBITER, Role.AUTOPILOT) and data:
+            # One CAN ID carries several Veronte message types, each at its own rate.
+            key = (can_id, data[0], data[1] if not data[0] and len(data) > 1 else -1)
+        stream = self._streams.get((channel, key, extended))
+        if stream is None:
+            stream = _Stream(self._label(can_id, extended, role, key), channel)
+            self._streams[(channel, key, extended)] = stream
+        stream.add(time)
+
+    def _label(self, can_id: int, extended: bool, role: Role, key: tuple[int, ...]) -> str:
+        label = _label(self.bus_map, can_id, extended, role)
+        if len(key) == 1:
+            return label
+        _, command, header = key
+        if command:
+            name = self._commands.get(command, f"command {command}")
+        elif role is Role.ARBITER:
+            name = "Status" if header == 0xFF else f"Score {header}"
+        else:
+            name = "Ready" if header == 0xFF else f"ArbitrationVariable {header}"
+        return f"{label} {name}"
+
+    def streams(self, now: float | None = None) -> list[StreamRate]:
+        """Every stream's figures, by channel and label; ``now`` defaults to the last frame."""
+        out = []
+        end = max((last for _, last in self._span.values()), default=math.nan)
+        now = end if now is None else now
+        for stream in self._streams.values():
+            usual = stream.usual()
+            periods = stream.count - 1
+            span = stream.last - stream.first
+            flags = []
+            silent = now - stream.last
+            recent = sorted(stream.recent)[len(stream.recent) // 2] if stream.recent else None
+            if usual is not None and recent is not None:
+                # Stopped against the current cadence: a slow stream is not stopped yet.
+                if silent > STOP_PERIODS * max(usual, recent):
+                    flags.append("stopped")
+                if len(stream.recent) == RECENT and recent > SLOW_FACTOR * usual:
+                    flags.append("slow")
+            out.append(
+                StreamRate(
+                    stream.channel,
+                    stream.label,
+                    stream.count,
+                    periods / span if periods and span > 0 else math.nan,
+                    usual if usual is not None else math.nan,
+                    math.sqrt(stream.m2 / (periods - 1)) if periods > 1 else math.nan,
+                    stream.longest,
+                    silent,
+                    stream.gaps,
+                    tuple(flags),
+                )
+            )
+        return sorted(out, key=lambda s: (s.channel, s.label))
+
+    def load(self) -> list[BusLoad]:
+        """Each channel's bus load over its frames' span."""
+        out = []
+        for channel, bits in sorted(self._bits.items()):
+            first, last = self._span[channel]
+            bitrate, detected = self.bitrate, False
+            if bitrate is None:
+                bitrate, detected = detect_bitrate(self._needed.get(channel, 0.0)), True
+            seconds = last - first
+            percent = 100 * bits / (seconds * bitrate) if bitrate and seconds > 0 else math.nan
+            out.append(
+                BusLoad(channel, self._frames[channel], bits, seconds, bitrate, detected, percent)
+            )
+        return out
+
+
+def detect_bitrate(needed: float) -> int | None:
+    """The smallest standard bit rate at or above ``needed`` bit/s (what the closest frames
+    imply), or None if even 1 Mbit/s is too slow (timestamps not precise enough)."""
+    return next((rate for rate in STANDARD_BITRATES if rate >= needed), None)
+
+
+def _session(can_id: int) -> int:
+    """A DroneCAN session key: the CAN ID without its priority."""
+    return can_id & 0xFFFFFF
+
+
+def _label(bus_map: BusMap, can_id: int, extended: bool, role: Role) -> str:
+    ident = f"0x{can_id:08X}" if extended else f"0x{can_id:03X}"
+    if role is Role.ARBITER:
+        return f"arbiter {ident}"
+    if role is Role.AUTOPILOT:
+        _, index = bus_map.role(can_id, extended)
+        return f"{AUTOPILOT_NAMES[index or 0]} {ident}"
+    if role is not Role.DRONECAN:
+        return ident
+    parsed = parse_can_id(can_id)
+    name = _NAMES.get((parsed.kind, parsed.data_type_id), f"DroneCAN type {parsed.data_type_id}")
+    if parsed.kind is TransferKind.MESSAGE:
+        return f"{name} from node {parsed.source_node_id}"
+    kind = "request" if parsed.kind is TransferKind.REQUEST else "response"
+    return f"{name} {kind} {parsed.source_node_id}->{parsed.destination_node_id}"

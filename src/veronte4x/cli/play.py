@@ -1,0 +1,184 @@
+"""``veronte4x play CAPTURE BUS``: send a capture's frames onto a CAN bus, like canplayer.
+
+The schedule is `veronte4x.capture.playback.Player`'s; this module only opens the buses,
+reads the clock, sleeps and sends.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.frames import Frame
+from veronte4x.capture.playback import IdFilter, Pacer, PlaybackError, Player
+from veronte4x.capture.records import Record
+from veronte4x.capture.source import open_frames
+from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
+from veronte4x.cli.options import bus_settings
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser(
+        "play", help="send a capture's frames onto a CAN bus with their original spacing"
+    )
+    parser.add_argument("file", metavar="CAPTURE", help="capture file (any format decode reads)")
+    parser.add_argument(
+        "bus",
+        metavar="BUS",
+        help="python-can bus as INTERFACE[:CHANNEL]: socketcan:vcan0, "
+        "udp_multicast:239.74.163.2, pcan:PCAN_USBBUS1 (needs veronte4x[can])",
+    )
+    parser.add_argument(
+        "--speed", type=speed, default=1.0, metavar="X", help="2 plays twice as fast (1)"
+    )
+    parser.add_argument(
+        "--channel-map",
+        metavar="CAPTURED=SENT",
+        action="append",
+        default=[],
+        help="send the frames captured on CAPTURED to the bus channel SENT, e.g. can0=vcan1 "
+        "(repeatable; given, other channels are not sent)",
+    )
+    parser.add_argument(
+        "--filter",
+        metavar="ID[:MASK]",
+        action="append",
+        default=[],
+        help="send only frames whose CAN ID matches, hexadecimal as candump: 0FF, 100:700 "
+        "(repeatable)",
+    )
+    parser.add_argument(
+        "--loop",
+        type=int,
+        nargs="?",
+        const=0,
+        default=1,
+        metavar="N",
+        help="play N times, or for ever without N (until Ctrl-C)",
+    )
+    parser.add_argument("--bitrate", type=int, help="bit rate in bit/s")
+    parser.add_argument(
+        "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
+    )
+    parser.add_argument(
+        "--bus-option",
+        metavar="KEY=VALUE",
+        action="append",
+        default=[],
+        help="another keyword argument of the python-can bus, e.g. port=43113 (repeatable)",
+    )
+    parser.set_defaults(run=run, bus_map=None)
+
+
+def speed(text: str) -> float:
+    """``--speed``: a positive number, else argparse's usage error."""
+    try:
+        value = float(text)
+        Pacer(value)
+    except (ValueError, PlaybackError):
+        raise argparse.ArgumentTypeError(
+            f"{text!r}: expected a positive number, e.g. 2 or 0.5"
+        ) from None
+    return value
+
+
+def paced(
+    records: Iterable[Record],
+    speed: float,
+    stop: threading.Event,
+    clock: Callable[[], float] = time.monotonic,
+) -> Iterator[Record]:
+    """Records with their capture's spacing over ``speed``, until ``stop`` is set."""
+    pacer = Pacer(speed)
+    for record in records:
+        wait = pacer.delay(record.timestamp, clock())
+        if wait > 0 and stop.wait(wait):
+            return
+        yield record
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Play the capture; the timing goes to standard error."""
+    from veronte4x.canbus import open_bus
+
+    interface, _, channel = args.bus.partition(":")
+    args.interface, args.channel = interface or None, channel or None
+    settings = bus_settings(args)
+    mapping: dict[str, str] | None = None
+    if args.channel_map:
+        mapping = {}
+        for item in args.channel_map:
+            captured, sep, sent = item.partition("=")
+            if not sep or not captured or not sent:
+                return _usage(f"--channel-map {item!r}: expected CAPTURED=SENT, e.g. can0=vcan1")
+            mapping[captured] = sent
+    try:
+        filters = [IdFilter.parse(text) for text in args.filter]
+        frames = [f for f in open_frames(args.file) if isinstance(f, Frame)]
+        player = Player(frames, args.speed, args.loop or None, filters, mapping)
+    except PlaybackError as error:
+        return _usage(str(error))
+    buses: dict[str | None, Any] = {}
+    try:
+        for target in sorted(set(mapping.values())) if mapping else [None]:
+            buses[target] = open_bus(**{**settings, "channel": target or args.channel})
+        return _play(player, buses, mapping is not None)
+    finally:
+        for bus in buses.values():
+            bus.shutdown()
+
+
+def _play(
+    player: Player,
+    buses: dict[str | None, Any],
+    mapped: bool,
+    clock: Callable[[], float] = time.monotonic,
+    sleep: Callable[[float], None] = time.sleep,
+) -> int:
+    """Send each frame when it is due; report how late they went."""
+    import can
+
+    began = clock()
+    player.start(began)
+    sent = 0
+    try:
+        while (due := player.due()) is not None:
+            wait = due - clock()
+            if wait > 0:
+                sleep(wait)
+            for frame in player.take(clock()):
+                message = can.Message(
+                    arbitration_id=frame.can_id,
+                    data=frame.data,
+                    is_extended_id=frame.extended,
+                    is_remote_frame=frame.remote,
+                    is_fd=frame.fd,
+                    channel=frame.channel if mapped else None,
+                )
+                buses[frame.channel if mapped else None].send(message)
+                sent += 1
+    except can.CanError as error:
+        with contextlib.suppress(OSError):
+            sys.stdout.flush()
+        print(f"veronte4x: sending frame {sent + 1} failed: {error}", file=sys.stderr)
+        return EXIT_FINDINGS
+    timing = player.timing()
+    print(
+        f"veronte4x: sent {timing.frames} frames in {clock() - began:.3f} s; late against the "
+        f"schedule: {timing.mean_late * 1000:.3g} ms on average, {timing.max_late * 1000:.3g} ms "
+        "at most",
+        file=sys.stderr,
+    )
+    return EXIT_OK
+
+
+def _usage(message: str) -> int:
+    print(f"veronte4x: {message}", file=sys.stderr)
+    return EXIT_USAGE

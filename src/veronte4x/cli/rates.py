@@ -1,0 +1,85 @@
+"""``--rates`` of ``stats`` and ``monitor``: rates, jitter, gaps and bus load per stream."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import threading
+from collections.abc import Iterable, Iterator
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.rates import RateTracker
+from veronte4x.capture.records import Record
+from veronte4x.cli.options import open_frame_source
+
+
+def add_options(parser: argparse.ArgumentParser) -> None:
+    """``--rates``; the bus load takes the bus options' ``--bitrate`` if given."""
+    parser.add_argument(
+        "--rates",
+        action="store_true",
+        help="show per CAN ID or DroneCAN session: rate, jitter, longest gap; and the bus "
+        "load in %% of --bitrate (default: detected from the closest frames)",
+    )
+
+
+def tracker(args: argparse.Namespace, bus_map: BusMap) -> RateTracker | None:
+    """A tracker if ``--rates`` was given."""
+    return RateTracker(bus_map, getattr(args, "bitrate", None)) if args.rates else None
+
+
+def records(
+    args: argparse.Namespace,
+    bus_map: BusMap,
+    rates: RateTracker,
+    stop: threading.Event | None = None,
+) -> Iterator[Record]:
+    """The command's records, decoded from frames that also feed ``rates``."""
+    return CaptureDecoder(bus_map).decode(feed(open_frame_source(args, stop), rates))
+
+
+def feed(frames: Iterable[Frame | BadLine], rates: RateTracker) -> Iterator[Frame | BadLine]:
+    """Pass frames through, counting each timestamped data frame in ``rates``."""
+    for frame in frames:
+        if (
+            isinstance(frame, Frame)
+            and frame.timestamp is not None
+            and not (frame.remote or frame.error or frame.fd)
+        ):
+            rates.add(frame.timestamp, frame.can_id, frame.data, frame.extended, frame.channel)
+        yield frame
+
+
+def report(rates: RateTracker, now: float | None = None) -> str:
+    """The streams and the bus load as text, one line each."""
+    lines = ["rates:"]
+    for s in rates.streams(now):
+        flags = f"  {', '.join(s.flags)}" if s.flags else ""
+        gaps = f", {s.gaps} gaps" if s.gaps else ""
+        lines.append(
+            f"  {s.channel or '-'} {s.label}: {s.count} at {_hz(s.rate)}, jitter "
+            f"{_ms(s.jitter)}, longest gap {_ms(s.longest_gap)}{gaps}{flags}"
+        )
+    lines.append("bus load (worst-case bit stuffing):")
+    for load in rates.load():
+        if load.bitrate is None:
+            rate = "bit rate unknown: give --bitrate"
+        else:
+            how = "detected: the lowest that fits" if load.detected else "given"
+            rate = f"{_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s ({how})"
+        lines.append(f"  {load.channel or '-'}: {load.frames} frames, {rate}")
+    return "\n".join(lines)
+
+
+def _hz(value: float) -> str:
+    return "-" if math.isnan(value) else f"{value:.4g} Hz"
+
+
+def _ms(value: float) -> str:
+    return "-" if math.isnan(value) else f"{value * 1000:.4g} ms"
+
+
+def _percent(value: float) -> str:
+    return "-" if math.isnan(value) else f"{value:.3g} %"
