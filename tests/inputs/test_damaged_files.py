@@ -10,7 +10,7 @@ import pytest
 
 from tests.inputs.support import run
 from veronte4x import capture
-from veronte4x.capture import Frame, open_frames
+from veronte4x.capture import BadLine, Frame, open_frames
 from veronte4x.errors import SourceError
 
 can = pytest.importorskip("can")
@@ -93,6 +93,7 @@ def test_a_cut_blf_keeps_the_frames_before_the_cut(tmp_path: Path) -> None:
         f"{path}: the BLF file ends early, after message {len(frames)} ({size} of the "
         f"{size * 2} bytes its header gives): the file is truncated"
     )
+    assert isinstance(cut, BadLine)
     assert cut.reason == reason
     records = list(capture.read(path))
     assert [r.error for r in records] == [None] * len(frames) + ["truncated"]
