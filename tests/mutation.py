@@ -16,7 +16,7 @@ The sample is stratified: the same number of mutants from each package (``codec`
 seed, so a run is reproducible (hypothesis runs derandomized). Run from the repository
 root::
 
-    .venv/bin/python tests/mutation.py                    # 300 mutants, seed 4792
+    .venv/bin/python tests/mutation.py                    # 300 mutants, --random 4792
     .venv/bin/python tests/mutation.py --size 30 --jobs 2 # a quick look on two cores
     .venv/bin/python tests/mutation.py --list             # the sample, not run
     .venv/bin/python tests/mutation.py codec/core.py:41   # some mutants by name
@@ -372,7 +372,9 @@ def main() -> None:
     """Run the sample, or the mutants named, and print each outcome and the scores."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("names", nargs="*", help="mutants to run, as module:index")
-    parser.add_argument("--seed", type=int, default=SEED)
+    parser.add_argument(
+        "--random", dest="seed", type=int, default=SEED, help="the random draw (a seed)"
+    )
     parser.add_argument("--size", type=int, default=SIZE)
     parser.add_argument("--packages", default=",".join(PACKAGES), help="comma-separated")
     parser.add_argument("--jobs", type=int, default=1, help="mutants run at once")
