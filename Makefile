@@ -4,7 +4,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: demo check lint types test docs bench clean
+.PHONY: demo check lint types test docs bench mutation clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -55,6 +55,12 @@ bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_bitstruct.py
 	$(BIN)/python benchmarks/bench_capture.py
 	$(BIN)/python benchmarks/bench_columnar.py
+
+# Not part of check: a sampled mutation run (docs/contributing/mutation.md). Override with
+# e.g. make mutation MUTATION_ARGS="--size 30 --jobs 2".
+MUTATION_ARGS ?= --size 300 --jobs 2
+mutation: $(VENV)/.installed-dev
+	$(BIN)/python tests/mutation.py $(MUTATION_ARGS) --report $(VENV)/mutation-report.md
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info

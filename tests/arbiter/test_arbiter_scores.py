@@ -139,3 +139,18 @@ def test_config_defaults_follow_the_templates() -> None:
     assert arbiter.ArbiterConfig(external_enabled=True, preferred=3).participants == (0, 1, 2, 3)
     assert arbiter.ArbiterConfig(extended_ids=True, arbiter_id=0x1FFFFFFF).arbiter_id == 0x1FFFFFFF
     assert arbiter.ArbiterConfig(variables=[VariableConfig()]).variables == (VariableConfig(),)
+
+
+def test_explain_scores_follows_its_relative_argument() -> None:
+    """Three autopilots count relative variables unless told not to; two only when told."""
+
+    def enabled(**options: object) -> list[tuple[int, int, bool]]:
+        rows = explain_scores(SEED_VALUES, SEED_VARIABLES, **options)  # type: ignore[arg-type]
+        return [(row.autopilot, row.number, row.enabled) for row in rows if row.autopilot == 0]
+
+    assert enabled() == [(0, 0, True), (0, 1, True), (0, 2, True)]
+    assert enabled(relative=False) == [(0, 0, False), (0, 1, False), (0, 2, True)]
+    assert enabled(mean_of=[0, 1]) == [(0, 0, False), (0, 1, False), (0, 2, True)]
+    assert enabled(mean_of=[0, 1], relative=True) == [(0, 0, True), (0, 1, True), (0, 2, True)]
+    off = explain_scores(SEED_VALUES, SEED_VARIABLES, relative=False)
+    assert [row.contribution for row in off if not row.enabled] == [0.0] * 6

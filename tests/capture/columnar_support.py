@@ -37,7 +37,8 @@ BUS_MAPS = st.sampled_from(
 
 float32s = st.floats(width=32, allow_nan=True)
 int14 = st.integers(-8192, 8191)
-nodes = st.sampled_from([20, 21, 22])
+nodes = st.sampled_from([20, 21, 22]) | st.sampled_from([1, 127]) | st.integers(1, 127)
+"""Node ids: a few that repeat (sessions with several transfers), the bounds, any."""
 DRONECAN_MESSAGES = st.one_of(
     st.builds(
         dronecan.NodeStatus,
@@ -114,8 +115,9 @@ def veronte_payloads(sender: codec.Sender) -> st.SearchStrategy[bytes]:
 
 @st.composite
 def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
-    """candump lines: Veronte frames of both senders, DroneCAN transfers with faults,
-    unknown IDs, error and remote frames, bad lines; log and human forms."""
+    """candump lines: Veronte frames of both senders, DroneCAN transfers with faults (from
+    any node id, anonymous, to node 0), unknown IDs, error and remote frames, bad lines;
+    log and human forms, 11-bit and 29-bit ids in both."""
     frames: list[tuple[int, bytes, bool] | str] = []
     tids: dict[tuple[int, int], int] = {}
     for _ in range(draw(st.integers(0, 40))):
@@ -140,6 +142,10 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
                 destination_node_id=draw(nodes) if service else None,
             )
             transfer = [(f.can_id, f.data, True) for f in made]
+            address = draw(st.integers(0, 7))
+            if address == 0:  # anonymous (source 0), or a service to node 0: refused
+                mask = 0x7F00 if service and draw(st.booleans()) else 0x7F
+                transfer = [(can_id & ~mask, data, ext) for can_id, data, ext in transfer]
             fault = draw(st.integers(0, 7))
             if fault == 1 and transfer:
                 del transfer[draw(st.integers(0, len(transfer) - 1))]

@@ -64,22 +64,45 @@ def _ascii(data: bytes) -> str:
     return "".join(chr(b) if 0x1F < b < 0x7F else "." for b in data)
 
 
+_IDS = st.one_of(
+    st.integers(0, 0x7FF).map(lambda ident: (ident, False)),
+    st.integers(0, 2**29 - 1).map(lambda ident: (ident, True)),  # 29-bit: 8 hex digits
+)
+
+
 @settings(max_examples=300)
 @given(
     st.binary(min_size=0, max_size=8),
-    st.integers(0, 0x7FF),
+    _IDS,
     st.sampled_from(["(1436509052.249713)  ", "(2015-07-10 08:17:32.249713)  ", ""]),
+    st.booleans(),
 )
-def test_human_view_with_any_bytes_in_the_ascii_column(data: bytes, ident: int, stamp: str) -> None:
-    """A '#' (or anything else) in candump -a's ASCII column does not make a line a log line."""
+def test_human_view_with_any_bytes_in_the_ascii_column(
+    data: bytes, ident: tuple[int, bool], stamp: str, ascii_column: bool
+) -> None:
+    """A '#' (or anything else) in candump -a's ASCII column does not make a line a log line;
+    11-bit and 29-bit ids alike, with or without the column."""
+    can_id, extended = ident
     hexbytes = " ".join(f"{b:02X}" for b in data)
-    line = f"{stamp}can0  {ident:03X}   [{len(data)}]  {hexbytes}   '{_ascii(data)}'\n"
+    text = f"{can_id:08X}" if extended else f"{can_id:03X}"
+    column = f"   '{_ascii(data)}'" if ascii_column else ""
+    line = f"{stamp}can0  {text}   [{len(data)}]  {hexbytes}{column}\n"
     [frame] = parse_candump([line])
     assert isinstance(frame, Frame)
-    assert (frame.can_id, frame.data) == (ident, data)
+    assert (frame.can_id, frame.data, frame.extended) == (can_id, data, extended)
     assert frame.timestamp == {"(1436509052.249713)  ": T + 0.249713, "": None}.get(
         stamp, 1436516252.249713
     )
+
+
+@given(st.binary(min_size=0, max_size=8), _IDS, st.sampled_from(["can0", "vcan1", "can10"]))
+def test_log_form_with_11_and_29_bit_ids(
+    data: bytes, ident: tuple[int, bool], channel: str
+) -> None:
+    can_id, extended = ident
+    text = f"{can_id:08X}" if extended else f"{can_id:03X}"
+    [frame] = parse_candump([f"(1436509052.249713) {channel} {text}#{data.hex().upper()}\n"])
+    assert frame == Frame(T + 0.249713, channel, can_id, data, extended)
 
 
 def test_uavcan_file_read_transfer_with_hash_in_ascii_column() -> None:

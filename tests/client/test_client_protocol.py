@@ -21,6 +21,7 @@ from veronte4x.client import (
     Requester,
     TimedOut,
     TransferIds,
+    UpdateProgress,
 )
 from veronte4x.client.files import FileRead
 from veronte4x.client.protocol import Received
@@ -202,6 +203,66 @@ def test_firmware_update_failures(events: str, error: str, timed_out: bool) -> N
         update.status(NodeTable().observe_status(21, running, 0.6), 0.6)
     progress = update.poll(3.0)
     assert (progress.phase, progress.error, progress.timed_out) == (Phase.FAILED, error, timed_out)
+
+
+def test_firmware_update_times_out_at_each_phase_boundary_exactly() -> None:
+    """Each phase fails at its timeout to the instant (``>=``), with timed_out set and the
+    error text the CLI prints; a moment earlier it still waits."""
+    ok = dronecan.BeginFirmwareUpdateResponse(0)
+    waiting = FirmwareUpdate(21, b"fw", 600, now=0.0, start_timeout=2)
+    waiting.accepted(ok, 0.5)
+    assert waiting.poll(2.4375).phase is Phase.WAITING
+    assert waiting.poll(2.5) == UpdateProgress(
+        21,
+        Phase.FAILED,
+        0,
+        600,
+        "node 21 accepted the update but did not read the image within 2 s",
+        True,
+    )
+    reading = FirmwareUpdate(21, b"fw", 600, now=0.0, read_timeout=1)
+    reading.accepted(ok, 0.0)
+    reading.served(21, FileRead(b"fw", 0, 256, 600), 0.5)
+    assert reading.poll(1.4375).phase is Phase.READING
+    progress = reading.poll(1.5)
+    assert (progress.phase, progress.timed_out) == (Phase.FAILED, True)
+    assert (
+        progress.error == "node 21 stopped reading the image at byte 256 of 600 (nothing for 1 s)"
+    )
+    restarting = FirmwareUpdate(21, b"fw", 200, now=0.0, restart_timeout=4)
+    restarting.accepted(ok, 0.0)
+    restarting.served(21, FileRead(b"fw", 0, 200, 200), 1.0)  # fewer than 256: the end
+    assert restarting.poll(4.9375).phase is Phase.RESTARTING
+    progress = restarting.poll(5.0)
+    assert (progress.phase, progress.timed_out) == (Phase.FAILED, True)
+    assert progress.error == ("node 21 read the whole image but did not report running within 4 s")
+
+
+def test_firmware_update_without_an_answer_keeps_the_error_text() -> None:
+    update = FirmwareUpdate(21, b"fw", 600, now=0.0)
+    update.no_answer("node 21 did not answer BeginFirmwareUpdate (3 attempts)")
+    progress = update.progress
+    assert (progress.phase, progress.timed_out) == (Phase.FAILED, True)
+    assert progress.error == "node 21 did not answer BeginFirmwareUpdate (3 attempts)"
+
+
+@pytest.mark.parametrize("node_id", [0, 128, -1, True, 21.0])
+def test_a_client_node_id_out_of_1_to_127_is_refused(node_id: Any) -> None:
+    with pytest.raises(EncodeError, match=r"ClientProtocol\.node_id = .*: expected a node id"):
+        ClientProtocol(node_id=node_id)
+
+
+def test_a_served_response_keeps_the_priority_and_transfer_id_of_its_request() -> None:
+    client = ClientProtocol(node_id=100, priority=30)
+    client.files.add(b"fw", b"\x01" * 10)
+    request = dronecan.FileGetInfoRequest(dronecan.Path(b"fw"))
+    frames = dronecan.encode(
+        request, source_node_id=21, destination_node_id=100, transfer_id=9, priority=3
+    )
+    for frame in frames:
+        client.receive(frame.can_id, frame.data, 1.0)
+    answer = dronecan.decode_frames([(f.can_id, f.data) for f in client.take_frames()])
+    assert (answer.priority, answer.transfer_id, answer.destination_node_id) == (3, 9, 21)
 
 
 def test_protocol_serves_file_reads_to_any_node() -> None:

@@ -79,6 +79,17 @@ def test_allow_excess_ignores_padding_past_the_layout() -> None:
     assert pwm == codec.PwmSet(0, (1, 0, 0, 0))
 
 
+@pytest.mark.parametrize("sender", [AP, ARB])
+def test_allow_excess_ignores_bytes_past_a_layout_with_a_tail(sender: codec.Sender) -> None:
+    """A Version response holds at most 8 bytes (a 6-byte tail): a 9th is excess."""
+    data = bytes.fromhex("0107010203040506") + b"\x99"
+    expected = codec.VersionResponse(application_code=7, rest=bytes.fromhex("010203040506"))
+    assert codec.decode(data, sender=sender, allow_excess=True) == expected
+    assert codec.DEFAULT_CODEC.decoder(sender)(data, True) == expected
+    with pytest.raises(codec.DecodeError, match="9 bytes; the layout has 2 to 8"):
+        codec.decode(data, sender=sender)
+
+
 def test_short_frames_never_decode_even_with_allow_excess() -> None:
     with pytest.raises(codec.DecodeError, match="2 bytes; the layout has 3"):
         codec.decode(b"\x00\xff", sender=AP, allow_excess=True)

@@ -396,8 +396,10 @@ def _decode_source(
     else:
         most = size + layout.tail.bits // 8
         lines += [
-            f"    if n < {size} or n > {most}:",
+            f"    if n < {size} or (n > {most} and not excess):",
             f"        raise _derr('{{}} bytes; the layout has {size} to {most}'.format(n), data)",
+            f"    if n > {most}:",
+            f"        data = data[:{most}]",
         ]
     body: list[str] = []
     plan = _struct_plan(layout)

@@ -6,9 +6,11 @@ spec 4.1 "Reception" for a single interface, with one rule on top: every transfe
 frames all arrive, once, in order and uncorrupted, with no other frame of its session in
 between and within the transfer-ID timeout, is delivered, unless it repeats the transfer
 id delivered last in its session within the timeout (2 s after the first frame of that
-transfer, by the frames' own timestamps). So a stray frame never makes the next intact
-transfer look like a repeat. Time comes only from the ``timestamp`` argument; nothing
-reads a clock.
+transfer, by the frames' own timestamps); a multi-frame transfer repeating the id of a
+single frame is taken all the same, since its CRC vouches for it and nothing vouches for
+the single frame (docs/dronecan/reassembly.md, "What cannot be recovered"). So a stray
+frame never makes the next intact transfer look like a repeat. Time comes only from the
+``timestamp`` argument; nothing reads a clock.
 
 Bus data never raises. Each problem is counted in `counts` and recorded as a
 `ProblemReport` in the bounded `problems`. A transfer that started or was seen but never
@@ -492,18 +494,26 @@ class Reassembler:
         if session.buffer is not None and ts - session.start > self.timeout:
             # Dated from its own first frame: a new transfer with its id is not counted.
             self._abandon(session, Problem.TIMEOUT, can_id, data, ts, session.start)
-        if session.closed == tid and ts - session.start <= self.timeout:
+        again = session.closed == tid and ts - session.start <= self.timeout
+        if again:
             if data == session.last:
                 self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-            else:
+                return None
+            if tail & 0x40 or session.buffer is not None or session.last[-1] & 0xC0 != 0xC0:
                 self._report(
                     Problem.UNEXPECTED_TRANSFER_ID, can_id, data, ts, f"transfer id {tid} again"
                 )
-            return None
+                return None
+            # A multi-frame transfer with the id of the single frame delivered last: no
+            # sender reuses an id within the timeout, so one of the two is not what was
+            # sent. A single frame has no CRC (a flipped bit in its tail byte gives it
+            # another transfer id unnoticed) while this transfer's CRC and the transfer id
+            # of each of its frames vouch for it: it is taken, and delivered if it
+            # completes (docs/dronecan/reassembly.md, "What cannot be recovered").
         # The late first frame of a transfer already counted lost begins it "counted": if
         # it fails, it is not counted again; if it completes (the frame counted was not
         # its own), it is delivered.
-        counted = self._recent(session, tid, ts)
+        counted = not again and self._recent(session, tid, ts)
         if session.buffer is not None:
             if data == session.last:  # the same first frame: its buffer is unchanged
                 self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "first frame again")

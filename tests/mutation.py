@@ -1,0 +1,435 @@
+"""`make mutation`: a stratified, sampled mutation run over every package.
+
+Mutants are made with ``ast`` (our own small mutator: operator, comparison and boolean
+swaps, integers off by one, ``True``/``False``, ``is``/``is not``, ``in``/``not in``, ``not
+x`` made ``not not x``, a string in a function (an error text) made ``None``, a return,
+raise, break, continue or call statement replaced by ``pass``). mutmut 3 generates similar
+mutants, but its runner selects a mutant through trampolines inside already imported
+functions, after a fork; veronte4x generates its codecs' code at import, from module-level
+tables that mutmut does not mutate, so every mutant here is written into a copy of the
+package put first on ``PYTHONPATH`` and its tests run in a fresh interpreter (the CLI's
+subprocesses inherit it). A test failure, an import error or a timeout kills a mutant.
+
+The sample is stratified: the same number of mutants from each package (``codec``,
+``dronecan``, ``arbiter``, ``capture`` with ``columnar`` and ``readers``, ``client``,
+``simulator``, ``cli``, ``variables`` and the top-level modules as ``core``), drawn with a
+seed, so a run is reproducible (hypothesis runs derandomized). Run from the repository
+root::
+
+    .venv/bin/python tests/mutation.py                    # 300 mutants, --random 4792
+    .venv/bin/python tests/mutation.py --size 30 --jobs 2 # a quick look on two cores
+    .venv/bin/python tests/mutation.py --list             # the sample, not run
+    .venv/bin/python tests/mutation.py codec/core.py:41   # some mutants by name
+
+It prints each outcome as it comes, then the score per package and every survivor with
+its diff, and writes the same to ``--report`` (Markdown).
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import difflib
+import os
+import queue
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGE = ROOT / "src" / "veronte4x"
+SEED = 4792
+SIZE = 300
+PACKAGES: tuple[str, ...] = ("codec", "dronecan", "arbiter", "capture", "client", "simulator")
+PACKAGES += ("cli", "variables", "core")
+COMMON_TESTS = ("tests/test_argument_types.py", "tests/test_errors.py")
+_SLOW = ("differential", "oracle", "faults", "dataset", "fleet", "notebook", "examples")
+"""Test files that compare against a reference or start a cluster: run last."""
+_CLI_TESTS: tuple[str, ...] = (
+    "tests/cli",
+    "tests/capture/test_cli.py",
+    "tests/capture/test_convert_cli.py",
+)
+_CLI_TESTS += ("tests/client/test_cli_esc.py", "tests/client/test_cli_monitor.py")
+_CLI_TESTS += ("tests/client/test_cli_plot_list.py",)
+
+
+_OPERATORS: dict[type[ast.AST], type[ast.AST]] = {
+    ast.Add: ast.Sub,
+    ast.Sub: ast.Add,
+    ast.Mult: ast.FloorDiv,
+    ast.FloorDiv: ast.Mult,
+    ast.Div: ast.Mult,
+    ast.Mod: ast.FloorDiv,
+    ast.LShift: ast.RShift,
+    ast.RShift: ast.LShift,
+    ast.BitAnd: ast.BitOr,
+    ast.BitOr: ast.BitAnd,
+    ast.BitXor: ast.BitOr,
+    ast.Eq: ast.NotEq,
+    ast.NotEq: ast.Eq,
+    ast.Lt: ast.LtE,
+    ast.LtE: ast.Lt,
+    ast.Gt: ast.GtE,
+    ast.GtE: ast.Gt,
+    ast.Is: ast.IsNot,
+    ast.IsNot: ast.Is,
+    ast.In: ast.NotIn,
+    ast.NotIn: ast.In,
+    ast.And: ast.Or,
+    ast.Or: ast.And,
+}
+
+_REMOVABLE = (ast.Return, ast.Raise, ast.Break, ast.Continue)
+
+
+@dataclass(frozen=True)
+class Site:
+    """One place a module can be mutated, and how."""
+
+    line: int
+    change: str
+    apply: Callable[[], None]
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """One mutant: the module (relative to the package), its site's index and its line."""
+
+    module: str
+    index: int
+    line: int
+    change: str
+
+    @property
+    def name(self) -> str:
+        """The name that selects this mutant on the command line."""
+        return f"{self.module}:{self.index}"
+
+
+def _annotations(tree: ast.AST) -> set[int]:
+    """The ids of every node not to mutate: type annotations, ``if TYPE_CHECKING`` bodies,
+    docstrings and the parts of f-strings."""
+    roots: list[ast.AST] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.arg | ast.AnnAssign) and node.annotation is not None:
+            roots.append(node.annotation)
+        elif isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef) and node.returns:
+            roots.append(node.returns)
+        elif isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            roots.extend(node.body)
+        elif isinstance(node, ast.JoinedStr):
+            roots.extend(node.values)
+        elif isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant):
+            roots.append(node.value)  # a docstring, or a string as a statement
+    return {id(inner) for root in roots for inner in ast.walk(root)}
+
+
+def _swap(holder: ast.AST, field: str, position: int | None) -> Site | None:
+    """The site that swaps the operator held in ``holder.field`` (or its item)."""
+    old = getattr(holder, field) if position is None else getattr(holder, field)[position]
+    new = _OPERATORS.get(type(old))
+    if new is None:
+        return None
+
+    def apply() -> None:
+        if position is None:
+            setattr(holder, field, new())
+        else:
+            getattr(holder, field)[position] = new()
+
+    line = getattr(holder, "lineno", 0)
+    return Site(line, f"{type(old).__name__} -> {new.__name__}", apply)
+
+
+def _setter(node: ast.Constant, value: Any) -> Callable[[], None]:
+    """A function that sets the value of a constant."""
+
+    def apply() -> None:
+        node.value = value
+
+    return apply
+
+
+def _constant(node: ast.Constant) -> Iterator[Site]:
+    """The sites that change an integer by one or swap ``True`` and ``False``."""
+    value = node.value
+    if isinstance(value, bool):
+        yield Site(node.lineno, f"{value} -> {not value}", _setter(node, not value))
+    elif isinstance(value, int):
+        for new in (value + 1, value - 1):
+            yield Site(node.lineno, f"{value} -> {new}", _setter(node, new))
+    elif isinstance(value, str) and value:
+        yield Site(node.lineno, f"{value[:20]!r} -> None", _setter(node, None))
+
+
+def _removals(node: ast.AST) -> Iterator[Site]:
+    """The sites that replace one statement of a body by ``pass``."""
+    for field in ("body", "orelse", "finalbody"):
+        statements = getattr(node, field, None)
+        if not isinstance(statements, list):
+            continue
+        for position, statement in enumerate(statements):
+            call = isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call)
+            if isinstance(statement, _REMOVABLE) or call:
+
+                def apply(
+                    statements: list[ast.stmt] = statements, position: int = position
+                ) -> None:
+                    statements[position] = ast.copy_location(ast.Pass(), statements[position])
+
+                change = f"{type(statement).__name__} -> pass"
+                yield Site(statement.lineno, change, apply)
+
+
+def sites(tree: ast.Module) -> list[Site]:
+    """Every mutation site of a module, in an order fixed by its source."""
+    skipped = _annotations(tree)
+    functions = {
+        id(inner)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef)
+        for inner in ast.walk(node)
+    }
+    found: list[Site] = []
+    for node in ast.walk(tree):
+        if id(node) in skipped:
+            continue
+        found.extend(_removals(node))
+        swaps: list[Site | None] = []
+        if isinstance(node, ast.BinOp | ast.AugAssign | ast.BoolOp):
+            swaps.append(_swap(node, "op", None))
+        elif isinstance(node, ast.Compare):
+            swaps.extend(_swap(node, "ops", position) for position in range(len(node.ops)))
+        elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+
+            def apply(node: ast.UnaryOp = node) -> None:
+                node.operand = ast.UnaryOp(ast.Not(), node.operand)
+
+            swaps.append(Site(node.lineno, "not x -> not not x", apply))
+        elif isinstance(node, ast.Constant) and (
+            not isinstance(node.value, str) or id(node) in functions
+        ):
+            found.extend(_constant(node))  # strings only in functions: texts, not tables
+        found.extend(site for site in swaps if site is not None)
+    return found
+
+
+def mutated_source(path: Path, index: int) -> str:
+    """The source of the module at ``path`` with its mutation ``index`` applied."""
+    tree = ast.parse(path.read_text())
+    sites(tree)[index].apply()
+    return ast.unparse(ast.fix_missing_locations(tree))
+
+
+def package_of(module: str) -> str:
+    """The package a module (a path relative to ``src/veronte4x``) is counted in."""
+    return module.split("/")[0] if "/" in module else "core"
+
+
+def all_mutants() -> list[Mutant]:
+    """Every mutant of every module, in a fixed order."""
+    mutants: list[Mutant] = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        module = path.relative_to(PACKAGE).as_posix()
+        for index, site in enumerate(sites(ast.parse(path.read_text()))):
+            mutants.append(Mutant(module, index, site.line, site.change))
+    return mutants
+
+
+def sample(
+    seed: int = SEED, size: int = SIZE, packages: tuple[str, ...] = PACKAGES
+) -> list[Mutant]:
+    """The mutants drawn for a run: ``size`` split evenly over ``packages`` (a package
+    with fewer mutants gives them all, the rest go to the others), in a fixed order."""
+    by_package: dict[str, list[Mutant]] = {package: [] for package in packages}
+    for mutant in all_mutants():
+        if package_of(mutant.module) in by_package:
+            by_package[package_of(mutant.module)].append(mutant)
+    shares = dict.fromkeys(packages, 0)
+    left = min(size, sum(len(found) for found in by_package.values()))
+    while left:
+        open_ = [p for p in packages if shares[p] < len(by_package[p])]
+        for package in open_[:left]:
+            shares[package] += 1
+            left -= 1
+    rng = random.Random(seed)
+    chosen: list[Mutant] = []
+    for package in packages:
+        chosen += rng.sample(by_package[package], shares[package])
+    return chosen
+
+
+def _files(patterns: tuple[str, ...]) -> list[str]:
+    names: list[str] = []
+    for pattern in patterns:
+        path = ROOT / pattern
+        found = sorted(path.glob("test_*.py")) if path.is_dir() else [path]
+        names += [f.relative_to(ROOT).as_posix() for f in found]
+    return names
+
+
+def package_tests(package: str) -> list[str]:
+    """The test files of a package, quick ones first (with ``-x`` a mutant dies at its first
+    failing test)."""
+    if package == "core":
+        names = _files(("tests",))
+    elif package == "cli":
+        names = _files(_CLI_TESTS)
+    else:
+        names = _files((f"tests/{package}",))
+    quick = [name for name in names if not any(word in name for word in _SLOW)]
+    slow = [name for name in names if name not in quick]
+    common = [name for name in COMMON_TESTS if name not in names]
+    return [*quick, *common, *slow]
+
+
+def _run(copy: Path, tests: list[str], timeout: float) -> str:
+    """``killed``, ``survived`` or ``timeout``: the outcome of the tests on the copy."""
+    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
+    command += ["-c", str(ROOT / "pyproject.toml"), "--rootdir", str(ROOT), "-n", "0"]
+    command += ["--hypothesis-profile=derandomized", *tests]
+    environment = dict(os.environ, PYTHONPATH=str(copy), PYTHONDONTWRITEBYTECODE="1")
+    try:
+        result = subprocess.run(
+            command, cwd=ROOT, env=environment, capture_output=True, timeout=timeout, check=False
+        )
+    except subprocess.TimeoutExpired:
+        return "timeout"
+    return "survived" if result.returncode == 0 else "killed"
+
+
+def _copy(into: Path) -> Path:
+    """A copy of the package under ``into``, every module re-written by ``ast.unparse`` (as
+    the mutants are, so that a survivor is never a formatting difference)."""
+    shutil.copytree(PACKAGE, into / "veronte4x", ignore=shutil.ignore_patterns("__pycache__"))
+    for path in (into / "veronte4x").rglob("*.py"):
+        path.write_text(ast.unparse(ast.parse(path.read_text())))
+    return into
+
+
+def _uses_the_copy(copy: Path) -> None:
+    code = "import veronte4x; print(veronte4x.__file__)"
+    environment = dict(os.environ, PYTHONPATH=str(copy))
+    found = subprocess.run(
+        [sys.executable, "-c", code], env=environment, capture_output=True, text=True, check=True
+    ).stdout.strip()
+    if not found.startswith(str(copy)):
+        raise SystemExit(f"the copy is not imported first: {found}")
+
+
+def _baseline(copy: Path, packages: set[str]) -> dict[str, float]:
+    """The time the tests of each package take on the unmutated copy; they must pass."""
+    times: dict[str, float] = {}
+    for package in sorted(packages):
+        start = time.monotonic()
+        if _run(copy, package_tests(package), timeout=3600) != "survived":
+            raise SystemExit(f"the tests of {package} fail on the unmutated package")
+        times[package] = time.monotonic() - start
+    return times
+
+
+def diff(mutant: Mutant) -> str:
+    """The mutation as a unified diff of the module (both sides as ``ast.unparse`` writes)."""
+    path = PACKAGE / mutant.module
+    before = ast.unparse(ast.parse(path.read_text())).splitlines()
+    after = mutated_source(path, mutant.index).splitlines()
+    lines = difflib.unified_diff(before, after, mutant.module, mutant.module, n=1, lineterm="")
+    return "\n".join(lines)
+
+
+def report(results: list[tuple[Mutant, str]], seed: int) -> str:
+    """The scores per package and every survivor with its diff, in Markdown."""
+    lines = [f"Seed {seed}, {len(results)} mutants.", "", "| package | killed | score |"]
+    lines.append("|---|---|---|")
+    packages = sorted({package_of(m.module) for m, _ in results}, key=PACKAGES.index)
+    for package in packages:
+        outcomes = [o for m, o in results if package_of(m.module) == package]
+        killed = sum(o != "survived" for o in outcomes)
+        lines.append(
+            f"| {package} | {killed} / {len(outcomes)} | {100 * killed / len(outcomes):.0f} % |"
+        )
+    killed = sum(o != "survived" for _, o in results)
+    lines.append(
+        f"| all | {killed} / {len(results)} | {100 * killed / max(1, len(results)):.0f} % |"
+    )
+    for mutant, outcome in results:
+        if outcome == "survived":
+            lines += ["", f"Survived: {mutant.name} (line {mutant.line}, {mutant.change})"]
+            lines += ["", "```diff", diff(mutant), "```"]
+    return "\n".join(lines) + "\n"
+
+
+def main() -> None:
+    """Run the sample, or the mutants named, and print each outcome and the scores."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("names", nargs="*", help="mutants to run, as module:index")
+    parser.add_argument(
+        "--random", dest="seed", type=int, default=SEED, help="the random draw (a seed)"
+    )
+    parser.add_argument("--size", type=int, default=SIZE)
+    parser.add_argument("--packages", default=",".join(PACKAGES), help="comma-separated")
+    parser.add_argument("--jobs", type=int, default=1, help="mutants run at once")
+    parser.add_argument("--timeout", type=float, help="seconds per mutant (no baseline run)")
+    parser.add_argument("--report", type=Path, help="write the scores and survivors here")
+    parser.add_argument("--list", action="store_true", help="print the sample, run nothing")
+    arguments = parser.parse_args()
+    every = all_mutants()
+    if arguments.names:
+        by_name = {mutant.name: mutant for mutant in every}
+        mutants = [by_name[name] for name in arguments.names]
+    else:
+        packages = tuple(arguments.packages.split(","))
+        mutants = sample(arguments.seed, arguments.size, packages)
+    print(f"{len(mutants)} of {len(every)} mutants, seed {arguments.seed}", flush=True)
+    if arguments.list:
+        for mutant in mutants:
+            print(f"{mutant.name}  line {mutant.line}  {mutant.change}")
+        return
+    with tempfile.TemporaryDirectory() as temporary:
+        copies: queue.Queue[Path] = queue.Queue()
+        for job in range(arguments.jobs):
+            copies.put(_copy(Path(temporary) / str(job)))
+        first = copies.get()
+        _uses_the_copy(first)
+        needed = {package_of(m.module) for m in mutants}
+        if arguments.timeout is None:
+            times = _baseline(first, needed)
+            limits = {package: 3 * times[package] + 60 for package in needed}
+        else:
+            limits = dict.fromkeys(needed, arguments.timeout)
+        copies.put(first)
+
+        def run(mutant: Mutant) -> str:
+            copy = copies.get()
+            target = copy / "veronte4x" / mutant.module
+            original = target.read_text()
+            target.write_text(mutated_source(PACKAGE / mutant.module, mutant.index))
+            try:
+                package = package_of(mutant.module)
+                tests = [str(target), *package_tests(package)]
+                outcome = _run(copy, tests, limits[package])
+            finally:
+                target.write_text(original)
+                copies.put(copy)
+            print(f"{outcome:8}  {mutant.name}  line {mutant.line}  {mutant.change}", flush=True)
+            return outcome
+
+        with ThreadPoolExecutor(arguments.jobs) as pool:
+            outcomes = list(pool.map(run, mutants))
+    text = report(list(zip(mutants, outcomes, strict=True)), arguments.seed)
+    print(text)
+    if arguments.report is not None:
+        arguments.report.write_text(text)
+
+
+if __name__ == "__main__":
+    main()
