@@ -87,10 +87,11 @@ def test_a_shared_file_is_served_until_its_last_user_is_done() -> None:
     assert server.read(request)[1].size is None
 
 
-def test_two_updates_of_one_image_at_once() -> None:
+@pytest.mark.parametrize("delay", [0.0, 0.005])
+def test_two_updates_of_one_image_at_once(delay: float) -> None:
     protocol = ClientProtocol()
     runner = ops.Runner(protocol, timeout=0.5)
-    escs = [SimulatedEsc(21, 0), SimulatedEsc(22, 1)]
+    escs = [SimulatedEsc(n, i, response_delay=delay) for i, n in enumerate((21, 22))]
     image = bytes(range(256)) * 4 + b"end"
     seen: dict[int, list[Any]] = {21: [], 22: []}
     updates = [
