@@ -28,11 +28,14 @@ import argparse
 import functools
 import os
 import platform
+import socket
+import subprocess
 import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from typing import Any
 
 import can
 
@@ -63,6 +66,30 @@ def bench_bus(escs: int, delay: float) -> Iterator[BusClient]:
             thread.join()
 
 
+@contextmanager
+def process_bus(escs: int) -> Iterator[BusClient]:
+    """``escs`` simulated ESCs in another process (``veronte4x simulate esc``) on a
+    udp_multicast bus, and a client for them: no interpreter shared between the two sides."""
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+        sock.bind(("", 0))
+        port = sock.getsockname()[1]
+    options = ["--interface", "udp_multicast", "--channel", "239.74.163.2"]
+    simulator = subprocess.Popen(
+        [sys.executable, "-m", "veronte4x", "simulate", "esc", "--nodes", f"21-{20 + escs}",
+         "--telem-frequency", "0", *options, "--bus-option", f"port={port}"],
+        stderr=subprocess.PIPE,
+        text=True,
+    )  # fmt: skip
+    try:
+        assert simulator.stderr is not None
+        simulator.stderr.readline()  # written once its bus is open
+        with can.Bus(interface="udp_multicast", channel="239.74.163.2", port=port) as bus:
+            yield BusClient(bus, timeout=2.0)
+    finally:
+        simulator.terminate()
+        simulator.wait(timeout=10)
+
+
 def max_wait() -> float:
     """The simulators' clock (the real one)."""
     return time.monotonic()
@@ -81,6 +108,11 @@ def main() -> int:
     parser.add_argument("--updates", type=int, default=4, help="ESCs updated")
     parser.add_argument("--image-kb", type=int, default=200, help="image size, kB")
     parser.add_argument(
+        "--processes",
+        action="store_true",
+        help="also with the ESCs in another process on udp_multicast (needs msgpack)",
+    )
+    parser.add_argument(
         "--node-delay",
         type=float,
         default=(0.0, 0.002),
@@ -93,7 +125,7 @@ def main() -> int:
     updated = nodes[: args.updates]
     image = bytes((i * 7 + i // 256) & 0xFF for i in range(args.image_kb * 1000))
     print(f"Python {sys.version.split()[0]} on {platform.machine()}, {os.cpu_count()} CPUs")
-    print(f"{'job':<58}  {'node by node':>12}  {'all at once':>11}  {'ratio':>6}")
+    print(f"{'job':<62}  {'node by node':>12}  {'all at once':>11}  {'ratio':>6}")
     jobs = {
         f"read every parameter of {len(nodes)} ESCs": (
             lambda client: [client.list_params(n) for n in nodes],
@@ -109,17 +141,26 @@ def main() -> int:
             ],
         ),
     }
-    for delay in args.node_delay:
+    setups: list[tuple[str, Callable[[], Any]]] = [
+        (
+            f"in-process, nodes answer in {delay * 1000:g} ms",
+            functools.partial(bench_bus, len(nodes), delay),
+        )
+        for delay in args.node_delay
+    ]
+    if args.processes:
+        setups.append(("ESCs in another process", functools.partial(process_bus, len(nodes))))
+    for setup, make_bus in setups:
         for job, ways in jobs.items():
             seconds = []
             for way in ways:
-                with bench_bus(len(nodes), delay) as client:  # fresh ESCs for each way
+                with make_bus() as client:  # fresh ESCs for each way
                     client.discover(1.1)  # every node heard once
                     seconds.append(timed(functools.partial(way, client)))
             one_by_one, at_once = seconds
-            row = f"{job}, nodes answer in {delay * 1000:g} ms"
+            row = f"{job}, {setup}"
             print(
-                f"{row:<58}  {one_by_one:>10.3f} s  {at_once:>9.3f} s  "
+                f"{row:<62}  {one_by_one:>10.3f} s  {at_once:>9.3f} s  "
                 f"{one_by_one / at_once:>5.2f}x"
             )
     return 0

@@ -369,6 +369,8 @@ class SimulatedEsc:
         if timestamp < self._start_time or self._in_bootloader:
             return
         self._advance(timestamp)
+        if can_id & _SERVICE and (can_id >> 8) & 0x7F != self._node_id:
+            return  # a service frame to another node (DroneCAN CAN ID: destination bits 8-14)
         transfer = self._reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return
@@ -625,3 +627,6 @@ class SimulatedEsc:
 
 
 _INDEX = {r.parameter: i for i, r in enumerate(parameters.PARAMETERS)}
+
+_SERVICE = 0x80
+"""The service-not-message bit of a DroneCAN CAN ID (bit 7)."""
