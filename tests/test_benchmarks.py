@@ -38,6 +38,11 @@ RUNS = [
         ],
         ["asammdf", "read_tables, 20000 frames", "LocalCluster 2 workers"],
     ),
+    (
+        "bench_fleet.py",
+        ["--escs", "2", "--updates", "2", "--image-kb", "2"],
+        ["read every parameter of 2 ESCs", "update 2 ESCs with a 2 kB image"],
+    ),
 ]
 
 

@@ -84,7 +84,7 @@ def test_node_ids_out_of_range_in_plain_words() -> None:
     result = veronte4x("esc", "info", "200")
     assert result.returncode == 2
     assert result.stderr.splitlines()[-1] == (
-        "veronte4x esc info: error: argument node: node id 200 is out of range: 1..127"
+        "veronte4x esc info: error: argument NODES: node id 200 is out of range: 1..127"
     )
     result = veronte4x("esc", "nodes", "--node-id", "0")
     assert result.returncode == 2

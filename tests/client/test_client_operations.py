@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from veronte4x import dronecan
-from veronte4x.client import FileServer, NoResponseError, ParameterError, Phase
+from veronte4x.client import FileServer, NoResponseError, ParameterError, Phase, paramfile
 from veronte4x.client import operations as ops
 from veronte4x.client.protocol import ClientProtocol
 from veronte4x.dronecan.image_crc import crc64we
@@ -87,10 +87,11 @@ def test_a_shared_file_is_served_until_its_last_user_is_done() -> None:
     assert server.read(request)[1].size is None
 
 
-def test_two_updates_of_one_image_at_once() -> None:
+@pytest.mark.parametrize("delay", [0.0, 0.005])
+def test_two_updates_of_one_image_at_once(delay: float) -> None:
     protocol = ClientProtocol()
     runner = ops.Runner(protocol, timeout=0.5)
-    escs = [SimulatedEsc(21, 0), SimulatedEsc(22, 1)]
+    escs = [SimulatedEsc(n, i, response_delay=delay) for i, n in enumerate((21, 22))]
     image = bytes(range(256)) * 4 + b"end"
     seen: dict[int, list[Any]] = {21: [], 22: []}
     updates = [
@@ -110,3 +111,50 @@ def test_two_updates_of_one_image_at_once() -> None:
     assert (
         protocol.files.read(dronecan.FileReadRequest(0, dronecan.Path(b"fw.bin")))[1].size is None
     )
+
+
+def test_a_node_that_falls_silent_mid_apply_is_not_saved() -> None:
+    """Two changes; the node answers the first set and its read-back, then falls silent: the
+    failure says what was set, and no ExecuteOpcode SAVE is ever sent."""
+    protocol = ClientProtocol()
+    runner = ops.Runner(protocol, timeout=0.2, retries=0)
+    esc = SimulatedEsc(21)
+    changes = [
+        paramfile.Change("esc_index", 0, dronecan.IntegerValue(3)),
+        paramfile.Change("zero_behavior", 0, dronecan.IntegerValue(1)),
+    ]
+    applied: list[str] = []
+    task = runner.start(ops.apply_changes(21, changes, applied), 0.0)
+    sent: list[Any] = []
+    reassembler = dronecan.Reassembler()
+    now = 0.0
+    while not task.done:
+        now += 0.01
+        frames = protocol.take_frames()
+        for frame in frames:
+            transfer = reassembler.feed(frame.can_id, frame.data, now)
+            if transfer is not None:
+                sent.append(transfer.message)
+        if len(applied) < 1 or now < 0.05:  # silent once esc_index is set and read back
+            for frame in frames:
+                esc.receive(frame.can_id, frame.data, now)
+            for frame in esc.poll(now):
+                runner.feed(protocol.receive(frame.can_id, frame.data, now), now)
+        runner.feed(protocol.poll(now), now)
+        assert now < 5
+    assert applied == ["esc_index"]
+    assert isinstance(task.error, NoResponseError)
+    assert not any(isinstance(m, dronecan.ExecuteOpcodeRequest) for m in sent)
+    assert esc.state.parameters["esc_index"] == 3 and esc.state.parameters["zero_behavior"] == 0
+
+
+def test_a_refused_value_stops_the_apply_before_the_save() -> None:
+    protocol = ClientProtocol()
+    runner = ops.Runner(protocol, timeout=0.2, retries=0)
+    esc = SimulatedEsc(21)
+    out_of_range = paramfile.Change("esc_index", 0, dronecan.IntegerValue(30))
+    task = runner.start(ops.apply_changes(21, [out_of_range]), 0.0)
+    for step in range(1, 5):
+        _exchange(protocol, runner, [esc], 0.01 * step)
+    with pytest.raises(ParameterError, match=r"^node 21: 30 is out of range for esc_index"):
+        task.result()

@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from veronte4x import dronecan
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.vertiq import ZeroBehavior
+from veronte4x.errors import EncodeError
 from veronte4x.simulator import (
     DEFAULT_MODEL,
     NO_PARAMETER,
@@ -320,3 +321,15 @@ def test_bad_frames_never_raise(frames: list[tuple[int, bytes]]) -> None:
     for i, (can_id, data) in enumerate(frames):
         esc.receive(can_id, data, i * 0.01)
         esc.poll(i * 0.01)
+
+
+def test_a_response_delay_holds_each_answer_and_each_read() -> None:
+    esc = SimulatedEsc(ESC, telem_frequency=0, response_delay=0.002)
+    esc.poll(0.0)
+    feed(esc, vertiq.get_parameter("esc_index"), 0.5)
+    assert esc.poll(0.501) == [] and esc.next_time() == pytest.approx(0.502)
+    (reply,) = decode(esc.poll(0.502))
+    assert reply.message.name == b"esc_index"
+    for bad in (-0.1, float("nan"), True):
+        with pytest.raises(EncodeError, match="response_delay"):
+            SimulatedEsc(ESC, response_delay=bad)

@@ -24,18 +24,19 @@ from veronte4x.cli.exit_codes import (
     EXIT_INTERRUPTED,
     EXIT_NO_ANSWER,
     EXIT_OK,
-    EXIT_REFUSED,
     EXIT_USAGE,
 )
+from veronte4x.cli.fleet import each, exit_code, node_list, resolve, total
 from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.client import operations, paramfile
 from veronte4x.client.errors import (
     ClientError,
-    FirmwareUpdateError,
     InvalidRequestError,
     NoResponseError,
 )
 from veronte4x.client.firmware import MAX_IMAGE_SIZE, Phase, UpdateProgress, check_image
 from veronte4x.client.nodes import NodeEntry
+from veronte4x.client.operations import Operation
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
 from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
@@ -45,6 +46,7 @@ from veronte4x.dronecan.messages import (
     EscStatus,
     GetNodeInfoResponse,
     IntegerValue,
+    Opcode,
     SoftwareVersionFlag,
 )
 from veronte4x.dronecan.transfer import Transfer
@@ -81,6 +83,28 @@ def add_parser(commands: Any) -> None:
 
     params = action("params", "every parameter: name, value, default, range", _params)
     _node(params)
+    params.add_argument(
+        "--save",
+        metavar="FILE",
+        help="write every parameter of each node, with its name and unique id, to a TOML file",
+    )
+
+    apply = action(
+        "apply",
+        "restore parameters saved by params --save: diff, check, set, read back, save",
+        _apply,
+    )
+    apply.add_argument("file", help="a file written by: veronte4x esc params NODES --save FILE")
+    apply.add_argument("nodes", type=node_list, metavar="NODES", help=_NODES_HELP)
+    apply.add_argument("--dry-run", action="store_true", help="show what would change; send no set")
+    apply.add_argument(
+        "--from",
+        dest="source",
+        type=node_id,
+        metavar="NODE",
+        help="apply the file's parameters of NODE (e.g. onto a replacement with another id)",
+    )
+    _options(apply)
 
     get = action("get", "read one parameter by name (or by index with --by-index)", _get)
     _node(get)
@@ -108,8 +132,11 @@ def add_parser(commands: Any) -> None:
     update = action(
         "update", "update the firmware: the node pulls the image via file.Read", _update
     )
-    update.add_argument("node", type=node_id, help="node id, 1..127")
+    update.add_argument("nodes", type=node_list, metavar="NODES", help=_NODES_HELP)
     update.add_argument("firmware", help="firmware image file")
+    update.add_argument(
+        "--force", action="store_true", help="update a node that reports the image's CRC already"
+    )
     update.add_argument("--path", help="name the node is told to read (default: the file name)")
     update.add_argument("--start-timeout", type=float, default=10.0, metavar="S")
     update.add_argument("--read-timeout", type=float, default=5.0, metavar="S")
@@ -124,7 +151,9 @@ def add_parser(commands: Any) -> None:
     _options(update)
 
     spin = action("spin", "spin motors with RawCommand at a rate (needs --yes)", _spin)
-    spin.add_argument("nodes", type=node_id, nargs="+", metavar="NODE", help="node ids")
+    spin.add_argument(
+        "nodes", type=node_list, nargs="+", metavar="NODES", help="node ids or ranges (not all)"
+    )
     spin.add_argument("--throttle", type=float, required=True, help="fraction in [-1, 1]")
     spin.add_argument("--duration", type=float, required=True, metavar="S", help="seconds")
     spin.add_argument("--rate", type=float, default=50.0, help="commands per second (50)")
@@ -192,8 +221,11 @@ def _parameter(args: argparse.Namespace) -> tuple[str | None, int | None]:
     return args.name, None
 
 
+_NODES_HELP = "node id, list or range: 21, 21,22, 21-28, or all (those that answer)"
+
+
 def _node(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", type=node_id, help="node id, 1..127")
+    parser.add_argument("nodes", type=node_list, metavar="NODES", help=_NODES_HELP)
     _options(parser)
 
 
@@ -242,21 +274,9 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
                 first_transfer_id=random.randrange(32),
             )
             return action(client, args)
-        except NoResponseError as error:
+        except (ClientError, EncodeError) as error:
             _error(str(error))
-            return EXIT_NO_ANSWER
-        except FirmwareUpdateError as error:
-            _error(str(error))
-            return EXIT_NO_ANSWER if error.timed_out else EXIT_REFUSED
-        except InvalidRequestError as error:
-            _error(str(error))
-            return EXIT_USAGE
-        except ClientError as error:
-            _error(str(error))
-            return EXIT_REFUSED
-        except EncodeError as error:
-            _error(str(error))
-            return EXIT_USAGE
+            return exit_code(error)
         except KeyboardInterrupt:
             _error("interrupted")
             return EXIT_INTERRUPTED
@@ -353,22 +373,23 @@ def _info_dict(node_id: int, info: GetNodeInfoResponse) -> dict[str, Any]:
 
 
 def _info(client: BusClient, args: argparse.Namespace) -> int:
-    data = _info_dict(args.node, client.node_info(args.node))
-    if args.json:
-        _print_json(data)
-        return EXIT_OK
+    return each(client, args, operations.node_info, _info_text, _info_dict)
+
+
+def _info_text(node: int, info: GetNodeInfoResponse) -> str:
+    data = _info_dict(node, info)
     sw, hw = data["software_version"], data["hardware_version"]
-    print(f"node {args.node}: {data['name']}")
-    print(
-        f"  status    health {data['health']}, mode {data['mode']}, uptime {data['uptime_sec']} s"
+    return "\n".join(
+        [
+            f"node {node}: {data['name']}",
+            f"  status    health {data['health']}, mode {data['mode']}, "
+            f"uptime {data['uptime_sec']} s",
+            f"  software  {sw['major']}.{sw['minor']}, vcs commit "
+            f"{'-' if sw['vcs_commit'] is None else format(sw['vcs_commit'], '#010x')}, "
+            f"image CRC {sw['image_crc'] or '-'}",
+            f"  hardware  {hw['major']}.{hw['minor']}, unique id {hw['unique_id']}",
+        ]
     )
-    print(
-        f"  software  {sw['major']}.{sw['minor']}, vcs commit "
-        f"{'-' if sw['vcs_commit'] is None else format(sw['vcs_commit'], '#010x')}, "
-        f"image CRC {sw['image_crc'] or '-'}"
-    )
-    print(f"  hardware  {hw['major']}.{hw['minor']}, unique id {hw['unique_id']}")
-    return EXIT_OK
 
 
 # -- parameters --------------------------------------------------------------------------------
@@ -386,61 +407,116 @@ def _show(p: ParameterInfo) -> str:
 
 
 def _params(client: BusClient, args: argparse.Namespace) -> int:
-    found = client.list_params(args.node)
-    if args.json:
-        _print_json([p.as_dict() for p in found])
-        return EXIT_OK
+    if args.save:
+        return _save_file(client, args)
+    return each(
+        client,
+        args,
+        operations.list_params,
+        lambda node, found: _table(found, None if args.nodes.single else node),
+        lambda node, found: (
+            [p.as_dict() for p in found]
+            if args.nodes.single
+            else {"parameters": [p.as_dict() for p in found]}
+        ),
+    )
+
+
+def _table(found: list[ParameterInfo], node: int | None) -> str:
     width = max((len(p.name) for p in found), default=4)
-    print(f"{'index':>5}  {'name':<{width}}  {'value':>10}  {'default':>10}  range")
+    lines = [] if node is None else [f"node {node}:"]
+    lines.append(f"{'index':>5}  {'name':<{width}}  {'value':>10}  {'default':>10}  range")
     for p in found:
-        print(
+        lines.append(
             f"{p.index:>5}  {p.name:<{width}}  {plain(p.value)!s:>10}  "
             f"{plain(p.default)!s:>10}  {_range(p)}"
         )
+    return "\n".join(lines)
+
+
+def _save_file(client: BusClient, args: argparse.Namespace) -> int:
+    nodes = resolve(client, args.nodes)
+    tasks = client.run_all([operations.read_node(node) for node in nodes])
+    failed = [(node, t.error) for node, t in zip(nodes, tasks, strict=True) if t.error]
+    for node, error in failed:
+        _error(f"node {node}: {error}")
+    if failed:
+        _error(f"nothing written to {args.save}: {total(len(nodes), [n for n, _ in failed])}")
+        return exit_code(failed[0][1])
+    saved = [t.result() for t in tasks]
+    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    text = paramfile.dumps(saved, f"veronte4x esc params --save, {stamp}")
+    Path(args.save).write_text(text, encoding="utf-8")
+    count = sum(len(n.parameters) for n in saved)
+    summary = {"file": args.save, "nodes": [n.node_id for n in saved], "parameters": count}
+    if args.json:
+        _print_json(summary)
+    else:
+        print(f"saved {count} parameters of node{'s' * (len(saved) > 1)} "
+              f"{', '.join(str(n.node_id) for n in saved)} to {args.save}")  # fmt: skip
     return EXIT_OK
+
+
+def _one_node(args: argparse.Namespace) -> str:
+    return "" if args.nodes.single else "node {node}: "
 
 
 def _get(client: BusClient, args: argparse.Namespace) -> int:
     name, index = _parameter(args)
-    p = client.get_param(args.node, name, index=index)
-    if args.json:
-        _print_json(p.as_dict())
-    else:
-        print(_show(p))
-    return EXIT_OK
+    prefix = _one_node(args)
+    return each(
+        client,
+        args,
+        lambda node: operations.get_param(node, name, index=index),
+        lambda node, p: prefix.format(node=node) + _show(p),
+        lambda node, p: p.as_dict(),
+    )
 
 
 def _set(client: BusClient, args: argparse.Namespace) -> int:
     name, index = _parameter(args)
-    p = client.set_param(args.node, name, args.value, index=index)
-    if args.json:
-        _print_json(p.as_dict())
-    else:
-        print(_show(p))
-    return EXIT_OK
+    prefix = _one_node(args)
+    return each(
+        client,
+        args,
+        lambda node: operations.set_param(node, name, args.value, index=index),
+        lambda node, p: prefix.format(node=node) + _show(p),
+        lambda node, p: p.as_dict(),
+    )
 
 
-def _done(args: argparse.Namespace, what: str) -> int:
-    if args.json:
-        _print_json({"node_id": args.node, "ok": True})
-    else:
-        print(f"node {args.node}: {what}")
-    return EXIT_OK
+def _done(client: BusClient, args: argparse.Namespace, make: Any, what: str) -> int:
+    return each(
+        client,
+        args,
+        make,
+        lambda node, _: f"node {node}: {what}",
+        lambda node, _: {"node_id": node, "ok": True},
+    )
 
 
 def _save(client: BusClient, args: argparse.Namespace) -> int:
-    client.save_params(args.node)
-    return _done(args, "parameters saved")
+    return _done(
+        client, args, lambda node: operations.opcode(node, Opcode.SAVE), "parameters saved"
+    )
 
 
 def _erase(client: BusClient, args: argparse.Namespace) -> int:
-    client.erase_params(args.node)
-    return _done(args, "stored parameters erased (defaults after a restart)")
+    return _done(
+        client,
+        args,
+        lambda node: operations.opcode(node, Opcode.ERASE),
+        "stored parameters erased (defaults after a restart)",
+    )
 
 
 def _restart(client: BusClient, args: argparse.Namespace) -> int:
-    client.restart(args.node, bootloader=args.bootloader)
-    return _done(args, "restarting" + (" into the bootloader" if args.bootloader else ""))
+    return _done(
+        client,
+        args,
+        lambda node: operations.restart(node, bootloader=args.bootloader),
+        "restarting" + (" into the bootloader" if args.bootloader else ""),
+    )
 
 
 # -- firmware update ---------------------------------------------------------------------------
@@ -476,12 +552,12 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
             f"the path the node is told to read has more than {MAX_PATH} bytes; "
             "give a shorter one with --path"
         )
-    tty = sys.stderr.isatty()
-    shown = {"phase": Phase.STARTING, "tenth": -1}
+    tty = sys.stderr.isatty() and args.nodes.single
+    shown: dict[int, tuple[Phase, int]] = {}
 
     def progress(p: UpdateProgress) -> None:
         tenth = 10 * p.sent // max(1, p.size)
-        if p.phase is not shown["phase"] or tenth != shown["tenth"] or tty:
+        if shown.get(p.node_id) != (p.phase, tenth) or tty:
             end = "\r" if tty and p.phase is Phase.READING else "\n"
             print(
                 f"node {p.node_id}: {p.phase.value}, {p.sent} of {p.size} bytes",
@@ -489,30 +565,152 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
                 file=sys.stderr,
                 flush=True,
             )
-        shown["phase"], shown["tenth"] = p.phase, tenth
+        shown[p.node_id] = (p.phase, tenth)
 
-    info = client.update_firmware(
-        args.node,
-        image,
-        path,
-        progress=None if args.json else progress,
-        start_timeout=args.start_timeout,
-        read_timeout=args.read_timeout,
-        restart_timeout=args.restart_timeout,
-        max_image_size=args.max_image_size,
-    )
     crc = crc64we(image)
-    data = _info_dict(args.node, info)
-    data.update(image=path, image_bytes=len(image), image_crc64we=f"{crc:#018x}")
-    if args.json:
-        _print_json(data)
-    else:
-        reported = data["software_version"]["image_crc"]
-        print(
-            f"node {args.node}: updated with {path} ({len(image)} bytes, CRC-64-WE {crc:#018x}); "
-            + ("the node reports the same CRC" if reported else "the node reports no image CRC")
+
+    def make(node: int) -> Operation[tuple[bool, GetNodeInfoResponse]]:
+        return operations.update_unless_current(
+            client.protocol,
+            node,
+            image,
+            path,
+            force=args.force,
+            progress=None if args.json else progress,
+            start_timeout=args.start_timeout,
+            read_timeout=args.read_timeout,
+            restart_timeout=args.restart_timeout,
+            max_image_size=args.max_image_size,
         )
-    return EXIT_OK
+
+    def data(node: int, outcome: tuple[bool, GetNodeInfoResponse]) -> dict[str, Any]:
+        updated, info = outcome
+        result = _info_dict(node, info)
+        result.update(
+            updated=updated, image=path, image_bytes=len(image), image_crc64we=f"{crc:#018x}"
+        )
+        return result
+
+    def text(node: int, outcome: tuple[bool, GetNodeInfoResponse]) -> str:
+        if not outcome[0]:
+            return (
+                f"node {node}: skipped, it runs {path} already (image CRC {crc:#018x}); "
+                "--force updates anyway"
+            )
+        reported = data(node, outcome)["software_version"]["image_crc"]
+        return f"node {node}: updated with {path} ({len(image)} bytes, CRC-64-WE {crc:#018x}); " + (
+            "the node reports the same CRC" if reported else "the node reports no image CRC"
+        )
+
+    return each(client, args, make, text, data)
+
+
+# -- apply -------------------------------------------------------------------------------------
+
+
+def _apply(client: BusClient, args: argparse.Namespace) -> int:
+    saved = paramfile.loads(_read_text(args.file))
+    nodes = resolve(client, args.nodes)
+    reads = client.run_all([operations.read_node(node) for node in nodes])
+    failed = [(node, t.error) for node, t in zip(nodes, reads, strict=True) if t.error]
+    if failed:
+        for node, error in failed:
+            _error(f"node {node}: {error}")
+        _error("nothing was set: every node must answer before any is changed")
+        return exit_code(failed[0][1])
+    plans: dict[int, list[paramfile.Change]] = {}
+    for node, task in zip(nodes, reads, strict=True):
+        current = task.result()
+        entry = _entry_for(saved, current, args.source)
+        plans[node] = paramfile.plan(node, entry, list(current.parameters))
+        if not args.json:
+            for change in plans[node]:
+                print(f"node {node}: {change.name} {change.current} -> {plain(change.wanted)}")
+            if entry.node_id != node:
+                print(f"node {node}: the file's parameters of node {entry.node_id}")
+    if args.dry_run:
+        if args.json:
+            _print_json({str(n): [_change(c) for c in plans[n]] for n in nodes})
+        else:
+            count = sum(map(len, plans.values()))
+            print(f"dry run: {count} parameter{'s' * (count != 1)} would change; none set")
+        return EXIT_OK
+    applied: dict[int, list[str]] = {node: [] for node in nodes}
+    tasks = client.run_all(
+        [operations.apply_changes(node, plans[node], applied[node]) for node in nodes]
+    )
+    rows: list[dict[str, Any]] = []
+    code = EXIT_OK
+    for node, task in zip(nodes, tasks, strict=True):
+        changes = plans[node]
+        if task.error is None:
+            line = (
+                f"node {node}: {len(changes)} set, read back and saved"
+                if changes
+                else f"node {node}: as in the file, nothing set"
+            )
+            rows.append({"node_id": node, "ok": True, "set": [c.name for c in changes]})
+        else:
+            done = applied[node]
+            code = code or exit_code(task.error)
+            line = (
+                f"node {node}: failed after setting {', '.join(done) or 'nothing'}: "
+                f"{task.error}; not saved"
+            )
+            rows.append({"node_id": node, "ok": False, "set": done, "error": str(task.error)})
+        if not args.json:
+            print(line)
+    failed_ids = [row["node_id"] for row in rows if not row["ok"]]
+    if args.json:
+        _print_json({"nodes": rows, "total": len(rows), "failed": failed_ids})
+    else:
+        print(total(len(rows), failed_ids))
+    return code
+
+
+def _read_text(file: str) -> str:
+    try:
+        with open(file, encoding="utf-8") as stream:
+            return stream.read()
+    except UnicodeDecodeError:
+        raise paramfile.ParameterFileError(f"{file} is not a UTF-8 text file") from None
+
+
+def _change(change: paramfile.Change) -> dict[str, Any]:
+    return {"name": change.name, "current": change.current, "wanted": plain(change.wanted)}
+
+
+def _entry_for(
+    saved: list[paramfile.NodeParameters], node: paramfile.NodeParameters, source: int | None
+) -> paramfile.NodeParameters:
+    """The file's parameters for ``node``: of ``source`` if given, else of the same unique id,
+    else of the same node id, else the file's only node (a replacement).
+
+    Raises:
+        ParameterFileError: None fits, or the file's node has another name.
+    """
+    entry = None
+    if source is not None:
+        entry = next((e for e in saved if e.node_id == source), None)
+        if entry is None:
+            raise paramfile.ParameterFileError(f"the file has no parameters of node {source}")
+    else:
+        entry = next((e for e in saved if e.unique_id == node.unique_id), None)
+        if entry is None:
+            entry = next((e for e in saved if e.node_id == node.node_id), None)
+        if entry is None and len(saved) == 1:
+            entry = saved[0]
+    if entry is None:
+        raise paramfile.ParameterFileError(
+            f"the file has no parameters of node {node.node_id} (it has nodes "
+            f"{', '.join(str(e.node_id) for e in saved)}); choose one with --from"
+        )
+    if entry.name and entry.name != node.name:
+        raise paramfile.ParameterFileError(
+            f"node {node.node_id} is {node.name!r}, the file's node {entry.node_id} is "
+            f"{entry.name!r}: not applied"
+        )
+    return entry
 
 
 # -- spin -----------------------------------------------------------------------------------------
@@ -533,8 +731,13 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
     for option in ("silence", "rate", "watchdog"):
         if not 0 < getattr(args, option) < float("inf"):
             raise InvalidRequestError(f"--{option} {getattr(args, option):g} must be above 0")
+    if any(given.every for given in args.nodes):
+        raise InvalidRequestError("esc spin needs the nodes named: 'all' is refused")
+    nodes: list[int] = []
+    for given in args.nodes:
+        nodes += [n for n in given.ids if n not in nodes]
     indices = {}
-    for node in args.nodes:
+    for node in nodes:
         value = client.get_param(node, vertiq.Parameter.ESC_INDEX.value).value
         if not isinstance(value, IntegerValue):
             raise InvalidRequestError(
@@ -543,9 +746,9 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
         indices[node] = value.value
     setpoint = {index: args.throttle for index in indices.values()}
     signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
-    rpm: dict[int, list[int]] = {node: [] for node in args.nodes}
+    rpm: dict[int, list[int]] = {node: [] for node in nodes}
     monitor = SpinMonitor(
-        args.nodes,
+        nodes,
         client.clock(),
         silence=args.silence,
         max_temperature=args.max_temperature,
@@ -587,7 +790,7 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
             "peak_rpm": max(rpm[node], key=abs, default=None),
             "telemetry": len(rpm[node]),
         }
-        for node in args.nodes
+        for node in nodes
     ]
     if args.json:
         _print_json(summary)

@@ -10,19 +10,18 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.fleet import node_list
 from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.extras import require
 from veronte4x.simulator.esc import COMMAND_TIMEOUT
 
 
 def _node_list(text: str) -> list[int]:
-    try:
-        nodes = [int(part) for part in text.split(",")]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a list of node ids") from None
-    if not nodes or any(not 1 <= n <= 127 for n in nodes) or len(set(nodes)) != len(nodes):
-        raise argparse.ArgumentTypeError(f"{text!r}: distinct node ids in 1..127 expected")
-    return nodes
+    """Node ids and ranges, e.g. ``21,22`` or ``21-28`` (not ``all``: nothing to discover)."""
+    nodes = node_list(text)
+    if nodes.every:
+        raise argparse.ArgumentTypeError("name the simulated nodes, e.g. 21,22 or 21-28")
+    return list(nodes.ids)
 
 
 def _not_negative(text: str) -> float:
@@ -55,7 +54,10 @@ def add_parser(commands: Any) -> None:
         "restart and firmware update, on any python-can bus.",
     )
     esc.add_argument(
-        "--nodes", type=_node_list, default=[21], help="node ids, e.g. 21,22 (esc_index 0, 1...)"
+        "--nodes",
+        type=_node_list,
+        default=[21],
+        help="node ids, e.g. 21,22 or 21-28 (esc_index 0, 1...)",
     )
     esc.add_argument("--telem-frequency", type=int, default=10, metavar="HZ")
     esc.add_argument(

@@ -48,6 +48,7 @@ from veronte4x.client.firmware import (
     check_image,
 )
 from veronte4x.client.nodes import NodeEntry
+from veronte4x.client.paramfile import Change, NodeParameters
 from veronte4x.client.params import ParameterInfo, parameter_request, plain
 from veronte4x.client.protocol import ClientProtocol, Event, FileServed, StatusSeen
 from veronte4x.dronecan import vertiq
@@ -476,3 +477,91 @@ def update_firmware(
             f"image's CRC-64-WE is {expected:#018x}"
         )
     return info
+
+
+# -- fleet operations --------------------------------------------------------------------------
+
+
+def read_node(node_id: int) -> Operation[NodeParameters]:
+    """GetNodeInfo and every parameter of a node: what a parameter file keeps of it."""
+    info = yield from node_info(node_id)
+    found = yield from list_params(node_id)
+    version = info.software_version
+    crc = (
+        f"{version.image_crc:#018x}"
+        if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC
+        else None
+    )
+    return NodeParameters(
+        node_id,
+        info.name.decode("utf-8", "replace"),
+        info.hardware_version.unique_id.hex(),
+        f"{version.major}.{version.minor}",
+        crc,
+        tuple(found),
+    )
+
+
+def apply_changes(
+    node_id: int, changes: Sequence[Change], applied: list[str] | None = None
+) -> Operation[list[ParameterInfo]]:
+    """Set each change, read it back, then save (ExecuteOpcode SAVE) only when every set
+    succeeded; ``applied`` collects the names set so far, so that a failure can say how far
+    it got.
+
+    Raises:
+        RejectedError: A value read back differs from the one set.
+    """
+    done = []
+    for change in changes:
+        yield from set_param(node_id, change.name, change.wanted)
+        back = yield from get_param(node_id, change.name)
+        if plain(back.value) != plain(change.wanted):
+            raise RejectedError(
+                f"node {node_id} reads {change.name} back as {plain(back.value)!r}, "
+                f"not {plain(change.wanted)!r}"
+            )
+        done.append(back)
+        if applied is not None:
+            applied.append(change.name)
+    if changes:
+        yield from opcode(node_id, Opcode.SAVE)
+    return done
+
+
+def update_unless_current(
+    protocol: ClientProtocol,
+    node_id: int,
+    image: bytes,
+    path: str = "firmware.bin",
+    *,
+    force: bool = False,
+    progress: Callable[[UpdateProgress], object] | None = None,
+    start_timeout: float = START_TIMEOUT,
+    read_timeout: float = READ_TIMEOUT,
+    restart_timeout: float = RESTART_TIMEOUT,
+    max_image_size: int = MAX_IMAGE_SIZE,
+) -> Operation[tuple[bool, GetNodeInfoResponse]]:
+    """`update_firmware`, unless the node reports the image's CRC already (``force`` updates
+    anyway); returns whether it updated, and the node's GetNodeInfo."""
+    check_image(image, max_image_size)
+    info = yield from node_info(node_id)
+    version = info.software_version
+    if (
+        not force
+        and version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC
+        and version.image_crc == crc64we(image)
+    ):
+        return False, info
+    info = yield from update_firmware(
+        protocol,
+        node_id,
+        image,
+        path,
+        progress=progress,
+        start_timeout=start_timeout,
+        read_timeout=read_timeout,
+        restart_timeout=restart_timeout,
+        max_image_size=max_image_size,
+    )
+    return True, info

@@ -184,6 +184,10 @@ class SimulatedEsc:
             bytes. None (the default) for a module that does not hang.
         priority: CAN priority of the messages it publishes, 0 (highest) to 31.
         model: The motor model's constants.
+        response_delay: Seconds the module takes to act on a request: to answer it, and
+            during a firmware update to write a chunk before reading the next (0: at the
+            poll after the request). A load to test ground tools and benchmarks with; Vertiq's
+            document gives no figure.
         command_timeout: Seconds a RawCommand setpoint holds without a new command
             (`COMMAND_TIMEOUT`); then a zero setpoint takes over, as when a ground tool is
             killed or loses the bus. None never times out (a fault to test with).
@@ -208,6 +212,7 @@ class SimulatedEsc:
         model: MotorModel = DEFAULT_MODEL,
         update_stall_offset: int | None = None,
         command_timeout: float | None = COMMAND_TIMEOUT,
+        response_delay: float = 0.0,
     ) -> None:
         given = (
             ("node_id", node_id),
@@ -231,6 +236,17 @@ class SimulatedEsc:
             )
         self._command_timeout = command_timeout
         self._command_deadline: float | None = None
+        if (
+            isinstance(response_delay, bool)
+            or not isinstance(response_delay, (int, float))
+            or not (math.isfinite(response_delay) and response_delay >= 0)
+        ):
+            raise EncodeError(
+                "SimulatedEsc", "response_delay", response_delay, "seconds, 0 or above"
+            )
+        self._delay = float(response_delay)
+        self._later: list[tuple[float, list[Frame]]] = []
+        self._read_at: float | None = None
         self._values = list(self._defaults)
         self._supports_firmware_update = supports_firmware_update
         self._model = model
@@ -318,6 +334,7 @@ class SimulatedEsc:
         self._firmware_source: tuple[int, bytes] | None = None
         self._in_bootloader = False
         self._pull: _Pull | None = None
+        self._read_at = None
         self._requester = Requester(self._node_id, priority=self._priority)
         self._reassembler = Reassembler()
         self._transfer_ids: dict[type, int] = {NodeStatus: 0, EscStatus: 0, Temperature: 0}
@@ -335,6 +352,7 @@ class SimulatedEsc:
         timestamp = check_seconds("power_cycle", "timestamp", timestamp)
         self._advance(timestamp)
         self._outbox.clear()
+        self._later.clear()
         self._boot(timestamp)
 
     # -- input ------------------------------------------------------------------------------
@@ -351,6 +369,8 @@ class SimulatedEsc:
         if timestamp < self._start_time or self._in_bootloader:
             return
         self._advance(timestamp)
+        if can_id & _SERVICE and (can_id >> 8) & 0x7F != self._node_id:
+            return  # a service frame to another node (DroneCAN CAN ID: destination bits 8-14)
         transfer = self._reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return
@@ -399,13 +419,17 @@ class SimulatedEsc:
             reply = self._begin_firmware_update(message, request.source_node_id)
         else:
             return  # a request this module does not serve: no answer, as on a real node
-        self._outbox += encode(
+        frames = encode(
             reply,
             source_node_id=self._node_id,
             destination_node_id=request.source_node_id,
             transfer_id=request.transfer_id,
             priority=request.priority,
         )
+        if self._delay:
+            self._later.append((timestamp + self._delay, frames))
+        else:
+            self._outbox += frames
         if after == RESTART_MAGIC:
             self._boot(timestamp)
         elif after == BOOTLOADER_MAGIC:
@@ -481,6 +505,9 @@ class SimulatedEsc:
                 return
             pull.crc = crc64we(message.data, pull.crc)
             pull.received += len(message.data)
+            if self._delay and len(message.data) == FileReadResponse.MAX_DATA:
+                self._read_at = timestamp + self._delay  # writing the chunk
+                return
             if len(message.data) < FileReadResponse.MAX_DATA:
                 self._software_version = SoftwareVersion(
                     major=SOFTWARE_VERSION.major,
@@ -540,6 +567,11 @@ class SimulatedEsc:
         self._advance(timestamp)
         if self._pull is not None and not self._in_bootloader and self._requester.poll(timestamp):
             self._boot(timestamp)  # the file server stopped answering: back to the old firmware
+        if self._read_at is not None and self._read_at <= timestamp and not self._in_bootloader:
+            self._read_at = None
+            self._read_next(timestamp)
+        while self._later and self._later[0][0] <= timestamp:
+            self._outbox += self._later.pop(0)[1]
         self._outbox += self._requester.take_frames()
         frames = self._outbox
         self._outbox = []
@@ -579,10 +611,12 @@ class SimulatedEsc:
         if self._outbox:
             return self._now
         if self._in_bootloader:
-            return None
+            return self._later[0][0] if self._later else None
         times = [
             t
             for t in (
+                self._later[0][0] if self._later else None,
+                self._read_at,
                 self._node_status.next_time,
                 self._telemetry.next_time,
                 self._requester.next_deadline(),
@@ -593,3 +627,6 @@ class SimulatedEsc:
 
 
 _INDEX = {r.parameter: i for i, r in enumerate(parameters.PARAMETERS)}
+
+_SERVICE = 0x80
+"""The service-not-message bit of a DroneCAN CAN ID (bit 7)."""
