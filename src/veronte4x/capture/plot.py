@@ -57,7 +57,6 @@ class Timeline:
         return not self.scores and not self.selected[0]
 
 
-
 def timeline(records: Iterable[Record]) -> Timeline:
     """Gather scores, selection, dead and maintenance periods from records, in time order."""
     out = Timeline()
