@@ -32,7 +32,7 @@ allow_excess = true
 
 [[veronte.layouts]]
 command = 9
-name = "Temperature"
+name = "CellTemperature"
 byte_order = "big"
 fields = [
     { kind = "unsigned", name = "sensor", bits = 4 },
@@ -51,7 +51,7 @@ enabled = false
     assert bus.allow_excess is True
     assert bus.dronecan is False
     message = bus.codec().decode(bytes.fromhex("093ff681"), sender=codec.Sender.AUTOPILOT)
-    assert type(message).__name__ == "Temperature"
+    assert type(message).__name__ == "CellTemperature"
     assert (message.sensor, round(message.celsius, 1)) == (3, -1.0)  # type: ignore[attr-defined]
 
 
@@ -63,7 +63,7 @@ enabled = false
         ("[veronte]\nautopilot_ids = [1, 2]\n", "autopilot_ids needs 4 IDs"),
         ("[veronte]\nautopilot_ids = [1, 2, 3, 255]\n", "CAN ID 255 is given to two"),
         ("[veronte]\nextended = 1\n", "extended: 1 is not true or false"),
-        ("[veronte]\npwm_packing = 'sideways'\n", "bus map: 'sideways' is not a valid PwmPacking"),
+        ("[veronte]\npwm_packing = 'sideways'\n", "'sideways' is not one of lsb_first"),
         ("[[veronte.layouts]]\ncommand = 2\nname = 'X'\n", "command 2 has a public layout"),
         ("x = [", "bus.toml"),
     ],

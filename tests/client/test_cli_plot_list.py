@@ -74,7 +74,7 @@ def test_list_json_with_a_bus_map(tmp_path: Path) -> None:
     bus_map = tmp_path / "bus.toml"
     bus_map.write_text(
         "[veronte]\narbiter_id = 0x100\nautopilot_ids = [0x101, 0x102, 0x103, 0x104]\n\n"
-        "[[veronte.layouts]]\ncommand = 9\nname = 'Temperature'\n"
+        "[[veronte.layouts]]\ncommand = 9\nname = 'CellTemperature'\n"
         "fields = [{ kind = 'unsigned', name = 'celsius', bits = 8 }]\n"
     )
     result = veronte4x("list", "--bus-map", str(bus_map), "--json")
@@ -82,7 +82,7 @@ def test_list_json_with_a_bus_map(tmp_path: Path) -> None:
     listed = json.loads(result.stdout)
     assert listed["veronte"]["ids"]["arbiter"] == "100"
     by_command = {m["command"]: m for m in listed["veronte"]["messages"]}
-    assert by_command[9]["message"] == "Temperature"
+    assert by_command[9]["message"] == "CellTemperature"
     assert by_command[9]["fields"] == ["command", "celsius"]
     assert {t["type"] for t in listed["dronecan"]} >= {
         "uavcan.protocol.param.ExecuteOpcode",

@@ -30,6 +30,7 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 from __future__ import annotations
 
 import enum
+import math
 import os
 import sys
 from collections.abc import Mapping
@@ -131,46 +132,74 @@ class BusMap:
 
     @classmethod
     def from_dict(cls, document: Mapping[str, Any]) -> BusMap:
-        """Build a bus map from the parsed TOML document.
+        """Build a bus map from the parsed TOML document, checking every key and value.
 
         Raises:
-            BusMapError: Unknown keys, wrong types or bad layouts.
+            BusMapError: Unknown keys, wrong types or bad layouts; the message names the key.
         """
-        _only(document, {"veronte", "dronecan"}, "top level")
-        veronte = dict(document.get("veronte", {}))
+        top = _table(document, "the bus map")
+        _only(top, {"veronte", "dronecan"}, "top level")
+        veronte = _table(top.get("veronte", {}), "[veronte]")
         _only(
             veronte,
             {"arbiter_id", "autopilot_ids", "extended", "pwm_packing", "allow_excess", "layouts"},
             "[veronte]",
         )
-        dronecan = dict(document.get("dronecan", {}))
+        dronecan = _table(top.get("dronecan", {}), "[dronecan]")
         _only(dronecan, {"enabled"}, "[dronecan]")
         default = cls()
+        ids = tuple(
+            _int(i, "[veronte] autopilot_ids")
+            for i in _list(veronte.get("autopilot_ids", []), "[veronte] autopilot_ids")
+        )
+        if ids and len(ids) != 4:
+            raise BusMapError("[veronte] autopilot_ids needs 4 IDs: AP1, AP2, AP3, external")
+        packing = veronte.get("pwm_packing", "lsb_first")
+        choices = [p.value for p in codec.PwmPacking]
+        if packing not in choices:
+            raise BusMapError(
+                f"[veronte] pwm_packing: {packing!r} is not one of {', '.join(choices)}"
+            )
+        decode_dronecan = _bool(dronecan.get("enabled", True), "[dronecan] enabled")
+        layouts = tuple(
+            _layout(_table(entry, f"[[veronte.layouts]] number {number}"), number)
+            for number, entry in enumerate(_list(veronte.get("layouts", []), "veronte.layouts"), 1)
+        )
+        _distinct_names(layouts)
         try:
-            ids = tuple(_int(i, "autopilot_ids") for i in veronte.get("autopilot_ids", ()))
-            if ids and len(ids) != 4:
-                raise BusMapError("autopilot_ids needs 4 IDs: AP1, AP2, AP3, external")
             bus_map = cls(
                 arbiter_id=_int(veronte.get("arbiter_id", default.arbiter_id), "arbiter_id"),
                 autopilot_ids=ids or default.autopilot_ids,  # type: ignore[arg-type]
                 extended=_bool(veronte.get("extended", False), "extended"),
-                pwm_packing=codec.PwmPacking(veronte.get("pwm_packing", "lsb_first")),
+                pwm_packing=codec.PwmPacking(packing),
                 allow_excess=_bool(veronte.get("allow_excess", False), "allow_excess"),
-                layouts=tuple(_layout(entry) for entry in veronte.get("layouts", ())),
-                dronecan=_bool(dronecan.get("enabled", True), "[dronecan] enabled"),
+                layouts=layouts,
+                dronecan=decode_dronecan,
             )
             bus_map.codec()  # declared layouts are checked against the built-in ones here
-            return bus_map
-        except (ValueError, TypeError, KeyError) as error:
+        except (ValueError, TypeError) as error:
             if isinstance(error, BusMapError):
                 raise
             raise BusMapError(f"bus map: {error}") from None
+        return bus_map
 
 
 def _only(table: Mapping[str, Any], allowed: set[str], where: str) -> None:
     unknown = set(table) - allowed
     if unknown:
-        raise BusMapError(f"unknown key(s) in {where}: {', '.join(sorted(unknown))}")
+        raise BusMapError(f"unknown key(s) in {where}: {', '.join(sorted(map(str, unknown)))}")
+
+
+def _table(value: Any, where: str) -> Mapping[str, Any]:
+    if not isinstance(value, Mapping):
+        raise BusMapError(f"{where}: {value!r} is not a table of keys")
+    return value
+
+
+def _list(value: Any, where: str) -> list[Any]:
+    if not isinstance(value, list):
+        raise BusMapError(f"{where}: {value!r} is not a list")
+    return value
 
 
 def _int(value: Any, name: str) -> int:
@@ -185,28 +214,139 @@ def _bool(value: Any, name: str) -> bool:
     return value
 
 
-def _layout(entry: Mapping[str, Any]) -> codec.Layout:
-    _only(entry, {"command", "name", "byte_order", "fields"}, "[[veronte.layouts]]")
-    fields = [_field(spec) for spec in entry.get("fields", ())]
-    order = codec.ByteOrder(entry.get("byte_order", "little"))
-    return codec.Layout(int(entry["command"]), str(entry["name"]), fields, order)
+def _integer(spec: Mapping[str, Any], key: str, where: str, default: int | None = None) -> int:
+    value = spec.get(key, default)
+    if value is None:
+        raise BusMapError(f"{where}: {key} is missing")
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise BusMapError(f"{where}: {key} = {value!r} is not an integer")
+    return value
 
 
-def _field(spec: Mapping[str, Any]) -> codec.Field:
+def _text(spec: Mapping[str, Any], key: str, where: str) -> str:
+    value = spec.get(key)
+    if value is None:
+        raise BusMapError(f"{where}: {key} is missing")
+    if not isinstance(value, str):
+        raise BusMapError(f"{where}: {key} = {value!r} is not text")
+    return value
+
+
+def reserved_names() -> frozenset[str]:
+    """Names a declared layout may not take: the tables of `veronte4x.capture.read_tables`
+    that are not messages (``errors``, ``unknown``), and every built-in message class,
+    Veronte and DroneCAN (whose tables keep their names whether DroneCAN is decoded or not)."""
+    from veronte4x.codec import layouts
+    from veronte4x.dronecan.definitions import DATA_TYPES
+
+    built_in = [layout.message for layout in layouts.ARBITRATION_AND_VERSION]
+    built_in += [layout.message for layout in layouts.PWM_SET.values()]
+    built_in += list(layouts.OPAQUE_CLASSES)
+    names = {cls.__name__ for cls in built_in}
+    names |= {t.schema.cls.__name__ for t in DATA_TYPES}
+    return frozenset(names | {"errors", "unknown"})
+
+
+RECORD_COLUMNS = frozenset(
+    {"timestamp", "channel", "can_id", "sender", "node_id", "destination_node_id", "source"}
+)
+"""The columns every table of `veronte4x.capture.read_tables` starts with (``source`` in a
+Parquet dataset): no declared field may take one of these names."""
+
+
+def _layout(entry: Mapping[str, Any], number: int) -> codec.Layout:
+    where = f"[[veronte.layouts]] number {number}"
+    _only(entry, {"command", "name", "byte_order", "fields"}, where)
+    name = _text(entry, "name", where)
+    where = f"[[veronte.layouts]] {name!r}"
+    if name in reserved_names():
+        raise BusMapError(
+            f"{where}: the name {name!r} is taken by veronte4x (a built-in message or a table "
+            "of read_tables): choose another"
+        )
+    command = _integer(entry, "command", where)
+    specs = _list(entry.get("fields", []), f"{where} fields")
+    fields = [
+        _field(_table(spec, f"{where} field {n}"), f"{where} field {n}")
+        for n, spec in enumerate(specs, 1)
+    ]
+    order = entry.get("byte_order", "little")
+    if order not in ("little", "big"):
+        raise BusMapError(f"{where}: byte_order = {order!r} is not 'little' or 'big'")
+    try:
+        return codec.Layout(command, name, fields, codec.ByteOrder(order))
+    except (ValueError, TypeError) as error:
+        raise BusMapError(f"{where}: {error}") from None
+
+
+def _distinct_names(layouts: tuple[codec.Layout, ...]) -> None:
+    seen: set[str] = set()
+    for layout in layouts:
+        if layout.name in seen:
+            raise BusMapError(f"[[veronte.layouts]]: the name {layout.name!r} is given twice")
+        seen.add(layout.name)
+
+
+def _field(spec: Mapping[str, Any], where: str) -> codec.Field:
     kind = spec.get("kind")
-    _only(spec, {"kind", "name", "bits", "scale", "value"}, f"a {kind} field")
-    if kind == "constant":
-        return codec.constant(int(spec["value"]), int(spec.get("bits", 8)))
-    if kind == "skip":
-        return codec.skip(int(spec["bits"]))
-    if kind == "float32":
-        return codec.float32(str(spec["name"]))
-    if kind in ("unsigned", "signed"):
-        scale = spec.get("scale")
-        linear = None
-        if scale is not None:
-            encoded_min, encoded_max, decoded_min, decoded_max = scale
-            linear = codec.Linear(int(encoded_min), int(encoded_max), decoded_min, decoded_max)
-        make = codec.unsigned if kind == "unsigned" else codec.signed
-        return make(str(spec["name"]), int(spec["bits"]), scale=linear)
-    raise BusMapError(f"field kind {kind!r}: expected constant, skip, unsigned, signed, float32")
+    _only(spec, {"kind", "name", "bits", "scale", "value"}, where)
+    try:
+        if kind == "constant":
+            return codec.constant(
+                _integer(spec, "value", where), _integer(spec, "bits", where, default=8)
+            )
+        if kind == "skip":
+            return codec.skip(_integer(spec, "bits", where))
+        name = _text(spec, "name", where) if kind in _NAMED else ""
+        if name in RECORD_COLUMNS:
+            raise BusMapError(
+                f"{where}: the field name {name!r} is a column of every table: choose another"
+            )
+        if kind == "float32":
+            return codec.float32(name)
+        if kind in ("unsigned", "signed"):
+            bits = _integer(spec, "bits", where)
+            scale = spec.get("scale")
+            linear = None if scale is None else _scale(scale, kind, bits, f"{where} scale")
+            make = codec.unsigned if kind == "unsigned" else codec.signed
+            return make(name, bits, scale=linear)
+    except (ValueError, TypeError) as error:
+        if isinstance(error, BusMapError):
+            raise
+        raise BusMapError(f"{where}: {error}") from None
+    raise BusMapError(
+        f"{where}: kind = {kind!r}: expected constant, skip, unsigned, signed or float32"
+    )
+
+
+_NAMED = ("float32", "unsigned", "signed")
+
+
+def _scale(scale: Any, kind: str, bits: int, where: str) -> codec.Linear:
+    """A field's ``scale = [encoded_min, encoded_max, decoded_min, decoded_max]``, checked so
+    that every wire value of the field decodes to a finite number."""
+    shape = "[encoded_min, encoded_max, decoded_min, decoded_max]"
+    if not isinstance(scale, list) or len(scale) != 4:
+        raise BusMapError(f"{where}: {scale!r} is not {shape}")
+    low, high, decoded_min, decoded_max = scale
+    if not all(isinstance(v, int) and not isinstance(v, bool) for v in (low, high)):
+        raise BusMapError(f"{where}: the encoded values of {scale!r} are not integers")
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in scale[2:]):
+        raise BusMapError(f"{where}: the decoded values of {scale!r} are not numbers")
+    if low == high:
+        raise BusMapError(f"{where}: encoded_min and encoded_max of {scale!r} are equal")
+    if not (1 <= bits <= 64):
+        raise BusMapError(f"{where}: a field of {bits} bits cannot be scaled")
+    linear = codec.Linear(low, high, decoded_min, decoded_max)
+    wire = (0, (1 << bits) - 1) if kind == "unsigned" else (-(1 << bits - 1), (1 << bits - 1) - 1)
+    try:
+        values = [decoded_min, decoded_max, linear.factor, linear.offset]
+        values += [linear.offset + raw * linear.factor for raw in wire]
+    except OverflowError:
+        values = [math.inf]
+    if not all(math.isfinite(v) for v in values):
+        raise BusMapError(
+            f"{where}: {scale!r} does not give a finite number for every {bits}-bit wire "
+            "value: give finite decoded values of a smaller range"
+        )
+    return linear

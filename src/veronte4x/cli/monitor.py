@@ -1,9 +1,12 @@
 """``veronte4x monitor``: a live table of the bus, one row per message type and sender.
 
 On a terminal it is a refreshing table (the ``monitor`` extra, rich) with the arbiter's
-state on top and keys to pause (``p``), filter (``f``, then text and Enter; Esc clears) and
-quit (``q``). When standard output is not a terminal it prints the table as plain text,
-every ``--interval`` seconds for a live bus, once at the end for a capture.
+state on top and keys to pause (``p``), filter (``f``, then text and Enter; Esc clears),
+scroll (arrow keys, ``j`` and ``k``) and quit (``q``). One line per row, its fields cut with
+an ellipsis at the terminal's edge; rows below the screen are counted in a last line
+(``+N more rows``). When standard output is not a terminal it prints the table as plain
+text, every ``--interval`` seconds for a live bus, once at the end for a capture. Ctrl-C
+stops it with code 130, as every command; ``q`` with 0.
 """
 
 from __future__ import annotations
@@ -21,11 +24,11 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
 from veronte4x.cli import play, rates
-from veronte4x.cli.exit_codes import EXIT_OK
+from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
 
-KEYS_HELP = "p pause · f filter · c clear filter · q quit"
+KEYS_HELP = "p pause · f filter · c clear filter · q quit · ↑↓ scroll"
 
 
 def add_parser(commands: Any) -> None:
@@ -87,10 +90,15 @@ class _Reader:
     def start(self) -> None:
         self._thread.start()
 
-    def finish(self) -> None:
-        """Stop reading; re-raise what stopped the reader, if anything did."""
+    def finish(self, wait: bool = True) -> None:
+        """Stop reading; re-raise what stopped the reader, if anything did.
+
+        Without ``wait`` (after Ctrl-C) the reader is not waited for: it may be blocked
+        reading a pipe that never ends, and it is a daemon thread.
+        """
         self.stop.set()
-        self._thread.join()
+        if wait:
+            self._thread.join()
         if self.failure is not None:
             raise self.failure
 
@@ -106,6 +114,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     state = MonitorState()
     reader = _Reader(args, bus_map, state)
     reader.start()
+    status = EXIT_OK
     try:
         if not live(args) and args.speed is None:
             reader.done.wait()
@@ -115,16 +124,17 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             while not reader.done.wait(args.interval):
                 print(reader.text(args.filter), flush=True)
     except KeyboardInterrupt:
-        pass
-    reader.finish()
+        status = EXIT_INTERRUPTED
+    reader.finish(wait=status == EXIT_OK)
     if sys.stdout.isatty():
         _print_rich(reader, args.filter)
     else:
         print(reader.text(args.filter), end="", flush=True)
     if reader.rates is not None:
         print(rates.report(reader.rates), flush=True)
-    print(f"veronte4x: {state.summary()}", file=sys.stderr)
-    return EXIT_OK
+    interrupted = "interrupted after " if status == EXIT_INTERRUPTED else ""
+    print(f"veronte4x: {interrupted}{state.summary()}", file=sys.stderr)
+    return status
 
 
 Snapshot = tuple[str, str, list[Row]]
@@ -137,13 +147,39 @@ def _snapshot(reader: _Reader) -> Snapshot:
         return state.arbiter.describe(), state.summary(), state.rows()
 
 
-def _table(snapshot: Snapshot, text_filter: str, status: str = "") -> Any:
+def _table(
+    snapshot: Snapshot,
+    text_filter: str,
+    status: str = "",
+    screen: Any = None,
+    skip: int = 0,
+) -> Any:
+    """The view: the arbiter line, the summary line and the table.
+
+    On a ``screen`` (the live view's rich console), each row is one line, its fields cut
+    with an ellipsis, and the rows from ``skip`` on that fit are shown, the others counted
+    in a last line; without, every row is shown, its fields wrapped between words.
+    """
     from rich.console import Group
     from rich.table import Table
     from rich.text import Text
 
     header, summary, rows = snapshot
     wanted = text_filter.lower()
+    shown = [
+        r for r in rows if not wanted or wanted in r.sender.lower() or wanted in r.kind.lower()
+    ]
+    top = Text(header, style="bold")
+    line = Text(f"{summary}   {status}".rstrip())
+    above = below = 0
+    if screen is not None:
+        heads = sum(len(screen.render_lines(text, screen.options)) for text in (top, line))
+        room = max(1, screen.size.height - heads - _TABLE_HEAD)
+        if len(shown) > room:
+            room = max(1, room - 1)  # a last line counts the rows not shown
+        skip = max(0, min(skip, len(shown) - room))
+        above, below = skip, max(0, len(shown) - skip - room)
+        shown = shown[skip : skip + room]
     table = Table(expand=True, show_edge=False, pad_edge=False)
     for name, justify in (
         ("sender", "left"),
@@ -154,10 +190,8 @@ def _table(snapshot: Snapshot, text_filter: str, status: str = "") -> Any:
         ("errors", "right"),
     ):
         table.add_column(name, justify=justify, no_wrap=True)  # type: ignore[arg-type]
-    table.add_column("fields", ratio=1, overflow="fold")
-    for r in rows:
-        if wanted and wanted not in r.sender.lower() and wanted not in r.kind.lower():
-            continue
+    table.add_column("fields", ratio=1, no_wrap=screen is not None, overflow="ellipsis")
+    for r in shown:
         table.add_row(
             r.sender,
             r.kind,
@@ -167,9 +201,15 @@ def _table(snapshot: Snapshot, text_filter: str, status: str = "") -> Any:
             Text(str(r.errors), style="bold red" if r.errors else ""),
             r.fields,
         )
-    top = Text(header, style="bold")
-    line = Text(f"{summary}   {status}".rstrip())
-    return Group(top, line, table)
+    parts: list[Any] = [top, line, table]
+    if below or above:
+        more = [f"+{below} more rows (↓)" if below else "", f"{above} above (↑)" if above else ""]
+        parts.append(Text(", ".join(m for m in more if m) + "; f to filter", style="bold"))
+    return Group(*parts)
+
+
+_TABLE_HEAD = 2
+"""Lines of the table that are not rows: its head and the rule under it."""
 
 
 def _print_rich(reader: _Reader, text_filter: str) -> None:
@@ -200,13 +240,31 @@ def _read_key(fd: int, timeout: float) -> str | None:
     return os.read(fd, 1).decode("utf-8", "replace")
 
 
+def _arrow(fd: int) -> int:
+    """The rows an arrow key's escape sequence scrolls by (after its Esc): down 1, up -1,
+    Page Down 10, Page Up -10; 0 for another key."""
+    sequence = ""
+    while len(sequence) < 3:
+        key = _read_key(fd, 0.05)
+        if key is None:
+            break
+        sequence += key
+        if key.isalpha() or key == "~":
+            break
+    return {"[B": 1, "[A": -1, "[6~": 10, "[5~": -10}.get(sequence, 0)
+
+
 def _interactive(reader: _Reader, text_filter: str) -> None:
     from rich.console import Console
     from rich.live import Live
 
     paused = False
     editing = False
+    skip = 0
     console = Console()
+
+    def view_of(snapshot: Snapshot) -> Any:
+        return _table(snapshot, text_filter, status(), console, skip)
 
     def status() -> str:
         parts = ["PAUSED" if paused else ""]
@@ -221,7 +279,7 @@ def _interactive(reader: _Reader, text_filter: str) -> None:
     with (
         _keys() as fd,
         Live(
-            _table(frozen, text_filter, status()),
+            view_of(frozen),
             console=console,
             screen=True,
             auto_refresh=False,
@@ -244,6 +302,9 @@ def _interactive(reader: _Reader, text_filter: str) -> None:
                     text_filter += key
             elif key in ("q", "Q"):
                 return
+            elif key in ("j", "k", "\x1b"):
+                step = _arrow(fd) if key == "\x1b" else 1 if key == "j" else -1
+                skip = max(0, skip + step)
             elif key in ("p", "P", " "):
                 paused = not paused
                 frozen = _snapshot(reader)
@@ -255,5 +316,7 @@ def _interactive(reader: _Reader, text_filter: str) -> None:
             if changed or (not paused and now >= next_draw):
                 if not paused:
                     frozen = _snapshot(reader)
-                view.update(_table(frozen, text_filter, status()), refresh=True)
+                rows = len(frozen[2])
+                skip = min(skip, max(0, rows - 1))
+                view.update(view_of(frozen), refresh=True)
                 next_draw = now + 0.25

@@ -72,11 +72,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
 def _nothing(watch: InputWatch, name: str, what: str) -> int:
     """Say there is nothing to plot, and why; return the exit code."""
     if not watch.frames:
-        what = "no frames at all"
-    other = "arbitration" if what.startswith("no ESC") else "esc"
-    print(
-        f"veronte4x: nothing to plot: {name} has {what}; try --kind {other}, or check the "
-        "capture and --channel",
-        file=sys.stderr,
-    )
+        reason = f"{name} holds no CAN frame"
+    else:
+        other = "arbitration" if what.startswith("no ESC") else "esc"
+        reason = f"{name} has {what}; try --kind {other}, or another --channel"
+    print(f"veronte4x: nothing to plot: {reason}", file=sys.stderr)
     return EXIT_USAGE

@@ -4,15 +4,21 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Callable
 from itertools import chain
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_NOT_IN_TIME_ORDER, EXIT_OK
 from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
+from veronte4x.errors import SourceError
 from veronte4x.times import format_time
+
+if TYPE_CHECKING:
+    from veronte4x.arbiter.config import ArbiterConfig
 
 
 def add_parser(commands: Any) -> None:
@@ -48,7 +54,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     from veronte4x.arbiter.replay import DisorderedError
 
     if args.config:
-        config = load_config(args.config)
+        config = _load(args.config, load_config)
     else:
         config = arbiter.ArbiterConfig(
             autopilot_ids=bus_map.autopilot_ids,
@@ -90,6 +96,40 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     note = watch.note()
     print(summary + (f"; {note}" if note else ""), file=sys.stderr)
     return EXIT_FINDINGS if result.disagreements else EXIT_OK
+
+
+def _load(path: str, load: Callable[[str], ArbiterConfig]) -> ArbiterConfig:
+    """The arbiter configuration of ``--config``; what is wrong with it in the file's words.
+
+    Raises:
+        SourceError: The file is not a valid arbiter configuration.
+    """
+    try:
+        return load(path)
+    except ConfigError as error:
+        if error.field != "(file)":
+            value = error.value
+            if error.allowed == "a field of ArbiterConfig":
+                what = f"[arbiter] {error.field} is not a setting of the arbiter"
+            elif error.field.startswith("variables["):
+                what = f"[arbiter] {error.field}: {_words(value)} are not settings of a "
+                what += f"variable (expected {error.allowed})"
+            else:
+                shown = list(value) if isinstance(value, tuple) else value
+                what = f"[arbiter] {error.field} = {shown!r}: expected {error.allowed}"
+        elif error.allowed == "only an [arbiter] table":
+            what = f"tables {_words(error.value)} are not read: only [arbiter] is"
+        elif error.allowed.startswith("valid TOML"):
+            what = f"not TOML: {error.allowed.removeprefix('valid TOML (').removesuffix(')')}"
+        else:
+            what = f"a value of the wrong type ({error.allowed})"
+    except (TypeError, ValueError, AttributeError) as error:  # a table where a value goes
+        what = f"not an arbiter configuration ({error})"
+    raise SourceError(f"{path}: {what}; fix the arbiter configuration (see the Replay docs)")
+
+
+def _words(value: object) -> str:
+    return ", ".join(map(str, value)) if isinstance(value, (list, tuple)) else str(value)
 
 
 def _count(number: int, noun: str) -> str:
