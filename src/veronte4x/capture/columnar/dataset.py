@@ -21,8 +21,8 @@ import hashlib
 import os
 import re
 import time
-from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import Future, ThreadPoolExecutor, wait
+from collections.abc import Callable, Iterable
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -32,7 +32,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar.batches import BATCH_BYTES, Batch, read_batches
+from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
 from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.source import STDIN
@@ -112,7 +112,7 @@ def convert_file(
         decoder = StreamDecoder(bus_map, channel, per_frame)
         frames = 0
         try:
-            for batch in _ahead(read_batches(name, batch_bytes)):
+            for batch in ahead(read_batches(name, batch_bytes)):
                 frames += len(batch.frames)
                 for kind, table in decoder.feed(batch.frames).items():
                     writer.write(kind, table)
@@ -221,24 +221,6 @@ class _Writer:
             self._paths(kind)[0].unlink(missing_ok=True)
         self._writers.clear()
         self._buffers.clear()
-
-
-def _ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
-    """The batches, each read on a thread while the one before it is decoded."""
-    with ThreadPoolExecutor(1) as thread:
-        try:
-            coming = thread.submit(next, batches, None)
-            while (batch := coming.result()) is not None:
-                coming = thread.submit(next, batches, None)
-                yield batch
-        finally:
-            coming.cancel()
-            wait([coming])
-            with contextlib.suppress(Exception):
-                coming.result()
-            close = getattr(batches, "close", None)
-            if close is not None:
-                close()
 
 
 def to_parquet(
