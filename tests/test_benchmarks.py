@@ -35,8 +35,18 @@ RUNS = [
             "1",
             "--files",
             "2",
+            "--session-frames",
+            "2000",
+            "--memory-mb",
+            "1",
         ],
-        ["asammdf", "read_tables, 20000 frames", "LocalCluster 2 workers"],
+        [
+            "asammdf",
+            "read_tables, 20000 frames",
+            "LocalCluster 2 workers",
+            "100,000 sessions",
+            "MB candump file",
+        ],
     ),
 ]
 
