@@ -45,7 +45,7 @@ def read_tables(
         return parts[0]
     kinds = list(dict.fromkeys(kind for part in parts for kind in part))
     return {
-        kind: pa.concat_tables([part[kind] for part in parts if kind in part]).unify_dictionaries()
+        kind: pa.concat_tables([part[kind] for part in parts if kind in part]).combine_chunks()
         for kind in kinds
     }
 

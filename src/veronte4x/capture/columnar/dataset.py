@@ -8,10 +8,12 @@ The layout (Hive partitioning, one directory per table of `read_tables`)::
 
 Each file holds the rows one capture gives for one table, in capture order, with the
 table's fixed schema and a last column ``source``: the capture's path as given. A file is
-written under a hidden temporary name (``.name.tmp``, which Parquet readers skip) and
-renamed when the whole capture is decoded, so a reader never takes a half-written file;
-converting a capture again replaces its files (and removes those of tables it no longer
-has).
+written under a hidden temporary name of its run (``.name.PID-TOKEN.tmp``, which Parquet
+readers skip) and renamed when the whole capture is decoded, so a reader never takes a
+half-written file; converting a capture again replaces its files (and removes those of
+tables it no longer has). Two runs on the same capture at once both succeed (the last
+to finish puts its files in place); the temporary files of a run killed outright are
+removed by the next run into the same directory.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ import contextlib
 import hashlib
 import os
 import re
+import secrets
 import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import Future, ThreadPoolExecutor
@@ -132,10 +135,35 @@ def convert_file(
 
 def file_name(source: str) -> str:
     """The name of a capture's files in the dataset: its base name (characters other than
-    letters, digits, ``.``, ``_`` and ``-`` replaced) and a digest of its path as given."""
-    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)) or "capture"
+    letters, digits, ``.``, ``_`` and ``-`` replaced, leading ``.`` and ``_`` dropped) and a
+    digest of its path as given."""
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")
+    stem = stem or "capture"  # a name starting "." or "_" is one dataset readers skip
     digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
     return f"{stem}-{digest}.parquet"
+
+
+def remove_stale(out_dir: Path) -> None:
+    """Remove the temporary files that runs no longer alive left in ``out_dir`` (killed
+    outright): those named by a process id that is not running on this machine, or by
+    none."""
+    for temporary in out_dir.glob("message=*/.*.tmp"):
+        run = temporary.name.removesuffix(".tmp").rsplit(".", 1)[-1]
+        pid = run.partition("-")[0]
+        if pid.isdigit() and _alive(int(pid)):
+            continue
+        with contextlib.suppress(OSError):  # another run may remove it first
+            temporary.unlink()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # another user's process
+        return True
+    return True
 
 
 class _Writer:
@@ -149,6 +177,9 @@ class _Writer:
         self.out_dir = out_dir
         self.source = source
         self.name = file_name(source)
+        # Each run its own temporary names: two runs on one capture never share a file.
+        self._run = f"{os.getpid()}-{secrets.token_hex(4)}"
+        remove_stale(out_dir)
         self._writers: dict[str, pq.ParquetWriter] = {}
         self._buffers: dict[str, list[pa.Table]] = {}
         self._bytes: dict[str, int] = {}
@@ -158,7 +189,7 @@ class _Writer:
 
     def _paths(self, kind: str) -> tuple[Path, Path]:
         folder = self.out_dir / f"message={kind}"
-        return folder / f".{self.name}.tmp", folder / self.name
+        return folder / f".{self.name}.{self._run}.tmp", folder / self.name
 
     def write(self, kind: str, table: pa.Table) -> None:
         buffer = self._buffers.setdefault(kind, [])
@@ -183,7 +214,9 @@ class _Writer:
             writing.result()
 
     def _write(self, kind: str, buffer: list[pa.Table]) -> None:
-        table = pa.concat_tables(buffer).unify_dictionaries().combine_chunks()
+        # combine_chunks, not unify_dictionaries: the latter refuses a full uint8 enum
+        # dictionary (256 names) even when every chunk has the same.
+        table = pa.concat_tables(buffer).combine_chunks()
         source = pa.DictionaryArray.from_arrays(
             pa.array(np.zeros(len(table), np.int32)), pa.array([self.source], pa.string())
         )
