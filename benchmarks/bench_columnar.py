@@ -389,10 +389,17 @@ def main() -> None:
             print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {peak:8.0f}")
         hour = 63_000_000 * seconds / frames
         print(f"one hour of two buses (63 M frames) at this rate: {hour:.0f} s, same peak memory")
-        print(f"\n{'read_tables, distinct DroneCAN sessions':48} {'frames/s':>12} {'us/frame':>8}")
+        python_can = rates["python-can CanutilsLogReader"]
+        print(
+            f"\n{'read_tables, distinct DroneCAN sessions':48} {'frames/s':>12} {'us/frame':>8}"
+            f" {'x python-can (flight rate)':>27}"
+        )
         for sessions, frames, seconds in session_rows(root, args.session_frames, repeat):
             name = f"{sessions:,} sessions, {frames:,} frames"
-            print(f"{name:48} {frames / seconds:12,.0f} {1e6 * seconds / frames:8.2f}")
+            rate = frames / seconds
+            print(
+                f"{name:48} {rate:12,.0f} {1e6 * seconds / frames:8.2f} {rate / python_can:26.2f}x"
+            )
         print(
             f"\n{'read_tables peak memory (fresh process each)':48} {'seconds':>8} "
             f"{'tables MB':>9} {'peak MB':>8} {'peak/(2 tables+300)':>20}"
