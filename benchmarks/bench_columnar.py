@@ -140,6 +140,42 @@ def converted(path: Path, out: Path) -> tuple[int, float, float]:
     return int(frames), float(seconds), int(peak_kb) / 1024
 
 
+READ = """
+import re, sys, time
+from pathlib import Path
+from veronte4x import capture
+import veronte4x.capture.columnar  # imported before the clock starts
+start = time.perf_counter()
+tables = capture.read_tables(sys.argv[1])
+seconds = time.perf_counter() - start
+peak = re.search(r"VmHWM:\\s+(\\d+) kB", Path("/proc/self/status").read_text())[1]
+print(sum(t.num_rows for t in tables.values()), sum(t.nbytes for t in tables.values()),
+      seconds, peak)
+"""
+
+
+def read_in_process(path: Path) -> tuple[int, float, float, float]:
+    """`read_tables` of one file in a fresh process: rows, table MB, seconds, peak MB."""
+    result = subprocess.run(
+        [sys.executable, "-c", READ, str(path)], capture_output=True, text=True, check=True
+    )
+    rows, size, seconds, peak_kb = result.stdout.split()
+    return int(rows), int(size) / 2**20, float(seconds), int(peak_kb) / 1024
+
+
+def memory_rows(root: Path, sizes_mb: list[float]) -> list[tuple[float, int, float, float, float]]:
+    """read_tables of example flights of ``sizes_mb`` megabytes, each in a fresh process:
+    (file MB, rows, table MB, seconds, peak MB); the files are deleted after."""
+    rows = []
+    for size in sizes_mb:
+        path = root / f"flight-{size}MB.log"
+        make_file(path, max(1, int(size * 1e6 / 43)), flight_lines(None))  # ~43 B a line
+        file_mb = path.stat().st_size / 2**20
+        rows.append((file_mb, *read_in_process(path)))
+        path.unlink()
+    return rows
+
+
 def fleet_rows(small: Path, root: Path, files: int, repeat: int) -> list[tuple[str, int, float]]:
     """Several files converted in this process, then on a local cluster of 2 workers."""
     import dask
@@ -286,6 +322,13 @@ def main() -> None:
     parser.add_argument(
         "--session-frames", type=int, default=200_000, help="frames of each sessions bus"
     )
+    parser.add_argument(
+        "--memory-mb",
+        type=float,
+        nargs="*",
+        default=[100, 1000],
+        help="sizes of the files read_tables reads in a fresh process for its peak memory",
+    )
     args = parser.parse_args()
     repeat = args.repeat
     with tempfile.TemporaryDirectory() as folder:
@@ -346,10 +389,25 @@ def main() -> None:
             print(f"{name:48} {frames / seconds:12,.0f} {seconds:8.2f} {peak:8.0f}")
         hour = 63_000_000 * seconds / frames
         print(f"one hour of two buses (63 M frames) at this rate: {hour:.0f} s, same peak memory")
-        print(f"\n{'read_tables, distinct DroneCAN sessions':48} {'frames/s':>12} {'us/frame':>8}")
+        python_can = rates["python-can CanutilsLogReader"]
+        print(
+            f"\n{'read_tables, distinct DroneCAN sessions':48} {'frames/s':>12} {'us/frame':>8}"
+            f" {'x python-can (flight rate)':>27}"
+        )
         for sessions, frames, seconds in session_rows(root, args.session_frames, repeat):
             name = f"{sessions:,} sessions, {frames:,} frames"
-            print(f"{name:48} {frames / seconds:12,.0f} {1e6 * seconds / frames:8.2f}")
+            rate = frames / seconds
+            print(
+                f"{name:48} {rate:12,.0f} {1e6 * seconds / frames:8.2f} {rate / python_can:26.2f}x"
+            )
+        print(
+            f"\n{'read_tables peak memory (fresh process each)':48} {'seconds':>8} "
+            f"{'tables MB':>9} {'peak MB':>8} {'peak/(2 tables+300)':>20}"
+        )
+        for file_mb, _, table_mb, seconds, peak in memory_rows(root, args.memory_mb):
+            name = f"{file_mb:,.0f} MB candump file"
+            bound = peak / (2 * table_mb + 300)
+            print(f"{name:48} {seconds:8.2f} {table_mb:9.0f} {peak:8.0f} {bound:19.2f}x")
         rows = fleet_rows(small, root, args.files, repeat)
         print(f"\n{'several files':48} {'frames/s':>12} {'seconds':>8} {'speed-up':>8}")
         for name, frames, seconds in rows:

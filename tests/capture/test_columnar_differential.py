@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import tempfile
 from pathlib import Path
+from unittest import mock
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -17,6 +18,7 @@ from tests.capture.columnar_support import (
 )
 from veronte4x import capture
 from veronte4x.capture import BusMap
+from veronte4x.capture.columnar import batches
 
 
 @settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
@@ -95,3 +97,19 @@ def test_an_odd_channel_does_not_name_the_next_line_crlf(tmp_path: Path) -> None
     assert sum(table.num_rows for table in got.values()) == 1
     assert_same_tables(got, capture.tables_from_records(capture.read(path, channel="can1")))
     assert_same_tables(capture.read_tables(path), capture.tables_from_records(capture.read(path)))
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data(), BUS_MAPS, st.integers(1, 400), LINE_ENDINGS)
+def test_batch_boundaries_anywhere_agree(
+    data: st.DataObject, bus_map: BusMap, batch_bytes: int, ending: str
+) -> None:
+    """read_tables decodes a file in batches (bounded memory): wherever they are cut, the
+    tables are those of the per-frame decoder."""
+    lines = data.draw(captures(bus_map))
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "capture.log", lines, ending)
+        expected = capture.tables_from_records(capture.read(path, bus_map), bus_map)
+        with mock.patch.object(batches, "BATCH_BYTES", batch_bytes):
+            got = capture.read_tables(path, bus_map)
+    assert_same_tables(got, expected)

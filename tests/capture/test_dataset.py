@@ -4,7 +4,11 @@ whole or absent; a second run replaces the first."""
 from __future__ import annotations
 
 import gzip
+import os
+import subprocess
+import sys
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from typing import Any
 
@@ -110,6 +114,42 @@ def test_an_interrupted_run_leaves_no_file_a_reader_takes(tmp_path: Path) -> Non
     assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
 
 
+def test_temporary_files_of_killed_runs_are_removed_by_the_next(tmp_path: Path) -> None:
+    out = tmp_path / "data"
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True)  # fmt: skip
+    folder = out / "message=Status"
+    folder.mkdir(parents=True)
+    name = dataset.file_name("other.log")
+    stale = [folder / f".{name}.tmp", folder / f".{name}.{dead.stdout.strip()}-0a1b2c3d.tmp"]
+    alive = folder / f".{name}.{os.getpid()}-0a1b2c3d.tmp"  # a run still going
+    for path in [*stale, alive]:
+        path.write_bytes(b"PAR1 half")
+    capture.to_parquet(FLIGHT, out, progress=False)
+    assert [p for p in [*stale, alive] if p.exists()] == [alive]
+    assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+
+
+@pytest.mark.parametrize("name", [".hidden.log", "_under.log", "..log", "_"])
+def test_captures_named_as_readers_skip_are_still_read(tmp_path: Path, name: str) -> None:
+    path = tmp_path / name
+    path.write_bytes(FLIGHT.read_bytes())
+    capture.to_parquet(path, tmp_path / "data", progress=False)
+    names = [p.name for p in (tmp_path / "data").rglob("*") if p.is_file()]
+    assert names and not [n for n in names if n.startswith((".", "_"))]
+    assert_same_tables(read_back(tmp_path / "data"), capture.read_tables(path))
+
+
+def test_two_conversions_of_one_capture_at_once_both_succeed(tmp_path: Path) -> None:
+    out = tmp_path / "data"
+    with ThreadPoolExecutor(2) as pool:
+        runs = [pool.submit(dataset.convert_file, FLIGHT, out, None, None, 200) for _ in range(2)]
+        summaries = [run.result() for run in runs]
+    assert summaries[0].records == summaries[1].records
+    assert not list(out.rglob("*.tmp"))
+    assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+
+
 def test_a_second_run_removes_tables_the_capture_no_longer_has(tmp_path: Path) -> None:
     out = tmp_path / "data"
     capture.to_parquet(FLIGHT, out, progress=False)
@@ -156,3 +196,23 @@ def test_python_can_formats_in_batches(tmp_path: Path, suffix: str) -> None:
     out = tmp_path / "data"
     dataset.to_parquet(path, out, progress=False)
     assert_same_tables(read_back(out), capture.read_tables(path))
+
+
+def test_a_full_uint8_enum_dictionary_joins_across_batches_and_files(tmp_path: Path) -> None:
+    """ExecuteOpcode's opcode has 256 names: pyarrow's unify_dictionaries refuses to join
+    them (an index type it thinks too small), so batches and files are joined otherwise."""
+    from veronte4x import dronecan
+
+    lines = []
+    for tid in range(40):
+        request = dronecan.ExecuteOpcodeRequest(opcode=tid % 3, argument=tid)
+        frame = dronecan.encode(
+            request, source_node_id=10, transfer_id=tid % 32, destination_node_id=20
+        )[0]
+        lines.append(f"({1700000000 + tid}.000000) can0 {frame.can_id:08X}#{frame.data.hex()}")
+    path = write(tmp_path / "opcodes.log", lines)
+    expected = capture.tables_from_records(capture.read(path))
+    dataset.convert_file(path, tmp_path / "data", batch_bytes=100)
+    assert_same_tables(read_back(tmp_path / "data"), expected)
+    both = capture.read_tables([path, path])
+    assert both["ExecuteOpcodeRequest"].num_rows == 80

@@ -18,11 +18,14 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import frame
+from veronte4x.capture.columnar import batches, frame
+from veronte4x.capture.columnar.batches import ahead, read_batches
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
 from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import relative_time as make_relative
+from veronte4x.capture.source import STDIN
 
 __all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
 
@@ -52,7 +55,7 @@ def read_tables(
         return parts[0]
     kinds = list(dict.fromkeys(kind for part in parts for kind in part))
     return {
-        kind: pa.concat_tables([part[kind] for part in parts if kind in part]).unify_dictionaries()
+        kind: pa.concat_tables([part[kind] for part in parts if kind in part]).combine_chunks()
         for kind in kinds
     }
 
@@ -69,8 +72,37 @@ def _size(path: Source) -> int:
 def keyed_tables(
     path: Source, bus_map: BusMap | None, channel: str | None, relative_time: bool
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
-    """The tables of one capture, each with the capture-order keys of its rows."""
-    tables = decode_into(read_frames(path), bus_map, channel).finish_with_keys()
+    """The tables of one capture, each with the capture-order keys of its rows.
+
+    A file is decoded batch by batch (as `veronte4x.capture.to_parquet` decodes it), so
+    that memory holds the tables and one batch, not the whole capture's frames; standard
+    input, which cannot be read twice, is decoded whole.
+    """
+    if os.fspath(path) == STDIN:
+        tables = decode_into(read_frames(path), bus_map, channel).finish_with_keys()
+    else:
+        tables = _batched(path, bus_map, channel)
     if relative_time:
         make_relative(tables)
     return tables
+
+
+def _batched(
+    path: Source, bus_map: BusMap | None, channel: str | None
+) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+    per_frame: list[str] = []
+    while True:  # once more per channel whose DroneCAN frames must go frame by frame
+        decoder = StreamDecoder(bus_map, channel, per_frame)
+        parts: dict[str, list[tuple[pa.Table, npt.NDArray[np.int64]]]] = {}
+        try:
+            for batch in ahead(read_batches(path, batches.BATCH_BYTES)):
+                for kind, part in decoder.feed_with_keys(batch.frames).items():
+                    parts.setdefault(kind, []).append(part)
+            decoder.finish()
+        except TooManySessions as signal:
+            per_frame.append(signal.channel)
+            continue
+        return {
+            kind: (pa.concat_tables([t for t, _ in got]), np.concatenate([k for _, k in got]))
+            for kind, got in parts.items()
+        }

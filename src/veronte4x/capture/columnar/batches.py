@@ -11,6 +11,7 @@ file that ends early is read on line by line from where the blocks stopped, as
 
 from __future__ import annotations
 
+import contextlib
 import gzip
 import io
 import itertools
@@ -18,6 +19,7 @@ import os
 import sys
 import zlib
 from collections.abc import Iterable, Iterator
+from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from typing import BinaryIO
 
@@ -158,3 +160,21 @@ def _cut(frames: FrameColumns, batch_frames: int) -> Iterator[Batch]:
     sizes = [batch_frames] * (len(frames) // max(batch_frames, 1))
     for part in split(frames, sizes):
         yield Batch(part, None)
+
+
+def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
+    """The batches, each read on a thread while the one before it is decoded."""
+    with ThreadPoolExecutor(1) as thread:
+        try:
+            coming = thread.submit(next, batches, None)
+            while (batch := coming.result()) is not None:
+                coming = thread.submit(next, batches, None)
+                yield batch
+        finally:
+            coming.cancel()
+            wait([coming])
+            with contextlib.suppress(Exception):
+                coming.result()
+            close = getattr(batches, "close", None)
+            if close is not None:
+                close()

@@ -8,10 +8,12 @@ The layout (Hive partitioning, one directory per table of `read_tables`)::
 
 Each file holds the rows one capture gives for one table, in capture order, with the
 table's fixed schema and a last column ``source``: the capture's path as given. A file is
-written under a hidden temporary name (``.name.tmp``, which Parquet readers skip) and
-renamed when the whole capture is decoded, so a reader never takes a half-written file;
-converting a capture again replaces its files (and removes those of tables it no longer
-has).
+written under a hidden temporary name of its run (``.name.PID-TOKEN.tmp``, which Parquet
+readers skip) and renamed when the whole capture is decoded, so a reader never takes a
+half-written file; converting a capture again replaces its files (and removes those of
+tables it no longer has). Two runs on the same capture at once both succeed (the last
+to finish puts its files in place); the temporary files of a run killed outright are
+removed by the next run into the same directory.
 """
 
 from __future__ import annotations
@@ -20,9 +22,10 @@ import contextlib
 import hashlib
 import os
 import re
+import secrets
 import time
-from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import Future, ThreadPoolExecutor, wait
+from collections.abc import Callable, Iterable
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -32,7 +35,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar.batches import BATCH_BYTES, Batch, read_batches
+from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
 from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.source import STDIN
@@ -112,7 +115,7 @@ def convert_file(
         decoder = StreamDecoder(bus_map, channel, per_frame)
         frames = 0
         try:
-            for batch in _ahead(read_batches(name, batch_bytes)):
+            for batch in ahead(read_batches(name, batch_bytes)):
                 frames += len(batch.frames)
                 for kind, table in decoder.feed(batch.frames).items():
                     writer.write(kind, table)
@@ -132,10 +135,35 @@ def convert_file(
 
 def file_name(source: str) -> str:
     """The name of a capture's files in the dataset: its base name (characters other than
-    letters, digits, ``.``, ``_`` and ``-`` replaced) and a digest of its path as given."""
-    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)) or "capture"
+    letters, digits, ``.``, ``_`` and ``-`` replaced, leading ``.`` and ``_`` dropped) and a
+    digest of its path as given."""
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")
+    stem = stem or "capture"  # a name starting "." or "_" is one dataset readers skip
     digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
     return f"{stem}-{digest}.parquet"
+
+
+def remove_stale(out_dir: Path) -> None:
+    """Remove the temporary files that runs no longer alive left in ``out_dir`` (killed
+    outright): those named by a process id that is not running on this machine, or by
+    none."""
+    for temporary in out_dir.glob("message=*/.*.tmp"):
+        run = temporary.name.removesuffix(".tmp").rsplit(".", 1)[-1]
+        pid = run.partition("-")[0]
+        if pid.isdigit() and _alive(int(pid)):
+            continue
+        with contextlib.suppress(OSError):  # another run may remove it first
+            temporary.unlink()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # another user's process
+        return True
+    return True
 
 
 class _Writer:
@@ -149,6 +177,9 @@ class _Writer:
         self.out_dir = out_dir
         self.source = source
         self.name = file_name(source)
+        # Each run its own temporary names: two runs on one capture never share a file.
+        self._run = f"{os.getpid()}-{secrets.token_hex(4)}"
+        remove_stale(out_dir)
         self._writers: dict[str, pq.ParquetWriter] = {}
         self._buffers: dict[str, list[pa.Table]] = {}
         self._bytes: dict[str, int] = {}
@@ -158,7 +189,7 @@ class _Writer:
 
     def _paths(self, kind: str) -> tuple[Path, Path]:
         folder = self.out_dir / f"message={kind}"
-        return folder / f".{self.name}.tmp", folder / self.name
+        return folder / f".{self.name}.{self._run}.tmp", folder / self.name
 
     def write(self, kind: str, table: pa.Table) -> None:
         buffer = self._buffers.setdefault(kind, [])
@@ -183,7 +214,9 @@ class _Writer:
             writing.result()
 
     def _write(self, kind: str, buffer: list[pa.Table]) -> None:
-        table = pa.concat_tables(buffer).unify_dictionaries().combine_chunks()
+        # combine_chunks, not unify_dictionaries: the latter refuses a full uint8 enum
+        # dictionary (256 names) even when every chunk has the same.
+        table = pa.concat_tables(buffer).combine_chunks()
         source = pa.DictionaryArray.from_arrays(
             pa.array(np.zeros(len(table), np.int32)), pa.array([self.source], pa.string())
         )
@@ -221,24 +254,6 @@ class _Writer:
             self._paths(kind)[0].unlink(missing_ok=True)
         self._writers.clear()
         self._buffers.clear()
-
-
-def _ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
-    """The batches, each read on a thread while the one before it is decoded."""
-    with ThreadPoolExecutor(1) as thread:
-        try:
-            coming = thread.submit(next, batches, None)
-            while (batch := coming.result()) is not None:
-                coming = thread.submit(next, batches, None)
-                yield batch
-        finally:
-            coming.cancel()
-            wait([coming])
-            with contextlib.suppress(Exception):
-                coming.result()
-            close = getattr(batches, "close", None)
-            if close is not None:
-                close()
 
 
 def to_parquet(

@@ -100,6 +100,12 @@ class StreamDecoder:
         Raises:
             TooManySessions: Start over with the channel it names decoded frame by frame.
         """
+        return {kind: table for kind, (table, _) in self.feed_with_keys(frames).items()}
+
+    def feed_with_keys(
+        self, frames: FrameColumns
+    ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+        """`feed`, each table with the capture-order keys of its rows."""
         if self.channel is not None:
             frames = engine.only_channel(frames, self.channel)
         pending = self._pending
@@ -115,7 +121,7 @@ class StreamDecoder:
             done |= self._dronecan(joined, candidates, context, tables)
         done |= context
         tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
-        return tables.finish()
+        return tables.finish_with_keys()
 
     def _dronecan(
         self,
