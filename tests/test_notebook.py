@@ -84,3 +84,5 @@ def test_the_notebook_runs_and_shows_its_results(executed: Any) -> None:
     assert "2025-11-21 15:01:00.262+00:00" in html  # the switch to AP3, time as time
     assert "AP2 dead" in html  # the replay's reason
     assert len(_outputs(executed, "image/png")) == 2  # the two plots, inline
+    if not os.environ.get("TQDM_DISABLE"):  # read_tables' and to_parquet's progress bars
+        assert len(_outputs(executed, "application/vnd.jupyter.widget-view+json")) == 2
