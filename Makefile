@@ -53,6 +53,7 @@ bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_bitstruct.py
 	$(BIN)/python benchmarks/bench_capture.py
 	$(BIN)/python benchmarks/bench_columnar.py
+	$(BIN)/python benchmarks/bench_dbc.py
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info

@@ -28,8 +28,6 @@ from veronte4x.extras import require
 if TYPE_CHECKING:
     import pyarrow
 
-_EXTENDED = re.compile(r"^(11|29)-bit CAN ID ")
-
 
 class DbcMessage:
     """Base class of the message classes made from DBC messages (frozen dataclasses).
@@ -37,11 +35,15 @@ class DbcMessage:
     Attributes:
         DBC_NAME: The message's name in its DBC.
         UNITS: Field name to unit, for the fields that have one.
+        SIGNALS: The DBC names of the signals, in the order of the fields.
+        CHOICES: Positions of the signals that have a value table.
     """
 
     __slots__ = ()
     DBC_NAME = ""
     UNITS: dict[str, str] = {}  # noqa: RUF012 - set once per generated class
+    SIGNALS: tuple[str, ...] = ()
+    CHOICES: tuple[int, ...] = ()
 
 
 class DbcDecoder:
@@ -89,17 +91,28 @@ class DbcDecoder:
             values = message.decode(data, decode_choices=True, scaling=True)
         except Exception as error:  # cantools' DecodeError and the struct errors it lets out
             raise ValueError(f"{message.name}: {error}") from None
-        return cls(*(_plain(signal, values.get(signal.name)) for signal in message.signals))
+        get = values.get
+        arguments = [get(name) for name in cls.SIGNALS]
+        for position in cls.CHOICES:
+            if arguments[position] is not None:
+                arguments[position] = str(arguments[position])
+        return cls(*arguments)
 
     def record(self, record: Record) -> Record:
         """``record`` decoded if it is unknown traffic on a CAN ID a DBC knows, else as is."""
         if record.role is not Role.UNKNOWN or record.error is not None or record.message:
             return record
-        found = _EXTENDED.match(record.detail)
-        if found is None or not self.knows(record.can_id, found.group(1) == "29"):
+        detail = record.detail
+        if detail.startswith("11-bit CAN ID "):
+            extended = False
+        elif detail.startswith("29-bit CAN ID "):
+            extended = True
+        else:
+            return record
+        if (record.can_id, extended) not in self._messages:
             return record
         try:
-            message = self.decode(record.can_id, found.group(1) == "29", record.data)
+            message = self.decode(record.can_id, extended, record.data)
         except ValueError as error:
             return record._replace(error="decode error", detail=str(error))
         return record._replace(message=message, detail="")
@@ -111,35 +124,47 @@ class DbcDecoder:
 
     def tables(self, tables: dict[str, pyarrow.Table]) -> dict[str, pyarrow.Table]:
         """`read_tables`' tables with the known rows of ``unknown`` moved to tables of their
-        own, one per DBC message (and the frames cantools cannot decode to ``errors``)."""
+        own, one per DBC message (and the frames cantools cannot decode, to ``errors``)."""
         import pyarrow as pa
 
         unknown = tables.get("unknown")
         if unknown is None:
             return tables
-        rows = unknown.to_pylist()
         keep: list[int] = []
-        decoded: dict[str, list[tuple[dict[str, Any], Any]]] = {}
-        failed: list[dict[str, Any]] = []
-        for index, row in enumerate(rows):
-            found = _EXTENDED.match(row["detail"] or "")
-            extended = found is not None and found.group(1) == "29"
-            if found is None or not self.knows(row["can_id"], extended):
+        found: dict[type[Any], tuple[Any, list[int], list[dict[str, Any]]]] = {}
+        failed: list[tuple[int, str]] = []
+        columns = (unknown.column(n).to_pylist() for n in ("can_id", "detail", "data"))
+        for index, (can_id, detail, data) in enumerate(zip(*columns, strict=True)):
+            entry = None
+            if detail.startswith("11-bit CAN ID "):
+                entry = self._messages.get((can_id, False))
+            elif detail.startswith("29-bit CAN ID "):
+                entry = self._messages.get((can_id, True))
+            if entry is None:
                 keep.append(index)
                 continue
+            message, cls = entry
             try:
-                message = self.decode(row["can_id"], extended, row["data"])
-            except ValueError as error:
-                failed.append({**row, "error": "decode error", "detail": str(error)})
+                values = message.decode(data, decode_choices=True, scaling=True)
+            except Exception as error:  # as in `decode`
+                failed.append((index, f"{message.name}: {error}"))
                 continue
-            decoded.setdefault(type(message).__name__, []).append((row, message))
+            rows = found.setdefault(cls, (message, [], []))
+            rows[1].append(index)
+            rows[2].append(values)
         out = {name: table for name, table in tables.items() if name != "unknown"}
-        for name, found_rows in decoded.items():
-            out[name] = _table(found_rows, unknown.schema)
+        for cls, (message, indices, values) in found.items():
+            routing = unknown.select(["timestamp", "channel", "can_id", "sender"])
+            out[cls.__name__] = _table(
+                routing.take(pa.array(indices, pa.int64())), cls, message, values
+            )
         if keep:
             out["unknown"] = unknown.take(pa.array(keep, pa.int64()))
         if failed:
-            errors = pa.Table.from_pylist(failed, schema=_errors_schema(unknown.schema, tables))
+            rows = unknown.take(pa.array([i for i, _ in failed], pa.int64())).to_pylist()
+            for row, (_, detail) in zip(rows, failed, strict=True):
+                row.update(error="decode error", detail=detail)
+            errors = pa.Table.from_pylist(rows, schema=_errors_schema(unknown.schema, tables))
             out["errors"] = pa.concat_tables([t for t in (tables.get("errors"), errors) if t])
         return out
 
@@ -177,31 +202,34 @@ def _message_class(message: Any) -> type[Any]:
         _identifier(message.name),
         [(attr, kind, dataclasses.field(default=None)) for attr, kind in fields],
         bases=(DbcMessage,),
-        namespace={"DBC_NAME": message.name, "UNITS": units, "__module__": __name__},
+        namespace={
+            "DBC_NAME": message.name,
+            "UNITS": units,
+            "SIGNALS": tuple(signal.name for signal in message.signals),
+            "CHOICES": tuple(i for i, signal in enumerate(message.signals) if signal.choices),
+            "__module__": __name__,
+        },
         frozen=True,
         slots=True,
     )
     return cls
 
 
-def _table(rows: list[tuple[dict[str, Any], Any]], schema: pyarrow.Schema) -> pyarrow.Table:
+def _table(
+    routing: pyarrow.Table, cls: type[Any], message: Any, rows: list[dict[str, Any]]
+) -> pyarrow.Table:
+    """The routing columns, then a column per signal of ``message`` (``cls``'s fields)."""
     import pyarrow as pa
 
-    first = rows[0][1]
-    cls = type(first)
-    columns: dict[str, Any] = {}
-    fields = [schema.field(name) for name in ("timestamp", "channel", "can_id", "sender")]
-    for field in fields:
-        columns[field.name] = pa.array([row[field.name] for row, _ in rows], field.type)
-    for item in dataclasses.fields(cls):
+    for item, signal in zip(dataclasses.fields(cls), message.signals, strict=True):
         kind = {str: pa.string(), float: pa.float64()}.get(_base(item.type), pa.int64())
         unit = cls.UNITS.get(item.name)
-        fields.append(pa.field(item.name, kind, metadata={"unit": unit} if unit else None))
-        values = [getattr(message, item.name) for _, message in rows]
+        values = [_plain(signal, row.get(signal.name)) for row in rows]
         if kind == pa.float64():
             values = [None if v is None else float(v) for v in values]
-        columns[item.name] = pa.array(values, kind)
-    return pa.table(list(columns.values()), schema=pa.schema(fields))
+        field = pa.field(item.name, kind, metadata={"unit": unit} if unit else None)
+        routing = routing.append_column(field, pa.array(values, kind))
+    return routing
 
 
 def _base(annotation: Any) -> Any:
