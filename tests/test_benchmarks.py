@@ -22,6 +22,7 @@ RUNS = [
         ["--frames", "3000", "--repeat", "1"],
         ["third DroneCAN", "veronte4x to records", "veronte4x to DataFrame"],
     ),
+    ("bench_dbc.py", ["--frames", "2000", "--repeat", "1"], ["read_tables, only DBC frames"]),
     (
         "bench_columnar.py",
         [

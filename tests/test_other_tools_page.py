@@ -20,6 +20,7 @@ BLOCK = re.compile(r"^```(\w+)\n(.*?)^```", re.MULTILINE | re.DOTALL)
 def test_every_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     (tmp_path / "examples").symlink_to(ROOT / "examples")
     (tmp_path / "bus.toml").write_text('[veronte]\npwm_packing = "msb_first"\n')
+    (tmp_path / "payload.dbc").write_bytes((ROOT / "tests/capture/data/payload.dbc").read_bytes())
     bin_dir = Path(sys.executable).parent
     environment = {**os.environ, "PATH": f"{bin_dir}{os.pathsep}{os.environ['PATH']}"}
     monkeypatch.chdir(tmp_path)

@@ -21,6 +21,7 @@ from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.dbc import export_dbc, write_dbc
+from veronte4x.capture.dbc_in import DbcDecoder
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
@@ -40,6 +41,7 @@ __all__ = [
     "BusMap",
     "BusMapError",
     "CaptureDecoder",
+    "DbcDecoder",
     "Frame",
     "Record",
     "Role",
@@ -59,7 +61,10 @@ __all__ = [
 
 
 def read(
-    path: str | os.PathLike[str], bus_map: BusMap | None = None, channel: str | None = None
+    path: str | os.PathLike[str],
+    bus_map: BusMap | None = None,
+    channel: str | None = None,
+    dbc: Iterable[str | os.PathLike[str]] = (),
 ) -> Iterator[Record]:
     """Stream the decoded records of a capture file.
 
@@ -69,18 +74,24 @@ def read(
             (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
+        dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
+            decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
 
     Raises:
-        SourceError: The path is a directory or a file in no format veronte4x knows
-            (raised by the call, before any record).
-        MissingExtraError: The format needs python-can and it is not installed.
+        SourceError: The path is a directory or a file in no format veronte4x knows, or
+            a DBC file cantools cannot read (raised by the call, before any record).
+        MissingExtraError: The format needs python-can (or a DBC cantools) and it is not
+            installed.
         OSError: The file cannot be opened.
     """
     source = resolve(path)
     decoder = CaptureDecoder(bus_map)
     if source.format is Format.CANDUMP:
-        return decoder.decode_chunks(read_chunks(source), channel)
-    return decoder.decode(read_with_python_can(source.path, channel))
+        records = decoder.decode_chunks(read_chunks(source), channel)
+    else:
+        records = decoder.decode(read_with_python_can(source.path, channel))
+    dbc = list(dbc)
+    return DbcDecoder(dbc).records(records) if dbc else records
 
 
 def stats(records: Iterable[Record]) -> Stats:
@@ -97,6 +108,7 @@ def read_tables(
     channel: str | None = None,
     relative_time: bool = False,
     progress: bool | None = None,
+    dbc: Iterable[str | os.PathLike[str]] = (),
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -122,6 +134,9 @@ def read_tables(
         progress: Show a progress bar over the captures' bytes (tqdm's, in a terminal or
             a notebook); None shows it when standard error is a terminal or in a
             notebook, and tqdm is installed.
+        dbc: DBC files: the ``unknown`` rows on a CAN ID one of them knows become tables
+            of their own, one per DBC message, a column per signal with its unit (the
+            ``dbc`` extra; see `veronte4x.capture.dbc_in`).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -139,10 +154,12 @@ def read_tables(
         >>> tables["errors"].column("error").to_pylist()
         ['unknown command']
     """
+    dbc = list(dbc)
+    decoder = DbcDecoder(dbc) if dbc else None
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time, progress
     )
-    return tables
+    return tables if decoder is None else decoder.tables(tables)
 
 
 def tables_from_records(

@@ -289,14 +289,18 @@ def _signal(
     else:
         msb = placed.shift + field.bits - 1  # bit number in the big-endian frame integer
         start = (layout.fixed_size - 1 - msb // 8) * 8 + msb % 8
-    common = {
-        "multiplexer": multiplexer,
-        "mux_value": mux_value,
-        "comment": comment,
-        "little_endian": little,
-    }
     if field.kind is Kind.FLOAT32:
-        return Signal(name, start, 32, signed=True, is_float=True, **common)  # type: ignore[arg-type]
+        return Signal(
+            name,
+            start,
+            32,
+            little_endian=little,
+            signed=True,
+            is_float=True,
+            multiplexer=multiplexer,
+            mux_value=mux_value,
+            comment=comment,
+        )
     signed = field.kind is Kind.SIGNED
     low = -(1 << (field.bits - 1)) if signed else 0
     high = (1 << (field.bits - 1)) - 1 if signed else (1 << field.bits) - 1

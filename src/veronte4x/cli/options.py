@@ -20,6 +20,14 @@ def add_capture_options(parser: argparse.ArgumentParser) -> None:
     """The capture argument's companions: the bus map and the channel filter."""
     parser.add_argument("--bus-map", metavar="FILE", help="TOML file of CAN IDs and choices")
     parser.add_argument("--channel", help="keep only this interface's frames")
+    parser.add_argument(
+        "--dbc",
+        metavar="FILE",
+        action="append",
+        default=[],
+        help="decode the frames outside the bus map that this DBC knows (repeatable; "
+        "needs veronte4x[dbc])",
+    )
 
 
 def add_bus_options(parser: argparse.ArgumentParser, *, channel: bool = True) -> None:
@@ -109,8 +117,14 @@ def open_records(
     if not live(args):
         if args.file is None:
             raise SourceError("give a capture file, or a live bus with --interface")
-        return capture.read(args.file, bus_map, args.channel)
-    return CaptureDecoder(bus_map).decode(open_frame_source(args, stop))
+        return capture.read(args.file, bus_map, args.channel, getattr(args, "dbc", ()))
+    return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop)))
+
+
+def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Record]:
+    """``records`` with the frames a ``--dbc`` file knows decoded (`capture.DbcDecoder`)."""
+    paths = getattr(args, "dbc", ())
+    return capture.DbcDecoder(paths).records(records) if paths else records
 
 
 def open_frame_source(

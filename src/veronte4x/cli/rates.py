@@ -12,7 +12,7 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.rates import RateTracker
 from veronte4x.capture.records import Record
-from veronte4x.cli.options import open_frame_source
+from veronte4x.cli.options import open_frame_source, with_dbc
 
 
 def add_options(parser: argparse.ArgumentParser) -> None:
@@ -37,7 +37,9 @@ def records(
     stop: threading.Event | None = None,
 ) -> Iterator[Record]:
     """The command's records, decoded from frames that also feed ``rates``."""
-    return CaptureDecoder(bus_map).decode(feed(open_frame_source(args, stop), rates))
+    return with_dbc(
+        args, CaptureDecoder(bus_map).decode(feed(open_frame_source(args, stop), rates))
+    )
 
 
 def feed(frames: Iterable[Frame | BadLine], rates: RateTracker) -> Iterator[Frame | BadLine]:
