@@ -25,7 +25,7 @@ def bus_args(port: int) -> list[str]:
     return ["--interface", "udp_multicast", "--channel", GROUP, "--bus-option", f"port={port}"]
 
 
-def veronte4x(*args: str, timeout: float = 30) -> subprocess.CompletedProcess[str]:
+def veronte4x(*args: str, timeout: float = 180) -> subprocess.CompletedProcess[str]:
     """Run ``python -m veronte4x ARGS`` and capture its output."""
     return subprocess.run(
         [sys.executable, "-m", "veronte4x", *args],
@@ -37,7 +37,7 @@ def veronte4x(*args: str, timeout: float = 30) -> subprocess.CompletedProcess[st
 
 
 def veronte4x_all(
-    *commands: list[str], timeout: float = 30
+    *commands: list[str], timeout: float = 180
 ) -> list[subprocess.CompletedProcess[str]]:
     """Run several commands at once (each ``esc`` one should have its own ``--node-id``)."""
     processes = [
