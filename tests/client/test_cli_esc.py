@@ -18,7 +18,7 @@ import pytest
 
 from veronte4x.dronecan.image_crc import crc64we
 
-from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
+from .cli_support import HANG_GUARD, bus_args, free_port, simulator, veronte4x, veronte4x_all
 
 
 @pytest.fixture(scope="module")
@@ -170,7 +170,7 @@ def test_a_killed_spin_stops_the_motors(bus: list[str]) -> None:
         if set(_duty(running.stdout, 21)) == {50}:
             break
     spin.send_signal(signal.SIGTERM)
-    _, stderr = spin.communicate(timeout=10)
+    _, stderr = spin.communicate(timeout=HANG_GUARD)
     assert spin.returncode == 130
     assert stderr == "veronte4x: interrupted; zero throttle sent to esc_index 0 (3 times)\n"
     assert set(_duty(running.stdout, 21)) == {50}

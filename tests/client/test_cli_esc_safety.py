@@ -153,7 +153,9 @@ def test_a_node_that_falls_silent_stops_every_motor() -> None:
 
 
 def test_over_current_stops_every_motor(bus: list[str]) -> None:
-    spin = _spin("21", "22", "--throttle", "0.4", "--duration", "60", "--max-current", "1", *bus)
+    # --silence 30: a loaded machine may starve a simulator for longer than the default
+    spin = _spin("21", "22", "--throttle", "0.4", "--duration", "60", "--max-current", "1",
+                 "--silence", "30", *bus)  # fmt: skip
     _, stderr = spin.communicate(timeout=180)
     assert spin.returncode == 1
     assert re.fullmatch(
