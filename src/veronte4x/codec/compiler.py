@@ -21,8 +21,7 @@ from typing import Any
 from veronte4x.codec.fields import ByteOrder, Field, Kind
 from veronte4x.codec.float32 import bits_from_float, float_from_bits
 from veronte4x.codec.messages import Message
-from veronte4x.codegen import compile_source
-from veronte4x.codegen import slot_builder as builder
+from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.errors import DecodeError, EncodeError, LayoutError
 
 Decoder = Callable[[bytes, bool], Message]
@@ -219,6 +218,9 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     namespace["_builder"] = builder(layout.message)
     return namespace
 
+
+builder = slot_builder
+"""`veronte4x.codegen.slot_builder`, under the name this module has always exported."""
 
 _PER_LAYOUT = re.compile(
     r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
