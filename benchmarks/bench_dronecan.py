@@ -6,7 +6,14 @@ and 8 ESCs. Both libraries get the same messages and frames, in the same run; th
 are checked to be identical first. Decoding feeds a stream of 64 transfers (transfer ids
 wrapping, 1 ms apart) frame by frame, as a capture is read.
 
-Run: ``.venv/bin/python benchmarks/bench_dronecan.py [--seconds 0.5]``
+Then every type of the standard ``uavcan`` namespace (82 messages, requests and
+responses): a sample of each (integers at a third of their range, floats 1.5, dynamic
+arrays with up to 8 items, uint8 arrays up to 16 bytes, the integer member of a union),
+its frames decoded by ``decode_frames`` against the package's ``Transfer.from_frames`` plus
+its payload decode; the ratio per type, and its median and worst (``--all-seconds``,
+a tenth of ``--seconds`` unless given).
+
+Run: ``.venv/bin/python benchmarks/bench_dronecan.py [--seconds 0.5] [--all-seconds 0.05]``
 """
 
 from __future__ import annotations
@@ -15,6 +22,7 @@ import argparse
 import functools
 import os
 import platform
+import statistics
 import sys
 import timeit
 from collections.abc import Callable
@@ -23,6 +31,8 @@ from typing import Any
 import dronecan as dc
 from dronecan import transport
 from veronte4x import dronecan as v4
+from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.schema import Array, Struct, Union
 
 CASES: dict[str, tuple[Callable[[], Any], Callable[[], Any]]] = {
     "NodeStatus": (
@@ -160,6 +170,55 @@ def _reference(make: Callable[[], Any]) -> tuple[Any, ...]:
     return encode, build_and_encode, decode, decode_frames, frames
 
 
+def _sample(t: Any) -> Any:
+    """Plain data of a typical value of a schema type (see the module docstring)."""
+    if isinstance(t, Struct):
+        return {f.name: _sample(f.type) for f in t.fields if f.name}
+    if isinstance(t, Union):
+        member = t.members[1] if len(t.members) > 1 else t.members[0]
+        return {member.name: _sample(member.type)}
+    if isinstance(t, Array):
+        count = t.max_size if not t.dynamic else min(t.max_size, 16 if t.is_bytes else 8)
+        return [_sample(t.item) for _ in range(count)]
+    if t.kind == "float":
+        return 1.5
+    if t.kind == "bool":
+        return True
+    return t.high // 3
+
+
+def _all_types(seconds: float) -> list[tuple[str, float]]:
+    """decode_frames against Transfer.from_frames + payload decode, per standard type."""
+    ratios = []
+    for data_type in DATA_TYPES:
+        message = v4.from_builtin(data_type.schema.cls, _sample(data_type.schema))
+        service = data_type.kind is not v4.TransferKind.MESSAGE
+        frames = [
+            (f.can_id, f.data)
+            for f in v4.encode(
+                message,
+                source_node_id=42,
+                destination_node_id=7 if service else None,
+                transfer_id=5,
+            )
+        ]
+        reference = [transport.Frame(can_id, data) for can_id, data in frames]
+
+        def theirs(reference: list[Any] = reference) -> Any:
+            t = transport.Transfer()
+            t.from_frames(reference)
+            return t.payload
+
+        def mine(frames: list[tuple[int, bytes]] = frames) -> Any:
+            return v4.decode_frames(frames).message
+
+        assert mine() == message
+        theirs()
+        a, b = _rates(mine, theirs, 1, seconds)
+        ratios.append((f"{data_type.full_name} {data_type.kind.name.lower()}", a / b))
+    return ratios
+
+
 SESSION_TABLE_SIZES = (1_000, 16_000)
 """Distinct sessions in the session-table rows; the reassembler keeps 1,024 by default."""
 
@@ -214,6 +273,12 @@ def _session_rows(seconds: float) -> dict[int, float]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=0.5, help="time per measurement")
+    parser.add_argument(
+        "--all-seconds",
+        type=float,
+        default=None,
+        help="time per type, every standard type (default: a tenth of --seconds)",
+    )
     args = parser.parse_args()
     print(f"python {platform.python_version()}, nproc {os.cpu_count()}, {platform.machine()}")
     print(f"{'case':22} {'op':13} {'veronte4x/s':>12} {'dronecan/s':>11} {'ratio':>7}")
@@ -234,6 +299,15 @@ def main() -> None:
             a, b = _rates(mine, theirs, items, args.seconds)
             lowest[op] = min(lowest.get(op, float("inf")), a / b)
             print(f"{name:22} {op:13} {a:12,.0f} {b:11,.0f} {a / b:6.1f}x")
+    ratios = _all_types(args.seconds / 10 if args.all_seconds is None else args.all_seconds)
+    for name, ratio in ratios:
+        print(f"{name:60} decode_frames {ratio:6.1f}x")
+    values = sorted(r for _, r in ratios)
+    worst = min(ratios, key=lambda item: item[1])
+    print(
+        f"every standard type ({len(values)}): decode_frames median "
+        f"{statistics.median(values):.1f}x, worst {worst[1]:.1f}x ({worst[0]})"
+    )
     rates = _session_rows(args.seconds)
     print("lowest ratio: " + ", ".join(f"{op} {r:.1f}x" for op, r in lowest.items()))
     small, large = rates[SESSION_TABLE_SIZES[0]], rates[SESSION_TABLE_SIZES[-1]]

@@ -100,7 +100,7 @@ def test_foreign_traffic_is_undecoded_and_counted_apart() -> None:
         "(1.0) can0 123#0102",
         "(1.1) can0 01ABCDEF#",
         f"(2.0) can0 {can_id.message_can_id(16, 1234, 42):08X}#C0",
-        f"(2.1) can0 {can_id.service_can_id(16, 49, True, 7, 42):08X}#C1",
+        f"(2.1) can0 {can_id.service_can_id(16, 200, True, 7, 42):08X}#C1",
         f"(2.2) can0 {can_id.anonymous_can_id(16, 2, 99):08X}#C2",
         "(3.0) can0 008#0400",
     ]
@@ -110,7 +110,7 @@ def test_foreign_traffic_is_undecoded_and_counted_apart() -> None:
         ("unknown", None, None, "11-bit CAN ID 0x123", b"\x01\x02"),
         ("unknown", None, None, "29-bit CAN ID 0x1abcdef", b""),
         ("unknown", None, None, "DroneCAN data type 1234", b"\xc0"),
-        ("unknown", None, None, "DroneCAN service type 49", b"\xc1"),
+        ("unknown", None, None, "DroneCAN service type 200", b"\xc1"),
         ("unknown", None, None, "DroneCAN anonymous data type 2", b"\xc2"),
     ]
     assert records[2].node_id == 42 and records[3].node_id == 7

@@ -65,8 +65,8 @@ def test_list_text() -> None:
         lines
     )
     assert (
-        "  uavcan.protocol.file.Read                 response    48  0x8dcdca939f33f678  258"
-        in lines
+        "  uavcan.protocol.file.Read                             response    48  0x8dcdca939f33f678"
+        "  258" in lines
     )
 
 

@@ -41,6 +41,20 @@ def _fill(obj: Any, fields: dict[str, Any]) -> None:
                     setattr(inner, member, member_value)
             else:
                 _fill(inner, value)
+        elif isinstance(value, list) and value and isinstance(value[0], dict):
+            array = getattr(obj, name)
+            del array[:]
+            for item_fields in value:
+                item = array.new_item()
+                _fill(item, item_fields)
+                array.append(item)
+        elif isinstance(value, list) and isinstance(getattr(obj, name), transport.ArrayValue):
+            array = getattr(obj, name)
+            if len(array) and len(array) == len(value):  # a static array: fill in place
+                for i, item in enumerate(value):
+                    array[i] = item
+            else:
+                setattr(obj, name, value)
         else:
             setattr(obj, name, value)
 

@@ -23,6 +23,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from veronte4x import dronecan
+from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.schema import Array, Struct, Union
 
 K = dronecan.TransferKind
 
@@ -158,6 +160,45 @@ STRATEGIES: dict[tuple[str, dronecan.TransferKind], st.SearchStrategy[dict[str, 
         {"error": st.fixed_dictionaries({"value": _i(16)}), "data": _bytes(256)}
     ),
 }
+
+
+def _ends(low: int, high: int) -> st.SearchStrategy[int]:
+    """Any int in range, with both ends drawn often."""
+    return st.one_of(st.sampled_from((low, high)), st.integers(low, high))
+
+
+def _list(item: st.SearchStrategy[Any], size: int, dynamic: bool) -> st.SearchStrategy[Any]:
+    """Arrays empty, full or in between (exactly ``size`` items when static)."""
+    if not dynamic:
+        return st.lists(item, min_size=size, max_size=size)
+    return st.one_of(
+        st.just([]),
+        st.lists(item, min_size=size, max_size=size),
+        st.lists(item, max_size=size),
+    )
+
+
+def _member(name: str, values: st.SearchStrategy[Any]) -> st.SearchStrategy[dict[str, Any]]:
+    return values.map(lambda v: {name: v})
+
+
+def schema_strategy(t: Any) -> st.SearchStrategy[Any]:
+    """Plain data (as `to_builtin` gives it) of any type, from its schema alone."""
+    if isinstance(t, Struct):
+        return st.fixed_dictionaries({f.name: schema_strategy(f.type) for f in t.fields if f.name})
+    if isinstance(t, Union):
+        return st.one_of([_member(m.name, schema_strategy(m.type)) for m in t.members])
+    if isinstance(t, Array):
+        return _list(schema_strategy(t.item), t.max_size, t.dynamic)
+    if t.kind == "float":
+        return {16: _F16, 32: _F32, 64: st.floats(allow_infinity=False)}[t.bits]
+    if t.kind == "bool":
+        return st.booleans()
+    return _ends(t.low, t.high)
+
+
+for _t in DATA_TYPES:
+    STRATEGIES.setdefault((_t.full_name, _t.kind), schema_strategy(_t.schema))
 
 
 def _same(a: Any, b: Any) -> bool:

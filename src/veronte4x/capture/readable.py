@@ -37,7 +37,9 @@ def _float16_fields() -> frozenset[tuple[type, str]]:
                 walk(field.type)
             else:
                 item = field.type.item if isinstance(field.type, Array) else field.type
-                if item == Scalar("float", 16):
+                if isinstance(item, Struct):
+                    walk(item)
+                elif item == Scalar("float", 16):
                     found.add((node.cls, field.name))
 
     for data_type in _dronecan.DATA_TYPES:

@@ -21,6 +21,7 @@ from typing import Any
 from veronte4x.codec.fields import ByteOrder, Field, Kind
 from veronte4x.codec.float32 import bits_from_float, float_from_bits
 from veronte4x.codec.messages import Message
+from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, boolean, integer, real
 
 Decoder = Callable[[bytes, bool], Message]
@@ -145,8 +146,8 @@ class FrameLayout:
         self.check()
         namespace = _namespace(self)
         decode_src, encode_src = self.source_code
-        exec(compile(decode_src, f"<decode {self.name}>", "exec"), namespace)
-        exec(compile(encode_src, f"<encode {self.name}>", "exec"), namespace)
+        compile_source(decode_src, namespace, f"decode {self.name}")
+        compile_source(encode_src, namespace, f"encode {self.name}")
         return namespace["decode"], namespace["encode"]
 
     def decode(self, data: bytes, allow_excess: bool = False) -> Message:
@@ -218,6 +219,9 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     namespace["_builder"] = builder(layout.message)
     return namespace
 
+
+builder = slot_builder
+"""`veronte4x.codegen.slot_builder`, under the name this module has always exported."""
 
 _PER_LAYOUT = re.compile(
     r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
@@ -301,33 +305,6 @@ def _skipping(layout: FrameLayout, assume: frozenset[str]) -> tuple[str, list[st
     }
     codes = [("x" if name in skipped else code) for code, name in zip(fmt[1:], names, strict=True)]
     return fmt[0] + "".join(codes), [name for name in names if name not in skipped]
-
-
-def builder(cls: type[Message]) -> type | None:
-    """A plain class with the same slots as ``cls``, or None if none fits.
-
-    An instance of it is filled by plain slot stores (no frozen ``__setattr__``, no call)
-    and then given the message class by ``__class__`` assignment, which Python allows
-    between classes of identical layout. The result is an ordinary instance of ``cls``,
-    built several times faster than through the slots' setters or the frozen ``__init__``.
-    The builder derives from the base under the class that declares the slots, which must
-    be a plain slotted class (`Message`, `DeclaredMessage`); otherwise None (the slots'
-    setters are used).
-    """
-    declaring: type = cls
-    while not declaring.__dict__.get("__slots__") and declaring.__base__ not in (None, object):
-        declaring = declaring.__base__
-    base: Any = declaring.__base__
-    if base is None or base.__setattr__ is not object.__setattr__:
-        return None
-    slots = declaring.__dict__.get("__slots__", ())
-    made = type(f"_{cls.__name__}Builder", (base,), {"__slots__": tuple(slots)})
-    try:
-        probe: Any = object.__new__(made)
-        probe.__class__ = cls
-    except TypeError:
-        return None
-    return made
 
 
 def _dataclass_fields(cls: type[Message]) -> tuple[dataclasses.Field[Any], ...]:

@@ -19,13 +19,14 @@ from veronte4x.codec.compiler import (
     Decoder,
     Encoder,
     FrameLayout,
-    builder,
     inline_decoder,
     optimistic_decoder,
 )
 from veronte4x.codec.declared import Layout
 from veronte4x.codec.messages import Message, OpaqueMessage, PwmSet, Sender, Status
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
+from veronte4x.codegen import compile_source
+from veronte4x.codegen import slot_builder as builder
 from veronte4x.errors import (
     BytesLike,
     DecodeError,
@@ -224,7 +225,7 @@ class Codec:
             *body(layouts.READY, 8),
             *body(layouts.ARBITRATION_VARIABLE, 4),
         ]
-        exec(compile("\n".join(lines) + "\n", "<decode Codec>", "exec"), namespace)
+        compile_source("\n".join(lines), namespace, "decode Codec")
         decode: Callable[..., Message] = namespace["decode"]
         return decode
 
@@ -351,7 +352,7 @@ class Codec:
             *body(layouts.STATUS_4X, 4, {"command", "header"}),
         ]
         source = "\n".join(status + lines) + "\n"
-        exec(compile(source, "<decode Codec fast>", "exec"), namespace)
+        compile_source(source, namespace, "decode Codec fast")
         decode: Callable[..., Message] = namespace["decode"]
         return decode
 

@@ -1,9 +1,9 @@
-"""DroneCAN (UAVCAN v0) for Vertiq ESCs: CAN IDs, transfers, reassembly and the types of Vertiq ESCs
-and their ground station."""
+"""DroneCAN (UAVCAN v0): CAN IDs, transfers, reassembly, and every type of the standard
+``uavcan`` DSDL namespace (compiled from its DSDL, `standard`), Vertiq's ESCs first."""
 
 from __future__ import annotations
 
-from veronte4x.dronecan import vertiq
+from veronte4x.dronecan import standard, vertiq
 from veronte4x.dronecan.builtin import from_builtin, to_builtin
 from veronte4x.dronecan.can_id import (
     CanId,
@@ -56,6 +56,7 @@ from veronte4x.dronecan.messages import (
     TemperatureErrorFlag,
     Value,
 )
+from veronte4x.dronecan.parser import DsdlError
 from veronte4x.dronecan.reassembler import (
     TRANSFER_ID_TIMEOUT,
     TRANSFER_PROBLEMS,
@@ -63,6 +64,7 @@ from veronte4x.dronecan.reassembler import (
     ProblemReport,
     Reassembler,
 )
+from veronte4x.dronecan.standard import *  # noqa: F403  (every standard type, generated)
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, decode_frames, encode
 from veronte4x.errors import DecodeError, EncodeError, Veronte4xError
 
@@ -75,6 +77,7 @@ __all__ = [
     "BooleanValue",
     "CanId",
     "DecodeError",
+    "DsdlError",
     "Empty",
     "EncodeError",
     "EntryType",
@@ -127,6 +130,8 @@ __all__ = [
     "message_can_id",
     "parse_can_id",
     "service_can_id",
+    "standard",
     "to_builtin",
     "vertiq",
 ]
+__all__ += standard.__all__

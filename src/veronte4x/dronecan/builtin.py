@@ -22,13 +22,15 @@ def _structs(t: Any, found: dict[type, Struct]) -> dict[type, Struct]:
     elif isinstance(t, Union):
         for member in t.members:
             _structs(member.type, found)
+    elif isinstance(t, Array):
+        _structs(t.item, found)
     return found
 
 
 _STRUCTS: dict[type, Struct] = {}
 for _data_type in DATA_TYPES:
     _structs(_data_type.schema, _STRUCTS)
-_MEMBER_OF = {member.cls: member for member in VALUE.members}
+assert isinstance(VALUE, Union)
 _MEMBERS = {member.cls for member in VALUE.members if not isinstance(member.type, Struct)}
 
 
@@ -36,12 +38,14 @@ def _convert(value: Any, t: Any) -> Any:
     if isinstance(t, Struct):
         return {f.name: _convert(getattr(value, f.name), f.type) for f in t.fields if f.name}
     if isinstance(t, Union):
-        member = _MEMBER_OF.get(value.__class__)
+        member = next((m for m in t.members if m.cls is value.__class__), None)
         if member is None:
             return value
         inner = value if isinstance(member.type, Struct) else value.value
         return {member.name: _convert(inner, member.type)}
     if isinstance(t, Array):
+        if isinstance(t.item, Struct):
+            return [_convert(item, t.item) for item in value]
         return list(value)
     if isinstance(value, enum.Enum):
         return value.value
@@ -96,6 +100,8 @@ def _build(t: Any, data: Any, enum: type | None, path: str) -> Any:
                 return bytes(data.encode() if isinstance(data, str) else data)
             except (TypeError, ValueError):
                 raise EncodeError(t.dsdl, path, data, "byte values 0..255") from None
+        if isinstance(t.item, Struct):
+            return tuple(_build(t.item, item, None, f"{path}[{i}]") for i, item in enumerate(data))
         return tuple(data)
     if enum is not None and isinstance(data, int):
         return enum_table(enum, t.bits)[data] if 0 <= data < 1 << t.bits else data

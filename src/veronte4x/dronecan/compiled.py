@@ -38,6 +38,7 @@ from binascii import crc_hqx
 from collections.abc import Callable, Sequence
 from typing import Any, NamedTuple
 
+from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.dronecan.float16 import FLOAT16_VALUES, float16_bits, float32_bits, float32_value
 from veronte4x.dronecan.schema import Array, Scalar, Struct
 from veronte4x.dronecan.serializer import enum_table
@@ -150,10 +151,16 @@ class _Source:
         self.names[key] = value
         return key
 
-    def build(self) -> dict[str, Any]:
-        """Run the generated code once; return its namespace."""
-        exec("\n".join(self.lines), self.names)
-        return self.names
+    def build(self, title: str) -> dict[str, Any]:
+        """Run the generated code once (see `veronte4x.codegen.compile_source`); return its
+        namespace."""
+        return compile_source("\n".join(self.lines), self.names, title)
+
+
+def _slot_builder(cls: type) -> type:
+    made = slot_builder(cls)
+    assert made is not None, cls  # every DroneCAN class is a plain slotted dataclass
+    return made
 
 
 class Transport(NamedTuple):
@@ -175,11 +182,6 @@ def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transpo
         return
     src.lines.append(f"    p = ({stream}).to_bytes({size}, 'big')")
     _emit_multi_frame(src, size, frame, can_id, transport)
-
-
-def _builder(cls: type) -> type:
-    """A plain class with the same slots as ``cls``, to build instances of ``cls`` fast."""
-    return type(f"_{cls.__name__}Builder", (), {"__slots__": cls.__slots__})  # type: ignore[attr-defined]
 
 
 class _Group(NamedTuple):
@@ -337,6 +339,8 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     if len(fields) != len(schema.fields):
         return None
     scalars = [f.type for f in fields if isinstance(f.type, Scalar)]
+    if any(t.kind == "float" and t.bits == 64 for t in scalars):
+        return None
     unpack = " ".join(f"v{i} = m.{f.name};" for i, f in enumerate(fields) if f.name) or "pass"
     size = (sum(t.bits for t in scalars) + 7) // 8
     src = _Source()
@@ -354,7 +358,7 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
         else:
             packer = src.name("S", struct.Struct(layout))
             src.lines.append(f"    return {packer}.pack({', '.join(values)})")
-    builder = src.name("B", _builder(schema.cls))
+    builder = src.name("B", _slot_builder(schema.cls))
     cls = src.name("C", schema.cls)
     groups = _groups(scalars)
     for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
@@ -390,7 +394,7 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
                     raw = f"{src.name('E', enum_table(f.enum, t.bits))}[{raw}]"
                 src.lines.append(f"    o.{f.name} = {raw}")
         src.lines += [f"    o.__class__ = {cls}", "    return o"]
-    code = src.build()
+    code = src.build(f"fast paths {schema.name}")
     return FastPaths(
         code["frames"], code["payload"], code["decode"], code["decode_frame"] if size <= 7 else None
     )
@@ -408,7 +412,9 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         return None
     name, array = schema.fields[0].name, schema.fields[0].type
     item = array.item
-    if item.kind != "int" or not 8 < item.bits <= 16 or not array.dynamic:
+    if not isinstance(item, Scalar) or item.kind != "int" or not 8 < item.bits <= 16:
+        return None
+    if not array.dynamic:
         return None
     bits, rest = item.bits, item.bits - 8
     low = item.low
@@ -420,7 +426,7 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         from_stream[((v & 0xFF) << rest) | ((v & ((1 << bits) - 1)) >> 8)] = v
     src = _Source()
     enc, dec = src.name("S", to_stream), src.name("D", tuple(from_stream))
-    builder, cls = src.name("B", _builder(schema.cls)), src.name("C", schema.cls)
+    builder, cls = src.name("B", _slot_builder(schema.cls)), src.name("C", schema.cls)
     offset = -low
     sizes = []
     for count in range(array.max_size + 1):
@@ -478,5 +484,5 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         "def decode_frame(buf):",
         f"    return (DF[len(buf)] if len(buf) < {longest} else bad)(buf)",
     ]
-    code = src.build()
+    code = src.build(f"fast paths {schema.name}")
     return FastPaths(code["frames"], code["payload"], code["decode"], code["decode_frame"])

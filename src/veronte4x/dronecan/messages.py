@@ -302,7 +302,7 @@ class Path:
 
     SEPARATOR: ClassVar[int] = ord("/")
 
-    path: bytes
+    path: bytes = b""
 
 
 @dataclass(frozen=True, slots=True)
@@ -357,7 +357,7 @@ class FileErrorCode:
     ``value`` compares equal to the `FileError` members.
     """
 
-    value: int
+    value: int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -367,7 +367,7 @@ class EntryType:
     ``flags`` bits: `EntryTypeFlag`; zero when the entry does not exist.
     """
 
-    flags: int
+    flags: int = 0
 
 
 @dataclass(frozen=True, slots=True)

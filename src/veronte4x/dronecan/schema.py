@@ -14,10 +14,15 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Scalar:
-    """A primitive field: ``uint``, ``int``, ``float``, ``bool`` or ``void`` of ``bits`` bits."""
+    """A primitive field: ``uint``, ``int``, ``float``, ``bool`` or ``void`` of ``bits`` bits.
+
+    ``truncated`` is the DSDL cast mode ``truncated`` (the default is ``saturated``): with
+    ``saturate=True`` an out-of-range value is cut to its low bits instead of clamped.
+    """
 
     kind: str
     bits: int
+    truncated: bool = False
 
     @property
     def dsdl(self) -> str:
@@ -37,12 +42,13 @@ class Scalar:
 
 @dataclass(frozen=True)
 class Array:
-    """An array of scalars: fixed ``[max_size]`` or dynamic ``[<=max_size]``.
+    """An array of scalars or structs: fixed ``[max_size]`` or dynamic ``[<=max_size]``.
 
-    Arrays of uint8 are ``bytes`` in Python, others tuples of ints.
+    Arrays of uint8 are ``bytes`` in Python, others tuples (of ints, floats, bools or
+    struct instances).
     """
 
-    item: Scalar
+    item: Scalar | Struct
     max_size: int
     dynamic: bool
 
@@ -78,6 +84,11 @@ class Struct:
     name: str
     cls: type
     fields: tuple[Field, ...]
+
+    @property
+    def dsdl(self) -> str:
+        """The type name."""
+        return self.name
 
 
 @dataclass(frozen=True)
@@ -116,7 +127,7 @@ def min_bits(t: Scalar | Array | Struct | Union) -> int:
     if isinstance(t, Scalar):
         return t.bits
     if isinstance(t, Array):
-        return t.prefix_bits if t.dynamic else t.max_size * t.item.bits
+        return t.prefix_bits if t.dynamic else t.max_size * min_bits(t.item)
     if isinstance(t, Struct):
         return sum(min_bits(f.type) for f in t.fields)
     return t.tag_bits + min(min_bits(m.type) for m in t.members)
@@ -128,7 +139,7 @@ def max_bits(t: Scalar | Array | Struct | Union, tao: bool = False) -> int:
         return t.bits
     if isinstance(t, Array):
         prefix = 0 if tao and uses_tao(t) else t.prefix_bits
-        return prefix + t.max_size * t.item.bits
+        return prefix + t.max_size * max_bits(t.item)
     if isinstance(t, Struct):
         last = len(t.fields) - 1
         return sum(max_bits(f.type, tao and i == last) for i, f in enumerate(t.fields))
@@ -136,5 +147,17 @@ def max_bits(t: Scalar | Array | Struct | Union, tao: bool = False) -> int:
 
 
 def uses_tao(array: Array) -> bool:
-    """Whether a dynamic array in tail position drops its prefix: items of 8 bits or more."""
-    return array.dynamic and array.item.bits >= 8
+    """Whether a dynamic array in tail position drops its prefix: items of 8 bits or more
+    at the least (`tao_min_bits`)."""
+    return array.dynamic and tao_min_bits(array.item) >= 8
+
+
+def tao_min_bits(t: Scalar | Array | Struct | Union) -> int:
+    """The least bit length of a type as the TAO rule counts it: dynamic arrays count 0."""
+    if isinstance(t, Scalar):
+        return t.bits
+    if isinstance(t, Array):
+        return 0 if t.dynamic else t.max_size * tao_min_bits(t.item)
+    if isinstance(t, Struct):
+        return sum(tao_min_bits(f.type) for f in t.fields)
+    return t.tag_bits + min(tao_min_bits(m.type) for m in t.members)

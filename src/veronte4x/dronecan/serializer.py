@@ -16,6 +16,8 @@ for saturation; `compiled` holds the fast paths.
 from __future__ import annotations
 
 import functools
+import operator
+import struct
 from typing import Any
 
 from veronte4x.dronecan.float16 import (
@@ -105,28 +107,66 @@ def enum_table(enum: type, bits: int) -> tuple[Any, ...]:
     return tuple(known.get(i, i) for i in range(1 << bits))
 
 
+_F64 = struct.Struct("<d")
+_U64 = struct.Struct("<Q")
+
+
+def _as_int(value: object) -> int | None:
+    """``value`` as an exact int (ints and NumPy integers, through ``__index__``), else None.
+
+    bools (Python's and NumPy's) are not ints here."""
+    if value.__class__ is bool or value.__class__.__name__ in ("bool", "bool_"):
+        return None
+    try:
+        return operator.index(value)  # type: ignore[arg-type]
+    except TypeError:
+        return None
+
+
 def _check_int(name: str, field: str, t: Scalar, value: object, saturate: bool) -> int:
-    if isinstance(value, bool) or not isinstance(value, int):
-        if t.kind == "bool" and isinstance(value, bool):
-            return int(value)
+    number = value if value.__class__ is int else _as_int(value)
+    if number is None:
         raise EncodeError(name, field, value, f"an int for {t.dsdl}")
-    if t.kind == "bool" and value not in (0, 1):
+    assert isinstance(number, int)
+    if t.kind == "bool" and number not in (0, 1):
         raise EncodeError(name, field, value, "a bool")
-    if value < t.low or value > t.high:
+    if number < t.low or number > t.high:
         if not saturate:
             raise EncodeError(name, field, value, f"an int in {t.low}..{t.high} ({t.dsdl})")
-        value = t.low if value < t.low else t.high
-    return value & ((1 << t.bits) - 1)
+        if not t.truncated:
+            number = t.low if number < t.low else t.high
+    return number & ((1 << t.bits) - 1)
+
+
+def _as_float(value: object) -> float | None:
+    """``value`` as a float: Python and NumPy floats and ints (not bools), else None."""
+    if isinstance(value, float):
+        return value
+    number = _as_int(value)
+    if number is not None:
+        return float(number)
+    if value.__class__.__name__.startswith("float") and hasattr(value, "__float__"):
+        return float(value)
+    return None
 
 
 def scalar_bits(name: str, field: str, t: Scalar, value: object, saturate: bool) -> int:
-    """Validate one scalar value and return its raw bits (two's complement, IEEE)."""
+    """Validate one scalar value and return its raw bits (two's complement, IEEE).
+
+    NumPy integer, float and bool scalars are accepted where Python's are; a value is
+    never narrowed silently (a float is no int, an out-of-range int an error)."""
     if t.kind == "float":
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        number = _as_float(value)
+        if number is None:
             raise EncodeError(name, field, value, f"a float for {t.dsdl}")
-        return float16_bits(value) if t.bits == 16 else float32_bits(value)
-    if t.kind == "bool" and isinstance(value, bool):
-        return int(value)
+        if t.bits == 64:
+            raw: int = _U64.unpack(_F64.pack(number))[0]
+            return raw
+        return float16_bits(number) if t.bits == 16 else float32_bits(number)
+    if t.kind == "bool" and (
+        isinstance(value, bool) or value.__class__.__name__ in ("bool", "bool_")
+    ):
+        return 1 if value else 0
     return _check_int(name, field, t, value, saturate)
 
 
@@ -192,8 +232,19 @@ class Serializer:
         if t.is_bytes:
             w.put_bytes(bytes(items))
             return
+        item_type = t.item
+        if isinstance(item_type, Struct):
+            # Items of a TAO array are whole; otherwise the last one inherits the tail position.
+            last = -1 if t.dynamic and tao and uses_tao(t) else count - 1
+            for i, item in enumerate(items):
+                if not isinstance(item, item_type.cls):
+                    raise EncodeError(
+                        self.name, f"{path}[{i}]", item, f"a {item_type.cls.__name__}"
+                    )
+                self._put_struct(w, item_type, item, f"{path}[{i}].", tao and i == last, saturate)
+            return
         for i, item in enumerate(items):
-            w.put(scalar_bits(self.name, f"{path}[{i}]", t.item, item, saturate), t.item.bits)
+            w.put(scalar_bits(self.name, f"{path}[{i}]", item_type, item, saturate), item_type.bits)
 
     def _put_union(
         self, w: _Writer, u: Union, value: object, path: str, tao: bool, saturate: bool
@@ -256,20 +307,26 @@ class Serializer:
         if t.kind == "int":
             return raw - ((raw >> (t.bits - 1)) << t.bits)
         if t.kind == "float":
+            if t.bits == 64:
+                value: float = _F64.unpack(_U64.pack(raw))[0]
+                return value
             return FLOAT16_VALUES[raw] if t.bits == 16 else float32_value(raw)
         if t.kind == "bool":
             return bool(raw)
         return raw if enum is None else enum_table(enum, t.bits)[raw]
 
     def _get_array(self, r: _Reader, t: Array, path: str, tao: bool) -> Any:
+        item_type = t.item
+        if isinstance(item_type, Struct):
+            return self._get_struct_array(r, t, item_type, path, tao)
         if tao and uses_tao(t):
             count = 0
             remaining = r.remaining()
-            while remaining - count * t.item.bits >= 8:
+            while remaining - count * item_type.bits >= 8:
                 count += 1
-            if count * t.item.bits > remaining:
+            if count * item_type.bits > remaining:
                 raise DecodeError(
-                    self.name, f"{remaining} bits left, not a whole {t.item.dsdl}", r.data, path
+                    self.name, f"{remaining} bits left, not a whole {item_type.dsdl}", r.data, path
                 )
         elif t.dynamic:
             count = r.take(t.prefix_bits, path)
@@ -281,4 +338,27 @@ class Serializer:
             )
         if t.is_bytes:
             return r.take(8 * count, path).to_bytes(count, "big") if count else b""
-        return tuple(self._scalar(t.item, r.get(t.item.bits, path), None) for _ in range(count))
+        return tuple(
+            self._scalar(item_type, r.get(item_type.bits, path), None) for _ in range(count)
+        )
+
+    def _get_struct_array(
+        self, r: _Reader, t: Array, item: Struct, path: str, tao: bool
+    ) -> tuple[Any, ...]:
+        items: list[Any] = []
+        if tao and uses_tao(t):
+            while r.remaining() >= 8:
+                if len(items) == t.max_size:
+                    raise DecodeError(
+                        self.name, f"more than {t.max_size} items ({t.dsdl})", r.data, path
+                    )
+                items.append(self._get_struct(r, item, f"{path}[{len(items)}].", False))
+            return tuple(items)
+        count = r.take(t.prefix_bits, path) if t.dynamic else t.max_size
+        if count > t.max_size:
+            raise DecodeError(
+                self.name, f"{count} items, more than {t.max_size} ({t.dsdl})", r.data, path
+            )
+        for i in range(count):
+            items.append(self._get_struct(r, item, f"{path}[{i}].", tao and i == count - 1))
+        return tuple(items)

@@ -205,15 +205,47 @@ def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[
             columns += _struct_columns(t, name + ".", where)
         elif isinstance(t, Union):
             columns += _union_columns(t, name, where)
+        elif isinstance(t, Array) and isinstance(t.item, Struct):
+            columns.append(Column(name, pa.list_(_struct_type(t.item)), _items(where)))
         elif isinstance(t, Array):
-            item = pa.binary() if t.is_bytes else pa.list_(scalar_type(t.item))
-            columns.append(Column(name, item, _path(where)))
+            columns.append(Column(name, _value_type(t), _path(where)))
         elif f.enum is not None:
             names = enum_names(f.enum, t.bits)
             columns.append(Column(name, enum_type(names), _enum_index(where), names))
         else:
             columns.append(Column(name, scalar_type(t), _path(where)))
     return columns
+
+
+def _struct_type(struct: Struct) -> pa.DataType:
+    """The Arrow struct of the items of an array of structs (enums as their integers)."""
+    return pa.struct([pa.field(f.name, _value_type(f.type)) for f in struct.fields if f.name])
+
+
+def _value_type(t: Scalar | Array | Struct | Union) -> pa.DataType:
+    if isinstance(t, Struct):
+        return _struct_type(t)
+    if isinstance(t, Array):
+        if t.is_bytes:
+            return pa.binary()
+        return pa.list_(_value_type(t.item))
+    if isinstance(t, Union):
+        raise TypeError(f"{t.name}: a union inside an array has no column type")
+    return scalar_type(t)
+
+
+def _plain(value: Any) -> Any:
+    """A struct instance as a dict of its fields, recursively (for Arrow struct values)."""
+    if dataclasses.is_dataclass(value):
+        return {f.name: _plain(getattr(value, f.name)) for f in dataclasses.fields(value)}
+    if isinstance(value, tuple):
+        return [_plain(item) for item in value]
+    return value
+
+
+def _items(where: tuple[str, ...]) -> Callable[[Any], Any]:
+    get = _path(where)
+    return lambda message: [_plain(item) for item in get(message)]
 
 
 def _union_columns(union: Union, name: str, where: tuple[str, ...]) -> list[Column]:

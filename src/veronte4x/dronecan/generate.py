@@ -1,0 +1,509 @@
+"""Python source of the message classes of a set of DSDL definitions.
+
+`standard` is this module's output for the standard ``uavcan`` namespace, checked into the
+package (``python -m veronte4x.dronecan.generate`` rewrites it; a test compares). For a
+vendor namespace, `veronte4x.dronecan.load_dsdl` compiles the same source at run time.
+
+Naming rules (documented in the DroneCAN types page):
+
+- A message or nested type is named by its short name (``BatteryInfo``, ``Fix2``); the
+  halves of a service add ``Request`` and ``Response`` (``GetTransportStatsRequest``).
+- When two types of the set share a short name (the five ``Status`` messages), or the
+  name is already taken (``Mode``), each gets the CamelCase of its namespace's last
+  component in front (``ActuatorStatus``, ``CameraGimbalStatus``, ``HardpointCommand``),
+  and more components while a clash remains.
+- The types that veronte4x named before keep their names (`HAND_NAMES`).
+- Constants sharing the prefix ``P_`` where ``p`` is an integer field of the same type
+  become an ``enum.IntEnum`` named ``CamelCase(P)`` (``ActuatorCommand.command_type``:
+  ``CommandType``); where two types would give the same name, or the name is taken, the
+  class name goes in front (``FixStatus``, ``Fix2Status``, ``ArmingStatusStatus``). The
+  field decodes to it (an int where the value has no member). Constants ``P_FLAG_*`` for a
+  field ``p_flags`` become an ``enum.IntFlag`` and the field stays an int. Members drop
+  the prefix unless a name would then start with a digit. Every constant also stays a
+  class attribute of its DSDL name.
+- A union (only ``param.Value`` and ``param.NumericValue`` in the standard set) holds one
+  member class: the nested type's own class, or a class with one field ``value`` named
+  ``<Union><Member>`` in CamelCase.
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from veronte4x.dronecan.parser import (
+    ArrayType,
+    Constant,
+    Definition,
+    DsdlError,
+    FieldType,
+    PrimitiveType,
+    Section,
+    nested_name,
+)
+
+HAND_NAMES: dict[str, str] = {
+    "uavcan.protocol.NodeStatus": "NodeStatus",
+    "uavcan.equipment.esc.Status": "EscStatus",
+    "uavcan.equipment.device.Temperature": "Temperature",
+    "uavcan.equipment.esc.RawCommand": "RawCommand",
+    "uavcan.protocol.SoftwareVersion": "SoftwareVersion",
+    "uavcan.protocol.HardwareVersion": "HardwareVersion",
+    "uavcan.protocol.GetNodeInfo.Request": "GetNodeInfoRequest",
+    "uavcan.protocol.GetNodeInfo.Response": "GetNodeInfoResponse",
+    "uavcan.protocol.param.Empty": "Empty",
+    "uavcan.protocol.param.Value": "Value",
+    "uavcan.protocol.param.NumericValue": "NumericValue",
+    "uavcan.protocol.param.GetSet.Request": "GetSetRequest",
+    "uavcan.protocol.param.GetSet.Response": "GetSetResponse",
+    "uavcan.protocol.RestartNode.Request": "RestartNodeRequest",
+    "uavcan.protocol.RestartNode.Response": "RestartNodeResponse",
+    "uavcan.protocol.file.Path": "Path",
+    "uavcan.protocol.file.BeginFirmwareUpdate.Request": "BeginFirmwareUpdateRequest",
+    "uavcan.protocol.file.BeginFirmwareUpdate.Response": "BeginFirmwareUpdateResponse",
+    "uavcan.protocol.param.ExecuteOpcode.Request": "ExecuteOpcodeRequest",
+    "uavcan.protocol.param.ExecuteOpcode.Response": "ExecuteOpcodeResponse",
+    "uavcan.protocol.file.Error": "FileErrorCode",
+    "uavcan.protocol.file.EntryType": "EntryType",
+    "uavcan.protocol.file.GetInfo.Request": "FileGetInfoRequest",
+    "uavcan.protocol.file.GetInfo.Response": "FileGetInfoResponse",
+    "uavcan.protocol.file.Read.Request": "FileReadRequest",
+    "uavcan.protocol.file.Read.Response": "FileReadResponse",
+}
+"""The classes written by hand in `veronte4x.dronecan.messages` before the DSDL compiler
+(their names, fields and enums are public API): key (full name, ``.Request`` or
+``.Response`` for a service half) to class name."""
+
+HAND_ENUMS: dict[tuple[str, str], str] = {
+    ("uavcan.protocol.NodeStatus", "health"): "Health",
+    ("uavcan.protocol.NodeStatus", "mode"): "Mode",
+    ("uavcan.protocol.file.BeginFirmwareUpdate.Response", "error"): "FirmwareUpdateError",
+    ("uavcan.protocol.param.ExecuteOpcode.Request", "opcode"): "Opcode",
+}
+"""The enum fields of the hand-written classes."""
+
+HAND_UNION_MEMBERS: dict[str, tuple[str, ...]] = {
+    "uavcan.protocol.param.Value": (
+        "Empty",
+        "IntegerValue",
+        "RealValue",
+        "BooleanValue",
+        "StringValue",
+    ),
+    "uavcan.protocol.param.NumericValue": ("Empty", "IntegerValue", "RealValue"),
+}
+"""The member classes of the hand-written unions, in member order."""
+
+_RESERVED = {
+    "Health",
+    "Mode",
+    "FirmwareUpdateError",
+    "FileError",
+    "Opcode",
+    "EntryTypeFlag",
+    "TemperatureErrorFlag",
+    "SoftwareVersionFlag",
+    "IntegerValue",
+    "RealValue",
+    "BooleanValue",
+    "StringValue",
+    "Message",
+    "Frame",
+    "Transfer",
+    "CanId",
+}
+"""Names of the public API other than the message classes."""
+
+
+@dataclass
+class Plan:
+    """What the generated source holds for each key (see `keys`)."""
+
+    sections: dict[str, tuple[Definition, Section]] = field(default_factory=dict)
+    names: dict[str, str] = field(default_factory=dict)
+    enums: dict[tuple[str, str], tuple[str, str, list[Constant], str]] = field(default_factory=dict)
+    """(key, field) -> (enum name, ``IntEnum`` or ``IntFlag``, constants, their prefix)."""
+    members: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    """Union key -> member class names."""
+
+
+def keys(d: Definition) -> list[str]:
+    """The keys of a definition: its full name, or ``<full name>.Request`` and ``.Response``."""
+    return [f"{d.full_name}.Request", f"{d.full_name}.Response"] if d.service else [d.full_name]
+
+
+def _camel(text: str) -> str:
+    return "".join(part[:1].upper() + part[1:] for part in re.split(r"[_\W]+", text) if part)
+
+
+def _prefix(namespace: str, depth: int) -> str:
+    parts = namespace.split(".")
+    return "".join(_camel(p) for p in parts[len(parts) - depth :]) if depth else ""
+
+
+def _class_names(definitions: dict[str, Definition], taken: set[str]) -> dict[str, str]:
+    """Class name of every key, by the rules of the module docstring."""
+    suffixes = ("Request", "Response")
+    bases: dict[str, list[tuple[str, Definition]]] = {}
+    for d in definitions.values():
+        for i, key in enumerate(keys(d)):
+            bases.setdefault(d.short_name + (suffixes[i] if d.service else ""), []).append((key, d))
+    names: dict[str, str] = {}
+    for base, group in bases.items():
+        clash = len(group) > 1 or base in taken
+        for key, d in group:
+            if key in HAND_NAMES:
+                names[key] = HAND_NAMES[key]
+                continue
+            name, depth = base, 0
+            while clash and depth < d.namespace.count(".") + 1:
+                depth += 1
+                name = _prefix(d.namespace, depth) + base
+                others = {_prefix(o.namespace, depth) + base for k, o in group if k != key}
+                if name not in others and name not in taken:
+                    break
+            names[key] = name
+    return names
+
+
+def _enum_candidates(
+    key: str, section: Section
+) -> list[tuple[tuple[str, str], str, list[Constant], str]]:
+    """(key, field), kind, constants and prefix of each field with enum constants."""
+    found = []
+    for a in section.fields:
+        t = a.type
+        if not a.name or not isinstance(t, PrimitiveType) or t.kind not in ("uint", "int"):
+            continue
+        for prefix, flag in ((a.name.upper() + "_", False), (a.name.upper()[:-1] + "_", True)):
+            if flag and not a.name.endswith("s"):
+                continue
+            members = [c for c in section.constants if c.name.startswith(prefix) and c.type == t]
+            if len(members) >= 2:
+                found.append(((key, a.name), "IntFlag" if flag else "IntEnum", members, prefix))
+                break
+    return found
+
+
+def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
+    """Names of the classes, enums and union members of ``definitions``.
+
+    Args:
+        definitions: Every definition the classes may refer to.
+        known: Class names taken already (by another set of types).
+    """
+    result = Plan()
+    taken = set(_RESERVED) | set(known) | set(HAND_NAMES.values())
+    result.names = _class_names(definitions, taken)
+    taken |= set(result.names.values())
+    candidates = []
+    for d in definitions.values():
+        for key, section in zip(keys(d), d.sections, strict=True):
+            result.sections[key] = (d, section)
+            if key in HAND_NAMES:
+                continue
+            if section.union and d.default_id is not None:
+                raise DsdlError(d.path, None, "a union as a top-level type is not supported")
+            candidates += _enum_candidates(key, section)
+            if section.union:
+                result.members[key] = _member_names(key, d, section, result.names, taken)
+    counts: dict[str, int] = {}
+    for *_, prefix in candidates:
+        counts[_camel(prefix.lower())] = counts.get(_camel(prefix.lower()), 0) + 1
+    for where, kind, constants, prefix in candidates:
+        name = _camel(prefix.lower())
+        if counts[name] > 1 or name in taken:
+            name = result.names[where[0]] + name
+        result.enums[where] = (name, kind, constants, prefix)
+    taken |= {e[0] for e in result.enums.values()}
+    for key, hand in HAND_UNION_MEMBERS.items():
+        if key in result.names:
+            result.members[key] = hand
+    return result
+
+
+def _member_names(
+    key: str, d: Definition, section: Section, names: dict[str, str], taken: set[str]
+) -> tuple[str, ...]:
+    members = []
+    for a in section.fields:
+        target = a.type if isinstance(a.type, str) else None
+        name = names[target] if target is not None else names[key] + _camel(a.name)
+        if name in members:
+            raise DsdlError(d.path, a.line, f"two members of the union hold a {name}")
+        if target is None:
+            taken.add(name)
+        members.append(name)
+    return tuple(members)
+
+
+# -- source ------------------------------------------------------------------------------
+
+
+def _doc(text: str, indent: str) -> list[str]:
+    text = text.replace("\\", "\\\\").replace('"""', "'''").strip()
+    if text.endswith('"'):
+        text += " "
+    lines = text.splitlines() or [""]
+    if len(lines) == 1:
+        return [f'{indent}"""{lines[0]}"""']
+    return [
+        f'{indent}"""{lines[0]}',
+        *[(indent + line).rstrip() for line in lines[1:]],
+        f'{indent}"""',
+    ]
+
+
+def _dsdl_file(d: Definition) -> str:
+    parts = d.namespace.split(".")[1:]
+    name = f"{d.default_id}.{d.short_name}" if d.default_id is not None else d.short_name
+    return "/".join([*parts, f"{name}.uavcan"])
+
+
+def _title(d: Definition, key: str) -> str:
+    if d.default_id is None:
+        return f"``{d.full_name}`` (nested; ``{_dsdl_file(d)}``)."
+    if d.service:
+        half = "request" if key.endswith(".Request") else "response"
+        return f"``{d.full_name}`` {half}, service {d.default_id} (``{_dsdl_file(d)}``)."
+    return f"``{d.full_name}``, message {d.default_id} (``{_dsdl_file(d)}``)."
+
+
+def _python_type(t: FieldType, p: Plan, enum: str | None) -> tuple[str, str]:
+    """Annotation and default of a field."""
+    if isinstance(t, str):
+        name = p.names[t]
+        if t in p.members:
+            return name, f"{p.members[t][0]}()"
+        return name, f"{name}()"
+    if isinstance(t, ArrayType):
+        item = t.item
+        if isinstance(item, PrimitiveType) and item.kind == "uint" and item.bits == 8:
+            return "bytes", 'b""'
+        inner = _python_type(item, p, None)[0]
+        if t.dynamic:
+            return f"tuple[{inner}, ...]", "()"
+        value = _python_type(item, p, None)[1]
+        return f"tuple[{inner}, ...]", f"({value},) * {t.max_size}"
+    if t.kind == "float":
+        return "float", "0.0"
+    if t.kind == "bool":
+        return "bool", "False"
+    if enum is not None:
+        return f"{enum} | int", "0"
+    return "int", "0"
+
+
+def _literal(value: int | float | bool) -> str:
+    return repr(value)
+
+
+def _class_source(key: str, p: Plan) -> list[str]:
+    d, section = p.sections[key]
+    name = p.names[key]
+    lines = ["", "", "@dataclass(frozen=True, slots=True)", f"class {name}:"]
+    doc = _title(d, key)
+    if section.doc:
+        doc += "\n\n" + section.doc
+    lines += _doc(doc, "    ")
+    if section.constants:
+        lines.append("")
+    for c in section.constants:
+        kind = "float" if c.type.kind == "float" else "bool" if c.type.kind == "bool" else "int"
+        lines.append(f"    {c.name}: ClassVar[{kind}] = {_literal(c.value)}")
+        if c.comment:
+            lines += _doc(c.comment, "    ")
+    fields = [a for a in section.fields if a.name]
+    if fields:
+        lines.append("")
+    for a in fields:
+        enum = p.enums.get((key, a.name))
+        enum_name = enum[0] if enum is not None and enum[1] == "IntEnum" else None
+        annotation, default = _python_type(a.type, p, enum_name)
+        lines.append(f"    {attribute_name(a.name)}: {annotation} = {default}")
+        if a.comment:
+            lines += _doc(a.comment, "    ")
+    return lines
+
+
+def attribute_name(name: str) -> str:
+    """The Python attribute of a DSDL field: its name, with ``_`` after a Python keyword."""
+    return f"{name}_" if keyword.iskeyword(name) else name
+
+
+def _enum_source(name: str, kind: str, constants: list[Constant], prefix_len: int) -> list[str]:
+    stripped = [c.name[prefix_len:] for c in constants]
+    if any(not s.isidentifier() or keyword.iskeyword(s) for s in stripped):
+        stripped = [c.name for c in constants]
+    lines = [
+        "",
+        "",
+        f"class {name}(enum.{kind}):",
+        f'    """DSDL constants ``{constants[0].name[:prefix_len]}*``."""',
+        "",
+    ]
+    for member, c in zip(stripped, constants, strict=True):
+        lines.append(f"    {member} = {_literal(c.value)}")
+        if c.comment:
+            lines += _doc(c.comment, "    ")
+    return lines
+
+
+def _order(p: Plan, generated: list[str]) -> list[str]:
+    """The generated keys, every nested type before its users (defaults are instances)."""
+    done: set[str] = set()
+    ordered: list[str] = []
+
+    def visit(key: str) -> None:
+        if key in done:
+            return
+        done.add(key)
+        _, section = p.sections[key]
+        for a in section.fields:
+            target = nested_name(a.type)
+            if target is not None and target in generated_set:
+                visit(target)
+        ordered.append(key)
+
+    generated_set = set(generated)
+    for key in generated:
+        visit(key)
+    return ordered
+
+
+def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dict[str, str]) -> str:
+    """The source of a module of classes for the keys ``generate``.
+
+    Args:
+        p: The plan of every key the classes refer to.
+        generate: The keys whose classes the module defines.
+        docstring: The module docstring.
+        imports: Other class names the module needs, to the module they come from.
+    """
+    generated = _order(p, list(generate))
+    head = [
+        *_doc(docstring, ""),
+        "",
+        "from __future__ import annotations",
+        "",
+        "import enum",
+        "from dataclasses import dataclass",
+        "from typing import Any, ClassVar, TypeAlias",
+        "",
+    ]
+    by_module: dict[str, list[str]] = {}
+    for name, module in sorted(imports.items()):
+        by_module.setdefault(module, []).append(name)
+    for module, names in sorted(by_module.items()):
+        head.append(f"from {module} import (")
+        head += [f"    {n}," for n in sorted(names)]
+        head.append(")")
+    body: list[str] = []
+    for (key, _), (name, kind, constants, prefix) in p.enums.items():
+        if key in generated:
+            body += _enum_source(name, kind, constants, len(prefix))
+    for key in generated:
+        if key in p.members:
+            body += _union_source(key, p)
+        else:
+            body += _class_source(key, p)
+    exported = sorted(
+        {e[0] for k, e in p.enums.items() if k[0] in generated}
+        | {p.names[k] for k in generated}
+        | {m for k in generated for m in p.members.get(k, ()) if m not in imports}
+    )
+    tables = ["", "", "__all__ = ["]
+    tables += [f"    {name!r}," for name in exported]
+    tables += ["]", "", "CLASSES: dict[str, Any] = {"]
+    tables += [f"    {key!r}: {p.names[key]}," for key in generated]
+    tables += ["}", '"""The class of each key (full name, with ``.Request``/``.Response``)."""']
+    tables += ["", "ENUMS: dict[tuple[str, str], type] = {"]
+    tables += [
+        f"    ({key!r}, {f!r}): {name},"
+        for (key, f), (name, kind, _, _) in p.enums.items()
+        if key in generated and kind == "IntEnum"
+    ]
+    tables += ["}", '"""The enum a field decodes to, by (key, field name)."""']
+    tables += ["", "UNION_MEMBERS: dict[str, tuple[type, ...]] = {"]
+    tables += [
+        f"    {key!r}: ({', '.join(p.members[key])},)" for key in generated if key in p.members
+    ]
+    tables += ["}", '"""The member classes of each union, in member order."""', ""]
+    return "\n".join(head + body + tables)
+
+
+def _union_source(key: str, p: Plan) -> list[str]:
+    d, section = p.sections[key]
+    name = p.names[key]
+    lines: list[str] = []
+    for a, member in zip(section.fields, p.members[key], strict=True):
+        if isinstance(a.type, str):
+            continue
+        annotation, default = _python_type(a.type, p, None)
+        lines += ["", "", "@dataclass(frozen=True, slots=True)", f"class {member}:"]
+        lines += _doc(f"Member ``{a.name}`` of the union ``{d.full_name}``.", "    ")
+        lines += ["", f"    value: {annotation} = {default}"]
+    lines += ["", "", f"{name}: TypeAlias = {' | '.join(p.members[key])}"]
+    lines += _doc(_title(d, key) + "\n\n" + (section.doc or ""), "")
+    return lines
+
+
+def standard_source() -> str:
+    """The source of `veronte4x.dronecan.standard`."""
+    from veronte4x.dronecan.types import standard_definitions
+
+    definitions = standard_definitions()
+    p = plan(definitions)
+    generate = [k for k in p.sections if k not in HAND_NAMES]
+    imports = {name: "veronte4x.dronecan.messages" for name in HAND_NAMES.values()}
+    imports.update(
+        {
+            name: "veronte4x.dronecan.messages"
+            for names in HAND_UNION_MEMBERS.values()
+            for name in names
+        }
+    )
+    imports.update({name: "veronte4x.dronecan.messages" for name in HAND_ENUMS.values()})
+    source = module_source(p, generate, _STANDARD_DOC, imports)
+    # The hand-written classes are in the tables too, so that they list every type.
+    extra_classes = "".join(f"    {k!r}: {HAND_NAMES[k]},\n" for k in p.sections if k in HAND_NAMES)
+    extra_enums = "".join(f"    ({k!r}, {f!r}): {n},\n" for (k, f), n in HAND_ENUMS.items())
+    extra_members = "".join(
+        f"    {k!r}: ({', '.join(m)},),\n" for k, m in HAND_UNION_MEMBERS.items()
+    )
+    source = source.replace(
+        "CLASSES: dict[str, Any] = {\n", "CLASSES: dict[str, Any] = {\n" + extra_classes
+    )
+    source = source.replace(
+        "ENUMS: dict[tuple[str, str], type] = {\n",
+        "ENUMS: dict[tuple[str, str], type] = {\n" + extra_enums,
+    )
+    source = source.replace(
+        "UNION_MEMBERS: dict[str, tuple[type, ...]] = {\n",
+        "UNION_MEMBERS: dict[str, tuple[type, ...]] = {\n" + extra_members,
+    )
+    return source
+
+
+_STANDARD_DOC = """Every type of the standard ``uavcan`` DSDL namespace, as frozen dataclasses.
+
+GENERATED from the DSDL files shipped in ``veronte4x/dronecan/dsdl`` by
+``python -m veronte4x.dronecan.generate``: do not edit (a test regenerates and compares).
+The classes veronte4x had before are those of `veronte4x.dronecan.messages`; the naming
+rules are those of `veronte4x.dronecan.generate`.
+"""
+
+
+def main() -> None:
+    """Rewrite ``standard.py`` next to this module."""
+    from pathlib import Path
+
+    target = Path(__file__).with_name("standard.py")
+    target.write_text(standard_source(), encoding="utf-8")
+    print(f"wrote {target}")
+
+
+if __name__ == "__main__":
+    main()

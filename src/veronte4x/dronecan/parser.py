@@ -1,0 +1,461 @@
+"""A parser of DSDL (UAVCAN v0, as DroneCAN uses it) and the data type signature.
+
+The language is that of the DroneCAN specification, section "Data structure description
+language (DSDL)": one definition per ``.uavcan`` file, named ``[ID.]Name.uavcan`` in the
+directory of its namespace; lines of fields (``[cast] type[array] name``), constants
+(``[cast] type NAME = value``), void padding (``voidN``), the ``@union`` directive and,
+for a service, ``---`` between request and response. Comments start with ``#``.
+
+The data type signature follows the specification's section "Data type signature": the
+CRC-64-WE of the normalized definition (full name, then each field as ``[cast] type name``,
+constants and comments left out, ``---`` between the halves of a service), extended with
+the signature of each nested type in field order.
+
+Errors name the file and the line (`DsdlError`).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from veronte4x.errors import Veronte4xError
+
+
+class DsdlError(Veronte4xError, ValueError):
+    """A DSDL definition that cannot be used: ``<file>:<line>: <problem>``.
+
+    Attributes:
+        path: The file of the definition.
+        line: The line (1-based), or None for a problem of the whole file.
+        problem: What is wrong, in words.
+    """
+
+    def __init__(self, path: str | os.PathLike[str], line: int | None, problem: str) -> None:
+        self.path = str(path)
+        self.line = line
+        self.problem = problem
+        where = self.path if line is None else f"{self.path}:{line}"
+        super().__init__(f"{where}: {problem}")
+
+
+CAST_MODES = ("saturated", "truncated")
+
+
+@dataclass(frozen=True)
+class PrimitiveType:
+    """``uintN``, ``intN``, ``floatN`` (16, 32, 64), ``bool`` or ``voidN``, and its cast mode."""
+
+    kind: str
+    bits: int
+    cast: str = "saturated"
+
+    @property
+    def name(self) -> str:
+        """The DSDL spelling without the cast mode: ``uint8``, ``bool``, ``void3``."""
+        return "bool" if self.kind == "bool" else f"{self.kind}{self.bits}"
+
+    @property
+    def normalized(self) -> str:
+        """As in the normalized definition: ``saturated uint8``, ``void3``."""
+        return self.name if self.kind == "void" else f"{self.cast} {self.name}"
+
+
+@dataclass(frozen=True)
+class ArrayType:
+    """``T[N]`` (static) or ``T[<=N]`` / ``T[<N+1]`` (dynamic) of a primitive or nested type."""
+
+    item: PrimitiveType | str
+    max_size: int
+    dynamic: bool
+
+    @property
+    def normalized(self) -> str:
+        """As in the normalized definition: ``saturated uint8[<=80]``."""
+        item = self.item.normalized if isinstance(self.item, PrimitiveType) else self.item
+        return f"{item}[{'<=' if self.dynamic else ''}{self.max_size}]"
+
+
+FieldType = PrimitiveType | ArrayType | str
+"""A field's type: a primitive, an array, or the full name of a nested type."""
+
+
+@dataclass(frozen=True)
+class Attribute:
+    """A field (``name`` empty for void padding) with its line and trailing comment."""
+
+    name: str
+    type: FieldType
+    line: int
+    comment: str = ""
+
+    @property
+    def normalized(self) -> str:
+        """As in the normalized definition: ``saturated uint8 name``, ``void3``."""
+        t = self.type
+        text = t if isinstance(t, str) else t.normalized
+        return f"{text} {self.name}" if self.name else text
+
+
+@dataclass(frozen=True)
+class Constant:
+    """A constant: name, primitive type, value (int, float or bool), line and comment."""
+
+    name: str
+    type: PrimitiveType
+    value: int | float | bool
+    line: int
+    comment: str = ""
+
+
+@dataclass
+class Section:
+    """The body of a message or nested type, or one half of a service."""
+
+    fields: list[Attribute] = field(default_factory=list)
+    constants: list[Constant] = field(default_factory=list)
+    union: bool = False
+    doc: str = ""
+
+
+@dataclass
+class Definition:
+    """One parsed ``.uavcan`` file.
+
+    Attributes:
+        full_name: E.g. ``uavcan.protocol.NodeStatus``.
+        default_id: The default data type id of the file name, or None for a nested type.
+        service: Whether the file has a request and a response (``---``).
+        sections: One section, or two for a service (request, response).
+        path: The file.
+        doc: The comment block at the top of the file.
+    """
+
+    full_name: str
+    default_id: int | None
+    service: bool
+    sections: list[Section]
+    path: str
+    doc: str = ""
+
+    @property
+    def short_name(self) -> str:
+        """The last component of the full name."""
+        return self.full_name.rsplit(".", 1)[-1]
+
+    @property
+    def namespace(self) -> str:
+        """The full name without the short name."""
+        return self.full_name.rsplit(".", 1)[0]
+
+    def normalized(self) -> str:
+        """The normalized definition the DSDL signature is computed from."""
+        lines = [self.full_name]
+        for i, section in enumerate(self.sections):
+            if i:
+                lines.append("---")
+            if section.union:
+                lines.append("@union")
+            lines += [a.normalized for a in section.fields]
+        return "\n".join(lines)
+
+
+_NAME = re.compile(r"[a-zA-Z][a-zA-Z0-9_]*\Z")
+_FILE = re.compile(r"(?:(\d+)\.)?([A-Z][A-Za-z0-9_]*)\.uavcan\Z")
+_PRIMITIVE = re.compile(r"(uint|int|float|void)(\d+)\Z|bool\Z")
+_ARRAY = re.compile(r"(.+?)\[(<=|<)?(\d+)\]\Z")
+_COMPOUND = re.compile(r"[A-Za-z][A-Za-z0-9_]*(\.[A-Za-z][A-Za-z0-9_]*)*\Z")
+_CONSTANT = re.compile(r"(\S+) +(\S+?) *= *(.+)\Z")
+_MAX_ID = {False: 65535, True: 255}
+"""Largest default data type id of a message and of a service (CAN ID fields of v0)."""
+
+
+def _primitive(text: str, cast: str | None, path: str, line: int) -> PrimitiveType | None:
+    found = _PRIMITIVE.match(text)
+    if found is None:
+        return None
+    if text == "bool":
+        return PrimitiveType("bool", 1, cast or "saturated")
+    kind, bits = found.group(1), int(found.group(2))
+    low = {"uint": 1, "int": 2, "void": 1, "float": 16}[kind]
+    if not low <= bits <= 64 or (kind == "float" and bits not in (16, 32, 64)):
+        raise DsdlError(path, line, f"{text}: no such type (bit length out of range)")
+    if kind == "void" and cast is not None:
+        raise DsdlError(path, line, f"{text}: void fields take no cast mode")
+    return PrimitiveType(kind, bits, cast or "saturated")
+
+
+def _type(text: str, cast: str | None, namespace: str, path: str, line: int) -> FieldType:
+    array = _ARRAY.match(text)
+    if array is not None:
+        item = _type(array.group(1), cast, namespace, path, line)
+        if isinstance(item, ArrayType):
+            raise DsdlError(path, line, f"{text}: arrays of arrays are not allowed")
+        if isinstance(item, PrimitiveType) and item.kind == "void":
+            raise DsdlError(path, line, f"{text}: arrays of void are not allowed")
+        size = int(array.group(3)) - (array.group(2) == "<")
+        if size < 1:
+            raise DsdlError(path, line, f"{text}: an array holds at least one item")
+        return ArrayType(item, size, array.group(2) is not None)
+    primitive = _primitive(text, cast, path, line)
+    if primitive is not None:
+        return primitive
+    if cast is not None:
+        raise DsdlError(path, line, f"{cast} {text}: a cast mode applies to primitive types only")
+    if _COMPOUND.match(text) is None:
+        raise DsdlError(path, line, f"{text!r} is not a type name")
+    return text if "." in text else f"{namespace}.{text}"
+
+
+_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "\\": "\\", "'": "'", '"': '"', "0": "\0"}
+
+
+def _value(text: str, t: PrimitiveType, path: str, line: int) -> int | float | bool:
+    """A constant's value: an int, float, ``true``/``false`` or a character literal."""
+    value: int | float | bool
+    if len(text) >= 3 and text[0] == text[-1] == "'":
+        body = text[1:-1]
+        if len(body) == 2 and body[0] == "\\" and body[1] in _ESCAPES:
+            body = _ESCAPES[body[1]]
+        if len(body) != 1:
+            raise DsdlError(path, line, f"{text}: a character literal holds one character")
+        value = ord(body)
+    elif text.lower() in ("true", "false"):
+        value = text.lower() == "true"
+    else:
+        try:
+            value = int(text, 0)
+        except ValueError:
+            try:
+                value = float(text)
+            except ValueError:
+                raise DsdlError(path, line, f"{text}: not a constant value") from None
+    if t.kind == "float":
+        return float(value)
+    if t.kind == "bool":
+        if value not in (0, 1):
+            raise DsdlError(path, line, f"{text}: not a bool")
+        return bool(value)
+    if isinstance(value, (float, bool)):
+        raise DsdlError(path, line, f"{text}: not an integer for {t.name}")
+    low = -(1 << (t.bits - 1)) if t.kind == "int" else 0
+    high = (1 << (t.bits - 1)) - 1 if t.kind == "int" else (1 << t.bits) - 1
+    if not low <= value <= high:
+        raise DsdlError(path, line, f"{text}: out of range for {t.name}")
+    return value
+
+
+def _split_comment(raw: str) -> tuple[str, str]:
+    """The code and the comment of a line (``#`` inside a character literal is code)."""
+    if "'" not in raw:
+        code, _, comment = raw.partition("#")
+        return code.strip(), comment.strip()
+    quoted = False
+    for i, char in enumerate(raw):
+        if char == "'" and (i == 0 or raw[i - 1] != "\\"):
+            quoted = not quoted
+        elif char == "#" and not quoted:
+            return raw[:i].strip(), raw[i + 1 :].strip()
+    return raw.strip(), ""
+
+
+def parse_text(text: str, full_name: str, default_id: int | None, path: str) -> Definition:
+    """Parse the text of one definition; nested type names are resolved, not checked."""
+    namespace = full_name.rsplit(".", 1)[0]
+    sections = [Section()]
+    header: list[str] = []
+    started = False
+    names: set[str] = set()
+    for number, raw in enumerate(text.splitlines(), 1):
+        code, comment = _split_comment(raw)
+        section = sections[-1]
+        if not code:
+            if not started and raw.lstrip().startswith("#"):
+                header.append(comment)
+            elif not comment:
+                started = started or bool(header)
+            continue
+        started = True
+        note = comment
+        if code == "---":
+            if len(sections) == 2:
+                raise DsdlError(path, number, "a second '---'")
+            sections.append(Section())
+            names = set()
+            continue
+        if code.startswith("@"):
+            if code != "@union":
+                raise DsdlError(path, number, f"unknown directive {code}")
+            if section.fields or section.union:
+                raise DsdlError(path, number, "@union must come before the fields")
+            section.union = True
+            continue
+        tokens = code.split()
+        cast = tokens[0] if tokens[0] in CAST_MODES else None
+        if cast is not None:
+            tokens = tokens[1:]
+        constant = _CONSTANT.match(" ".join(tokens))
+        if constant is not None:
+            t = _type(constant.group(1), cast, namespace, path, number)
+            if not isinstance(t, PrimitiveType) or t.kind == "void":
+                raise DsdlError(
+                    path, number, f"constant {constant.group(2)}: not of a primitive type"
+                )
+            name = _check_name(constant.group(2), names, path, number)
+            value = _value(constant.group(3).strip(), t, path, number)
+            section.constants.append(Constant(name, t, value, number, note))
+            continue
+        if "=" in code.replace("<=", ""):
+            raise DsdlError(path, number, f"cannot read constant {code!r}")
+        if len(tokens) == 1:
+            t = _type(tokens[0], cast, namespace, path, number)
+            if not (isinstance(t, PrimitiveType) and t.kind == "void"):
+                raise DsdlError(path, number, f"field {code!r} has no name")
+            if section.union:
+                raise DsdlError(path, number, "a union has no void fields")
+            section.fields.append(Attribute("", t, number, note))
+            continue
+        if len(tokens) != 2:
+            raise DsdlError(path, number, f"cannot read {code!r}")
+        t = _type(tokens[0], cast, namespace, path, number)
+        if isinstance(t, PrimitiveType) and t.kind == "void":
+            raise DsdlError(path, number, "void fields have no name")
+        section.fields.append(
+            Attribute(_check_name(tokens[1], names, path, number), t, number, note)
+        )
+    for section in sections:
+        if section.union and len(section.fields) < 2:
+            raise DsdlError(path, None, "a union needs at least two fields")
+    service = len(sections) == 2
+    if default_id is not None and default_id > _MAX_ID[service]:
+        kind = "service" if service else "message"
+        raise DsdlError(path, None, f"{kind} id {default_id} above {_MAX_ID[service]}")
+    doc = "\n".join(header).strip()
+    sections[0].doc = doc
+    return Definition(full_name, default_id, service, sections, path, doc)
+
+
+def _check_name(name: str, seen: set[str], path: str, line: int) -> str:
+    if _NAME.match(name) is None:
+        raise DsdlError(path, line, f"{name!r} is not a valid name")
+    if name in seen:
+        raise DsdlError(path, line, f"{name} defined twice")
+    seen.add(name)
+    return name
+
+
+def parse_file(path: Path, full_name_prefix: str) -> Definition:
+    """Parse ``path`` (``[ID.]Name.uavcan``) whose namespace is ``full_name_prefix``."""
+    found = _FILE.match(path.name)
+    if found is None:
+        raise DsdlError(path, None, "not a DSDL file name ([ID.]Name.uavcan)")
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise DsdlError(path, None, f"cannot read: {error}") from None
+    default_id = int(found.group(1)) if found.group(1) else None
+    return parse_text(text, f"{full_name_prefix}.{found.group(2)}", default_id, str(path))
+
+
+def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Definition]:
+    """Parse every definition under each root namespace directory (e.g. ``.../uavcan``).
+
+    Raises:
+        DsdlError: A malformed file, a type defined twice, or a nested type that is
+            defined nowhere (naming the file and line that uses it).
+    """
+    found: dict[str, Definition] = {}
+    for root in roots:
+        base = Path(root)
+        if not base.is_dir():
+            raise DsdlError(base, None, "not a directory of DSDL definitions")
+        for path in sorted(base.rglob("*.uavcan")):
+            parts = path.relative_to(base).parent.parts
+            prefix = ".".join((base.name, *parts))
+            definition = parse_file(path, prefix)
+            other = found.get(definition.full_name)
+            if other is not None:
+                raise DsdlError(path, None, f"{definition.full_name} also in {other.path}")
+            found[definition.full_name] = definition
+    return found
+
+
+def check_references(definitions: dict[str, Definition]) -> None:
+    """Raise `DsdlError` for a nested type defined nowhere, or one that nests itself."""
+    for d in definitions.values():
+        for section in d.sections:
+            for a in section.fields:
+                target = nested_name(a.type)
+                if target is None:
+                    continue
+                if target not in definitions:
+                    raise DsdlError(d.path, a.line, f"unknown type {target}")
+                if definitions[target].service:
+                    raise DsdlError(d.path, a.line, f"{target} is a service, not a nested type")
+    for name in definitions:
+        _cycle(name, definitions, ())
+
+
+def _cycle(name: str, definitions: dict[str, Definition], trail: tuple[str, ...]) -> None:
+    d = definitions[name]
+    if name in trail:
+        raise DsdlError(d.path, None, f"{name} contains itself")
+    for section in d.sections:
+        for a in section.fields:
+            target = nested_name(a.type)
+            if target is not None:
+                _cycle(target, definitions, (*trail, name))
+
+
+def nested_name(t: FieldType) -> str | None:
+    """The full name of the nested type of a field (or of its items), else None."""
+    if isinstance(t, str):
+        return t
+    if isinstance(t, ArrayType) and isinstance(t.item, str):
+        return t.item
+    return None
+
+
+# -- signatures -------------------------------------------------------------------------
+
+_MASK64 = (1 << 64) - 1
+_POLY = 0x42F0E1EBA9EA3693
+
+
+def _crc_table() -> tuple[int, ...]:
+    table = []
+    for byte in range(256):
+        crc = byte << 56
+        for _ in range(8):
+            crc = ((crc << 1) ^ _POLY) & _MASK64 if crc >> 63 else (crc << 1) & _MASK64
+        table.append(crc)
+    return tuple(table)
+
+
+_TABLE = _crc_table()
+
+
+def crc64we(data: bytes, value: int = 0) -> int:
+    """CRC-64-WE (poly 0x42F0E1EBA9EA3693, init and xor-out all ones), continuing from the
+    CRC ``value`` of the data before (0 to start)."""
+    crc = value ^ _MASK64
+    for byte in data:
+        crc = _TABLE[(crc >> 56) ^ byte] ^ (crc << 8) & _MASK64
+    return crc ^ _MASK64
+
+
+def signature(name: str, definitions: dict[str, Definition]) -> int:
+    """The data type signature of ``name``: that of its normalized definition, extended by
+    each nested type's signature (then the running value itself) in field order."""
+    d = definitions[name]
+    value = crc64we(d.normalized().encode())
+    for section in d.sections:
+        for a in section.fields:
+            target = nested_name(a.type)
+            if target is not None:
+                nested = signature(target, definitions)
+                value = crc64we(nested.to_bytes(8, "little") + value.to_bytes(8, "little"), value)
+    return value

@@ -1,0 +1,2098 @@
+"""Every type of the standard ``uavcan`` DSDL namespace, as frozen dataclasses.
+
+GENERATED from the DSDL files shipped in ``veronte4x/dronecan/dsdl`` by
+``python -m veronte4x.dronecan.generate``: do not edit (a test regenerates and compares).
+The classes veronte4x had before are those of `veronte4x.dronecan.messages`; the naming
+rules are those of `veronte4x.dronecan.generate`.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from typing import Any, ClassVar, TypeAlias
+
+from veronte4x.dronecan.messages import (
+    BeginFirmwareUpdateRequest,
+    BeginFirmwareUpdateResponse,
+    BooleanValue,
+    Empty,
+    EntryType,
+    EscStatus,
+    ExecuteOpcodeRequest,
+    ExecuteOpcodeResponse,
+    FileErrorCode,
+    FileGetInfoRequest,
+    FileGetInfoResponse,
+    FileReadRequest,
+    FileReadResponse,
+    FirmwareUpdateError,
+    GetNodeInfoRequest,
+    GetNodeInfoResponse,
+    GetSetRequest,
+    GetSetResponse,
+    HardwareVersion,
+    Health,
+    IntegerValue,
+    Mode,
+    NodeStatus,
+    NumericValue,
+    Opcode,
+    Path,
+    RawCommand,
+    RealValue,
+    RestartNodeRequest,
+    RestartNodeResponse,
+    SoftwareVersion,
+    StringValue,
+    Temperature,
+    Value,
+)
+
+
+class CommandType(enum.IntEnum):
+    """DSDL constants ``COMMAND_TYPE_*``."""
+
+    UNITLESS = 0
+    """[-1, 1]"""
+    POSITION = 1
+    """meter or radian"""
+    FORCE = 2
+    """Newton or Newton metre"""
+    SPEED = 3
+    """meter per second or radian per second"""
+    PWM = 4
+    """PWM microsecond signal"""
+
+
+class SensorId(enum.IntEnum):
+    """DSDL constants ``SENSOR_ID_*``."""
+
+    LEFT = 254
+    RIGHT = 255
+
+
+class RawAirDataFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    HEATER_AVAILABLE = 1
+    HEATER_WORKING = 2
+    HEATER_OVERCURRENT = 4
+    HEATER_OPENCIRCUIT = 8
+
+
+class HeightReference(enum.IntEnum):
+    """DSDL constants ``HEIGHT_REFERENCE_*``."""
+
+    ELLIPSOID = 0
+    MEAN_SEA_LEVEL = 1
+
+
+class CommandMode(enum.IntEnum):
+    """DSDL constants ``COMMAND_MODE_*``."""
+
+    ANGULAR_VELOCITY = 0
+    ORIENTATION_FIXED_FRAME = 1
+    ORIENTATION_BODY_FRAME = 2
+    GEO_POI = 3
+
+
+class FixGnssTimeStandard(enum.IntEnum):
+    """DSDL constants ``GNSS_TIME_STANDARD_*``."""
+
+    NONE = 0
+    """Time is unknown"""
+    TAI = 1
+    UTC = 2
+    GPS = 3
+
+
+class FixStatus(enum.IntEnum):
+    """DSDL constants ``STATUS_*``."""
+
+    STATUS_NO_FIX = 0
+    STATUS_TIME_ONLY = 1
+    STATUS_2D_FIX = 2
+    STATUS_3D_FIX = 3
+
+
+class ProtocolId(enum.IntEnum):
+    """DSDL constants ``PROTOCOL_ID_*``."""
+
+    UNKNOWN = 0
+    RTCM2 = 2
+    RTCM3 = 3
+
+
+class Fix2GnssTimeStandard(enum.IntEnum):
+    """DSDL constants ``GNSS_TIME_STANDARD_*``."""
+
+    NONE = 0
+    """Time is unknown"""
+    TAI = 1
+    UTC = 2
+    GPS = 3
+
+
+class Fix2Status(enum.IntEnum):
+    """DSDL constants ``STATUS_*``."""
+
+    STATUS_NO_FIX = 0
+    STATUS_TIME_ONLY = 1
+    STATUS_2D_FIX = 2
+    STATUS_3D_FIX = 3
+
+
+class Fix2Mode(enum.IntEnum):
+    """DSDL constants ``MODE_*``."""
+
+    SINGLE = 0
+    DGPS = 1
+    RTK = 2
+    PPP = 3
+
+
+class SubMode(enum.IntEnum):
+    """DSDL constants ``SUB_MODE_*``."""
+
+    DGPS_OTHER = 0
+    DGPS_SBAS = 1
+    RTK_FLOAT = 0
+    RTK_FIXED = 1
+
+
+class State(enum.IntEnum):
+    """DSDL constants ``STATE_*``."""
+
+    STOPPED = 0
+    STARTING = 1
+    RUNNING = 2
+    FAULT = 3
+
+
+class ReciprocatingStatusFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    GENERAL_ERROR = 1
+    CRANKSHAFT_SENSOR_ERROR_SUPPORTED = 2
+    CRANKSHAFT_SENSOR_ERROR = 4
+    TEMPERATURE_SUPPORTED = 8
+    TEMPERATURE_BELOW_NOMINAL = 16
+    """Under-temperature warning"""
+    TEMPERATURE_ABOVE_NOMINAL = 32
+    """Over-temperature warning"""
+    TEMPERATURE_OVERHEATING = 64
+    """Critical overheating"""
+    TEMPERATURE_EGT_ABOVE_NOMINAL = 128
+    """Exhaust gas over-temperature warning"""
+    FUEL_PRESSURE_SUPPORTED = 256
+    FUEL_PRESSURE_BELOW_NOMINAL = 512
+    """Under-pressure warning"""
+    FUEL_PRESSURE_ABOVE_NOMINAL = 1024
+    """Over-pressure warning"""
+    DETONATION_SUPPORTED = 2048
+    DETONATION_OBSERVED = 4096
+    """Detonation condition observed warning"""
+    MISFIRE_SUPPORTED = 8192
+    MISFIRE_OBSERVED = 16384
+    """Misfire condition observed warning"""
+    OIL_PRESSURE_SUPPORTED = 32768
+    OIL_PRESSURE_BELOW_NOMINAL = 65536
+    """Under-pressure warning"""
+    OIL_PRESSURE_ABOVE_NOMINAL = 131072
+    """Over-pressure warning"""
+    DEBRIS_SUPPORTED = 262144
+    DEBRIS_DETECTED = 524288
+    """Detection of debris warning"""
+
+
+class LightId(enum.IntEnum):
+    """DSDL constants ``LIGHT_ID_*``."""
+
+    ANTI_COLLISION = 246
+    RIGHT_OF_WAY = 247
+    STROBE = 248
+    WING = 249
+    LOGO = 250
+    TAXI = 251
+    TURN_OFF = 252
+    TAKE_OFF = 253
+    LANDING = 254
+    FORMATION = 255
+
+
+class ErrorFlag(enum.IntFlag):
+    """DSDL constants ``ERROR_FLAG_*``."""
+
+    OVERVOLTAGE = 1
+    UNDERVOLTAGE = 2
+    OVERCURRENT = 4
+    UNDERCURRENT = 8
+
+
+class StatusFlag(enum.IntFlag):
+    """DSDL constants ``STATUS_FLAG_*``."""
+
+    IN_USE = 1
+    """The battery is currently used as a power supply"""
+    CHARGING = 2
+    """Charger is active"""
+    CHARGED = 4
+    """Charging complete, but the charger is still active"""
+    TEMP_HOT = 8
+    """Battery temperature is above normal"""
+    TEMP_COLD = 16
+    """Battery temperature is below normal"""
+    OVERLOAD = 32
+    """Safe operating area violation"""
+    BAD_BATTERY = 64
+    """This battery should not be used anymore (e.g. low SOH)"""
+    NEED_SERVICE = 128
+    """This battery requires maintenance (e.g. balancing, full recharge)"""
+    BMS_ERROR = 256
+    """Battery management system/controller error, smart battery interface error"""
+    RESERVED_A = 512
+    """Keep zero"""
+    RESERVED_B = 1024
+    """Keep zero"""
+
+
+class SensorType(enum.IntEnum):
+    """DSDL constants ``SENSOR_TYPE_*``."""
+
+    UNDEFINED = 0
+    SONAR = 1
+    LIDAR = 2
+    RADAR = 3
+
+
+class ReadingType(enum.IntEnum):
+    """DSDL constants ``READING_TYPE_*``."""
+
+    UNDEFINED = 0
+    """Range is unknown"""
+    VALID_RANGE = 1
+    """Range field contains valid distance"""
+    TOO_CLOSE = 2
+    """Range field contains min range for the sensor"""
+    TOO_FAR = 3
+    """Range field contains max range for the sensor"""
+
+
+class ArmingStatusStatus(enum.IntEnum):
+    """DSDL constants ``STATUS_*``."""
+
+    DISARMED = 0
+    FULLY_ARMED = 255
+
+
+class GetDataTypeInfoResponseFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    KNOWN = 1
+    """This data type is defined"""
+    SUBSCRIBED = 2
+    """Subscribed to messages of this type"""
+    PUBLISHING = 4
+    """Publishing messages of this type"""
+    SERVING = 8
+    """Providing service of this type"""
+
+
+class AccessCommandShellRequestFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    RESET_SHELL = 1
+    """Restarts the shell instance anew; may or may not imply CLEAR_OUTPUT_BUFFERS"""
+    CLEAR_OUTPUT_BUFFERS = 2
+    """Makes stdout and stderr buffers empty"""
+    READ_STDOUT = 64
+    """Output will contain stdout"""
+    READ_STDERR = 128
+    """Output will be extended with stderr"""
+
+
+class AccessCommandShellResponseFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    RUNNING = 1
+    """The shell is currently running a process; stdin/out/err are piped to it"""
+    SHELL_ERROR = 2
+    """Exit status contains error code, output contains text (e.g. no such command)"""
+    HAS_PENDING_STDOUT = 64
+    """There is more stdout to read"""
+    HAS_PENDING_STDERR = 128
+    """There is more stderr to read"""
+
+
+class Error(enum.IntEnum):
+    """DSDL constants ``ERROR_*``."""
+
+    OK = 0
+    """Success"""
+    INVALID_MODE = 1
+    """The node cannot perform enumeration in its current operating mode"""
+    INVALID_PARAMETER = 2
+    """The node cannot enumerate on the requested parameter, or it doesn't exist"""
+    UNSUPPORTED = 3
+    """The node cannot perform enumeration in its current configuration"""
+    UNKNOWN = 255
+    """Generic error"""
+
+
+@dataclass(frozen=True, slots=True)
+class CoarseOrientation:
+    """``uavcan.CoarseOrientation`` (nested; ``CoarseOrientation.uavcan``).
+
+    Nested type.
+    Coarse, low-resolution 3D orientation represented as fixed axes in 16 bit.
+
+    Roll, pitch, yaw angles in radians should be multiplied by
+    ANGLE_MULTIPLIER in order to convert them to the coarse representation.
+
+    ANGLE_MULTIPLIER = NORM / PI
+
+    Where NORM is 12, because it:
+    - Fits the maximum range of a signed 5 bit integer
+    - Allows to exactly represent the following angles:
+    0, 15, 30, 45, 60, 75, 90, 105, 120, 135, 150, 165, 180, and negatives
+    """
+
+    ANGLE_MULTIPLIER: ClassVar[float] = 4.7746482927568605
+
+    fixed_axis_roll_pitch_yaw: tuple[int, ...] = (0,) * 3
+    orientation_defined: bool = False
+    """False if the orientation is actually not defined"""
+
+
+@dataclass(frozen=True, slots=True)
+class Timestamp:
+    """``uavcan.Timestamp`` (nested; ``Timestamp.uavcan``).
+
+    Global timestamp in microseconds, 7 bytes.
+
+    Use this data type for timestamp fields in messages, like follows:
+    uavcan.Timestamp timestamp
+    """
+
+    UNKNOWN: ClassVar[int] = 0
+
+    usec: int = 0
+    """Microseconds"""
+
+
+@dataclass(frozen=True, slots=True)
+class ActuatorCommand:
+    """``uavcan.equipment.actuator.Command`` (nested; ``equipment/actuator/Command.uavcan``).
+
+    Nested type.
+    Single actuator command.
+    """
+
+    COMMAND_TYPE_UNITLESS: ClassVar[int] = 0
+    """[-1, 1]"""
+    COMMAND_TYPE_POSITION: ClassVar[int] = 1
+    """meter or radian"""
+    COMMAND_TYPE_FORCE: ClassVar[int] = 2
+    """Newton or Newton metre"""
+    COMMAND_TYPE_SPEED: ClassVar[int] = 3
+    """meter per second or radian per second"""
+    COMMAND_TYPE_PWM: ClassVar[int] = 4
+    """PWM microsecond signal"""
+
+    actuator_id: int = 0
+    command_type: CommandType | int = 0
+    command_value: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class ArrayCommand:
+    """``uavcan.equipment.actuator.ArrayCommand``, message 1010 (``equipment/actuator/1010.ArrayCommand.uavcan``).
+
+    Actuator commands.
+    The system supports up to 256 actuators; up to 15 of them can be commanded with one message.
+    """
+
+    commands: tuple[ActuatorCommand, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class ActuatorStatus:
+    """``uavcan.equipment.actuator.Status``, message 1011 (``equipment/actuator/1011.Status.uavcan``).
+
+    Generic actuator feedback, if available.
+    Unknown fields should be set to NAN.
+    """
+
+    POWER_RATING_PCT_UNKNOWN: ClassVar[int] = 127
+
+    actuator_id: int = 0
+    position: float = 0.0
+    """meter or radian"""
+    force: float = 0.0
+    """Newton or Newton metre"""
+    speed: float = 0.0
+    """meter per second or radian per second"""
+    power_rating_pct: int = 0
+    """0 - unloaded, 100 - full load"""
+
+
+@dataclass(frozen=True, slots=True)
+class Solution:
+    """``uavcan.equipment.ahrs.Solution``, message 1000 (``equipment/ahrs/1000.Solution.uavcan``).
+
+    Inertial data and orientation in body frame.
+    """
+
+    timestamp: Timestamp = Timestamp()
+    orientation_xyzw: tuple[float, ...] = (0.0,) * 4
+    orientation_covariance: tuple[float, ...] = ()
+    angular_velocity: tuple[float, ...] = (0.0,) * 3
+    angular_velocity_covariance: tuple[float, ...] = ()
+    linear_acceleration: tuple[float, ...] = (0.0,) * 3
+    linear_acceleration_covariance: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class MagneticFieldStrength:
+    """``uavcan.equipment.ahrs.MagneticFieldStrength``, message 1001 (``equipment/ahrs/1001.MagneticFieldStrength.uavcan``).
+
+    Magnetic field readings, in Gauss, in body frame.
+    SI units are avoided because of float16 range limitations.
+    This message is deprecated. Use the newer 1002.MagneticFieldStrength2.uavcan message.
+    """
+
+    magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
+    magnetic_field_covariance: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class MagneticFieldStrength2:
+    """``uavcan.equipment.ahrs.MagneticFieldStrength2``, message 1002 (``equipment/ahrs/1002.MagneticFieldStrength2.uavcan``).
+
+    Magnetic field readings, in Gauss, in body frame.
+    SI units are avoided because of float16 range limitations.
+    """
+
+    sensor_id: int = 0
+    magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
+    magnetic_field_covariance: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class RawIMU:
+    """``uavcan.equipment.ahrs.RawIMU``, message 1003 (``equipment/ahrs/1003.RawIMU.uavcan``).
+
+    Raw IMU data with timestamps.
+
+    THIS DEFINITION MAY BE CHANGED IN A NON-BACKWARD-COMPATIBLE WAY IN THE FUTURE.
+    """
+
+    timestamp: Timestamp = Timestamp()
+    integration_interval: float = 0.0
+    rate_gyro_latest: tuple[float, ...] = (0.0,) * 3
+    """Latest sample, radian/second"""
+    rate_gyro_integral: tuple[float, ...] = (0.0,) * 3
+    """Integrated samples, radian"""
+    accelerometer_latest: tuple[float, ...] = (0.0,) * 3
+    """Latest sample, meter/(second^2)"""
+    accelerometer_integral: tuple[float, ...] = (0.0,) * 3
+    """Integrated samples, meter/second"""
+    covariance: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class TrueAirspeed:
+    """``uavcan.equipment.air_data.TrueAirspeed``, message 1020 (``equipment/air_data/1020.TrueAirspeed.uavcan``).
+
+    TAS.
+    """
+
+    true_airspeed: float = 0.0
+    """m/s"""
+    true_airspeed_variance: float = 0.0
+    """(m/s)^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class IndicatedAirspeed:
+    """``uavcan.equipment.air_data.IndicatedAirspeed``, message 1021 (``equipment/air_data/1021.IndicatedAirspeed.uavcan``).
+
+    IAS.
+    """
+
+    indicated_airspeed: float = 0.0
+    """m/s"""
+    indicated_airspeed_variance: float = 0.0
+    """(m/s)^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class AngleOfAttack:
+    """``uavcan.equipment.air_data.AngleOfAttack``, message 1025 (``equipment/air_data/1025.AngleOfAttack.uavcan``).
+
+    Angle of attack.
+    """
+
+    SENSOR_ID_LEFT: ClassVar[int] = 254
+    SENSOR_ID_RIGHT: ClassVar[int] = 255
+
+    sensor_id: SensorId | int = 0
+    aoa: float = 0.0
+    """Radians"""
+    aoa_variance: float = 0.0
+    """Radians^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class Sideslip:
+    """``uavcan.equipment.air_data.Sideslip``, message 1026 (``equipment/air_data/1026.Sideslip.uavcan``).
+
+    Body sideslip in radians.
+    """
+
+    sideslip_angle: float = 0.0
+    """Radians"""
+    sideslip_angle_variance: float = 0.0
+    """Radians^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class RawAirData:
+    """``uavcan.equipment.air_data.RawAirData``, message 1027 (``equipment/air_data/1027.RawAirData.uavcan``).
+
+    Raw Air Data.
+    """
+
+    FLAG_HEATER_AVAILABLE: ClassVar[int] = 1
+    FLAG_HEATER_WORKING: ClassVar[int] = 2
+    FLAG_HEATER_OVERCURRENT: ClassVar[int] = 4
+    FLAG_HEATER_OPENCIRCUIT: ClassVar[int] = 8
+
+    flags: int = 0
+    static_pressure: float = 0.0
+    """Pascal"""
+    differential_pressure: float = 0.0
+    """Pascal"""
+    static_pressure_sensor_temperature: float = 0.0
+    """Kelvin"""
+    differential_pressure_sensor_temperature: float = 0.0
+    """Kelvin"""
+    static_air_temperature: float = 0.0
+    """Kelvin"""
+    pitot_temperature: float = 0.0
+    """Kelvin"""
+    covariance: tuple[float, ...] = ()
+    """order of diagonal elements :"""
+
+
+@dataclass(frozen=True, slots=True)
+class StaticPressure:
+    """``uavcan.equipment.air_data.StaticPressure``, message 1028 (``equipment/air_data/1028.StaticPressure.uavcan``).
+
+    Static pressure.
+    """
+
+    static_pressure: float = 0.0
+    """Pascal"""
+    static_pressure_variance: float = 0.0
+    """Pascal^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class StaticTemperature:
+    """``uavcan.equipment.air_data.StaticTemperature``, message 1029 (``equipment/air_data/1029.StaticTemperature.uavcan``).
+
+    Static temperature.
+    """
+
+    static_temperature: float = 0.0
+    """Kelvin"""
+    static_temperature_variance: float = 0.0
+    """Kelvin^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class CameraGimbalMode:
+    """``uavcan.equipment.camera_gimbal.Mode`` (nested; ``equipment/camera_gimbal/Mode.uavcan``).
+
+    Gimbal operating mode
+    """
+
+    COMMAND_MODE_ANGULAR_VELOCITY: ClassVar[int] = 0
+    COMMAND_MODE_ORIENTATION_FIXED_FRAME: ClassVar[int] = 1
+    COMMAND_MODE_ORIENTATION_BODY_FRAME: ClassVar[int] = 2
+    COMMAND_MODE_GEO_POI: ClassVar[int] = 3
+
+    command_mode: CommandMode | int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class AngularCommand:
+    """``uavcan.equipment.camera_gimbal.AngularCommand``, message 1040 (``equipment/camera_gimbal/1040.AngularCommand.uavcan``).
+
+    Generic camera gimbal control.
+
+    This message can only be used in the following modes:
+    - COMMAND_MODE_ANGULAR_VELOCITY
+    - COMMAND_MODE_ORIENTATION_FIXED_FRAME
+    - COMMAND_MODE_ORIENTATION_BODY_FRAME
+    """
+
+    gimbal_id: int = 0
+    mode: CameraGimbalMode = CameraGimbalMode()
+    quaternion_xyzw: tuple[float, ...] = (0.0,) * 4
+
+
+@dataclass(frozen=True, slots=True)
+class GEOPOICommand:
+    """``uavcan.equipment.camera_gimbal.GEOPOICommand``, message 1041 (``equipment/camera_gimbal/1041.GEOPOICommand.uavcan``).
+
+    Generic camera gimbal control.
+
+    This message can only be used in the following modes:
+    - COMMAND_MODE_GEO_POI
+    """
+
+    HEIGHT_REFERENCE_ELLIPSOID: ClassVar[int] = 0
+    HEIGHT_REFERENCE_MEAN_SEA_LEVEL: ClassVar[int] = 1
+
+    gimbal_id: int = 0
+    mode: CameraGimbalMode = CameraGimbalMode()
+    longitude_deg_1e7: int = 0
+    """1 LSB = 1e-7 deg"""
+    latitude_deg_1e7: int = 0
+    height_cm: int = 0
+    """1 LSB = 10 mm"""
+    height_reference: HeightReference | int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class CameraGimbalStatus:
+    """``uavcan.equipment.camera_gimbal.Status``, message 1044 (``equipment/camera_gimbal/1044.Status.uavcan``).
+
+    Generic gimbal status.
+    """
+
+    gimbal_id: int = 0
+    mode: CameraGimbalMode = CameraGimbalMode()
+    camera_orientation_in_body_frame_xyzw: tuple[float, ...] = (0.0,) * 4
+    camera_orientation_in_body_frame_covariance: tuple[float, ...] = ()
+    """+inf for non-existent axes"""
+
+
+@dataclass(frozen=True, slots=True)
+class RPMCommand:
+    """``uavcan.equipment.esc.RPMCommand``, message 1031 (``equipment/esc/1031.RPMCommand.uavcan``).
+
+    Simple RPM setpoint.
+    The ESC should automatically clamp the setpoint according to the minimum and maximum supported RPM;
+    for example, given a ESC that operates in the range 100 to 10000 RPM, a setpoint of 1 RPM will be clamped to 100 RPM.
+    Positive values indicate forward rotation, negative values indicate reverse rotation, and zero indicates no rotation.
+    For example, a typical quadcopter always commands non-negative values for all four motors, independent of ESC configuration,
+    motor wiring, or propeller direction. ESCs which do not allow reverse rotation shall clamp negative RPMs to zero.
+    """
+
+    rpm: tuple[int, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class StatusExtended:
+    """``uavcan.equipment.esc.StatusExtended``, message 1036 (``equipment/esc/1036.StatusExtended.uavcan``).
+
+    Extended Generic ESC status.
+    Additional fields on top of the generic ESC status message.
+    Transmitted at a lower rate.
+    """
+
+    input_pct: int = 0
+    """Absolute input command to ESC, in percent, which is commanded using the setpoint messages. Range 0% to 100%."""
+    output_pct: int = 0
+    """Absolute output command from ESC to motor, in percent. Range 0% to 100%."""
+    motor_temperature_degC: int = 0
+    """Temperature of connected motor, in Celsius. Range is -256 to +255 C."""
+    motor_angle: int = 0
+    """Measured angle of connected angle sensor, in degrees. Range is 0 to 360. The angle increases as the"""
+    status_flags: int = 0
+    """Manufacturer-specific status flags currently active."""
+    esc_index: int = 0
+    """Index of currently reporting ESC."""
+
+
+@dataclass(frozen=True, slots=True)
+class Fix:
+    """``uavcan.equipment.gnss.Fix``, message 1060 (``equipment/gnss/1060.Fix.uavcan``).
+
+    GNSS navigation solution with uncertainty.
+    This message is deprecated. Use the newer 1063.Fix2.uavcan message.
+    """
+
+    GNSS_TIME_STANDARD_NONE: ClassVar[int] = 0
+    """Time is unknown"""
+    GNSS_TIME_STANDARD_TAI: ClassVar[int] = 1
+    GNSS_TIME_STANDARD_UTC: ClassVar[int] = 2
+    GNSS_TIME_STANDARD_GPS: ClassVar[int] = 3
+    NUM_LEAP_SECONDS_UNKNOWN: ClassVar[int] = 0
+    STATUS_NO_FIX: ClassVar[int] = 0
+    STATUS_TIME_ONLY: ClassVar[int] = 1
+    STATUS_2D_FIX: ClassVar[int] = 2
+    STATUS_3D_FIX: ClassVar[int] = 3
+
+    timestamp: Timestamp = Timestamp()
+    """Global network-synchronized time, if available, otherwise zero"""
+    gnss_timestamp: Timestamp = Timestamp()
+    gnss_time_standard: FixGnssTimeStandard | int = 0
+    num_leap_seconds: int = 0
+    longitude_deg_1e8: int = 0
+    """Longitude degrees multiplied by 1e8 (approx. 1 mm per LSB)"""
+    latitude_deg_1e8: int = 0
+    """Latitude degrees multiplied by 1e8 (approx. 1 mm per LSB on equator)"""
+    height_ellipsoid_mm: int = 0
+    """Height above ellipsoid in millimeters"""
+    height_msl_mm: int = 0
+    """Height above mean sea level in millimeters"""
+    ned_velocity: tuple[float, ...] = (0.0,) * 3
+    """NED frame (north-east-down) in meters per second"""
+    sats_used: int = 0
+    status: FixStatus | int = 0
+    pdop: float = 0.0
+    position_covariance: tuple[float, ...] = ()
+    """m^2"""
+    velocity_covariance: tuple[float, ...] = ()
+    """(m/s)^2"""
+
+
+@dataclass(frozen=True, slots=True)
+class Auxiliary:
+    """``uavcan.equipment.gnss.Auxiliary``, message 1061 (``equipment/gnss/1061.Auxiliary.uavcan``).
+
+    GNSS low priority auxiliary info.
+    Unknown DOP parameters should be set to NAN.
+    """
+
+    gdop: float = 0.0
+    pdop: float = 0.0
+    hdop: float = 0.0
+    vdop: float = 0.0
+    tdop: float = 0.0
+    ndop: float = 0.0
+    edop: float = 0.0
+    sats_visible: int = 0
+    """All visible sats of all available GNSS (e.g. GPS, GLONASS, etc)"""
+    sats_used: int = 0
+    """All used sats of all available GNSS"""
+
+
+@dataclass(frozen=True, slots=True)
+class RTCMStream:
+    """``uavcan.equipment.gnss.RTCMStream``, message 1062 (``equipment/gnss/1062.RTCMStream.uavcan``).
+
+    GNSS RTCM SC-104 protocol raw stream container.
+    RTCM messages that are longer than max data size can be split over multiple consecutive messages.
+    """
+
+    PROTOCOL_ID_UNKNOWN: ClassVar[int] = 0
+    PROTOCOL_ID_RTCM2: ClassVar[int] = 2
+    PROTOCOL_ID_RTCM3: ClassVar[int] = 3
+
+    protocol_id: ProtocolId | int = 0
+    data: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class ECEFPositionVelocity:
+    """``uavcan.equipment.gnss.ECEFPositionVelocity`` (nested; ``equipment/gnss/ECEFPositionVelocity.uavcan``).
+
+    Nested type.
+    GNSS ECEF high resolution position and velocity.
+
+    ECEF is an acronym for Earth-Centered-Earth-Fixed, which is a cartesian
+    coordinate system which rotates with the earth. The origin (0,0,0) is
+    located at the center of the earth. The x-axis is a vector pointing from
+    the origin with positive direction towards 0 degrees latitude and
+    longitude (equator, at the prime meridian). The z-axis is a vector
+    pointing from the origin towards the north-pole. The y-axis completes a
+    right-handed coordinate system.
+    """
+
+    velocity_xyz: tuple[float, ...] = (0.0,) * 3
+    """XYZ velocity in m/s"""
+    position_xyz_mm: tuple[int, ...] = (0,) * 3
+    """XYZ-axis coordinates in mm"""
+    covariance: tuple[float, ...] = ()
+    """Position and velocity covariance in the ECEF frame. Units are m^2 for position,"""
+
+
+@dataclass(frozen=True, slots=True)
+class Fix2:
+    """``uavcan.equipment.gnss.Fix2``, message 1063 (``equipment/gnss/1063.Fix2.uavcan``).
+
+    GNSS ECEF and LLA navigation solution with uncertainty.
+    """
+
+    GNSS_TIME_STANDARD_NONE: ClassVar[int] = 0
+    """Time is unknown"""
+    GNSS_TIME_STANDARD_TAI: ClassVar[int] = 1
+    GNSS_TIME_STANDARD_UTC: ClassVar[int] = 2
+    GNSS_TIME_STANDARD_GPS: ClassVar[int] = 3
+    NUM_LEAP_SECONDS_UNKNOWN: ClassVar[int] = 0
+    STATUS_NO_FIX: ClassVar[int] = 0
+    STATUS_TIME_ONLY: ClassVar[int] = 1
+    STATUS_2D_FIX: ClassVar[int] = 2
+    STATUS_3D_FIX: ClassVar[int] = 3
+    MODE_SINGLE: ClassVar[int] = 0
+    MODE_DGPS: ClassVar[int] = 1
+    MODE_RTK: ClassVar[int] = 2
+    MODE_PPP: ClassVar[int] = 3
+    SUB_MODE_DGPS_OTHER: ClassVar[int] = 0
+    SUB_MODE_DGPS_SBAS: ClassVar[int] = 1
+    SUB_MODE_RTK_FLOAT: ClassVar[int] = 0
+    SUB_MODE_RTK_FIXED: ClassVar[int] = 1
+
+    timestamp: Timestamp = Timestamp()
+    gnss_timestamp: Timestamp = Timestamp()
+    gnss_time_standard: Fix2GnssTimeStandard | int = 0
+    num_leap_seconds: int = 0
+    longitude_deg_1e8: int = 0
+    """Longitude degrees multiplied by 1e8 (approx. 1 mm per LSB)"""
+    latitude_deg_1e8: int = 0
+    """Latitude degrees multiplied by 1e8 (approx. 1 mm per LSB on equator)"""
+    height_ellipsoid_mm: int = 0
+    """Height above ellipsoid in millimeters"""
+    height_msl_mm: int = 0
+    """Height above mean sea level in millimeters"""
+    ned_velocity: tuple[float, ...] = (0.0,) * 3
+    """NED frame (north-east-down) in meters per second"""
+    sats_used: int = 0
+    status: Fix2Status | int = 0
+    mode: Fix2Mode | int = 0
+    sub_mode: SubMode | int = 0
+    covariance: tuple[float, ...] = ()
+    """Position and velocity covariance. Units are"""
+    pdop: float = 0.0
+    ecef_position_velocity: tuple[ECEFPositionVelocity, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class HardpointCommand:
+    """``uavcan.equipment.hardpoint.Command``, message 1070 (``equipment/hardpoint/1070.Command.uavcan``).
+
+    Generic cargo holder/hardpoint command.
+    """
+
+    hardpoint_id: int = 0
+    command: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class HardpointStatus:
+    """``uavcan.equipment.hardpoint.Status``, message 1071 (``equipment/hardpoint/1071.Status.uavcan``).
+
+    Generic cargo holder/hardpoint status.
+    """
+
+    hardpoint_id: int = 0
+    payload_weight: float = 0.0
+    """Newton"""
+    payload_weight_variance: float = 0.0
+    status: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class FuelTankStatus:
+    """``uavcan.equipment.ice.FuelTankStatus``, message 1129 (``equipment/ice/1129.FuelTankStatus.uavcan``).
+
+    Generic fuel tank status message.
+    All fields are required unless stated otherwise. Unpopulated optional fields should be set to NaN.
+    """
+
+    available_fuel_volume_percent: int = 0
+    """Unit: percent, from 0% to 100%"""
+    available_fuel_volume_cm3: float = 0.0
+    """Unit: centimeter^3"""
+    fuel_consumption_rate_cm3pm: float = 0.0
+    fuel_temperature: float = 0.0
+    fuel_tank_id: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class CylinderStatus:
+    """``uavcan.equipment.ice.reciprocating.CylinderStatus`` (nested; ``equipment/ice/reciprocating/CylinderStatus.uavcan``).
+
+    Cylinder state information.
+    This is a nested data type.
+
+    All unknown parameters should be set to NaN.
+    """
+
+    ignition_timing_deg: float = 0.0
+    injection_time_ms: float = 0.0
+    cylinder_head_temperature: float = 0.0
+    exhaust_gas_temperature: float = 0.0
+    lambda_coefficient: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class ReciprocatingStatus:
+    """``uavcan.equipment.ice.reciprocating.Status``, message 1120 (``equipment/ice/reciprocating/1120.Status.uavcan``).
+
+    Generic status message of a piston engine control system.
+
+    All integer fields are required unless stated otherwise.
+    All floating point fields are optional unless stated otherwise; unknown/unapplicable fields should be set to NaN.
+    """
+
+    STATE_STOPPED: ClassVar[int] = 0
+    STATE_STARTING: ClassVar[int] = 1
+    STATE_RUNNING: ClassVar[int] = 2
+    STATE_FAULT: ClassVar[int] = 3
+    FLAG_GENERAL_ERROR: ClassVar[int] = 1
+    FLAG_CRANKSHAFT_SENSOR_ERROR_SUPPORTED: ClassVar[int] = 2
+    FLAG_CRANKSHAFT_SENSOR_ERROR: ClassVar[int] = 4
+    FLAG_TEMPERATURE_SUPPORTED: ClassVar[int] = 8
+    FLAG_TEMPERATURE_BELOW_NOMINAL: ClassVar[int] = 16
+    """Under-temperature warning"""
+    FLAG_TEMPERATURE_ABOVE_NOMINAL: ClassVar[int] = 32
+    """Over-temperature warning"""
+    FLAG_TEMPERATURE_OVERHEATING: ClassVar[int] = 64
+    """Critical overheating"""
+    FLAG_TEMPERATURE_EGT_ABOVE_NOMINAL: ClassVar[int] = 128
+    """Exhaust gas over-temperature warning"""
+    FLAG_FUEL_PRESSURE_SUPPORTED: ClassVar[int] = 256
+    FLAG_FUEL_PRESSURE_BELOW_NOMINAL: ClassVar[int] = 512
+    """Under-pressure warning"""
+    FLAG_FUEL_PRESSURE_ABOVE_NOMINAL: ClassVar[int] = 1024
+    """Over-pressure warning"""
+    FLAG_DETONATION_SUPPORTED: ClassVar[int] = 2048
+    FLAG_DETONATION_OBSERVED: ClassVar[int] = 4096
+    """Detonation condition observed warning"""
+    FLAG_MISFIRE_SUPPORTED: ClassVar[int] = 8192
+    FLAG_MISFIRE_OBSERVED: ClassVar[int] = 16384
+    """Misfire condition observed warning"""
+    FLAG_OIL_PRESSURE_SUPPORTED: ClassVar[int] = 32768
+    FLAG_OIL_PRESSURE_BELOW_NOMINAL: ClassVar[int] = 65536
+    """Under-pressure warning"""
+    FLAG_OIL_PRESSURE_ABOVE_NOMINAL: ClassVar[int] = 131072
+    """Over-pressure warning"""
+    FLAG_DEBRIS_SUPPORTED: ClassVar[int] = 262144
+    FLAG_DEBRIS_DETECTED: ClassVar[int] = 524288
+    """Detection of debris warning"""
+    SPARK_PLUG_SINGLE: ClassVar[int] = 0
+    SPARK_PLUG_FIRST_ACTIVE: ClassVar[int] = 1
+    SPARK_PLUG_SECOND_ACTIVE: ClassVar[int] = 2
+    SPARK_PLUG_BOTH_ACTIVE: ClassVar[int] = 3
+
+    state: State | int = 0
+    flags: int = 0
+    engine_load_percent: int = 0
+    engine_speed_rpm: int = 0
+    spark_dwell_time_ms: float = 0.0
+    atmospheric_pressure_kpa: float = 0.0
+    intake_manifold_pressure_kpa: float = 0.0
+    intake_manifold_temperature: float = 0.0
+    coolant_temperature: float = 0.0
+    oil_pressure: float = 0.0
+    oil_temperature: float = 0.0
+    fuel_pressure: float = 0.0
+    fuel_consumption_rate_cm3pm: float = 0.0
+    estimated_consumed_fuel_volume_cm3: float = 0.0
+    throttle_position_percent: int = 0
+    ecu_index: int = 0
+    spark_plug_usage: int = 0
+    cylinder_status: tuple[CylinderStatus, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class BeepCommand:
+    """``uavcan.equipment.indication.BeepCommand``, message 1080 (``equipment/indication/1080.BeepCommand.uavcan``).
+
+    Nodes that are capable of producing sounds should obey.
+    """
+
+    frequency: float = 0.0
+    """Hz"""
+    duration: float = 0.0
+    """Sec"""
+
+
+@dataclass(frozen=True, slots=True)
+class RGB565:
+    """``uavcan.equipment.indication.RGB565`` (nested; ``equipment/indication/RGB565.uavcan``).
+
+    Nested type.
+    RGB color in the standard 5-6-5 16-bit palette.
+    Monocolor lights should interpret this as brightness setpoint: from zero (0, 0, 0) to full brightness (31, 63, 31).
+    """
+
+    red: int = 0
+    green: int = 0
+    blue: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class SingleLightCommand:
+    """``uavcan.equipment.indication.SingleLightCommand`` (nested; ``equipment/indication/SingleLightCommand.uavcan``).
+
+    Nested type.
+    Controls single light source, color or monochrome.
+    """
+
+    LIGHT_ID_ANTI_COLLISION: ClassVar[int] = 246
+    LIGHT_ID_RIGHT_OF_WAY: ClassVar[int] = 247
+    LIGHT_ID_STROBE: ClassVar[int] = 248
+    LIGHT_ID_WING: ClassVar[int] = 249
+    LIGHT_ID_LOGO: ClassVar[int] = 250
+    LIGHT_ID_TAXI: ClassVar[int] = 251
+    LIGHT_ID_TURN_OFF: ClassVar[int] = 252
+    LIGHT_ID_TAKE_OFF: ClassVar[int] = 253
+    LIGHT_ID_LANDING: ClassVar[int] = 254
+    LIGHT_ID_FORMATION: ClassVar[int] = 255
+
+    light_id: LightId | int = 0
+    color: RGB565 = RGB565()
+    """Monocolor lights should interpret this as brightness"""
+
+
+@dataclass(frozen=True, slots=True)
+class LightsCommand:
+    """``uavcan.equipment.indication.LightsCommand``, message 1081 (``equipment/indication/1081.LightsCommand.uavcan``).
+
+    Lights control command.
+    """
+
+    commands: tuple[SingleLightCommand, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class PrimaryPowerSupplyStatus:
+    """``uavcan.equipment.power.PrimaryPowerSupplyStatus``, message 1090 (``equipment/power/1090.PrimaryPowerSupplyStatus.uavcan``).
+
+    Primary power supply status.
+    Typical publishing rate should be around 1~2 Hz.
+    """
+
+    hours_to_empty_at_10sec_avg_power: float = 0.0
+    """[Hours]"""
+    hours_to_empty_at_10sec_avg_power_variance: float = 0.0
+    """[Hours^2]"""
+    external_power_available: bool = False
+    remaining_energy_pct: int = 0
+    """[Percent]     Required"""
+    remaining_energy_pct_stdev: int = 0
+    """[Percent]     Error standard deviation. Use best guess if unknown."""
+
+
+@dataclass(frozen=True, slots=True)
+class CircuitStatus:
+    """``uavcan.equipment.power.CircuitStatus``, message 1091 (``equipment/power/1091.CircuitStatus.uavcan``).
+
+    Generic electrical circuit info.
+    """
+
+    ERROR_FLAG_OVERVOLTAGE: ClassVar[int] = 1
+    ERROR_FLAG_UNDERVOLTAGE: ClassVar[int] = 2
+    ERROR_FLAG_OVERCURRENT: ClassVar[int] = 4
+    ERROR_FLAG_UNDERCURRENT: ClassVar[int] = 8
+
+    circuit_id: int = 0
+    voltage: float = 0.0
+    current: float = 0.0
+    error_flags: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class BatteryInfo:
+    """``uavcan.equipment.power.BatteryInfo``, message 1092 (``equipment/power/1092.BatteryInfo.uavcan``).
+
+    Single battery info.
+
+    Typical publishing rate should be around 0.2~1 Hz.
+
+    Please refer to the Smart Battery data specification for some elaboration.
+    """
+
+    STATUS_FLAG_IN_USE: ClassVar[int] = 1
+    """The battery is currently used as a power supply"""
+    STATUS_FLAG_CHARGING: ClassVar[int] = 2
+    """Charger is active"""
+    STATUS_FLAG_CHARGED: ClassVar[int] = 4
+    """Charging complete, but the charger is still active"""
+    STATUS_FLAG_TEMP_HOT: ClassVar[int] = 8
+    """Battery temperature is above normal"""
+    STATUS_FLAG_TEMP_COLD: ClassVar[int] = 16
+    """Battery temperature is below normal"""
+    STATUS_FLAG_OVERLOAD: ClassVar[int] = 32
+    """Safe operating area violation"""
+    STATUS_FLAG_BAD_BATTERY: ClassVar[int] = 64
+    """This battery should not be used anymore (e.g. low SOH)"""
+    STATUS_FLAG_NEED_SERVICE: ClassVar[int] = 128
+    """This battery requires maintenance (e.g. balancing, full recharge)"""
+    STATUS_FLAG_BMS_ERROR: ClassVar[int] = 256
+    """Battery management system/controller error, smart battery interface error"""
+    STATUS_FLAG_RESERVED_A: ClassVar[int] = 512
+    """Keep zero"""
+    STATUS_FLAG_RESERVED_B: ClassVar[int] = 1024
+    """Keep zero"""
+    STATE_OF_HEALTH_UNKNOWN: ClassVar[int] = 127
+    """Use this constant if SOH cannot be estimated"""
+
+    temperature: float = 0.0
+    """[Kelvin]"""
+    voltage: float = 0.0
+    """[Volt]"""
+    current: float = 0.0
+    """[Ampere]"""
+    average_power_10sec: float = 0.0
+    """[Watt]        Average power consumption over the last 10 seconds"""
+    remaining_capacity_wh: float = 0.0
+    """[Watt hours]  Will be increasing during charging"""
+    full_charge_capacity_wh: float = 0.0
+    """[Watt hours]  Predicted battery capacity when it is fully charged. Falls with aging"""
+    hours_to_full_charge: float = 0.0
+    """[Hours]       Charging is expected to complete in this time; zero if not charging"""
+    status_flags: int = 0
+    state_of_health_pct: int = 0
+    """Health of the battery, in percent, optional"""
+    state_of_charge_pct: int = 0
+    """Percent of the full charge [0, 100]. This field is required"""
+    state_of_charge_pct_stdev: int = 0
+    """SOC error standard deviation; use best guess if unknown"""
+    battery_id: int = 0
+    """Identifies the battery within this vehicle, e.g. 0 - primary battery"""
+    model_instance_id: int = 0
+    """Set to zero if not applicable"""
+    model_name: bytes = b""
+    """Battery model name"""
+
+
+@dataclass(frozen=True, slots=True)
+class Measurement:
+    """``uavcan.equipment.range_sensor.Measurement``, message 1050 (``equipment/range_sensor/1050.Measurement.uavcan``).
+
+    Generic narrow-beam range sensor data.
+    """
+
+    SENSOR_TYPE_UNDEFINED: ClassVar[int] = 0
+    SENSOR_TYPE_SONAR: ClassVar[int] = 1
+    SENSOR_TYPE_LIDAR: ClassVar[int] = 2
+    SENSOR_TYPE_RADAR: ClassVar[int] = 3
+    READING_TYPE_UNDEFINED: ClassVar[int] = 0
+    """Range is unknown"""
+    READING_TYPE_VALID_RANGE: ClassVar[int] = 1
+    """Range field contains valid distance"""
+    READING_TYPE_TOO_CLOSE: ClassVar[int] = 2
+    """Range field contains min range for the sensor"""
+    READING_TYPE_TOO_FAR: ClassVar[int] = 3
+    """Range field contains max range for the sensor"""
+
+    timestamp: Timestamp = Timestamp()
+    sensor_id: int = 0
+    beam_orientation_in_body_frame: CoarseOrientation = CoarseOrientation()
+    field_of_view: float = 0.0
+    """Radians"""
+    sensor_type: SensorType | int = 0
+    reading_type: ReadingType | int = 0
+    range: float = 0.0
+    """Meters"""
+
+
+@dataclass(frozen=True, slots=True)
+class ArmingStatus:
+    """``uavcan.equipment.safety.ArmingStatus``, message 1100 (``equipment/safety/1100.ArmingStatus.uavcan``).
+
+    This message represents the system arming status.
+    Some nodes may refuse to operate unless the system is fully armed.
+    """
+
+    STATUS_DISARMED: ClassVar[int] = 0
+    STATUS_FULLY_ARMED: ClassVar[int] = 255
+
+    status: ArmingStatusStatus | int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class GlobalNavigationSolution:
+    """``uavcan.navigation.GlobalNavigationSolution``, message 2000 (``navigation/2000.GlobalNavigationSolution.uavcan``).
+
+    Inertial data and orientation in body frame with fused location.
+
+    Fields marked as optional should be set to NaN if the corresponding value is unknown.
+    """
+
+    timestamp: Timestamp = Timestamp()
+    longitude: float = 0.0
+    """required"""
+    latitude: float = 0.0
+    """required"""
+    height_ellipsoid: float = 0.0
+    """Above ellipsoid (required)"""
+    height_msl: float = 0.0
+    """Above the mean sea level (required)"""
+    height_agl: float = 0.0
+    """Above ground level (provided by radar altimeter or LIDAR) (optional)"""
+    height_baro: float = 0.0
+    """Barometric height (optional)"""
+    qnh_hpa: float = 0.0
+    """optional"""
+    orientation_xyzw: tuple[float, ...] = (0.0,) * 4
+    pose_covariance: tuple[float, ...] = ()
+    linear_velocity_body: tuple[float, ...] = (0.0,) * 3
+    angular_velocity_body: tuple[float, ...] = (0.0,) * 3
+    linear_acceleration_body: tuple[float, ...] = (0.0,) * 3
+    velocity_covariance: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class DataTypeKind:
+    """``uavcan.protocol.DataTypeKind`` (nested; ``protocol/DataTypeKind.uavcan``).
+
+    Data type kind (message or service).
+    """
+
+    SERVICE: ClassVar[int] = 0
+    MESSAGE: ClassVar[int] = 1
+
+    value: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class GetDataTypeInfoRequest:
+    """``uavcan.protocol.GetDataTypeInfo`` request, service 2 (``protocol/2.GetDataTypeInfo.uavcan``).
+
+    Get the implementation details of a given data type.
+
+    Request is interpreted as follows:
+    - If the field 'name' is empty, the fields 'kind' and 'id' will be used to identify the data type.
+    - If the field 'name' is non-empty, it will be used to identify the data type; the
+    fields 'kind' and 'id' will be ignored.
+    """
+
+    id: int = 0
+    """Ignored if 'name' is non-empty"""
+    kind: DataTypeKind = DataTypeKind()
+    """Ignored if 'name' is non-empty"""
+    name: bytes = b""
+    """Full data type name, e.g. "uavcan.protocol.GetDataTypeInfo" """
+
+
+@dataclass(frozen=True, slots=True)
+class GetDataTypeInfoResponse:
+    """``uavcan.protocol.GetDataTypeInfo`` response, service 2 (``protocol/2.GetDataTypeInfo.uavcan``)."""
+
+    FLAG_KNOWN: ClassVar[int] = 1
+    """This data type is defined"""
+    FLAG_SUBSCRIBED: ClassVar[int] = 2
+    """Subscribed to messages of this type"""
+    FLAG_PUBLISHING: ClassVar[int] = 4
+    """Publishing messages of this type"""
+    FLAG_SERVING: ClassVar[int] = 8
+    """Providing service of this type"""
+
+    signature: int = 0
+    """Data type signature; valid only if the data type is known (see FLAG_KNOWN)"""
+    id: int = 0
+    """Valid only if the data type is known (see FLAG_KNOWN)"""
+    kind: DataTypeKind = DataTypeKind()
+    """Ditto"""
+    flags: int = 0
+    name: bytes = b""
+    """Full data type name"""
+
+
+@dataclass(frozen=True, slots=True)
+class GetTransportStatsRequest:
+    """``uavcan.protocol.GetTransportStats`` request, service 4 (``protocol/4.GetTransportStats.uavcan``).
+
+    Get transport statistics.
+    """
+
+
+@dataclass(frozen=True, slots=True)
+class CANIfaceStats:
+    """``uavcan.protocol.CANIfaceStats`` (nested; ``protocol/CANIfaceStats.uavcan``).
+
+    Single CAN iface statistics.
+    """
+
+    frames_tx: int = 0
+    """Number of transmitted CAN frames."""
+    frames_rx: int = 0
+    """Number of received CAN frames."""
+    errors: int = 0
+    """Number of errors in the CAN layer."""
+
+
+@dataclass(frozen=True, slots=True)
+class GetTransportStatsResponse:
+    """``uavcan.protocol.GetTransportStats`` response, service 4 (``protocol/4.GetTransportStats.uavcan``)."""
+
+    transfers_tx: int = 0
+    """Number of transmitted transfers."""
+    transfers_rx: int = 0
+    """Number of received transfers."""
+    transfer_errors: int = 0
+    """Number of errors detected in the UAVCAN transport layer."""
+    can_iface_stats: tuple[CANIfaceStats, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class GlobalTimeSync:
+    """``uavcan.protocol.GlobalTimeSync``, message 4 (``protocol/4.GlobalTimeSync.uavcan``).
+
+    Global time synchronization.
+    Any node that publishes timestamped data must use this time reference.
+
+    Please refer to the specification to learn about the synchronization algorithm.
+    """
+
+    MAX_BROADCASTING_PERIOD_MS: ClassVar[int] = 1100
+    """Milliseconds"""
+    MIN_BROADCASTING_PERIOD_MS: ClassVar[int] = 40
+    """Milliseconds"""
+    RECOMMENDED_BROADCASTER_TIMEOUT_MS: ClassVar[int] = 2200
+    """Milliseconds"""
+
+    previous_transmission_timestamp_usec: int = 0
+    """Microseconds"""
+
+
+@dataclass(frozen=True, slots=True)
+class Panic:
+    """``uavcan.protocol.Panic``, message 5 (``protocol/5.Panic.uavcan``).
+
+    This message may be published periodically to inform network participants that the system has encountered
+    an unrecoverable fault and is not capable of further operation.
+
+    Nodes that are expected to react to this message should wait for at least MIN_MESSAGES subsequent messages
+    with any reason text from any sender published with the interval no higher than MAX_INTERVAL_MS before
+    undertaking any emergency actions.
+    """
+
+    MIN_MESSAGES: ClassVar[int] = 3
+    MAX_INTERVAL_MS: ClassVar[int] = 500
+
+    reason_text: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class AccessCommandShellRequest:
+    """``uavcan.protocol.AccessCommandShell`` request, service 6 (``protocol/6.AccessCommandShell.uavcan``).
+
+    THIS DEFINITION IS SUBJECT TO CHANGE.
+
+    This service allows to execute arbitrary commands on the remote node's internal system shell.
+
+    Essentially, this service mimics a typical terminal emulator, with one text input (stdin) and two text
+    outputs (stdout and stderr). When there's no process running, the input is directed into the terminal
+    handler itself, which interprets it. If there's a process running, the input will be directed into
+    stdin of the running process. It is possible to forcefully return the terminal into a known state by
+    means of setting the reset flag (see below), in which case the terminal will kill all of the child
+    processes, if any, and return into the initial idle state.
+
+    The server is assumed to allocate one independent terminal instance per client, so that different clients
+    can execute commands without interfering with each other.
+    """
+
+    NEWLINE: ClassVar[int] = 10
+    MIN_OUTPUT_LIFETIME_SEC: ClassVar[int] = 10
+    FLAG_RESET_SHELL: ClassVar[int] = 1
+    """Restarts the shell instance anew; may or may not imply CLEAR_OUTPUT_BUFFERS"""
+    FLAG_CLEAR_OUTPUT_BUFFERS: ClassVar[int] = 2
+    """Makes stdout and stderr buffers empty"""
+    FLAG_READ_STDOUT: ClassVar[int] = 64
+    """Output will contain stdout"""
+    FLAG_READ_STDERR: ClassVar[int] = 128
+    """Output will be extended with stderr"""
+
+    flags: int = 0
+    input: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class AccessCommandShellResponse:
+    """``uavcan.protocol.AccessCommandShell`` response, service 6 (``protocol/6.AccessCommandShell.uavcan``)."""
+
+    FLAG_RUNNING: ClassVar[int] = 1
+    """The shell is currently running a process; stdin/out/err are piped to it"""
+    FLAG_SHELL_ERROR: ClassVar[int] = 2
+    """Exit status contains error code, output contains text (e.g. no such command)"""
+    FLAG_HAS_PENDING_STDOUT: ClassVar[int] = 64
+    """There is more stdout to read"""
+    FLAG_HAS_PENDING_STDERR: ClassVar[int] = 128
+    """There is more stderr to read"""
+
+    last_exit_status: int = 0
+    flags: int = 0
+    output: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class KeyValue:
+    """``uavcan.protocol.debug.KeyValue``, message 16370 (``protocol/debug/16370.KeyValue.uavcan``).
+
+    Generic named parameter (key/value pair).
+    """
+
+    value: float = 0.0
+    key: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class LogLevel:
+    """``uavcan.protocol.debug.LogLevel`` (nested; ``protocol/debug/LogLevel.uavcan``).
+
+    Log message severity
+    """
+
+    DEBUG: ClassVar[int] = 0
+    INFO: ClassVar[int] = 1
+    WARNING: ClassVar[int] = 2
+    ERROR: ClassVar[int] = 3
+
+    value: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class LogMessage:
+    """``uavcan.protocol.debug.LogMessage``, message 16383 (``protocol/debug/16383.LogMessage.uavcan``).
+
+    Generic log message.
+    All items are byte aligned.
+    """
+
+    level: LogLevel = LogLevel()
+    source: bytes = b""
+    text: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class Allocation:
+    """``uavcan.protocol.dynamic_node_id.Allocation``, message 1 (``protocol/dynamic_node_id/1.Allocation.uavcan``).
+
+    This message is used for dynamic Node ID allocation.
+
+    When a node needs to request a node ID dynamically, it will transmit an anonymous message transfer of this type.
+    In order to reduce probability of CAN ID collisions when multiple nodes are publishing this request, the CAN ID
+    field of anonymous message transfer includes a Discriminator, which is a special field that has to be filled with
+    random data by the transmitting node. Since Discriminator collisions are likely to happen (probability approx.
+    0.006%), nodes that are requesting dynamic allocations need to be able to handle them correctly. Hence, a collision
+    resolution protocol is defined (alike CSMA/CD). The collision resolution protocol is based on two randomized
+    transmission intervals:
+
+    - Request period - Trequest.
+    - Follow up delay - Tfollowup.
+
+    Recommended randomization ranges for these intervals are documented in the constants of this message type (see below).
+    Random intervals must be chosen anew per transmission, whereas the Discriminator value is allowed to stay constant
+    per node.
+
+    In the below description the following terms are used:
+    - Allocator - the node that serves allocation requests.
+    - Allocatee - the node that requests an allocation from the Allocator.
+
+    The response timeout is not explicitly defined for this protocol, as the Allocatee will request the allocation
+    Trequest units of time later again, unless the allocation has been granted. Despite this, the implementation can
+    consider the value of FOLLOWUP_TIMEOUT_MS as an allocation timeout, if necessary.
+
+    On the allocatee's side the protocol is defined through the following set of rules:
+
+    Rule A. On initialization:
+    1. The allocatee subscribes to this message.
+    2. The allocatee starts the Request Timer with a random interval of Trequest.
+
+    Rule B. On expiration of Request Timer:
+    1. Request Timer restarts with a random interval of Trequest.
+    2. The allocatee broadcasts a first-stage Allocation request message, where the fields are assigned following values:
+    node_id                 - preferred node ID, or zero if the allocatee doesn't have any preference
+    first_part_of_unique_id - true
+    unique_id               - first MAX_LENGTH_OF_UNIQUE_ID_IN_REQUEST bytes of unique ID
+
+    Rule C. On any Allocation message, even if other rules also match:
+    1. Request Timer restarts with a random interval of Trequest.
+
+    Rule D. On an Allocation message WHERE (source node ID is non-anonymous) AND (allocatee's unique ID starts with the
+    bytes available in the field unique_id) AND (unique_id is less than 16 bytes long):
+    1. The allocatee waits for Tfollowup units of time, while listening for other Allocation messages. If an Allocation
+    message is received during this time, the execution of this rule will be terminated. Also see rule C.
+    2. The allocatee broadcasts a second-stage Allocation request message, where the fields are assigned following values:
+    node_id                 - same value as in the first-stage
+    first_part_of_unique_id - false
+    unique_id               - at most MAX_LENGTH_OF_UNIQUE_ID_IN_REQUEST bytes of local unique ID with an offset
+    equal to number of bytes in the received unique ID
+
+    Rule E. On an Allocation message WHERE (source node ID is non-anonymous) AND (unique_id fully matches allocatee's
+    unique ID) AND (node_id in the received message is not zero):
+    1. Request Timer stops.
+    2. The allocatee initializes its node_id with the received value.
+    3. The allocatee terminates subscription to Allocation messages.
+    4. Exit.
+    """
+
+    MAX_REQUEST_PERIOD_MS: ClassVar[int] = 1000
+    """It is OK to exceed this value"""
+    MIN_REQUEST_PERIOD_MS: ClassVar[int] = 600
+    """It is OK to exceed this value"""
+    MAX_FOLLOWUP_DELAY_MS: ClassVar[int] = 400
+    MIN_FOLLOWUP_DELAY_MS: ClassVar[int] = 0
+    """Defined only for regularity; will always be zero."""
+    FOLLOWUP_TIMEOUT_MS: ClassVar[int] = 500
+    MAX_LENGTH_OF_UNIQUE_ID_IN_REQUEST: ClassVar[int] = 6
+    ANY_NODE_ID: ClassVar[int] = 0
+
+    node_id: int = 0
+    first_part_of_unique_id: bool = False
+    unique_id: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class Entry:
+    """``uavcan.protocol.dynamic_node_id.server.Entry`` (nested; ``protocol/dynamic_node_id/server/Entry.uavcan``).
+
+    THIS DEFINITION IS SUBJECT TO CHANGE.
+
+    One dynamic node ID allocation entry.
+    This type is a part of the Raft consensus algorithm.
+    Please refer to the specification for details.
+    """
+
+    term: int = 0
+    """Refer to the Raft paper for explanation."""
+    unique_id: bytes = b""
+    """Unique ID of this allocation."""
+    node_id: int = 0
+    """Node ID of this allocation."""
+
+
+@dataclass(frozen=True, slots=True)
+class AppendEntriesRequest:
+    """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` request, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``).
+
+    THIS DEFINITION IS SUBJECT TO CHANGE.
+
+    This type is a part of the Raft consensus algorithm.
+    Please refer to the specification for details.
+    """
+
+    DEFAULT_MIN_ELECTION_TIMEOUT_MS: ClassVar[int] = 2000
+    DEFAULT_MAX_ELECTION_TIMEOUT_MS: ClassVar[int] = 4000
+
+    term: int = 0
+    prev_log_term: int = 0
+    prev_log_index: int = 0
+    leader_commit: int = 0
+    entries: tuple[Entry, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class AppendEntriesResponse:
+    """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` response, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``)."""
+
+    term: int = 0
+    success: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class RequestVoteRequest:
+    """``uavcan.protocol.dynamic_node_id.server.RequestVote`` request, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``).
+
+    THIS DEFINITION IS SUBJECT TO CHANGE.
+
+    This type is a part of the Raft consensus algorithm.
+    Please refer to the specification for details.
+    """
+
+    term: int = 0
+    last_log_term: int = 0
+    last_log_index: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RequestVoteResponse:
+    """``uavcan.protocol.dynamic_node_id.server.RequestVote`` response, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``)."""
+
+    term: int = 0
+    vote_granted: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Discovery:
+    """``uavcan.protocol.dynamic_node_id.server.Discovery``, message 390 (``protocol/dynamic_node_id/server/390.Discovery.uavcan``).
+
+    THIS DEFINITION IS SUBJECT TO CHANGE.
+
+    This message is used by allocation servers to find each other's node ID.
+    Please refer to the specification for details.
+
+    A server should stop publishing this message as soon as it has discovered all other nodes in the cluster.
+
+    An exception applies: when a server receives a Discovery message from another server where the list
+    of known nodes is incomplete (i.e. len(known_nodes) < configured_cluster_size), the server must
+    publish a discovery message once. This condition allows other servers to quickly re-discover the cluster
+    after restart.
+    """
+
+    BROADCASTING_PERIOD_MS: ClassVar[int] = 1000
+
+    configured_cluster_size: int = 0
+    known_nodes: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class BeginRequest:
+    """``uavcan.protocol.enumeration.Begin`` request, service 15 (``protocol/enumeration/15.Begin.uavcan``).
+
+    This service instructs the node to begin the process of automated enumeration.
+    """
+
+    TIMEOUT_CANCEL: ClassVar[int] = 0
+    """Stop enumeration immediately"""
+    TIMEOUT_INFINITE: ClassVar[int] = 65535
+    """Do not stop until explicitly requested"""
+
+    timeout_sec: int = 0
+    """[Seconds]"""
+    parameter_name: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class BeginResponse:
+    """``uavcan.protocol.enumeration.Begin`` response, service 15 (``protocol/enumeration/15.Begin.uavcan``)."""
+
+    ERROR_OK: ClassVar[int] = 0
+    """Success"""
+    ERROR_INVALID_MODE: ClassVar[int] = 1
+    """The node cannot perform enumeration in its current operating mode"""
+    ERROR_INVALID_PARAMETER: ClassVar[int] = 2
+    """The node cannot enumerate on the requested parameter, or it doesn't exist"""
+    ERROR_UNSUPPORTED: ClassVar[int] = 3
+    """The node cannot perform enumeration in its current configuration"""
+    ERROR_UNKNOWN: ClassVar[int] = 255
+    """Generic error"""
+
+    error: Error | int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Indication:
+    """``uavcan.protocol.enumeration.Indication``, message 380 (``protocol/enumeration/380.Indication.uavcan``).
+
+    This message will be broadcasted when the node receives user input in the process of enumeration.
+    """
+
+    value: NumericValue = Empty()
+    parameter_name: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class GetDirectoryEntryInfoRequest:
+    """``uavcan.protocol.file.GetDirectoryEntryInfo`` request, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``).
+
+    This service can be used to retrieve a remote directory listing, one entry per request.
+
+    The client should query each entry independently, iterating 'entry_index' from 0 until the last entry is passed,
+    in which case the server will report that there is no such entry (via the fields 'entry_type' and 'error').
+
+    The entry_index shall be applied to the ordered list of directory entries (e.g. alphabetically ordered). The exact
+    sorting criteria does not matter as long as it provides the same ordering for subsequent service calls.
+    """
+
+    entry_index: int = 0
+    directory_path: Path = Path()
+
+
+@dataclass(frozen=True, slots=True)
+class GetDirectoryEntryInfoResponse:
+    """``uavcan.protocol.file.GetDirectoryEntryInfo`` response, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``)."""
+
+    error: FileErrorCode = FileErrorCode()
+    entry_type: EntryType = EntryType()
+    entry_full_path: Path = Path()
+    """Ignored/Empty if such entry does not exist."""
+
+
+@dataclass(frozen=True, slots=True)
+class DeleteRequest:
+    """``uavcan.protocol.file.Delete`` request, service 47 (``protocol/file/47.Delete.uavcan``).
+
+    Delete remote file system entry.
+    If the remote entry is a directory, all nested entries will be removed too.
+    """
+
+    path: Path = Path()
+
+
+@dataclass(frozen=True, slots=True)
+class DeleteResponse:
+    """``uavcan.protocol.file.Delete`` response, service 47 (``protocol/file/47.Delete.uavcan``)."""
+
+    error: FileErrorCode = FileErrorCode()
+
+
+@dataclass(frozen=True, slots=True)
+class WriteRequest:
+    """``uavcan.protocol.file.Write`` request, service 49 (``protocol/file/49.Write.uavcan``).
+
+    Write into a remote file.
+    The server shall place the contents of the field 'data' into the file pointed by 'path' at the offset specified by
+    the field 'offset'.
+
+    When writing a file, the client should repeatedly call this service with data while advancing offset until the file
+    is written completely. When write is complete, the client shall call the service one last time, with the offset
+    set to the size of the file and with the data field empty, which will signal the server that the write operation is
+    complete.
+
+    When the write operation is complete, the server shall truncate the resulting file past the specified offset.
+
+    Server implementation advice:
+    It is recommended to implement proper handling of concurrent writes to the same file from different clients, for
+    example by means of creating a staging area for uncompleted writes (like FTP servers do).
+    """
+
+    offset: int = 0
+    path: Path = Path()
+    data: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class WriteResponse:
+    """``uavcan.protocol.file.Write`` response, service 49 (``protocol/file/49.Write.uavcan``)."""
+
+    error: FileErrorCode = FileErrorCode()
+
+
+@dataclass(frozen=True, slots=True)
+class Protocol:
+    """``uavcan.tunnel.Protocol`` (nested; ``tunnel/Protocol.uavcan``).
+
+    This enumeration specifies the encapsulated protocol.
+    New protocols are likely to be added in the future.
+    """
+
+    MAVLINK: ClassVar[int] = 0
+    """MAVLink"""
+    MAVLINK2: ClassVar[int] = 1
+    """MAVLink2"""
+    GPS_GENERIC: ClassVar[int] = 2
+    """GPS in any protocol (e.g. UBX, NMEA, etc.)"""
+    UNDEFINED: ClassVar[int] = 255
+    """Undefined"""
+
+    protocol: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Broadcast:
+    """``uavcan.tunnel.Broadcast``, message 2010 (``tunnel/2010.Broadcast.uavcan``).
+
+    This message struct carries arbitrary data in the format of the specified high-level protocol.
+    The data will be delivered to all nodes that are interested in tunneled protocols.
+    Finer addressing schemes may be implemented using the means provided by the encapsulated protocol.
+    The channelID allows for additional routing between the source and target nodes.
+    """
+
+    protocol: Protocol = Protocol()
+    channel_id: int = 0
+    buffer: bytes = b""
+    """TAO rules apply"""
+
+
+@dataclass(frozen=True, slots=True)
+class SerialConfig:
+    """``uavcan.tunnel.SerialConfig``, message 2011 (``tunnel/2011.SerialConfig.uavcan``).
+
+    This message carries baudrate for tunnel channel_id
+    """
+
+    channel_id: int = 0
+    baud: int = 0
+    options: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Targetted:
+    """``uavcan.tunnel.Targetted``, message 3001 (``tunnel/3001.Targetted.uavcan``).
+
+    This message struct carries arbitrary data in the format of the specified high-level protocol.
+    The message is sent as a broadcast but it is expected that the target_node to select which node
+    will process the data. This is used instead of a service request to avoid the round trip which
+    impacts high rate messages
+    a send with a buffer length of 0 can be used as a keepalive or to trigger initial
+    setup of the link on the target node
+    """
+
+    OPTION_LOCK_PORT: ClassVar[int] = 1
+
+    protocol: Protocol = Protocol()
+    target_node: int = 0
+    serial_id: int = 0
+    options: int = 0
+    baudrate: int = 0
+    buffer: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class CallRequest:
+    """``uavcan.tunnel.Call`` request, service 63 (``tunnel/63.Call.uavcan``).
+
+    This service carries arbitrary data in the format of the specified high-level protocol.
+    The data will be delivered to the specified node only (not broadcast), and the addressed node
+    will be required to respond (although the response may be empty, if the chosen protocol allows so).
+    The specified protocol applies both to the request and to the response. The channelID allows for
+    additional routing between the source and target nodes.
+    """
+
+    protocol: Protocol = Protocol()
+    channel_id: int = 0
+    buffer: bytes = b""
+    """TAO rules apply"""
+
+
+@dataclass(frozen=True, slots=True)
+class CallResponse:
+    """``uavcan.tunnel.Call`` response, service 63 (``tunnel/63.Call.uavcan``)."""
+
+    buffer: bytes = b""
+    """TAO rules apply"""
+
+
+__all__ = [
+    'AccessCommandShellRequest',
+    'AccessCommandShellRequestFlag',
+    'AccessCommandShellResponse',
+    'AccessCommandShellResponseFlag',
+    'ActuatorCommand',
+    'ActuatorStatus',
+    'Allocation',
+    'AngleOfAttack',
+    'AngularCommand',
+    'AppendEntriesRequest',
+    'AppendEntriesResponse',
+    'ArmingStatus',
+    'ArmingStatusStatus',
+    'ArrayCommand',
+    'Auxiliary',
+    'BatteryInfo',
+    'BeepCommand',
+    'BeginRequest',
+    'BeginResponse',
+    'Broadcast',
+    'CANIfaceStats',
+    'CallRequest',
+    'CallResponse',
+    'CameraGimbalMode',
+    'CameraGimbalStatus',
+    'CircuitStatus',
+    'CoarseOrientation',
+    'CommandMode',
+    'CommandType',
+    'CylinderStatus',
+    'DataTypeKind',
+    'DeleteRequest',
+    'DeleteResponse',
+    'Discovery',
+    'ECEFPositionVelocity',
+    'Entry',
+    'Error',
+    'ErrorFlag',
+    'Fix',
+    'Fix2',
+    'Fix2GnssTimeStandard',
+    'Fix2Mode',
+    'Fix2Status',
+    'FixGnssTimeStandard',
+    'FixStatus',
+    'FuelTankStatus',
+    'GEOPOICommand',
+    'GetDataTypeInfoRequest',
+    'GetDataTypeInfoResponse',
+    'GetDataTypeInfoResponseFlag',
+    'GetDirectoryEntryInfoRequest',
+    'GetDirectoryEntryInfoResponse',
+    'GetTransportStatsRequest',
+    'GetTransportStatsResponse',
+    'GlobalNavigationSolution',
+    'GlobalTimeSync',
+    'HardpointCommand',
+    'HardpointStatus',
+    'HeightReference',
+    'IndicatedAirspeed',
+    'Indication',
+    'KeyValue',
+    'LightId',
+    'LightsCommand',
+    'LogLevel',
+    'LogMessage',
+    'MagneticFieldStrength',
+    'MagneticFieldStrength2',
+    'Measurement',
+    'Panic',
+    'PrimaryPowerSupplyStatus',
+    'Protocol',
+    'ProtocolId',
+    'RGB565',
+    'RPMCommand',
+    'RTCMStream',
+    'RawAirData',
+    'RawAirDataFlag',
+    'RawIMU',
+    'ReadingType',
+    'ReciprocatingStatus',
+    'ReciprocatingStatusFlag',
+    'RequestVoteRequest',
+    'RequestVoteResponse',
+    'SensorId',
+    'SensorType',
+    'SerialConfig',
+    'Sideslip',
+    'SingleLightCommand',
+    'Solution',
+    'State',
+    'StaticPressure',
+    'StaticTemperature',
+    'StatusExtended',
+    'StatusFlag',
+    'SubMode',
+    'Targetted',
+    'Timestamp',
+    'TrueAirspeed',
+    'WriteRequest',
+    'WriteResponse',
+]
+
+CLASSES: dict[str, Any] = {
+    'uavcan.equipment.device.Temperature': Temperature,
+    'uavcan.equipment.esc.RawCommand': RawCommand,
+    'uavcan.equipment.esc.Status': EscStatus,
+    'uavcan.protocol.GetNodeInfo.Request': GetNodeInfoRequest,
+    'uavcan.protocol.GetNodeInfo.Response': GetNodeInfoResponse,
+    'uavcan.protocol.NodeStatus': NodeStatus,
+    'uavcan.protocol.RestartNode.Request': RestartNodeRequest,
+    'uavcan.protocol.RestartNode.Response': RestartNodeResponse,
+    'uavcan.protocol.HardwareVersion': HardwareVersion,
+    'uavcan.protocol.SoftwareVersion': SoftwareVersion,
+    'uavcan.protocol.file.BeginFirmwareUpdate.Request': BeginFirmwareUpdateRequest,
+    'uavcan.protocol.file.BeginFirmwareUpdate.Response': BeginFirmwareUpdateResponse,
+    'uavcan.protocol.file.GetInfo.Request': FileGetInfoRequest,
+    'uavcan.protocol.file.GetInfo.Response': FileGetInfoResponse,
+    'uavcan.protocol.file.Read.Request': FileReadRequest,
+    'uavcan.protocol.file.Read.Response': FileReadResponse,
+    'uavcan.protocol.file.EntryType': EntryType,
+    'uavcan.protocol.file.Error': FileErrorCode,
+    'uavcan.protocol.file.Path': Path,
+    'uavcan.protocol.param.ExecuteOpcode.Request': ExecuteOpcodeRequest,
+    'uavcan.protocol.param.ExecuteOpcode.Response': ExecuteOpcodeResponse,
+    'uavcan.protocol.param.GetSet.Request': GetSetRequest,
+    'uavcan.protocol.param.GetSet.Response': GetSetResponse,
+    'uavcan.protocol.param.Empty': Empty,
+    'uavcan.protocol.param.NumericValue': NumericValue,
+    'uavcan.protocol.param.Value': Value,
+    'uavcan.CoarseOrientation': CoarseOrientation,
+    'uavcan.Timestamp': Timestamp,
+    'uavcan.equipment.actuator.Command': ActuatorCommand,
+    'uavcan.equipment.actuator.ArrayCommand': ArrayCommand,
+    'uavcan.equipment.actuator.Status': ActuatorStatus,
+    'uavcan.equipment.ahrs.Solution': Solution,
+    'uavcan.equipment.ahrs.MagneticFieldStrength': MagneticFieldStrength,
+    'uavcan.equipment.ahrs.MagneticFieldStrength2': MagneticFieldStrength2,
+    'uavcan.equipment.ahrs.RawIMU': RawIMU,
+    'uavcan.equipment.air_data.TrueAirspeed': TrueAirspeed,
+    'uavcan.equipment.air_data.IndicatedAirspeed': IndicatedAirspeed,
+    'uavcan.equipment.air_data.AngleOfAttack': AngleOfAttack,
+    'uavcan.equipment.air_data.Sideslip': Sideslip,
+    'uavcan.equipment.air_data.RawAirData': RawAirData,
+    'uavcan.equipment.air_data.StaticPressure': StaticPressure,
+    'uavcan.equipment.air_data.StaticTemperature': StaticTemperature,
+    'uavcan.equipment.camera_gimbal.Mode': CameraGimbalMode,
+    'uavcan.equipment.camera_gimbal.AngularCommand': AngularCommand,
+    'uavcan.equipment.camera_gimbal.GEOPOICommand': GEOPOICommand,
+    'uavcan.equipment.camera_gimbal.Status': CameraGimbalStatus,
+    'uavcan.equipment.esc.RPMCommand': RPMCommand,
+    'uavcan.equipment.esc.StatusExtended': StatusExtended,
+    'uavcan.equipment.gnss.Fix': Fix,
+    'uavcan.equipment.gnss.Auxiliary': Auxiliary,
+    'uavcan.equipment.gnss.RTCMStream': RTCMStream,
+    'uavcan.equipment.gnss.ECEFPositionVelocity': ECEFPositionVelocity,
+    'uavcan.equipment.gnss.Fix2': Fix2,
+    'uavcan.equipment.hardpoint.Command': HardpointCommand,
+    'uavcan.equipment.hardpoint.Status': HardpointStatus,
+    'uavcan.equipment.ice.FuelTankStatus': FuelTankStatus,
+    'uavcan.equipment.ice.reciprocating.CylinderStatus': CylinderStatus,
+    'uavcan.equipment.ice.reciprocating.Status': ReciprocatingStatus,
+    'uavcan.equipment.indication.BeepCommand': BeepCommand,
+    'uavcan.equipment.indication.RGB565': RGB565,
+    'uavcan.equipment.indication.SingleLightCommand': SingleLightCommand,
+    'uavcan.equipment.indication.LightsCommand': LightsCommand,
+    'uavcan.equipment.power.PrimaryPowerSupplyStatus': PrimaryPowerSupplyStatus,
+    'uavcan.equipment.power.CircuitStatus': CircuitStatus,
+    'uavcan.equipment.power.BatteryInfo': BatteryInfo,
+    'uavcan.equipment.range_sensor.Measurement': Measurement,
+    'uavcan.equipment.safety.ArmingStatus': ArmingStatus,
+    'uavcan.navigation.GlobalNavigationSolution': GlobalNavigationSolution,
+    'uavcan.protocol.DataTypeKind': DataTypeKind,
+    'uavcan.protocol.GetDataTypeInfo.Request': GetDataTypeInfoRequest,
+    'uavcan.protocol.GetDataTypeInfo.Response': GetDataTypeInfoResponse,
+    'uavcan.protocol.GetTransportStats.Request': GetTransportStatsRequest,
+    'uavcan.protocol.CANIfaceStats': CANIfaceStats,
+    'uavcan.protocol.GetTransportStats.Response': GetTransportStatsResponse,
+    'uavcan.protocol.GlobalTimeSync': GlobalTimeSync,
+    'uavcan.protocol.Panic': Panic,
+    'uavcan.protocol.AccessCommandShell.Request': AccessCommandShellRequest,
+    'uavcan.protocol.AccessCommandShell.Response': AccessCommandShellResponse,
+    'uavcan.protocol.debug.KeyValue': KeyValue,
+    'uavcan.protocol.debug.LogLevel': LogLevel,
+    'uavcan.protocol.debug.LogMessage': LogMessage,
+    'uavcan.protocol.dynamic_node_id.Allocation': Allocation,
+    'uavcan.protocol.dynamic_node_id.server.Entry': Entry,
+    'uavcan.protocol.dynamic_node_id.server.AppendEntries.Request': AppendEntriesRequest,
+    'uavcan.protocol.dynamic_node_id.server.AppendEntries.Response': AppendEntriesResponse,
+    'uavcan.protocol.dynamic_node_id.server.RequestVote.Request': RequestVoteRequest,
+    'uavcan.protocol.dynamic_node_id.server.RequestVote.Response': RequestVoteResponse,
+    'uavcan.protocol.dynamic_node_id.server.Discovery': Discovery,
+    'uavcan.protocol.enumeration.Begin.Request': BeginRequest,
+    'uavcan.protocol.enumeration.Begin.Response': BeginResponse,
+    'uavcan.protocol.enumeration.Indication': Indication,
+    'uavcan.protocol.file.GetDirectoryEntryInfo.Request': GetDirectoryEntryInfoRequest,
+    'uavcan.protocol.file.GetDirectoryEntryInfo.Response': GetDirectoryEntryInfoResponse,
+    'uavcan.protocol.file.Delete.Request': DeleteRequest,
+    'uavcan.protocol.file.Delete.Response': DeleteResponse,
+    'uavcan.protocol.file.Write.Request': WriteRequest,
+    'uavcan.protocol.file.Write.Response': WriteResponse,
+    'uavcan.tunnel.Protocol': Protocol,
+    'uavcan.tunnel.Broadcast': Broadcast,
+    'uavcan.tunnel.SerialConfig': SerialConfig,
+    'uavcan.tunnel.Targetted': Targetted,
+    'uavcan.tunnel.Call.Request': CallRequest,
+    'uavcan.tunnel.Call.Response': CallResponse,
+}
+"""The class of each key (full name, with ``.Request``/``.Response``)."""
+
+ENUMS: dict[tuple[str, str], type] = {
+    ('uavcan.protocol.NodeStatus', 'health'): Health,
+    ('uavcan.protocol.NodeStatus', 'mode'): Mode,
+    ('uavcan.protocol.file.BeginFirmwareUpdate.Response', 'error'): FirmwareUpdateError,
+    ('uavcan.protocol.param.ExecuteOpcode.Request', 'opcode'): Opcode,
+    ('uavcan.equipment.actuator.Command', 'command_type'): CommandType,
+    ('uavcan.equipment.air_data.AngleOfAttack', 'sensor_id'): SensorId,
+    ('uavcan.equipment.camera_gimbal.GEOPOICommand', 'height_reference'): HeightReference,
+    ('uavcan.equipment.camera_gimbal.Mode', 'command_mode'): CommandMode,
+    ('uavcan.equipment.gnss.Fix', 'gnss_time_standard'): FixGnssTimeStandard,
+    ('uavcan.equipment.gnss.Fix', 'status'): FixStatus,
+    ('uavcan.equipment.gnss.RTCMStream', 'protocol_id'): ProtocolId,
+    ('uavcan.equipment.gnss.Fix2', 'gnss_time_standard'): Fix2GnssTimeStandard,
+    ('uavcan.equipment.gnss.Fix2', 'status'): Fix2Status,
+    ('uavcan.equipment.gnss.Fix2', 'mode'): Fix2Mode,
+    ('uavcan.equipment.gnss.Fix2', 'sub_mode'): SubMode,
+    ('uavcan.equipment.ice.reciprocating.Status', 'state'): State,
+    ('uavcan.equipment.indication.SingleLightCommand', 'light_id'): LightId,
+    ('uavcan.equipment.range_sensor.Measurement', 'sensor_type'): SensorType,
+    ('uavcan.equipment.range_sensor.Measurement', 'reading_type'): ReadingType,
+    ('uavcan.equipment.safety.ArmingStatus', 'status'): ArmingStatusStatus,
+    ('uavcan.protocol.enumeration.Begin.Response', 'error'): Error,
+}
+"""The enum a field decodes to, by (key, field name)."""
+
+UNION_MEMBERS: dict[str, tuple[type, ...]] = {
+    'uavcan.protocol.param.Value': (Empty, IntegerValue, RealValue, BooleanValue, StringValue,),
+    'uavcan.protocol.param.NumericValue': (Empty, IntegerValue, RealValue,),
+}
+"""The member classes of each union, in member order."""

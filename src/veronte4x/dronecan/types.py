@@ -1,0 +1,177 @@
+"""DSDL definitions as data types: schemas, ids and signatures, from the parsed files.
+
+`standard_definitions` parses the ``uavcan`` namespace shipped with the package (the
+DroneCAN standard DSDL, MIT licence, in ``veronte4x/dronecan/dsdl``); `data_types`
+joins definitions to their classes (`veronte4x.dronecan.standard` for those, source
+compiled at run time for a vendor namespace) and computes every signature.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.crc import signature_seed
+from veronte4x.dronecan.generate import attribute_name, keys
+from veronte4x.dronecan.parser import (
+    ArrayType,
+    Definition,
+    DsdlError,
+    FieldType,
+    PrimitiveType,
+    check_references,
+    parse_namespaces,
+    signature,
+)
+from veronte4x.dronecan.schema import Array, Field, Member, Scalar, Struct, Union, max_bits
+
+DSDL_ROOT = Path(__file__).with_name("dsdl")
+"""The standard DSDL shipped with the package: ``uavcan/`` and its ``LICENSE``."""
+
+
+@functools.cache
+def standard_definitions() -> dict[str, Definition]:
+    """Every definition of the standard ``uavcan`` namespace, by full name."""
+    definitions = parse_namespaces([DSDL_ROOT / "uavcan"])
+    check_references(definitions)
+    return definitions
+
+
+@dataclass(frozen=True)
+class DataType:
+    """A top-level type: what goes on the wire for one class.
+
+    Attributes:
+        full_name: DSDL full name, e.g. ``uavcan.protocol.NodeStatus``.
+        kind: Message, request or response.
+        data_type_id: The default data type id.
+        signature: The 64-bit data type signature (one for both halves of a service).
+        schema: The struct definition.
+        path: The DSDL file it was compiled from ("" if none).
+    """
+
+    full_name: str
+    kind: TransferKind
+    data_type_id: int
+    signature: int
+    schema: Struct
+    path: str = ""
+
+    @cached_property
+    def crc_seed(self) -> int:
+        """The transfer CRC after the signature."""
+        return signature_seed(self.signature)
+
+    @property
+    def max_payload(self) -> int:
+        """Largest payload in bytes, with TAO."""
+        return (max_bits(self.schema, tao=True) + 7) // 8
+
+
+class _Builder:
+    """Turns definitions into `schema` objects, given each key's class."""
+
+    def __init__(
+        self,
+        definitions: Mapping[str, Definition],
+        classes: Mapping[str, type],
+        enums: Mapping[tuple[str, str], type],
+        members: Mapping[str, tuple[type, ...]],
+    ) -> None:
+        self.definitions = definitions
+        self.classes = classes
+        self.enums = enums
+        self.members = members
+        self.done: dict[str, Struct | Union] = {}
+
+    def build(self, key: str) -> Struct | Union:
+        found = self.done.get(key)
+        if found is not None:
+            return found
+        full_name = key.removesuffix(".Request").removesuffix(".Response")
+        d = self.definitions[full_name]
+        section = d.sections[keys(d).index(key)]
+        built: Struct | Union
+        if section.union:
+            built = Union(
+                key,
+                tuple(
+                    Member(
+                        attribute_name(a.name),
+                        self._member_type(d, a.type, a.line),
+                        cls,
+                    )
+                    for a, cls in zip(section.fields, self.members[key], strict=True)
+                ),
+            )
+        else:
+            built = Struct(
+                key,
+                self.classes[key],
+                tuple(
+                    Field(
+                        attribute_name(a.name),
+                        self._type(d, a.type, a.line),
+                        self.enums.get((key, a.name)),
+                    )
+                    for a in section.fields
+                ),
+            )
+        self.done[key] = built
+        return built
+
+    def _member_type(self, d: Definition, t: FieldType, line: int) -> Scalar | Array | Struct:
+        found = self._type(d, t, line)
+        if isinstance(found, Union):
+            raise DsdlError(d.path, line, "a union in a union is not supported")
+        return found
+
+    def _type(self, d: Definition, t: FieldType, line: int) -> Scalar | Array | Struct | Union:
+        if isinstance(t, str):
+            return self.build(t)
+        if isinstance(t, ArrayType):
+            item = self._type(d, t.item, line)
+            if isinstance(item, (Union, Array)):
+                raise DsdlError(d.path, line, "an array of unions is not supported")
+            return Array(item, t.max_size, t.dynamic)
+        return _scalar(t)
+
+
+def _scalar(t: PrimitiveType) -> Scalar:
+    return Scalar(t.kind, t.bits, t.cast == "truncated")
+
+
+def data_types(
+    definitions: Mapping[str, Definition],
+    new: Mapping[str, Definition],
+    classes: Mapping[str, type],
+    enums: Mapping[tuple[str, str], type],
+    members: Mapping[str, tuple[type, ...]],
+) -> list[DataType]:
+    """The top-level types of ``new`` (the rest of ``definitions`` may be nested in them)."""
+    builder = _Builder(definitions, classes, enums, members)
+    found = []
+    kinds = (TransferKind.REQUEST, TransferKind.RESPONSE)
+    for d in new.values():
+        if d.default_id is None:
+            continue
+        value = signature(d.full_name, dict(definitions))
+        for i, key in enumerate(keys(d)):
+            schema = builder.build(key)
+            assert isinstance(schema, Struct)  # `generate.plan` refuses top-level unions
+            kind = kinds[i] if d.service else TransferKind.MESSAGE
+            found.append(DataType(d.full_name, kind, d.default_id, value, schema, d.path))
+    return found
+
+
+def nested_signatures(definitions: Mapping[str, Definition]) -> dict[str, int]:
+    """The signature of each nested type (documentation only: never on the wire)."""
+    return {
+        name: signature(name, dict(definitions))
+        for name, d in definitions.items()
+        if d.default_id is None
+    }
