@@ -70,7 +70,6 @@ ACCEPTED: list[tuple[str, Any, Any]] = [
 REFUSED: list[tuple[str, Any]] = [
     ("NodeStatus uptime float", d.NodeStatus(np.float64(5.0), H, M, 0, 0)),
     ("RawCommand float", d.RawCommand((np.float64(5.5),))),
-    ("RestartNode ok integer", d.RestartNodeResponse(np.int64(1))),
     ("GetSet index float", d.GetSetRequest(index=np.float64(3.0))),
     ("param.Value integer float", d.GetSetRequest(value=d.IntegerValue(np.float64(3.5)))),
 ]

@@ -16,7 +16,6 @@ for saturation; `compiled` holds the fast paths.
 from __future__ import annotations
 
 import functools
-import operator
 import struct
 from typing import Any
 
@@ -27,7 +26,7 @@ from veronte4x.dronecan.float16 import (
     float32_value,
 )
 from veronte4x.dronecan.schema import Array, Field, Member, Scalar, Struct, Union, uses_tao
-from veronte4x.errors import DecodeError, EncodeError
+from veronte4x.errors import DecodeError, EncodeError, boolean, integer, real
 
 
 class _Writer:
@@ -111,20 +110,8 @@ _F64 = struct.Struct("<d")
 _U64 = struct.Struct("<Q")
 
 
-def _as_int(value: object) -> int | None:
-    """``value`` as an exact int (ints and NumPy integers, through ``__index__``), else None.
-
-    bools (Python's and NumPy's) are not ints here."""
-    if value.__class__ is bool or value.__class__.__name__ in ("bool", "bool_"):
-        return None
-    try:
-        return operator.index(value)  # type: ignore[arg-type]
-    except TypeError:
-        return None
-
-
 def _check_int(name: str, field: str, t: Scalar, value: object, saturate: bool) -> int:
-    number = value if value.__class__ is int else _as_int(value)
+    number = integer(value)
     if number is None:
         raise EncodeError(name, field, value, f"an int for {t.dsdl}")
     assert isinstance(number, int)
@@ -138,34 +125,21 @@ def _check_int(name: str, field: str, t: Scalar, value: object, saturate: bool) 
     return number & ((1 << t.bits) - 1)
 
 
-def _as_float(value: object) -> float | None:
-    """``value`` as a float: Python and NumPy floats and ints (not bools), else None."""
-    if isinstance(value, float):
-        return value
-    number = _as_int(value)
-    if number is not None:
-        return float(number)
-    if value.__class__.__name__.startswith("float") and hasattr(value, "__float__"):
-        return float(value)
-    return None
-
-
 def scalar_bits(name: str, field: str, t: Scalar, value: object, saturate: bool) -> int:
     """Validate one scalar value and return its raw bits (two's complement, IEEE).
 
     NumPy integer, float and bool scalars are accepted where Python's are; a value is
     never narrowed silently (a float is no int, an out-of-range int an error)."""
     if t.kind == "float":
-        number = _as_float(value)
-        if number is None:
+        exact = real(value)
+        if exact is None:
             raise EncodeError(name, field, value, f"a float for {t.dsdl}")
+        number = float(exact)
         if t.bits == 64:
             raw: int = _U64.unpack(_F64.pack(number))[0]
             return raw
         return float16_bits(number) if t.bits == 16 else float32_bits(number)
-    if t.kind == "bool" and (
-        isinstance(value, bool) or value.__class__.__name__ in ("bool", "bool_")
-    ):
+    if t.kind == "bool" and boolean(value) is not None:
         return 1 if value else 0
     return _check_int(name, field, t, value, saturate)
 
