@@ -73,7 +73,7 @@ def test_an_unreadable_file_is_a_source_error(
     with pytest.raises(SourceError) as columnar:
         capture.read_tables(path)
     assert str(columnar.value) == str(raised.value)
-    for command in ("decode", "stats", "replay", "plot"):
+    for command in ("decode", "stats", "replay", "plot", "monitor"):
         plot = ["--output", str(tmp_path / "plot.png")] if command == "plot" else []
         result = run(command, str(path), *plot)
         assert result.returncode == 2, (command, result.stderr)

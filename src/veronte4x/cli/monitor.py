@@ -24,6 +24,7 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
 
@@ -58,12 +59,13 @@ class _Reader:
         self.stop = threading.Event()
         self.done = threading.Event()
         self.failure: BaseException | None = None
-        self._records = open_records(args, bus_map, self.stop)
+        self.watch = InputWatch(None if live(args) else args.file)
+        self._source = (args, bus_map)
         self._thread = threading.Thread(target=self._run, name="veronte4x-monitor", daemon=True)
 
     def _run(self) -> None:
-        try:
-            for record in self._records:
+        try:  # opened in the thread that reads it (python-can's SQLite reader must be)
+            for record in self.watch.records(open_records(*self._source, self.stop)):
                 with self.lock:
                     self.state.add(record)
                 if self.stop.is_set():
@@ -117,7 +119,11 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     else:
         print(reader.text(args.filter), end="", flush=True)
     interrupted = "interrupted after " if status == EXIT_INTERRUPTED else ""
-    print(f"veronte4x: {interrupted}{state.summary()}", file=sys.stderr)
+    note = reader.watch.note()
+    print(
+        f"veronte4x: {interrupted}{state.summary()}" + (f"; {note}" if note else ""),
+        file=sys.stderr,
+    )
     return status
 
 
