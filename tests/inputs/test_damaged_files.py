@@ -10,7 +10,7 @@ import pytest
 
 from tests.inputs.support import run
 from veronte4x import capture
-from veronte4x.capture import Frame, open_frames
+from veronte4x.capture import BadLine, Frame, open_frames
 from veronte4x.errors import SourceError
 
 can = pytest.importorskip("can")
@@ -89,6 +89,7 @@ def test_a_cut_blf_keeps_the_frames_before_the_cut(tmp_path: Path) -> None:
     assert 500 < len(frames) < FRAMES
     assert items[: len(frames)] == frames
     [cut] = items[len(frames) :]
+    assert isinstance(cut, BadLine)
     reason = (
         f"{path}: the BLF file ends early, after message {len(frames)} ({size} of the "
         f"{size * 2} bytes its header gives): the file is truncated"
