@@ -16,7 +16,7 @@ ARBITER = str(EXAMPLES / "arbiter.toml")
 CAPTURE = EXAMPLES / "capture.log"
 
 
-@pytest.mark.parametrize("command", ["decode", "stats", "replay", "plot"])
+@pytest.mark.parametrize("command", ["decode", "stats", "replay", "plot", "monitor"])
 def test_every_command_tells_a_cut_gzip_file(tmp_path: Path, command: str) -> None:
     path = tmp_path / "cut.log.gz"
     whole = gzip.compress(candump(2000).encode())
@@ -84,7 +84,7 @@ NOT_CAPTURES = {
 
 
 @pytest.mark.parametrize("name", sorted(NOT_CAPTURES))
-@pytest.mark.parametrize("command", ["decode", "stats", "replay", "plot"])
+@pytest.mark.parametrize("command", ["decode", "stats", "replay", "plot", "monitor"])
 def test_a_file_with_no_frame_is_not_a_capture(tmp_path: Path, name: str, command: str) -> None:
     path = tmp_path / name
     path.write_bytes(NOT_CAPTURES[name])

@@ -73,7 +73,7 @@ def test_an_unreadable_file_is_a_source_error(
     with pytest.raises(SourceError) as columnar:
         capture.read_tables(path)
     assert str(columnar.value) == str(raised.value)
-    for command in ("decode", "stats", "replay", "plot"):
+    for command in ("decode", "stats", "replay", "plot", "monitor"):
         plot = ["--output", str(tmp_path / "plot.png")] if command == "plot" else []
         result = run(command, str(path), *plot)
         assert result.returncode == 2, (command, result.stderr)
@@ -89,6 +89,7 @@ def test_a_cut_blf_keeps_the_frames_before_the_cut(tmp_path: Path) -> None:
     assert 500 < len(frames) < FRAMES
     assert items[: len(frames)] == frames
     [cut] = items[len(frames) :]
+    assert isinstance(cut, BadLine)
     reason = (
         f"{path}: the BLF file ends early, after message {len(frames)} ({size} of the "
         f"{size * 2} bytes its header gives): the file is truncated"

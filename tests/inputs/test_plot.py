@@ -4,6 +4,7 @@ the data."""
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -48,8 +49,9 @@ def test_time_is_seconds_from_the_start_and_legends_are_outside(tmp_path: Path) 
 
     from veronte4x.capture.plot import arbitration_timeline
 
-    figure = arbitration_timeline(capture.read(CAPTURE))
-    FigureCanvasAgg(figure).draw()
+    figure: Any = arbitration_timeline(capture.read(CAPTURE))
+    canvas: Any = FigureCanvasAgg(figure)
+    canvas.draw()
     top, bottom = figure.axes
     assert bottom.get_xlabel() == "time (s) from 2025-11-21 15:00:00.000 UTC"
     assert top.xaxis.get_offset_text().get_text() == ""  # no +1.763737e9

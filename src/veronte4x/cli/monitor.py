@@ -23,8 +23,10 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
+from veronte4x.capture.records import Record
 from veronte4x.cli import play, rates
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
 
@@ -66,18 +68,25 @@ class _Reader:
         self.stop = threading.Event()
         self.done = threading.Event()
         self.failure: BaseException | None = None
+        self.watch = InputWatch(None if live(args) else args.file)
         self.rates = rates.tracker(args, bus_map)
-        if self.rates is None:
-            self._records = open_records(args, bus_map, self.stop)
-        else:
-            self._records = rates.records(args, bus_map, self.rates, self.stop)
-        if args.speed is not None and not live(args):
-            self._records = play.paced(self._records, args.speed, self.stop)
+        self._source = (args, bus_map)
         self._thread = threading.Thread(target=self._run, name="veronte4x-monitor", daemon=True)
 
+    def _open(self) -> Iterator[Record]:
+        """The source's records: fed to the rates tracker and paced as the options say."""
+        args, bus_map = self._source
+        if self.rates is None:
+            records = open_records(args, bus_map, self.stop)
+        else:
+            records = rates.records(args, bus_map, self.rates, self.stop)
+        if args.speed is not None and not live(args):
+            records = play.paced(records, args.speed, self.stop)
+        return records
+
     def _run(self) -> None:
-        try:
-            for record in self._records:
+        try:  # opened in the thread that reads it (python-can's SQLite reader must be)
+            for record in self.watch.records(self._open()):
                 with self.lock:
                     self.state.add(record)
                 if self.stop.is_set():
@@ -133,7 +142,11 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     if reader.rates is not None:
         print(rates.report(reader.rates), flush=True)
     interrupted = "interrupted after " if status == EXIT_INTERRUPTED else ""
-    print(f"veronte4x: {interrupted}{state.summary()}", file=sys.stderr)
+    note = reader.watch.note()
+    print(
+        f"veronte4x: {interrupted}{state.summary()}" + (f"; {note}" if note else ""),
+        file=sys.stderr,
+    )
     return status
 
 
