@@ -3,16 +3,11 @@
 The rule is the codec's (`veronte4x.errors.integer`, `real`, `boolean`): a NumPy integer
 where an int is expected, a NumPy bool where a bool is, a NumPy float or integer where a
 float is, each giving exactly the bytes of the Python value; a float where an int is
-expected (even ``np.float64(3.0)``) and an integer where a bool is are refused with an
-`EncodeError`. The encoders of today's serializer are being replaced by encoders generated
-from the DSDL, which call those functions; until then:
-
-- ``ACCEPTED`` holds the cases today's encoders already get right (checked here);
-- ``REFUSED`` the narrowing cases they already refuse (checked here);
-- ``AWAITING_THE_DSDL_COMPILER`` the cases the generated encoders must get right and today's
-  do not (refused, a `AttributeError`, or wrong bytes). The branch that brings the compiler
-  moves them into ``ACCEPTED`` or ``REFUSED``; ``test_every_awaited_case_has_a_python_twin``
-  keeps them well formed meanwhile.
+expected (even ``np.float64(3.0)``) and a NumPy bool where an int is are refused with an
+`EncodeError`. ``ACCEPTED`` holds the first kind, ``REFUSED`` the second. The generated
+fast paths hand every value that is not a Python int to the generic serializer: NumPy
+arithmetic wraps at the scalar's own width, which once gave wrong bytes for an esc.Status
+of NumPy integers ("esc.Status every field").
 """
 
 from __future__ import annotations
@@ -64,19 +59,7 @@ ACCEPTED: list[tuple[str, Any, Any]] = [
         d.GetSetRequest(value=d.RealValue(np.float64(0.5)), name=b"x"),
         d.GetSetRequest(value=d.RealValue(0.5), name=b"x"),
     ),
-]
-
-# (name, message with a value that would be narrowed)
-REFUSED: list[tuple[str, Any]] = [
-    ("NodeStatus uptime float", d.NodeStatus(np.float64(5.0), H, M, 0, 0)),
-    ("RawCommand float", d.RawCommand((np.float64(5.5),))),
-    ("GetSet index float", d.GetSetRequest(index=np.float64(3.0))),
-    ("param.Value integer float", d.GetSetRequest(value=d.IntegerValue(np.float64(3.5)))),
-]
-
-AWAITING_THE_DSDL_COMPILER: list[tuple[str, Any, Any]] = [
-    # Refused today ("expected an int for uint7" and the like): a NumPy integer in a field
-    # narrower than a byte, in a union member, or in a request.
+    # A NumPy integer in a field narrower than a byte, in a union member, in a request.
     (
         "esc.Status power_rating_pct",
         d.EscStatus(**(_ESC | {"power_rating_pct": np.uint8(50)})),
@@ -104,14 +87,13 @@ AWAITING_THE_DSDL_COMPILER: list[tuple[str, Any, Any]] = [
         d.GetSetRequest(value=d.BooleanValue(1), name=b"x"),
     ),
     ("RestartNode ok bool", d.RestartNodeResponse(np.bool_(True)), d.RestartNodeResponse(True)),
-    # AttributeError today ('numpy.uint64' object has no attribute 'to_bytes').
+    # A uint40 (a NumPy uint64 has no to_bytes: the generic serializer takes it).
     (
         "RestartNode magic uint64",
         d.RestartNodeRequest(np.uint64(0xACCE551B1E)),
         d.RestartNodeRequest(0xACCE551B1E),
     ),
-    # Wrong bytes today, no error: rpm and power_rating_pct NumPy integers together lose
-    # the bits of power_rating_pct and esc_index (NumPy arithmetic in the encoder).
+    # NumPy integers side by side in bit-packed bytes (their arithmetic would wrap).
     (
         "esc.Status every field",
         d.EscStatus(
@@ -126,8 +108,15 @@ AWAITING_THE_DSDL_COMPILER: list[tuple[str, Any, Any]] = [
         d.EscStatus(**_ESC),
     ),
 ]
-"""And a NumPy bool in an int field (``RawCommand((np.bool_(True),))``) is accepted today
-where Python's ``True`` is refused: the generated encoders refuse both."""
+
+# (name, message with a value that would be narrowed)
+REFUSED: list[tuple[str, Any]] = [
+    ("NodeStatus uptime float", d.NodeStatus(np.float64(5.0), H, M, 0, 0)),
+    ("RawCommand float", d.RawCommand((np.float64(5.5),))),
+    ("RawCommand NumPy bool", d.RawCommand((np.bool_(True),))),
+    ("GetSet index float", d.GetSetRequest(index=np.float64(3.0))),
+    ("param.Value integer float", d.GetSetRequest(value=d.IntegerValue(np.float64(3.5)))),
+]
 
 
 def _encode(message: Any) -> list[Any]:
@@ -145,13 +134,3 @@ def test_numpy_scalars_give_the_bytes_of_python_values(name: str, numpy: Any, py
 def test_a_value_that_would_be_narrowed_is_refused(name: str, message: Any) -> None:
     with pytest.raises(EncodeError):
         _encode(message)
-
-
-@pytest.mark.parametrize(
-    ("name", "numpy", "python"),
-    AWAITING_THE_DSDL_COMPILER,
-    ids=[c[0] for c in AWAITING_THE_DSDL_COMPILER],
-)
-def test_every_awaited_case_has_a_python_twin(name: str, numpy: Any, python: Any) -> None:
-    assert numpy == python  # NumPy scalars compare equal to the Python values
-    assert _encode(python)

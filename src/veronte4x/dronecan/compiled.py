@@ -228,9 +228,13 @@ def _layout(src: _Source, scalars: Sequence[Scalar]) -> tuple[str, list[str], li
     """
     codes, values, checks = ["<"], [], []
     # A bool is an int to Python and to struct, but not a value of an int or float field:
-    # the generic serializer refuses it, so the generated code must too.
+    # the generic serializer refuses it, so the generated code must too. Any other integer
+    # (a NumPy scalar: its arithmetic wraps at its own width) goes to the generic
+    # serializer, which takes it by `veronte4x.errors.integer`.
     checks += [
         f"v{i}.__class__ is bool"
+        if t.kind == "float"
+        else f"(v{i}.__class__ is bool or not isinstance(v{i}, int))"
         for i, t in enumerate(scalars)
         if t.kind in ("uint", "int", "float")
     ]
@@ -434,7 +438,10 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         sizes.append(size)
         pad = 8 * size - count * bits
         names = "".join(f"v{i}, " for i in range(count))
-        checks = [f"(v{i} + {offset}) >> {bits} or v{i}.__class__ is bool" for i in range(count)]
+        checks = [
+            f"v{i}.__class__ is bool or not isinstance(v{i}, int) or (v{i} + {offset}) >> {bits}"
+            for i in range(count)
+        ]
         shifts = [(count - 1 - i) * bits + pad for i in range(count)]
         stream = " | ".join(f"{enc}[v{i} + {offset}] << {shifts[i]}" for i in range(count)) or "0"
         for head, extra in (
