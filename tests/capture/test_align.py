@@ -124,7 +124,7 @@ def normalised(columns: dict[str, list[Any]]) -> dict[str, list[Any]]:
     }
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=200, suppress_health_check=[HealthCheck.too_slow])
 @given(
     tables(),
     st.sampled_from(["backward", "forward", "nearest"]),

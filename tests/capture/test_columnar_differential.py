@@ -99,7 +99,7 @@ def test_an_odd_channel_does_not_name_the_next_line_crlf(tmp_path: Path) -> None
     assert_same_tables(capture.read_tables(path), capture.tables_from_records(capture.read(path)))
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=60, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.integers(1, 400), LINE_ENDINGS)
 def test_batch_boundaries_anywhere_agree(
     data: st.DataObject, bus_map: BusMap, batch_bytes: int, ending: str

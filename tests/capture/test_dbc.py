@@ -168,7 +168,6 @@ def test_cantools_decodes_the_flight_as_veronte4x(flight: Path) -> None:
 
 @settings(
     max_examples=60,
-    deadline=None,
     suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
 )
 @given(st.data())

@@ -52,9 +52,7 @@ frames = st.one_of(
 )
 
 
-@settings(
-    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
-)
+@settings(max_examples=150, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(st.lists(frames, max_size=30))
 def test_records_and_tables_as_cantools_decodes(
     tmp_path: Path, listed: list[tuple[int, bool, bytes]]

@@ -104,7 +104,7 @@ def test_bad_arguments(arguments: dict[str, float], message: str) -> None:
         IdFilter.parse("0xZZ")
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(
     st.lists(
         st.builds(

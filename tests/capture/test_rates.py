@@ -164,7 +164,7 @@ def test_no_bitrate_when_timestamps_are_too_coarse() -> None:
     assert detect_bitrate(0.0) == 125_000
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(
     st.lists(
         st.tuples(

@@ -168,9 +168,7 @@ _SHAPED = st.fixed_dictionaries(
 """Maps of the right shape, whose values (scales, names, widths) may be wrong."""
 
 
-@settings(
-    deadline=None, max_examples=300, suppress_health_check=[HealthCheck.function_scoped_fixture]
-)
+@settings(max_examples=300, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(document=_MAP | _SHAPED, payloads=st.lists(st.binary(max_size=8), min_size=1, max_size=4))
 def test_a_map_loads_or_is_refused_and_a_loaded_map_decodes(
     tmp_path: Path, document: dict[str, Any], payloads: list[bytes]

@@ -65,9 +65,15 @@ def read_batches(
         return _candump(source, batch_bytes, batch_frames)
     if source.path.lower().endswith(".mf4"):
         return _cut(read_frames(source.path), batch_frames)
+    return _python_can(source.path, batch_frames)
+
+
+def _python_can(path: str, batch_frames: int) -> Iterator[Batch]:
+    """Opened on the first batch, so that one thread opens, reads and closes the file
+    (python-can's SQLite reader works only in the thread that opened it)."""
     from veronte4x.capture.readers.pythoncan import read_with_python_can
 
-    return _items(enumerate(read_with_python_can(source.path), 1), batch_frames)
+    yield from _items(enumerate(read_with_python_can(path), 1), batch_frames)
 
 
 def _candump(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Batch]:
@@ -176,5 +182,5 @@ def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
             with contextlib.suppress(Exception):
                 coming.result()
             close = getattr(batches, "close", None)
-            if close is not None:
-                close()
+            if close is not None:  # in the thread that read them (see _python_can)
+                thread.submit(close).result()
