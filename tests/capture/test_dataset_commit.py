@@ -174,3 +174,19 @@ def test_which_names_each_reader_skips(tmp_path: Path, prefix: str) -> None:
     glob = f"{folder}/*.parquet"
     assert duckdb.execute(f"SELECT count(*) FROM read_parquet('{glob}')").fetchone() == (2 * rows,)
     assert pl.scan_parquet(glob).select(pl.len()).collect().item() == 2 * rows
+
+
+def test_a_real_file_system_error_while_writing_is_one_line(
+    flights: tuple[Path, Path, Path],
+) -> None:
+    """No hook: a table's directory that cannot be made (a file stands in its place)."""
+    flight, _, out = flights
+    shutil.rmtree(out / "message=Status")
+    (out / "message=Status").write_bytes(b"not a directory")
+    failed = convert(str(flight), "--to", "parquet", str(out))
+    assert failed.returncode == 2
+    (line,) = failed.stderr.splitlines()
+    assert "message=Status" in line
+    assert "Traceback" not in failed.stderr
+    assert leftovers(out) == []
+    assert visible(out, flight) == {}
