@@ -9,17 +9,23 @@ The layout (Hive partitioning, one directory per table of `read_tables`)::
 Each file holds the rows one capture gives for one table, in capture order, with the
 table's fixed schema and a last column ``source``: the capture's path as given. A file is
 written under a hidden temporary name of its run (``.name.PID-TOKEN.tmp``, which Parquet
-readers skip) and renamed when the whole capture is decoded, so a reader never takes a
-half-written file; converting a capture again replaces its files (and removes those of
-tables it no longer has). Two runs on the same capture at once both succeed (the last
-to finish puts its files in place); the temporary files of a run killed outright are
-removed by the next run into the same directory.
+readers skip); when the whole capture is decoded, the run writes a hidden commit journal
+(``out_dir/.commit-name.PID-TOKEN.json``: the renames to make), renames its files into
+place one table after the other, and removes the journal. The renames of several
+directories cannot be one atomic step for readers that list each directory: a run killed
+during them leaves its journal, and the next run into the same directory finishes them
+before anything else, so the dataset then holds all of that capture's tables or, when the
+kill came before the journal, none of the new ones. Converting a capture again replaces its
+files (and removes those of tables it no longer has). Two runs on the same capture at once
+both succeed (the last to finish puts its files in place); the temporary files of a run
+killed outright are removed by the next run into the same directory.
 """
 
 from __future__ import annotations
 
 import contextlib
 import hashlib
+import json
 import os
 import re
 import secrets
@@ -50,6 +56,12 @@ BUFFERED = 1 << 25
 
 Progress = Callable[[int], None]
 """Told the bytes of a capture read so far."""
+
+
+def _reached(stage: str) -> None:
+    """Told each stage of a commit as it is passed (``written``, ``journal``,
+    ``renamed KIND``, ``committed``): the tests replace it to kill the process or raise a
+    file system error at every stage."""
 
 
 @dataclass
@@ -144,16 +156,36 @@ def file_name(source: str) -> str:
 
 
 def remove_stale(out_dir: Path) -> None:
-    """Remove the temporary files that runs no longer alive left in ``out_dir`` (killed
-    outright): those named by a process id that is not running on this machine, or by
-    none."""
-    for temporary in out_dir.glob("message=*/.*.tmp"):
-        run = temporary.name.removesuffix(".tmp").rsplit(".", 1)[-1]
-        pid = run.partition("-")[0]
-        if pid.isdigit() and _alive(int(pid)):
+    """Finish the commits and remove the temporary files that runs no longer alive left in
+    ``out_dir`` (killed outright): those named by a process id that is not running on this
+    machine, or by none."""
+    for journal in sorted(out_dir.glob(".commit-*.json")):
+        if not _dead(journal.name.removesuffix(".json")):
             continue
-        with contextlib.suppress(OSError):  # another run may remove it first
-            temporary.unlink()
+        with contextlib.suppress(OSError, ValueError):  # another run may finish it first
+            listed = json.loads(journal.read_text(encoding="utf-8"))
+            _finish(out_dir, listed["remove"], listed["rename"])
+            journal.unlink()
+    for temporary in [*out_dir.glob("message=*/.*.tmp"), *out_dir.glob(".commit-*.tmp")]:
+        if _dead(temporary.name.removesuffix(".tmp")):
+            with contextlib.suppress(OSError):  # another run may remove it first
+                temporary.unlink()
+
+
+def _dead(name: str) -> bool:
+    """Whether the run a temporary name ends with (``.PID-TOKEN``) is not alive."""
+    pid = name.rsplit(".", 1)[-1].partition("-")[0]
+    return not (pid.isdigit() and _alive(int(pid)))
+
+
+def _finish(out_dir: Path, remove: list[str], rename: list[list[str]]) -> None:
+    """Make the removals and renames a commit journal lists (paths relative to ``out_dir``);
+    those already made are skipped."""
+    for stale in remove:
+        (out_dir / stale).unlink(missing_ok=True)
+    for temporary, final in rename:
+        if (out_dir / temporary).exists():
+            os.replace(out_dir / temporary, out_dir / final)
 
 
 def _alive(pid: int) -> bool:
@@ -229,19 +261,53 @@ class _Writer:
         writer.write_table(table, row_group_size=max(len(table), 1))
 
     def commit(self) -> dict[str, int]:
-        """Finish every file and put it in place; return the rows written per table."""
-        for kind in list(self._buffers):
-            self._flush(kind)
-        self._wait()
-        self._thread.shutdown()
-        for writer in self._writers.values():
-            writer.close()
-        for stale in self.out_dir.glob(f"message=*/{self.name}"):
-            if stale.parent.name.removeprefix("message=") not in self._writers:
-                stale.unlink()
-        for kind in self._writers:
-            temporary, final = self._paths(kind)
-            os.replace(temporary, final)
+        """Finish every file and put them all in place; return the rows written per table.
+
+        On an error before the journal is in place none of the files is put in place, after
+        it the rest are; then the temporary files and the journal are removed.
+        """
+        journal = self.out_dir / f".commit-{self.name}.{self._run}.json"
+        stale: list[str] = []
+        renames: list[list[str]] = []
+        try:
+            for kind in list(self._buffers):
+                self._flush(kind)
+            self._wait()
+            self._thread.shutdown()
+            for writer in self._writers.values():
+                writer.close()
+            _reached("written")
+            stale = [
+                p.relative_to(self.out_dir).as_posix()
+                for p in self.out_dir.glob(f"message=*/{self.name}")
+                if p.parent.name.removeprefix("message=") not in self._writers
+            ]
+            renames = [
+                [p.relative_to(self.out_dir).as_posix() for p in self._paths(kind)]
+                for kind in self._writers
+            ]
+            written = journal.with_name(journal.name + ".tmp")
+            self.out_dir.mkdir(parents=True, exist_ok=True)
+            written.write_text(json.dumps({"remove": stale, "rename": renames}), "utf-8")
+            os.replace(written, journal)  # from here on, a later run finishes the commit
+            _reached("journal")
+            for name in stale:
+                (self.out_dir / name).unlink(missing_ok=True)
+            for kind in self._writers:
+                temporary, final = self._paths(kind)
+                os.replace(temporary, final)
+                _reached(f"renamed {kind}")
+            journal.unlink()
+            _reached("committed")
+        except BaseException:
+            if journal.exists():  # past the point of no return: put the rest in place
+                with contextlib.suppress(OSError):
+                    _finish(self.out_dir, stale, renames)
+            self.abort()
+            for path in (journal, journal.with_name(journal.name + ".tmp")):
+                with contextlib.suppress(OSError):
+                    path.unlink()
+            raise
         return {kind: self.counts[kind] for kind in self._writers}
 
     def abort(self) -> None:
@@ -250,10 +316,22 @@ class _Writer:
             self._wait()
         self._thread.shutdown()
         for kind, writer in self._writers.items():
-            writer.close()
-            self._paths(kind)[0].unlink(missing_ok=True)
+            _discard(writer)
+            with contextlib.suppress(OSError):
+                self._paths(kind)[0].unlink(missing_ok=True)
         self._writers.clear()
         self._buffers.clear()
+
+
+def _discard(writer: pq.ParquetWriter) -> None:
+    """Close a writer whatever fails (a full disk fails the close too)."""
+    try:
+        writer.close()
+    except Exception:
+        writer.is_open = False  # else its __del__ closes it again and prints the error
+        if writer.file_handle is not None:
+            with contextlib.suppress(Exception):
+                writer.file_handle.close()
 
 
 def to_parquet(
