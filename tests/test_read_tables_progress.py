@@ -36,3 +36,26 @@ def test_importing_a_kernel_is_not_being_in_a_notebook(capsys: Any) -> None:
 
     capture.read_tables(CAPTURE)
     assert capsys.readouterr().err == ""
+
+
+def test_one_large_file_moves_the_bar_batch_by_batch(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The bar follows the batches through one file, up to its size, never back."""
+    from veronte4x.capture.columnar import batches, progress
+
+    path = tmp_path / "long.log"
+    path.write_bytes(CAPTURE.read_bytes() * 40)
+    steps: list[int] = []
+
+    class Recorder(progress.Bar):
+        def update(self, amount: int) -> None:
+            steps.append(amount)
+
+    whole = capture.read_tables(path)
+    monkeypatch.setattr("veronte4x.capture.columnar.Bar", Recorder)
+    monkeypatch.setattr(batches, "BATCH_BYTES", 4096)
+    assert capture.read_tables(path, progress=False) == whole
+    assert len(steps) > 10
+    assert all(step > 0 for step in steps)
+    assert sum(steps) == path.stat().st_size

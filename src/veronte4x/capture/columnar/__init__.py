@@ -11,7 +11,7 @@ fixes each table's columns and `tables` assembles them.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 import numpy.typing as npt
@@ -46,9 +46,10 @@ def read_tables(
     try:
         parts = []
         for path, size in zip(paths, sizes, strict=True):
-            keyed = keyed_tables(path, bus_map, channel, relative_time)
+            progress_of = _Advance(bar, size)
+            keyed = keyed_tables(path, bus_map, channel, relative_time, progress_of.reach)
             parts.append({kind: table for kind, (table, _) in keyed.items()})
-            bar.update(size)
+            progress_of.reach(size)
     finally:
         bar.close()
     if len(parts) == 1:
@@ -58,6 +59,21 @@ def read_tables(
         kind: pa.concat_tables([part[kind] for part in parts if kind in part]).combine_chunks()
         for kind in kinds
     }
+
+
+class _Advance:
+    """Moves a bar as one file is read: to each batch's position in it, never back (a
+    channel decoded again frame by frame reads the file again from its start)."""
+
+    def __init__(self, bar: Bar, size: int) -> None:
+        self._bar, self._size, self._reached = bar, size, 0
+
+    def reach(self, position: int) -> None:
+        """Count the file read up to ``position`` bytes."""
+        step = min(position, self._size) - self._reached
+        if step > 0:
+            self._bar.update(step)
+            self._reached += step
 
 
 def _size(path: Source) -> int:
@@ -70,25 +86,33 @@ def _size(path: Source) -> int:
 
 
 def keyed_tables(
-    path: Source, bus_map: BusMap | None, channel: str | None, relative_time: bool
+    path: Source,
+    bus_map: BusMap | None,
+    channel: str | None,
+    relative_time: bool,
+    reached: Callable[[int], None] | None = None,
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
     """The tables of one capture, each with the capture-order keys of its rows.
 
     A file is decoded batch by batch (as `veronte4x.capture.to_parquet` decodes it), so
     that memory holds the tables and one batch, not the whole capture's frames; standard
-    input, which cannot be read twice, is decoded whole.
+    input, which cannot be read twice, is decoded whole. ``reached``, if given, is called
+    with the bytes of the file read so far after each batch (for a progress bar).
     """
     if os.fspath(path) == STDIN:
         tables = decode_into(read_frames(path), bus_map, channel).finish_with_keys()
     else:
-        tables = _batched(path, bus_map, channel)
+        tables = _batched(path, bus_map, channel, reached)
     if relative_time:
         make_relative(tables)
     return tables
 
 
 def _batched(
-    path: Source, bus_map: BusMap | None, channel: str | None
+    path: Source,
+    bus_map: BusMap | None,
+    channel: str | None,
+    reached: Callable[[int], None] | None,
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
     per_frame: list[str] = []
     while True:  # once more per channel whose DroneCAN frames must go frame by frame
@@ -98,6 +122,8 @@ def _batched(
             for batch in ahead(read_batches(path, batches.BATCH_BYTES)):
                 for kind, part in decoder.feed_with_keys(batch.frames).items():
                     parts.setdefault(kind, []).append(part)
+                if reached is not None and batch.position is not None:
+                    reached(batch.position)
             decoder.finish()
         except TooManySessions as signal:
             per_frame.append(signal.channel)
