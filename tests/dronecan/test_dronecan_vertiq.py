@@ -207,3 +207,11 @@ def test_raw_command_refuses_an_esc_index_out_of_range(index: int) -> None:
     with pytest.raises(dronecan.EncodeError) as error:
         vertiq.raw_command({index: 0.5})
     assert str(error.value) == f"RawCommand.cmd = {index!r}: expected ESC indices 0..19"
+
+
+@pytest.mark.parametrize("build", [vertiq.get_parameter, lambda n: vertiq.set_parameter(n, 1)])
+def test_an_empty_parameter_name_is_refused(build: object) -> None:
+    # With index 0, an empty name addresses the first parameter (DSDL param.GetSet): a
+    # set_parameter("") would change whatever parameter a module keeps there.
+    with pytest.raises(dronecan.EncodeError, match="empty name would address index 0"):
+        build("")  # type: ignore[operator]

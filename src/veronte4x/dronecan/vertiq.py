@@ -92,6 +92,15 @@ def _name(function: str, name: str | Parameter) -> bytes:
     if not isinstance(name, str):
         raise argument_type_error(function, "name", "a str or Parameter", name)
     text = name.value if isinstance(name, Parameter) else name
+    if not text:
+        # An empty name with index 0 addresses the parameter at index 0 (DSDL param.GetSet).
+        raise EncodeError(
+            "uavcan.protocol.param.GetSet request",
+            "name",
+            text,
+            "a parameter name; an empty name would address index 0"
+            " (use get_parameter_by_index to read by index)",
+        )
     return text.encode("utf-8")
 
 
@@ -122,6 +131,7 @@ def get_parameter(name: str | Parameter) -> GetSetRequest:
 
     Raises:
         TypeError: ``name`` is not a str.
+        EncodeError: ``name`` is empty (it would address the parameter at index 0).
     """
     return GetSetRequest(index=0, value=Empty(), name=_name("get_parameter", name))
 
@@ -136,6 +146,7 @@ def set_parameter(
 
     Raises:
         TypeError: ``name`` is not a str, or ``value`` none of these.
+        EncodeError: ``name`` is empty (it would set the parameter at index 0).
     """
     encoded = _name("set_parameter", name)
     return GetSetRequest(index=0, value=_value(value), name=encoded)
