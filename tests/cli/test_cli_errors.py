@@ -94,6 +94,9 @@ def test_a_truncated_gzip_keeps_the_frames_before_the_cut(tmp_path: Path) -> Non
     assert stats.returncode == 0
     assert first_error_line(stats) == first
     assert b"  truncated  " in stats.stdout
+    converted = run("convert", "--to", "parquet", str(tmp_path / "dataset"), str(path))
+    assert converted.returncode == 0
+    assert first_error_line(converted) == first
 
 
 def test_a_non_utf8_byte_on_stdin_is_one_bad_line_under_a_strict_locale() -> None:

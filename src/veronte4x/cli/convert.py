@@ -10,6 +10,7 @@ from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli import aligned
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.notices import tell
 from veronte4x.cli.options import add_capture_options
 from veronte4x.extras import require
 
@@ -63,5 +64,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     finally:
         if client is not None:
             client.close()
+    for detail in summary.truncated:
+        tell(detail)
     print(f"veronte4x: {summary.line()}, dataset in {out_dir}", file=sys.stderr)
     return EXIT_OK

@@ -38,6 +38,7 @@ from typing import Any
 
 import numpy as np
 import pyarrow as pa
+import pyarrow.compute as pc
 import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
@@ -73,12 +74,16 @@ class Summary:
         frames: Frames read (bad lines not counted).
         records: Rows written per table.
         seconds: Wall time.
+        truncated: Where each capture that ends early ends (the ``detail`` of its
+            ``truncated`` error row, e.g. "f.log.gz: the gzip data ends early, at line
+            14: the file is truncated").
     """
 
     files: int = 0
     frames: int = 0
     records: dict[str, int] = field(default_factory=dict)
     seconds: float = 0.0
+    truncated: list[str] = field(default_factory=list)
 
     @property
     def errors(self) -> int:
@@ -91,6 +96,7 @@ class Summary:
         self.frames += other.frames
         for kind, count in other.records.items():
             self.records[kind] = self.records.get(kind, 0) + count
+        self.truncated.extend(other.truncated)
 
     def line(self) -> str:
         """One line for a person: files, frames, records per table, errors and time."""
@@ -122,14 +128,18 @@ def convert_file(
         raise SourceError("a dataset is written from files: give a capture file, not -")
     started = time.perf_counter()
     per_frame: list[str] = []
+    truncated: list[str] = []
     while True:  # once more per channel with more DroneCAN sessions than a table holds
         writer = _Writer(Path(out_dir), name)
         decoder = StreamDecoder(bus_map, channel, per_frame)
         frames = 0
+        truncated.clear()
         try:
             for batch in ahead(read_batches(name, batch_bytes)):
                 frames += len(batch.frames)
                 for kind, table in decoder.feed(batch.frames).items():
+                    if kind == "errors":
+                        truncated.extend(_truncations(table))
                     writer.write(kind, table)
                 if progress is not None and batch.position is not None:
                     progress(batch.position)
@@ -142,7 +152,13 @@ def convert_file(
             writer.abort()
             raise
         records = writer.commit()
-        return Summary(1, frames, records, time.perf_counter() - started)
+        return Summary(1, frames, records, time.perf_counter() - started, truncated)
+
+
+def _truncations(errors: pa.Table) -> list[str]:
+    """The details of an ``errors`` table's ``truncated`` rows."""
+    ends = errors.filter(pc.equal(errors["error"].cast(pa.string()), "truncated"))
+    return [detail or "the input ends early" for detail in ends["detail"].to_pylist()]
 
 
 def file_name(source: str) -> str:
