@@ -4,7 +4,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: demo check lint types test docs bench mutation clean
+.PHONY: demo check lint types test docs bench mutation coverage clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -63,6 +63,14 @@ bench: $(VENV)/.installed-dev
 MUTATION_ARGS ?= --size 300 --jobs 2
 mutation: $(VENV)/.installed-dev
 	$(BIN)/python tests/mutation.py $(MUTATION_ARGS) --report $(VENV)/mutation-report.md
+
+# Not part of check: line and branch coverage of the whole suite, the CLI's subprocesses and
+# the simulated ESCs' processes included ([tool.coverage.run] in pyproject.toml).
+coverage: $(VENV)/.installed-dev
+	rm -rf $(VENV)/coverage && mkdir -p $(VENV)/coverage
+	$(BIN)/python -m coverage run -m pytest --numprocesses auto --maxprocesses 4
+	$(BIN)/python -m coverage combine --quiet
+	$(BIN)/python -m coverage report --sort=cover
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info
