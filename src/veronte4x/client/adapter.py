@@ -1,0 +1,108 @@
+"""What the blocking and the asyncio clients share on a python-can bus (the ``can`` extra).
+
+`BusAdapter` holds the sans-IO node (`ClientProtocol`) and its `Runner`, stamps received
+messages with its clock and feeds them in, and sends what the node has to send. The two
+clients add only their way of waiting: `veronte4x.client.bus.BusClient` blocks on
+``bus.recv``, `veronte4x.client.aio.AsyncBusClient` awaits python-can's asyncio reader.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterable
+
+import can
+
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.client.operations import Runner
+from veronte4x.client.protocol import DEFAULT_NODE_ID, ClientProtocol, Event
+from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY
+from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+
+MAX_WAIT = 0.05
+"""Longest single wait for frames, in seconds."""
+
+
+class BusAdapter:
+    """A `ClientProtocol` and its `Runner` on a python-can bus, with a clock.
+
+    Args:
+        bus: Any python-can bus.
+        node_id: This node's id, 1..127 (127 by default, like the DroneCAN GUI tool).
+        clock: Seconds from any monotonic source; stamps frames and measures timeouts.
+        timeout: Seconds to wait for each response.
+        retries: Times a request is sent again after a timeout.
+        priority: CAN priority of what it sends.
+        first_transfer_id: Where every transfer id stream starts; a tool that runs briefly
+            and often should pick it at random (see `TransferIds`).
+    """
+
+    def __init__(
+        self,
+        bus: can.BusABC,
+        node_id: int = DEFAULT_NODE_ID,
+        *,
+        clock: Callable[[], float] = time.monotonic,
+        timeout: float = DEFAULT_TIMEOUT,
+        retries: int = DEFAULT_RETRIES,
+        priority: int = DEFAULT_PRIORITY,
+        first_transfer_id: int = 0,
+    ) -> None:
+        self.bus = bus
+        self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
+        self.runner = Runner(self.protocol, timeout, retries)
+        self.clock = clock
+
+    @property
+    def node_id(self) -> int:
+        """This client's node id."""
+        return self.protocol.node_id
+
+    @property
+    def timeout(self) -> float:
+        """Seconds to wait for each response."""
+        return self.runner.timeout
+
+    @timeout.setter
+    def timeout(self, value: float) -> None:
+        self.runner.timeout = value
+
+    @property
+    def retries(self) -> int:
+        """Times a request is sent again after a timeout."""
+        return self.runner.retries
+
+    @retries.setter
+    def retries(self, value: int) -> None:
+        self.runner.retries = value
+
+    def send_frame(self, can_id: int, data: bytes) -> None:
+        """Send one extended frame."""
+        self.bus.send(frame_to_message(Frame(can_id, data)))
+
+    def send_frames(self, frames: Iterable[Frame]) -> None:
+        """Send frames in order."""
+        for frame in frames:
+            self.send_frame(frame.can_id, frame.data)
+
+    def flush(self) -> None:
+        """Send every frame the node has to send now."""
+        self.send_frames(self.protocol.take_frames())
+
+    def wait_time(self, longest: float = MAX_WAIT) -> float:
+        """Seconds to wait for frames now (`Runner.wait`)."""
+        return self.runner.wait(self.clock(), longest)
+
+    def receive(self, messages: Iterable[can.Message]) -> list[Event]:
+        """Feed the DroneCAN frames among ``messages`` in, each stamped with the clock; then
+        settle the runner (`Runner.settle`) and send what is due. Returns the events."""
+        events: list[Event] = []
+        for message in messages:
+            if is_dronecan_frame(message):
+                events += self.protocol.receive(
+                    message.arbitration_id, bytes(message.data), self.clock()
+                )
+        events = self.runner.settle(events, self.clock())
+        self.flush()
+        return events
