@@ -154,3 +154,22 @@ def test_firmware_update_of_a_node_that_hangs(bench: Callable[..., Blocking]) ->
     assert str(error.value) == (
         "node 21 stopped reading the image at byte 1024 of 4096 (nothing for 0.5 s)"
     )
+
+
+def test_firmware_update_progress_bar_when_interactive(
+    bench: Callable[..., Blocking],
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    pytest.importorskip("tqdm")
+    client = bench()
+    image = bytes((i * 7) & 0xFF for i in range(3000))
+    client.update_firmware(21, image, progress=True)
+    assert "node 21 firmware" in capsys.readouterr().err
+    client.update_firmware(22, image, progress=False)
+    client.update_firmware(23, image)  # standard error is no terminal here, and no notebook
+    assert capsys.readouterr().err == ""
+    monkeypatch.setattr("veronte4x.progress._interactive", lambda: True)
+    info = client.update_firmware(24, image)  # as in a terminal or a notebook
+    assert "node 24 firmware" in capsys.readouterr().err
+    assert info.software_version.image_crc == crc64we(image)

@@ -9,19 +9,54 @@ clients add only their way of waiting: `veronte4x.client.bus.BusClient` blocks o
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 
 import can
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.client.firmware import UpdateProgress
 from veronte4x.client.operations import Runner
 from veronte4x.client.protocol import DEFAULT_NODE_ID, ClientProtocol, Event
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+from veronte4x.progress import Bar
 
 MAX_WAIT = 0.05
 """Longest single wait for frames, in seconds."""
+
+Progress = Callable[[UpdateProgress], object] | bool | None
+"""What a client's ``update_firmware`` takes as ``progress``: a callable given each change,
+True for a progress bar, False for nothing, None for a bar only when interactive."""
+
+
+@contextmanager
+def progress_callback(
+    progress: Progress, node_id: int, size: int
+) -> Iterator[Callable[[UpdateProgress], object] | None]:
+    """The callable an update of ``size`` bytes reports to: ``progress`` itself, or one that
+    moves a tqdm bar (`veronte4x.progress.Bar`, in a terminal or a notebook) by the bytes
+    sent; the bar is taken off when the block ends.
+
+    Raises:
+        MissingExtraError: A bar was asked for (True) and tqdm is not installed.
+    """
+    if callable(progress):
+        yield progress
+        return
+    bar = Bar(progress, size, "B", f"node {node_id} firmware", extra="can")
+    sent = 0
+
+    def advance(current: UpdateProgress) -> None:
+        nonlocal sent
+        bar.update(current.sent - sent)
+        sent = current.sent
+
+    try:
+        yield advance
+    finally:
+        bar.close()
 
 
 class BusAdapter:

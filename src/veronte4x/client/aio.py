@@ -31,20 +31,19 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from typing import Any, TypeVar
 
 import can
 
 from veronte4x.client import operations
-from veronte4x.client.adapter import MAX_WAIT, BusAdapter
+from veronte4x.client.adapter import MAX_WAIT, BusAdapter, Progress, progress_callback
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, STOP_REPEATS, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
-    UpdateProgress,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
@@ -183,26 +182,27 @@ class AsyncBusClient(BusAdapter):
         image: bytes,
         path: str = "firmware.bin",
         *,
-        progress: Callable[[UpdateProgress], object] | None = None,
+        progress: Progress = None,
         start_timeout: float = START_TIMEOUT,
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
         max_image_size: int = MAX_IMAGE_SIZE,
     ) -> GetNodeInfoResponse:
-        """Update a node's firmware (see `BusClient.update_firmware`)."""
-        return await self.run(
-            operations.update_firmware(
-                self.protocol,
-                node_id,
-                image,
-                path,
-                progress=progress,
-                start_timeout=start_timeout,
-                read_timeout=read_timeout,
-                restart_timeout=restart_timeout,
-                max_image_size=max_image_size,
+        """Update a node's firmware (see `BusClient.update_firmware`, ``progress`` too)."""
+        with progress_callback(progress, node_id, len(image)) as report:
+            return await self.run(
+                operations.update_firmware(
+                    self.protocol,
+                    node_id,
+                    image,
+                    path,
+                    progress=report,
+                    start_timeout=start_timeout,
+                    read_timeout=read_timeout,
+                    restart_timeout=restart_timeout,
+                    max_image_size=max_image_size,
+                )
             )
-        )
 
     # -- motors -----------------------------------------------------------------------------
 

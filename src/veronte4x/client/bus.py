@@ -17,14 +17,13 @@ from typing import Any, TypeVar
 import can
 
 from veronte4x.client import operations
-from veronte4x.client.adapter import MAX_WAIT, BusAdapter
+from veronte4x.client.adapter import MAX_WAIT, BusAdapter, Progress, progress_callback
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, STOP_REPEATS, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
-    UpdateProgress,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
@@ -254,7 +253,7 @@ class BusClient(BusAdapter):
         image: bytes,
         path: str = "firmware.bin",
         *,
-        progress: Callable[[UpdateProgress], object] | None = None,
+        progress: Progress = None,
         start_timeout: float = START_TIMEOUT,
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
@@ -266,7 +265,10 @@ class BusClient(BusAdapter):
             node_id: The node.
             image: The firmware image.
             path: The name the node is told to read (at most 200 bytes).
-            progress: Called with each change of phase or of bytes sent.
+            progress: A callable given each change of phase or of bytes sent (an
+                `UpdateProgress`); True shows a progress bar (tqdm's, in a terminal or a
+                notebook), False nothing; None shows a bar when standard error is a
+                terminal or in a notebook, and nothing otherwise.
             start_timeout: Seconds from accepting to the first read.
             read_timeout: Seconds without a read that count as a stall.
             restart_timeout: Seconds after the last read for the node to run again.
@@ -281,19 +283,20 @@ class BusClient(BusAdapter):
             FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
             NoResponseError: GetNodeInfo after the update got no answer.
         """
-        return self.run(
-            operations.update_firmware(
-                self.protocol,
-                node_id,
-                image,
-                path,
-                progress=progress,
-                start_timeout=start_timeout,
-                read_timeout=read_timeout,
-                restart_timeout=restart_timeout,
-                max_image_size=max_image_size,
+        with progress_callback(progress, node_id, len(image)) as report:
+            return self.run(
+                operations.update_firmware(
+                    self.protocol,
+                    node_id,
+                    image,
+                    path,
+                    progress=report,
+                    start_timeout=start_timeout,
+                    read_timeout=read_timeout,
+                    restart_timeout=restart_timeout,
+                    max_image_size=max_image_size,
+                )
             )
-        )
 
     # -- motors -----------------------------------------------------------------------------
 
