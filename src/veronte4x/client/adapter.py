@@ -8,17 +8,21 @@ clients add only their way of waiting: `veronte4x.client.bus.BusClient` blocks o
 
 from __future__ import annotations
 
+import contextlib
+import threading
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
 import can
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.client.commander import STOP_REPEATS, Commander
 from veronte4x.client.firmware import UpdateProgress
 from veronte4x.client.operations import Runner
 from veronte4x.client.protocol import DEFAULT_NODE_ID, ClientProtocol, Event
 from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.messages import RawCommand
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 from veronte4x.progress import Bar
@@ -141,3 +145,75 @@ class BusAdapter:
         events = self.runner.settle(events, self.clock())
         self.flush()
         return events
+
+
+class StreamBase:
+    """What the blocking and the asyncio command streams share: the `Commander` behind a
+    lock, the sending, and the failure that stopped the stream.
+
+    Args:
+        client: The client whose bus and node id it uses.
+        commander: The rate and watchdog (`Commander`).
+    """
+
+    STOP_REPEATS = STOP_REPEATS
+    """Zero-throttle commands sent when the stream stops."""
+
+    def __init__(self, client: BusAdapter, commander: Commander) -> None:
+        self.client = client
+        self.commander = commander
+        self._lock = threading.Lock()
+        self.failure: Exception | None = None
+        """The error that stopped the stream, or None."""
+        self.sent = 0
+        """Commands sent so far."""
+
+    def set(self, throttles: Sequence[float] | Mapping[int, float]) -> None:
+        """New throttle fractions in [-1, 1] by ESC index; they also feed the watchdog.
+
+        Raises:
+            Exception: The error that stopped the stream.
+        """
+        if self.failure is not None:
+            raise self.failure
+        with self._lock:
+            self.commander.set(throttles, self.client.clock())
+
+    @property
+    def tripped(self) -> bool:
+        """Whether the watchdog has zeroed the throttle since the last `set`."""
+        return self.commander.tripped
+
+    def _send(self, commands: list[RawCommand]) -> None:
+        for command in commands:
+            self.client.send_frames(self.client.protocol.message_frames(command))
+            self.sent += 1
+
+    def _send_due(self) -> float:
+        """Send the command due now, if any; the seconds to wait for the next one."""
+        with self._lock:
+            command = self.commander.poll(self.client.clock())
+            wait = self.commander.wait(self.client.clock(), MAX_WAIT)
+        if command is not None:
+            self._send([command])
+        return wait
+
+    def _failed(self, error: Exception) -> None:
+        """Keep the error that stopped the stream; send zero throttle if the bus takes it."""
+        self.failure = error
+        with self._lock:
+            zero = self.commander.stop_commands()
+        with contextlib.suppress(Exception):
+            self._send(zero)
+
+    def _stop_motors(self) -> None:
+        """Send zero throttle `STOP_REPEATS` times (after the sender has stopped).
+
+        Raises:
+            Exception: The error that stopped the stream (its zero throttle was tried).
+        """
+        with self._lock:
+            zero = self.commander.stop_commands()
+        if self.failure is not None:
+            raise self.failure
+        self._send(zero)

@@ -30,15 +30,20 @@ Examples:
 from __future__ import annotations
 
 import asyncio
-import contextlib
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
 
 from veronte4x.client import operations
-from veronte4x.client.adapter import MAX_WAIT, BusAdapter, Progress, progress_callback
-from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, STOP_REPEATS, Commander
+from veronte4x.client.adapter import (
+    MAX_WAIT,
+    BusAdapter,
+    Progress,
+    StreamBase,
+    progress_callback,
+)
+from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
@@ -49,7 +54,7 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import Event
-from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, RawCommand, Value
+from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
 
 __all__ = ["AsyncBusClient", "AsyncCommandStream"]
 
@@ -213,7 +218,7 @@ class AsyncBusClient(BusAdapter):
         return AsyncCommandStream(self, Commander(rate, watchdog))
 
 
-class AsyncCommandStream:
+class AsyncCommandStream(StreamBase):
     """RawCommand sent from an asyncio task at a fixed rate, with a watchdog.
 
     The asyncio twin of `veronte4x.client.bus.CommandStream`, on the same `Commander`:
@@ -240,49 +245,16 @@ class AsyncCommandStream:
         True
     """
 
-    STOP_REPEATS = STOP_REPEATS
-    """Zero-throttle commands sent when the stream stops."""
-
     def __init__(self, client: AsyncBusClient, commander: Commander) -> None:
-        self.client = client
-        self.commander = commander
+        super().__init__(client, commander)
         self._task: asyncio.Task[None] | None = None
-        self.failure: Exception | None = None
-        """The error that stopped the task, or None."""
-        self.sent = 0
-        """Commands sent so far."""
-
-    def set(self, throttles: Sequence[float] | Mapping[int, float]) -> None:
-        """New throttle fractions in [-1, 1] by ESC index; they also feed the watchdog.
-
-        Raises:
-            Exception: The error that stopped the stream's task.
-        """
-        if self.failure is not None:
-            raise self.failure
-        self.commander.set(throttles, self.client.clock())
-
-    @property
-    def tripped(self) -> bool:
-        """Whether the watchdog has zeroed the throttle since the last `set`."""
-        return self.commander.tripped
-
-    def _send(self, commands: list[RawCommand]) -> None:
-        for command in commands:
-            self.client.send_frames(self.client.protocol.message_frames(command))
-            self.sent += 1
 
     async def _run(self) -> None:
         try:
             while True:
-                command = self.commander.poll(self.client.clock())
-                if command is not None:
-                    self._send([command])
-                await asyncio.sleep(self.commander.wait(self.client.clock(), MAX_WAIT))
-        except Exception as error:  # a failing bus: zero throttle if it still takes it
-            self.failure = error
-            with contextlib.suppress(Exception):
-                self._send(self.commander.stop_commands())
+                await asyncio.sleep(self._send_due())
+        except Exception as error:  # a failing bus
+            self._failed(error)
 
     def start(self) -> None:
         """Start sending on the running loop (nothing goes out before the first `set`)."""
@@ -297,10 +269,7 @@ class AsyncCommandStream:
         task, self._task = self._task, None
         if task is not None:
             task.cancel()  # it sends nothing more: it only sends between its awaits
-        zero = self.commander.stop_commands()
-        if self.failure is not None:
-            raise self.failure
-        self._send(zero)
+        self._stop_motors()
         if task is not None:
             await asyncio.wait([task])  # a cancellation of ours still ends this wait
 

@@ -8,17 +8,22 @@ names the node and what it did not do.
 
 from __future__ import annotations
 
-import contextlib
 import threading
 import time
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
 
 from veronte4x.client import operations
-from veronte4x.client.adapter import MAX_WAIT, BusAdapter, Progress, progress_callback
-from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, STOP_REPEATS, Commander
+from veronte4x.client.adapter import (
+    MAX_WAIT,
+    BusAdapter,
+    Progress,
+    StreamBase,
+    progress_callback,
+)
+from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
@@ -29,7 +34,7 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
-from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, RawCommand, Value
+from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 
@@ -307,7 +312,7 @@ class BusClient(BusAdapter):
         return CommandStream(self, Commander(rate, watchdog))
 
 
-class CommandStream:
+class CommandStream(StreamBase):
     """RawCommand sent from a background thread at a fixed rate, with a watchdog.
 
     Use it as a context manager and refresh the throttles with `set` more often than the
@@ -321,56 +326,17 @@ class CommandStream:
         commander: The rate and watchdog (`Commander`).
     """
 
-    STOP_REPEATS = STOP_REPEATS
-    """Zero-throttle commands sent when the stream stops."""
-
     def __init__(self, client: BusClient, commander: Commander) -> None:
-        self.client = client
-        self.commander = commander
-        self._lock = threading.Lock()
+        super().__init__(client, commander)
         self._stopped = threading.Event()
         self._thread: threading.Thread | None = None
-        self.failure: Exception | None = None
-        """The error that stopped the thread, or None."""
-        self.sent = 0
-        """Commands sent so far."""
-
-    def set(self, throttles: Sequence[float] | Mapping[int, float]) -> None:
-        """New throttle fractions in [-1, 1] by ESC index; they also feed the watchdog.
-
-        Raises:
-            Exception: The error that stopped the stream's thread.
-        """
-        if self.failure is not None:
-            raise self.failure
-        with self._lock:
-            self.commander.set(throttles, self.client.clock())
-
-    @property
-    def tripped(self) -> bool:
-        """Whether the watchdog has zeroed the throttle since the last `set`."""
-        return self.commander.tripped
-
-    def _send(self, commands: list[RawCommand]) -> None:
-        for command in commands:
-            self.client.send_frames(self.client.protocol.message_frames(command))
-            self.sent += 1
 
     def _run(self) -> None:
         try:
             while not self._stopped.is_set():
-                with self._lock:
-                    command = self.commander.poll(self.client.clock())
-                    wait = self.commander.wait(self.client.clock(), MAX_WAIT)
-                if command is not None:
-                    self._send([command])
-                self._stopped.wait(wait)
-        except Exception as error:  # a failing bus: zero throttle if it still takes it
-            self.failure = error
-            with self._lock:
-                zero = self.commander.stop_commands()
-            with contextlib.suppress(Exception):
-                self._send(zero)
+                self._stopped.wait(self._send_due())
+        except Exception as error:  # a failing bus
+            self._failed(error)
 
     def start(self) -> None:
         """Start sending (nothing goes out before the first `set`)."""
@@ -389,11 +355,7 @@ class CommandStream:
         if self._thread is not None:
             self._thread.join()
             self._thread = None
-        with self._lock:
-            zero = self.commander.stop_commands()
-        if self.failure is not None:
-            raise self.failure
-        self._send(zero)
+        self._stop_motors()
 
     def __enter__(self) -> CommandStream:
         self.start()
