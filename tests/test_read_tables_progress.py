@@ -42,7 +42,8 @@ def test_one_large_file_moves_the_bar_batch_by_batch(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """The bar follows the batches through one file, up to its size, never back."""
-    from veronte4x.capture.columnar import batches, progress
+    from veronte4x import progress
+    from veronte4x.capture.columnar import batches
 
     path = tmp_path / "long.log"
     path.write_bytes(CAPTURE.read_bytes() * 40)

@@ -1,16 +1,14 @@
 """The client against simulated Vertiq ESCs on python-can's virtual bus.
 
 Most tests run the ESCs and the client in one thread with a clock that moves 1 ms at every
-reading (the client's waits step the simulators), so they are deterministic; the command
-stream test runs the ESCs in a thread on the real clock, as a ground tool would meet them.
+reading (the client's waits step the simulators), so they are deterministic. The command
+stream's tests are in ``test_command_stream.py``.
 """
 
 from __future__ import annotations
 
 import itertools
-import threading
-import time
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 
 import can
 import pytest
@@ -167,41 +165,3 @@ def test_firmware_update_refused(buses: tuple[can.BusABC, can.BusABC]) -> None:
     _, client = _setup(buses, SimulatedEsc(21, supports_firmware_update=False))
     with pytest.raises(FirmwareUpdateError, match=r"^node 21 refused the update: INVALID_MODE"):
         client.update_firmware(21, _image(10))
-
-
-def _until(condition: Callable[[], bool], timeout: float = 3.0) -> None:
-    end = time.monotonic() + timeout
-    while not condition():
-        assert time.monotonic() < end, "timed out"
-        time.sleep(0.01)
-
-
-def test_command_stream_watchdog_stops_the_motor(buses: tuple[can.BusABC, can.BusABC]) -> None:
-    esc_bus, client_bus = buses
-    escs = EscBus(esc_bus, [SimulatedEsc(21, 0), SimulatedEsc(22, 1)])
-    first, second = escs.escs
-    stop = threading.Event()
-    thread = threading.Thread(target=escs.run, args=(stop,))
-    thread.start()
-    try:
-        client = BusClient(client_bus)
-        with client.command_stream(rate=100, watchdog=0.2) as stream:
-            stream.set([0.5, 0.25])
-            _until(lambda: first.state.throttle != 0.0 and second.state.throttle != 0.0)
-            assert first.state.throttle == pytest.approx(0.5, abs=1e-3)
-            assert second.state.throttle == pytest.approx(0.25, abs=1e-3)
-            for _ in range(10):  # refreshed often enough: the watchdog stays quiet
-                stream.set([0.5, 0.25])
-                time.sleep(0.05)
-            assert not stream.tripped and first.motor.driven
-            _until(lambda: stream.tripped)  # the caller stops refreshing
-            _until(lambda: not first.motor.driven and not second.motor.driven)
-            assert first.state.throttle == second.state.throttle == 0.0
-            stream.set([0.3])
-            _until(lambda: first.state.throttle != 0.0)
-            assert first.state.throttle == pytest.approx(0.3, abs=1e-3)
-        _until(lambda: not first.motor.driven)  # leaving the block sends zero throttle
-        assert stream.sent > 20
-    finally:
-        stop.set()
-        thread.join()

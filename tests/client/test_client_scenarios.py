@@ -154,3 +154,44 @@ def test_firmware_update_of_a_node_that_hangs(bench: Callable[..., Blocking]) ->
     assert str(error.value) == (
         "node 21 stopped reading the image at byte 1024 of 4096 (nothing for 0.5 s)"
     )
+
+
+def test_firmware_update_progress_bar_when_interactive(
+    bench: Callable[..., Blocking],
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    pytest.importorskip("tqdm")
+    client = bench()
+    image = bytes((i * 7) & 0xFF for i in range(3000))
+    client.update_firmware(21, image, progress=True)
+    assert "node 21 firmware" in capsys.readouterr().err
+    client.update_firmware(22, image, progress=False)
+    client.update_firmware(23, image)  # standard error is no terminal here, and no notebook
+    assert capsys.readouterr().err == ""
+    monkeypatch.setattr("veronte4x.progress._interactive", lambda: True)
+    info = client.update_firmware(24, image)  # as in a terminal or a notebook
+    assert "node 24 firmware" in capsys.readouterr().err
+    assert info.software_version.image_crc == crc64we(image)
+
+
+def test_one_node_that_stops_mid_update_leaves_the_others_updated(
+    bench: Callable[..., Blocking],
+) -> None:
+    client = bench(
+        SimulatedEsc(21, 0, update_stall_offset=2048),
+        SimulatedEsc(22, 1),
+        SimulatedEsc(23, 2),
+    )
+    image = bytes((i * 11) & 0xFF for i in range(6000))
+    tasks = client.run_all(
+        [
+            ops.update_firmware(client.client.protocol, n, image, read_timeout=0.5)
+            for n in (21, 22, 23)
+        ]
+    )
+    assert isinstance(tasks[0].error, FirmwareUpdateError)
+    assert str(tasks[0].error) == (
+        "node 21 stopped reading the image at byte 2048 of 6000 (nothing for 0.5 s)"
+    )
+    assert [t.result().software_version.image_crc for t in tasks[1:]] == [crc64we(image)] * 2

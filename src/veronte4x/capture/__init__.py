@@ -17,6 +17,7 @@ import os
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from veronte4x.capture.aio import stream
 from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
@@ -53,6 +54,7 @@ __all__ = [
     "read",
     "read_tables",
     "stats",
+    "stream",
     "tables_from_records",
     "to_dataframe",
     "to_parquet",

@@ -30,38 +30,38 @@ Examples:
 from __future__ import annotations
 
 import asyncio
-import time
-from collections.abc import Callable, Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
 
-from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client import operations
+from veronte4x.client.adapter import (
+    MAX_WAIT,
+    BusAdapter,
+    Progress,
+    StreamBase,
+    progress_callback,
+)
+from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
-    UpdateProgress,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.operations import Operation, Runner, Task
+from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
-from veronte4x.client.protocol import DEFAULT_NODE_ID, ClientProtocol, Event
+from veronte4x.client.protocol import Event
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
-from veronte4x.dronecan.transfer import DEFAULT_PRIORITY
-from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 
-__all__ = ["AsyncBusClient"]
+__all__ = ["AsyncBusClient", "AsyncCommandStream"]
 
 T = TypeVar("T")
 
-MAX_WAIT = 0.05
-"""Longest single wait for a frame, in seconds."""
 
-
-class AsyncBusClient:
+class AsyncBusClient(BusAdapter):
     """A ground-station node on a python-can bus, for asyncio: use ``async with``.
 
     Args:
@@ -74,28 +74,8 @@ class AsyncBusClient:
         first_transfer_id: Where every transfer id stream starts (see `TransferIds`).
     """
 
-    def __init__(
-        self,
-        bus: can.BusABC,
-        node_id: int = DEFAULT_NODE_ID,
-        *,
-        clock: Callable[[], float] = time.monotonic,
-        timeout: float = DEFAULT_TIMEOUT,
-        retries: int = DEFAULT_RETRIES,
-        priority: int = DEFAULT_PRIORITY,
-        first_transfer_id: int = 0,
-    ) -> None:
-        self.bus = bus
-        self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
-        self.runner = Runner(self.protocol, timeout, retries)
-        self.clock = clock
-        self._reader: can.AsyncBufferedReader | None = None
-        self._notifier: can.Notifier | None = None
-
-    @property
-    def node_id(self) -> int:
-        """This client's node id."""
-        return self.protocol.node_id
+    _reader: can.AsyncBufferedReader | None = None
+    _notifier: can.Notifier | None = None
 
     async def __aenter__(self) -> AsyncBusClient:
         self.start()
@@ -115,9 +95,13 @@ class AsyncBusClient:
             self._notifier.stop()
             self._notifier = None
 
-    def _flush(self) -> None:
-        for frame in self.protocol.take_frames():
-            self.bus.send(frame_to_message(frame))
+    def _waiting(self, first: can.Message | None) -> Iterator[can.Message]:
+        assert self._reader is not None
+        queue = self._reader.buffer
+        message = first
+        while message is not None:
+            yield message
+            message = None if queue.empty() else queue.get_nowait()
 
     async def spin_once(self, max_wait: float = MAX_WAIT) -> list[Event]:
         """Wait for frames (at most ``max_wait`` s), feed them in, send what is due.
@@ -127,64 +111,34 @@ class AsyncBusClient:
         """
         if self._reader is None:
             raise RuntimeError("start the client first: async with AsyncBusClient(bus) as client")
-        now = self.clock()
-        for deadline in (self.protocol.next_deadline(), self.runner.next_deadline()):
-            if deadline is not None:
-                max_wait = max(0.0, min(max_wait, deadline - now))
-        queue = self._reader.buffer
         message: can.Message | None
         try:
-            message = await asyncio.wait_for(queue.get(), timeout=max_wait)
+            message = await asyncio.wait_for(
+                self._reader.buffer.get(), timeout=self.wait_time(max_wait)
+            )
         except asyncio.TimeoutError:
             message = None
-        events: list[Event] = []
-        while message is not None:
-            if is_dronecan_frame(message):
-                events += self.protocol.receive(
-                    message.arbitration_id, bytes(message.data), self.clock()
-                )
-            message = None if queue.empty() else queue.get_nowait()
-        now = self.clock()
-        events += self.protocol.poll(now)
-        self.runner.feed(events, now)
-        self.runner.poll(now)
-        self._flush()
-        return events
+        return self.receive(self._waiting(message))
 
     async def run(self, operation: Operation[T]) -> T:
         """Run one operation of `veronte4x.client.operations` to its end; return its result."""
-        task = self.runner.start(operation, self.clock())
-        self._flush()
-        try:
-            while not task.done:
-                await self.spin_once()
-        finally:
-            if not task.done:  # cancelled: forget its requests
-                self.runner.cancel(task)
-        return task.result()
+        result: T = (await self.run_all([operation], 1))[0].result()
+        return result
 
     async def run_all(
         self, operations: Sequence[Operation[Any]], limit: int = 8
     ) -> list[Task[Any]]:
-        """Run operations concurrently, at most ``limit`` at a time (as `BusClient.run_all`)."""
-        waiting = list(reversed(operations))
-        tasks: list[Task[Any]] = []
-        running: list[Task[Any]] = []
+        """Run operations concurrently, at most ``limit`` at a time (as `BusClient.run_all`);
+        a cancellation forgets the requests of those still running."""
+        batch = Batch(self.runner, operations, limit)
         try:
-            while waiting or running:
-                while waiting and len(running) < limit:
-                    task = self.runner.start(waiting.pop(), self.clock())
-                    tasks.append(task)
-                    running.append(task)
-                self._flush()
-                running = [t for t in running if not t.done]
-                if running:
-                    await self.spin_once()
-                    running = [t for t in running if not t.done]
+            while batch.fill(self.clock()):
+                self.flush()
+                await self.spin_once()
+            self.flush()
         finally:
-            for task in running:
-                self.runner.cancel(task)
-        return tasks
+            batch.cancel()
+        return batch.tasks
 
     async def discover(self, duration: float = 1.1) -> list[NodeEntry]:
         """Listen for ``duration`` seconds; return the nodes online then, by id."""
@@ -233,23 +187,99 @@ class AsyncBusClient:
         image: bytes,
         path: str = "firmware.bin",
         *,
-        progress: Callable[[UpdateProgress], object] | None = None,
+        progress: Progress = None,
         start_timeout: float = START_TIMEOUT,
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
         max_image_size: int = MAX_IMAGE_SIZE,
     ) -> GetNodeInfoResponse:
-        """Update a node's firmware (see `BusClient.update_firmware`)."""
-        return await self.run(
-            operations.update_firmware(
-                self.protocol,
-                node_id,
-                image,
-                path,
-                progress=progress,
-                start_timeout=start_timeout,
-                read_timeout=read_timeout,
-                restart_timeout=restart_timeout,
-                max_image_size=max_image_size,
+        """Update a node's firmware (see `BusClient.update_firmware`, ``progress`` too)."""
+        with progress_callback(progress, node_id, len(image)) as report:
+            return await self.run(
+                operations.update_firmware(
+                    self.protocol,
+                    node_id,
+                    image,
+                    path,
+                    progress=report,
+                    start_timeout=start_timeout,
+                    read_timeout=read_timeout,
+                    restart_timeout=restart_timeout,
+                    max_image_size=max_image_size,
+                )
             )
-        )
+
+    # -- motors -----------------------------------------------------------------------------
+
+    def command_stream(
+        self, rate: float = DEFAULT_RATE, watchdog: float = DEFAULT_WATCHDOG
+    ) -> AsyncCommandStream:
+        """An `AsyncCommandStream` from this client (start it with ``async with``)."""
+        return AsyncCommandStream(self, Commander(rate, watchdog))
+
+
+class AsyncCommandStream(StreamBase):
+    """RawCommand sent from an asyncio task at a fixed rate, with a watchdog.
+
+    The asyncio twin of `veronte4x.client.bus.CommandStream`, on the same `Commander`:
+    refresh the throttles with `set` more often than the watchdog period; when refreshes
+    stop, zero throttle is sent. Leaving the ``async with`` block, normally, by an exception
+    or by a cancellation, stops the task and sends zero throttle `STOP_REPEATS` times
+    before anything else can run on the loop. If sending fails in the task, it sends zero
+    throttle if it can and stops; `set` and the end of the block raise that error.
+
+    Args:
+        client: The client whose bus and node id it uses.
+        commander: The rate and watchdog (`Commander`).
+
+    Examples:
+        >>> import asyncio, can
+        >>> async def drive(bus: can.BusABC) -> int:
+        ...     async with AsyncBusClient(bus) as client:
+        ...         async with client.command_stream(rate=100) as stream:
+        ...             stream.set([0.5])
+        ...             await asyncio.sleep(0.05)
+        ...         return stream.sent
+        >>> with can.Bus(interface="virtual", channel="doc-aio-stream") as bus:
+        ...     asyncio.run(drive(bus)) > 3  # some at 50 %, then 3 at zero
+        True
+    """
+
+    def __init__(self, client: AsyncBusClient, commander: Commander) -> None:
+        super().__init__(client, commander)
+        self._task: asyncio.Task[None] | None = None
+
+    async def _run(self) -> None:
+        try:
+            while True:
+                await asyncio.sleep(self._send_due())
+        except Exception as error:  # a failing bus
+            self._failed(error)
+
+    def start(self) -> None:
+        """Start sending on the running loop (nothing goes out before the first `set`)."""
+        self._task = asyncio.get_running_loop().create_task(self._run())
+
+    async def stop(self) -> None:
+        """Stop the task and send zero throttle `STOP_REPEATS` times, at once.
+
+        Raises:
+            Exception: The error that stopped the stream's task.
+        """
+        task, self._task = self._task, None
+        if task is not None:
+            task.cancel()  # it sends nothing more: it only sends between its awaits
+        self._stop_motors()
+        if task is not None:
+            await asyncio.wait([task])  # a cancellation of ours still ends this wait
+
+    async def __aenter__(self) -> AsyncCommandStream:
+        self.start()
+        return self
+
+    async def __aexit__(self, kind: type[BaseException] | None, *exc: object) -> None:
+        try:
+            await self.stop()
+        except Exception:
+            if kind is None:  # else the block's own error goes on
+                raise

@@ -10,57 +10,43 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
 
-from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client import operations
+from veronte4x.client.adapter import (
+    MAX_WAIT,
+    BusAdapter,
+    Progress,
+    StreamBase,
+    progress_callback,
+)
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
-    UpdateProgress,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.operations import Operation, Runner, Task
+from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
-from veronte4x.client.protocol import (
-    DEFAULT_NODE_ID,
-    ClientProtocol,
-    Event,
-    Received,
-)
-from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import BY_CLASS
-from veronte4x.dronecan.frame import Frame
-from veronte4x.dronecan.messages import (
-    GetNodeInfoResponse,
-    Opcode,
-    RawCommand,
-    Value,
-)
-from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
+from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
+from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 
 __all__ = ["BusClient", "CommandStream"]
 
 T = TypeVar("T")
 
-MAX_WAIT = 0.05
-"""Longest single wait on the bus, in seconds."""
-
 WAIT_STEP = 0.001
 """Longest single wait while a ``while_waiting`` callback runs."""
 
 
-_RAW_COMMAND_ID = BY_CLASS[RawCommand].data_type.data_type_id
-
-
-class BusClient:
+class BusClient(BusAdapter):
     """A ground-station node on a python-can bus: discovery, services, firmware update.
 
     Args:
@@ -100,46 +86,30 @@ class BusClient:
         priority: int = DEFAULT_PRIORITY,
         first_transfer_id: int = 0,
     ) -> None:
-        self.bus = bus
-        self.protocol = ClientProtocol(node_id, priority, first_transfer_id)
-        self.runner = Runner(self.protocol, timeout, retries)
-        self.clock = clock
+        super().__init__(
+            bus,
+            node_id,
+            clock=clock,
+            timeout=timeout,
+            retries=retries,
+            priority=priority,
+            first_transfer_id=first_transfer_id,
+        )
         self.while_waiting = while_waiting
         self._lock = threading.Lock()
 
-    @property
-    def node_id(self) -> int:
-        """This client's node id."""
-        return self.protocol.node_id
-
-    @property
-    def timeout(self) -> float:
-        """Seconds to wait for each response."""
-        return self.runner.timeout
-
-    @timeout.setter
-    def timeout(self, value: float) -> None:
-        self.runner.timeout = value
-
-    @property
-    def retries(self) -> int:
-        """Times a request is sent again after a timeout."""
-        return self.runner.retries
-
-    @retries.setter
-    def retries(self, value: int) -> None:
-        self.runner.retries = value
-
     # -- I/O ----------------------------------------------------------------------------
-
-    def _flush(self) -> None:
-        for frame in self.protocol.take_frames():
-            self.send_frame(frame.can_id, frame.data)
 
     def send_frame(self, can_id: int, data: bytes) -> None:
         """Send one extended frame (thread-safe with `CommandStream`)."""
         with self._lock:
-            self.bus.send(frame_to_message(Frame(can_id, data)))
+            super().send_frame(can_id, data)
+
+    def _messages(self, wait: float) -> Iterator[can.Message]:
+        message = self.bus.recv(timeout=wait)
+        while message is not None:
+            yield message
+            message = self.bus.recv(timeout=0.0)
 
     def spin_once(self, max_wait: float = MAX_WAIT) -> list[Event]:
         """Wait for frames (at most ``max_wait`` s), feed them in, send what is due.
@@ -150,24 +120,7 @@ class BusClient:
         if self.while_waiting is not None:
             self.while_waiting()
             max_wait = min(max_wait, WAIT_STEP)
-        now = self.clock()
-        for deadline in (self.protocol.next_deadline(), self.runner.next_deadline()):
-            if deadline is not None:
-                max_wait = max(0.0, min(max_wait, deadline - now))
-        events: list[Event] = []
-        message = self.bus.recv(timeout=max_wait)
-        while message is not None:
-            if is_dronecan_frame(message):
-                events += self.protocol.receive(
-                    message.arbitration_id, bytes(message.data), self.clock()
-                )
-            message = self.bus.recv(timeout=0.0)
-        now = self.clock()
-        events += self.protocol.poll(now)
-        self.runner.feed(events, now)
-        self.runner.poll(now)
-        self._flush()
-        return events
+        return self.receive(self._messages(self.wait_time(max_wait)))
 
     # -- operations -------------------------------------------------------------------------
 
@@ -177,42 +130,26 @@ class BusClient:
         Raises:
             Exception: The operation's error (`NoResponseError`, `ParameterError`, ...).
         """
-        task = self.runner.start(operation, self.clock())
-        self._flush()
-        try:
-            while not task.done:
-                self.spin_once()
-        finally:
-            if not task.done:  # e.g. KeyboardInterrupt: forget its requests
-                self.runner.cancel(task)
-        return task.result()
+        result: T = self.run_all([operation], 1)[0].result()
+        return result
 
     def run_all(self, operations: Sequence[Operation[Any]], limit: int = 8) -> list[Task[Any]]:
         """Run operations concurrently, at most ``limit`` at a time; return their tasks, done,
         in the order given (each holds its result or its error).
 
         Operations on different nodes proceed side by side: each waits only for its own
-        answers, as the bus carries every node's traffic interleaved.
+        answers, as the bus carries every node's traffic interleaved. An exception (e.g.
+        KeyboardInterrupt) forgets the requests of those still running.
         """
-        waiting = list(operations)
-        waiting.reverse()
-        tasks: list[Task[Any]] = []
-        running: list[Task[Any]] = []
+        batch = Batch(self.runner, operations, limit)
         try:
-            while waiting or running:
-                while waiting and len(running) < limit:
-                    task = self.runner.start(waiting.pop(), self.clock())
-                    tasks.append(task)
-                    running.append(task)
-                self._flush()
-                running = [t for t in running if not t.done]
-                if running:
-                    self.spin_once()
-                    running = [t for t in running if not t.done]
+            while batch.fill(self.clock()):
+                self.flush()
+                self.spin_once()
+            self.flush()
         finally:
-            for task in running:
-                self.runner.cancel(task)
-        return tasks
+            batch.cancel()
+        return batch.tasks
 
     def call(
         self,
@@ -233,7 +170,7 @@ class BusClient:
     def broadcast(self, message: Any) -> None:
         """Send a message now (e.g. one RawCommand); transfer ids count per data type."""
         self.protocol.broadcast(message)
-        self._flush()
+        self.flush()
 
     def listen(self, duration: float) -> list[Transfer]:
         """Every transfer received within ``duration`` seconds of the clock, in order."""
@@ -321,7 +258,7 @@ class BusClient:
         image: bytes,
         path: str = "firmware.bin",
         *,
-        progress: Callable[[UpdateProgress], object] | None = None,
+        progress: Progress = None,
         start_timeout: float = START_TIMEOUT,
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
@@ -333,7 +270,10 @@ class BusClient:
             node_id: The node.
             image: The firmware image.
             path: The name the node is told to read (at most 200 bytes).
-            progress: Called with each change of phase or of bytes sent.
+            progress: A callable given each change of phase or of bytes sent (an
+                `UpdateProgress`); True shows a progress bar (tqdm's, in a terminal or a
+                notebook), False nothing; None shows a bar when standard error is a
+                terminal or in a notebook, and nothing otherwise.
             start_timeout: Seconds from accepting to the first read.
             read_timeout: Seconds without a read that count as a stall.
             restart_timeout: Seconds after the last read for the node to run again.
@@ -348,19 +288,20 @@ class BusClient:
             FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
             NoResponseError: GetNodeInfo after the update got no answer.
         """
-        return self.run(
-            operations.update_firmware(
-                self.protocol,
-                node_id,
-                image,
-                path,
-                progress=progress,
-                start_timeout=start_timeout,
-                read_timeout=read_timeout,
-                restart_timeout=restart_timeout,
-                max_image_size=max_image_size,
+        with progress_callback(progress, node_id, len(image)) as report:
+            return self.run(
+                operations.update_firmware(
+                    self.protocol,
+                    node_id,
+                    image,
+                    path,
+                    progress=report,
+                    start_timeout=start_timeout,
+                    read_timeout=read_timeout,
+                    restart_timeout=restart_timeout,
+                    max_image_size=max_image_size,
+                )
             )
-        )
 
     # -- motors -----------------------------------------------------------------------------
 
@@ -371,62 +312,31 @@ class BusClient:
         return CommandStream(self, Commander(rate, watchdog))
 
 
-class CommandStream:
+class CommandStream(StreamBase):
     """RawCommand sent from a background thread at a fixed rate, with a watchdog.
 
     Use it as a context manager and refresh the throttles with `set` more often than the
     watchdog period; when refreshes stop, zero throttle is sent. Leaving the ``with``
-    block, normally or by an exception, stops the thread after sending zero throttle.
+    block, normally or by an exception, stops the thread after sending zero throttle
+    (`STOP_REPEATS` times). If sending fails in the thread, it sends zero throttle if it
+    can and stops; `set` and the end of the ``with`` block raise that error.
 
     Args:
         client: The client whose bus and node id it uses.
         commander: The rate and watchdog (`Commander`).
     """
 
-    STOP_REPEATS = 3
-    """Zero-throttle commands sent when the stream stops."""
-
     def __init__(self, client: BusClient, commander: Commander) -> None:
-        self.client = client
-        self.commander = commander
-        self._lock = threading.Lock()
+        super().__init__(client, commander)
         self._stopped = threading.Event()
         self._thread: threading.Thread | None = None
-        self.sent = 0
-        """Commands sent so far."""
-
-    def set(self, throttles: Sequence[float] | Mapping[int, float]) -> None:
-        """New throttle fractions in [-1, 1] by ESC index; they also feed the watchdog."""
-        with self._lock:
-            self.commander.set(throttles, self.client.clock())
-
-    @property
-    def tripped(self) -> bool:
-        """Whether the watchdog has zeroed the throttle since the last `set`."""
-        return self.commander.tripped
-
-    def _send(self, command: RawCommand) -> None:
-        transfer_id = self.client.protocol.transfer_ids.next(
-            TransferKind.MESSAGE, _RAW_COMMAND_ID, None
-        )
-        for frame in encode(
-            command,
-            source_node_id=self.client.node_id,
-            transfer_id=transfer_id,
-            priority=self.client.protocol.priority,
-        ):
-            self.client.send_frame(frame.can_id, frame.data)
-        self.sent += 1
 
     def _run(self) -> None:
-        while not self._stopped.is_set():
-            with self._lock:
-                command = self.commander.poll(self.client.clock())
-                due = self.commander.next_time()
-            if command is not None:
-                self._send(command)
-            wait = MAX_WAIT if due is None else max(0.0, due - self.client.clock())
-            self._stopped.wait(min(wait, MAX_WAIT))
+        try:
+            while not self._stopped.is_set():
+                self._stopped.wait(self._send_due())
+        except Exception as error:  # a failing bus
+            self._failed(error)
 
     def start(self) -> None:
         """Start sending (nothing goes out before the first `set`)."""
@@ -436,20 +346,24 @@ class CommandStream:
         self._thread.start()
 
     def stop(self) -> None:
-        """Stop the thread, then send zero throttle `STOP_REPEATS` times."""
+        """Stop the thread, then send zero throttle `STOP_REPEATS` times.
+
+        Raises:
+            Exception: The error that stopped the stream's thread.
+        """
         self._stopped.set()
         if self._thread is not None:
             self._thread.join()
             self._thread = None
-        with self._lock:
-            zero = self.commander.stop()
-        if zero.cmd:
-            for _ in range(self.STOP_REPEATS):
-                self._send(zero)
+        self._stop_motors()
 
     def __enter__(self) -> CommandStream:
         self.start()
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.stop()
+    def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
+        try:
+            self.stop()
+        except Exception:
+            if kind is None:  # else the block's own error goes on
+                raise

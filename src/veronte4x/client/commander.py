@@ -20,6 +20,9 @@ DEFAULT_RATE = 50.0
 DEFAULT_WATCHDOG = 0.5
 """Seconds without a refresh after which the throttle drops to zero."""
 
+STOP_REPEATS = 3
+"""Zero-throttle commands sent when a command stream stops (one may be lost on a busy bus)."""
+
 EPSILON = 1e-9
 """Seconds of tolerance when comparing a time with a due time (float rounding)."""
 
@@ -79,6 +82,17 @@ class Commander:
         self._refreshed = None
         self._anchor = None
         return RawCommand((0,) * len(self._cmd))
+
+    def stop_commands(self) -> list[RawCommand]:
+        """`stop`, as the commands to send when a stream ends: zero throttle `STOP_REPEATS`
+        times, or none when nothing was ever set."""
+        zero = self.stop()
+        return [zero] * STOP_REPEATS if zero.cmd else []
+
+    def wait(self, now: float, longest: float) -> float:
+        """Seconds from ``now`` to the next command, at most ``longest``."""
+        due = self.next_time()
+        return longest if due is None else max(0.0, min(longest, due - now))
 
     def poll(self, now: float) -> RawCommand | None:
         """The command to send at ``now``, or None if none is due.

@@ -246,6 +246,25 @@ class Runner:
                 self._listening.remove(task)
                 self._advance(task, ([], now), None, now)
 
+    def settle(self, events: list[Event], now: float) -> list[Event]:
+        """After the frames of a wait were received: time out the requests due at ``now``,
+        feed every event in and resume the operations due; return the events.
+
+        The frames to send are then in `ClientProtocol.take_frames`.
+        """
+        events += self.protocol.poll(now)
+        self.feed(events, now)
+        self.poll(now)
+        return events
+
+    def wait(self, now: float, longest: float) -> float:
+        """Seconds to wait for frames at ``now``: at most ``longest``, less when a request
+        or an operation is due sooner."""
+        for deadline in (self.protocol.next_deadline(), self.next_deadline()):
+            if deadline is not None:
+                longest = max(0.0, min(longest, deadline - now))
+        return longest
+
     def next_deadline(self) -> float | None:
         """When `poll` next resumes an operation, or None."""
         times = [
@@ -265,6 +284,45 @@ class Runner:
             self._listening.remove(task)
         task.operation.close()
         task.done, task.waiting = True, None
+
+
+class Batch:
+    """Operations run concurrently on a `Runner`, at most ``limit`` at a time, in order.
+
+    An adapter calls `fill` with the time, sends the frames, waits for frames and calls
+    `Runner.settle`, until `fill` returns False; then every task is done. `cancel` forgets
+    what still runs (on an exception or a cancellation of the adapter's loop).
+
+    Args:
+        runner: The runner.
+        operations: The operations, started in this order.
+        limit: How many run at once, at least 1.
+    """
+
+    def __init__(self, runner: Runner, operations: Sequence[Operation[Any]], limit: int) -> None:
+        self.runner = runner
+        self.limit = max(1, limit)
+        self.tasks: list[Task[Any]] = []
+        """The tasks started so far, in the order of the operations."""
+        self._waiting = list(reversed(operations))
+        self._running: list[Task[Any]] = []
+
+    def fill(self, now: float) -> bool:
+        """Start operations while fewer than ``limit`` run; whether any is still running."""
+        while True:
+            self._running = [t for t in self._running if not t.done]
+            if not self._waiting or len(self._running) >= self.limit:
+                return bool(self._running)
+            task = self.runner.start(self._waiting.pop(), now)
+            self.tasks.append(task)
+            self._running.append(task)
+
+    def cancel(self) -> None:
+        """Stop the operations still running (`Runner.cancel`)."""
+        for task in self._running:
+            if not task.done:
+                self.runner.cancel(task)
+        self._running = []
 
 
 # -- operations --------------------------------------------------------------------------------

@@ -155,13 +155,22 @@ class ClientProtocol:
         Raises:
             EncodeError: Not a message, or a field out of range.
         """
+        self._outbox += self.message_frames(message)
+
+    def message_frames(self, message: Any) -> list[Frame]:
+        """The frames of a message with its next transfer id, for the caller to send at once
+        (a command stream sends them from its own loop, past the outbox).
+
+        Raises:
+            EncodeError: Not a message, or a field out of range.
+        """
         codec = BY_CLASS.get(type(message))
         if codec is None or codec.data_type.kind is not TransferKind.MESSAGE:
             raise EncodeError("broadcast", "message", message, "a DroneCAN message")
         transfer_id = self.transfer_ids.next(
             TransferKind.MESSAGE, codec.data_type.data_type_id, None
         )
-        self._outbox += encode(
+        return encode(
             message, source_node_id=self.node_id, transfer_id=transfer_id, priority=self.priority
         )
 

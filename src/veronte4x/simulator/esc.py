@@ -368,9 +368,9 @@ class SimulatedEsc:
         timestamp = check_seconds("receive", "timestamp", timestamp)
         if timestamp < self._start_time or self._in_bootloader:
             return
-        self._advance(timestamp)
         if can_id & _SERVICE and (can_id >> 8) & 0x7F != self._node_id:
             return  # a service frame to another node (DroneCAN CAN ID: destination bits 8-14)
+        self._advance(timestamp)
         transfer = self._reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return

@@ -21,11 +21,11 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import batches, frame
 from veronte4x.capture.columnar.batches import ahead, read_batches
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
-from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.sources import read_frames
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import relative_time as make_relative
 from veronte4x.capture.source import STDIN
+from veronte4x.progress import Bar
 
 __all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
 

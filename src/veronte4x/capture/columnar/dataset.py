@@ -43,10 +43,10 @@ import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
-from veronte4x.capture.columnar.progress import Bar
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.source import STDIN
 from veronte4x.errors import SourceError
+from veronte4x.progress import Bar
 
 SOURCE = pa.field("source", pa.dictionary(pa.int32(), pa.string()))
 """The column naming the capture a row comes from."""

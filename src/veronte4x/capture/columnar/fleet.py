@@ -15,9 +15,9 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar.dataset import Summary, convert_file
-from veronte4x.capture.columnar.progress import Bar
 from veronte4x.codec import ByteOrder, Field, Layout
 from veronte4x.extras import require
+from veronte4x.progress import Bar
 
 
 def convert_on(

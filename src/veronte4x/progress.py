@@ -14,18 +14,27 @@ class Bar:
 
     Args:
         enabled: Draw it; None draws it when standard error is a terminal or in a
-            notebook (needs tqdm: ``pip install 'veronte4x[parquet]'``).
+            notebook and tqdm is installed.
         total: The amount of work.
         unit: What is counted: ``B`` (scaled to kB, MB, ...) or a word.
         description: Said before the bar.
+        extra: The veronte4x extra that installs tqdm for this use, named in the error when
+            a bar is asked for and tqdm is missing.
     """
 
-    def __init__(self, enabled: bool | None, total: int, unit: str, description: str) -> None:
+    def __init__(
+        self,
+        enabled: bool | None,
+        total: int,
+        unit: str,
+        description: str,
+        extra: str = "parquet",
+    ) -> None:
         self._bar: Any = None
         if enabled is None:
             enabled = _interactive() and importlib.util.find_spec("tqdm") is not None
         if enabled:
-            auto = require("tqdm.auto", "parquet", "progress bars")
+            auto = require("tqdm.auto", extra, "progress bars")
             self._bar = auto.tqdm(
                 total=total, unit=unit, unit_scale=unit == "B", desc=description, leave=False
             )
