@@ -79,3 +79,19 @@ def float32_value(bits: int) -> float:
     """Return the float value of a float32 bit pattern."""
     value: float = _F32.unpack(_U32.pack(bits))[0]
     return value
+
+
+_F64 = struct.Struct("<d")
+_U64 = struct.Struct("<Q")
+
+
+def float64_bits(value: float) -> int:
+    """Return the float64 bit pattern of ``value`` (NaN and infinity kept as they are)."""
+    bits: int = _U64.unpack(_F64.pack(value))[0]
+    return bits
+
+
+def float64_value(bits: int) -> float:
+    """Return the float value of a float64 bit pattern."""
+    value: float = _F64.unpack(_U64.pack(bits))[0]
+    return value
