@@ -298,7 +298,13 @@ def _floats(src: _Source, scalars: Sequence[Scalar], indent: str = "    ") -> No
     unpack = src.name("U", struct.Struct(f"<{len(halves)}I"))
     names = "".join(f"a{i}, " for i in halves)
     values = ", ".join(f"v{i}" for i in halves)
-    src.lines.append(f"{indent}{names}= {unpack}.unpack({pack}.pack({values}))")
+    # Beyond the float32 range struct refuses: every half then goes through float16_bits.
+    src.lines += [
+        f"{indent}try:",
+        f"{indent}    {names}= {unpack}.unpack({pack}.pack({values}))",
+        f"{indent}except OverflowError:",
+        f"{indent}    {' = '.join(f'a{i}' for i in halves)} = 0x7F800000",
+    ]
     for i in halves:
         src.lines += [
             f"{indent}m{i} = a{i} & 0x7FFFFFFF",

@@ -54,6 +54,7 @@ from veronte4x.dronecan.schema import (
     Union,
     max_bits,
     min_bits,
+    tao_min_bits,
     uses_tao,
 )
 from veronte4x.dronecan.serializer import enum_table
@@ -460,11 +461,12 @@ class _Decoder(_Writer):
             self.uses_x = True
             z, i, r = self.fresh("z"), self.fresh("i"), self.fresh("r")
             self.emit(f"{z} = q - {self.at()} - {item.bits}")
-            pieces = (
-                f"[(x >> {i}) & {(1 << item.bits) - 1:#x}"
-                f" for {i} in range({z}, {z} - {total}, -{item.bits})]"
+            # One comprehension (Python compiles ``for r in [value]`` to an assignment).
+            self.emit(
+                f"{v} = tuple([{_from_piece(item, r, None, self.src)}"
+                f" for {i} in range({z}, {z} - {total}, -{item.bits})"
+                f" for {r} in [(x >> {i}) & {(1 << item.bits) - 1:#x}]])"
             )
-            self.emit(f"{v} = tuple([{_from_piece(item, r, None, self.src)} for {r} in {pieces}])")
         if static:
             self.off += item.bits * t.max_size
         else:
@@ -547,7 +549,8 @@ class _Encoder(_Writer):
     def function(self) -> list[str]:
         self.struct(self.schema, "m", True, check=False)
         head = ["def payload(m):", "    a = 0", "    n = 0"]
-        self.emit(f"n += {self.off}")
+        if self.off:
+            self.emit(f"n += {self.off}")
         self.emit("return (a << (-n & 7)).to_bytes((n + 7) >> 3, 'big')")
         return head + self.lines
 
@@ -667,32 +670,27 @@ class _Encoder(_Writer):
             self.emit(f"if not {allowed}.issuperset(map(type, {v})):")
             self.emit("    raise SlowPath")
             count = f"len({v})"
-            if item.kind == "float" and item.bits == 16:
-                table = self.src.name(
+            if item.kind == "float" and item.bits in (16, 32):
+                singles = self.src.name(
                     "A", tuple(struct.Struct(f"<{n}f") for n in range(t.max_size + 1))
                 )
                 raw = self.src.name(
                     "A", tuple(struct.Struct(f"<{n}I") for n in range(t.max_size + 1))
                 )
-                half = HALF_EXPR.format(a="b", m="(b & 0x7FFFFFFF)", v="c")
-                self.emit(
-                    f"{v} = [{half} for b, c in zip({raw}[{count}].unpack("
-                    f"{table}[{count}].pack(*{v})), {v})]"
-                )
-                code = "H"
-            elif item.kind == "float" and item.bits == 32:
-                table = self.src.name(
-                    "A", tuple(struct.Struct(f"<{n}f") for n in range(t.max_size + 1))
-                )
-                raw = self.src.name(
-                    "A", tuple(struct.Struct(f"<{n}I") for n in range(t.max_size + 1))
-                )
-                # struct keeps the sign and payload of a NaN; DroneCAN writes one NaN.
-                self.emit(
-                    f"{v} = [0x7FC00000 if b & 0x7FFFFFFF > 0x7F800000 else b"
-                    f" for b in {raw}[{count}].unpack({table}[{count}].pack(*{v}))]"
-                )
-                code = "I"
+                if item.bits == 16:
+                    half = HALF_EXPR.format(a="b", m="(b & 0x7FFFFFFF)", v="c")
+                    fixed, slow, code = f"{half} for b, c in zip(w, {v})", "f16", "H"
+                else:  # struct keeps the sign and payload of a NaN; DroneCAN writes one NaN
+                    fixed = "0x7FC00000 if b & 0x7FFFFFFF > 0x7F800000 else b for b in w"
+                    slow, code = "f32", "I"
+                # Beyond the float32 range struct refuses: each item goes through float16_bits
+                # or float32_bits then.
+                with self.block("try:"):
+                    self.emit(f"w = {raw}[{count}].unpack({singles}[{count}].pack(*{v}))")
+                with self.block("except OverflowError:"):
+                    self.emit(f"{v} = [{slow}(c) for c in {v}]")
+                with self.block("else:"):
+                    self.emit(f"{v} = [{fixed}]")
             else:
                 code = _code(item)
             packer = self.src.name(
@@ -763,7 +761,7 @@ def compile_tree(schema: Struct, transport: Transport) -> FastPaths:
         f"    return [tnew({frame}, (c, b[7 * i:7 * i + 7] + TB[e])) for i, e in enumerate(t)]",
     ]
     src.lines += _Decoder(src, schema, False).function("decode")
-    single = min_bits(schema) <= 56
+    single = tao_min_bits(schema) <= 56  # a payload may fit one frame
     if single:
         src.lines += _Decoder(src, schema, True).function("decode_frame")
     code = src.build(f"fast paths {schema.name}")
