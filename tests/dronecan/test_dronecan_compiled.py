@@ -25,8 +25,11 @@ from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK
 from veronte4x.dronecan.schema import Scalar, Struct, Union, tao_min_bits
 from veronte4x.errors import DecodeError, EncodeError
 
+np: Any
 try:
-    import numpy as np
+    import numpy
+
+    np = numpy
 except ImportError:  # pragma: no cover - NumPy is a dev dependency
     np = None
 
@@ -73,7 +76,7 @@ def _scalar(t: Scalar, enum: type | None, faults: bool) -> st.SearchStrategy[Any
         valid: st.SearchStrategy[Any] = _FLOATS
         if not faults:
             return valid
-        extra = [st.sampled_from([True, None, "1.5", 1.5j])]
+        extra: list[st.SearchStrategy[Any]] = [st.sampled_from([True, None, "1.5", 1.5j])]
         if np is not None:
             extra.append(st.floats(width=32).map(np.float32))
             extra.append(st.floats(width=16).map(np.float16))
@@ -133,7 +136,7 @@ def values(t: Any, faults: bool, enum: type | None = None) -> st.SearchStrategy[
     if t.is_bytes:
         size = t.max_size
         valid = st.binary(min_size=size, max_size=size)
-        if t.dynamic:
+        if t.dynamic:  # empty, full or in between
             valid = st.one_of(st.just(b""), valid, st.binary(max_size=size))
         if not faults:
             return valid
@@ -143,11 +146,11 @@ def values(t: Any, faults: bool, enum: type | None = None) -> st.SearchStrategy[
             st.binary(min_size=size + 1, max_size=size + 2),
             st.just((1, 2)),
         )
-    valid = items.map(tuple)
+    tuples: st.SearchStrategy[Any] = items.map(tuple)
     if not faults:
-        return valid
+        return tuples
     too_many = st.lists(item, min_size=t.max_size + 1, max_size=t.max_size + 1).map(tuple)
-    return _faulty(valid, items, too_many, st.just(None))
+    return _faulty(tuples, items, too_many, st.just(None))
 
 
 def _same(a: Any, b: Any) -> bool:

@@ -25,9 +25,7 @@ MAX_FLOAT32 = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
 _F32 = struct.Struct("<f")
 _U32 = struct.Struct("<I")
 
-FLOAT16_VALUES: tuple[float, ...] = tuple(
-    v for (v,) in struct.iter_unpack("<e", b"".join(i.to_bytes(2, "little") for i in range(65536)))
-)
+FLOAT16_VALUES: tuple[float, ...] = struct.unpack("<65536e", struct.pack("<65536H", *range(65536)))
 """The float value of every float16 bit pattern, indexed by the pattern (exact)."""
 
 
