@@ -174,12 +174,6 @@ def _shared(codec: Codec) -> tuple[Any, ...]:
 
 
 _new_tuple = tuple.__new__
-_MESSAGE_CODECS = {dtid: c for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
-_SERVICE_CODECS = {
-    dtid << 1 | (kind is TransferKind.REQUEST): c
-    for (kind, dtid), c in BY_ID.items()
-    if kind is not TransferKind.MESSAGE
-}
 _MESSAGES: dict[int, tuple[Any, ...]] = {}
 """`_shared` of each message type met so far, by type id (see `_message`)."""
 _SERVICES: dict[int, tuple[Any, ...]] = {}
@@ -188,7 +182,7 @@ _SERVICES: dict[int, tuple[Any, ...]] = {}
 
 def _message(dtid: int) -> tuple[Any, ...] | None:
     """`_shared` of a message type, its decoders compiled on first use; None if unknown."""
-    codec = _MESSAGE_CODECS.get(dtid)
+    codec = BY_ID.get((TransferKind.MESSAGE, dtid))
     if codec is None:
         return None
     shared = _MESSAGES[dtid] = _shared(codec)
@@ -197,7 +191,7 @@ def _message(dtid: int) -> tuple[Any, ...] | None:
 
 def _service(key: int) -> tuple[Any, ...] | None:
     """`_shared` of a request or response type (key: type id << 1 | request bit)."""
-    codec = _SERVICE_CODECS.get(key)
+    codec = BY_ID.get((TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE, key >> 1))
     if codec is None:
         return None
     shared = _SERVICES[key] = _shared(codec)

@@ -174,23 +174,19 @@ _Single = tuple[Any, TransferKind, int, Any, Any, int]
 generated payload decoder and the CRC seed."""
 
 
-_CODEC_KEYS = {
-    dtid
-    if kind is TransferKind.MESSAGE
-    else 0x10000 | dtid << 1 | (kind is TransferKind.REQUEST): (codec)
-    for (kind, dtid), codec in BY_ID.items()
-}
-"""Every codec by the key of its CAN IDs: the type id of a message, 0x10000 | the type id
-<< 1 | the request bit of a service."""
-
 _FAST_TYPES: dict[int, _Single] = {}
-"""What `decode_frames` needs of each type met so far, by the key of `_CODEC_KEYS`."""
+"""What `decode_frames` needs of each type met so far, by the key of its CAN IDs: the type id
+of a message, 0x10000 | the type id << 1 | the request bit of a service."""
 
 
 def _fast_type(key: int) -> _Single | None:
     """What `decode_frames` needs of a type, its decoders compiled on first use; None for
     an unknown type."""
-    codec = _CODEC_KEYS.get(key)
+    if key < 0x10000:
+        codec = BY_ID.get((TransferKind.MESSAGE, key))
+    else:
+        kind = TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE
+        codec = BY_ID.get((kind, (key & 0xFFFF) >> 1))
     if codec is None:
         return None
     data_type, fast = codec.data_type, codec.fast
@@ -242,8 +238,13 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
                 fast = _FAST_TYPES.get(key) or _fast_type(key)
                 if fast is not None and can_id & 0x7F and (not service or can_id & 0x7F00):
                     try:
-                        if count == 1:
-                            message = _fast_single(fast, data)
+                        if count == 1:  # a single frame (the frame decoder checks its length)
+                            decode = fast[3]
+                            message = (
+                                decode(data)
+                                if data[-1] & 0xE0 == 0xC0 and decode is not None
+                                else None
+                            )
                         else:
                             message = _fast_multi(fast, frames, can_id, count)
                     except _FAST_ERRORS:
@@ -268,39 +269,31 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
 _new_tuple = tuple.__new__
 
 
-def _fast_single(fast: _Single, data: bytes) -> Any:
-    """The message of a single frame, or None to let the checked path decide."""
-    if data[-1] & 0xE0 != 0xC0 or fast[3] is None:
-        return None
-    return fast[3](data)  # checks the exact length itself
-
-
 def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
     """The message of a multi-frame transfer, or None to let the checked path decide."""
     if count >= len(MULTI_FRAME_TAILS[0]):
         return None
+    chunks = []
     tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]
-    body = bytearray()
-    last = count - 1
-    for index, frame in enumerate(frames):
+    for frame, tail in zip(frames, tails, strict=True):
         if frame.__class__ is not tuple or len(frame) != 2:
             return None
         frame_id, data = frame
         if (
             frame_id != can_id
             or data.__class__ is not bytes
-            or data[-1:] != _TAIL_BYTES[tails[index]]
-            or (len(data) != 8 and (index != last or len(data) > 8))
+            or not 0 < len(data) <= 8
+            or data[-1] != tail
         ):
             return None
-        body += data[:-1]
-    payload = bytes(body[2:])
+        chunks.append(data[:-1])
+    body = b"".join(chunks)
+    if len(body) - len(chunks[-1]) != 7 * (count - 1):  # a frame before the last is short
+        return None
+    payload = body[2:]
     if crc_hqx(payload, fast[5]) != body[0] | body[1] << 8:
         return None
     return fast[4](payload)
-
-
-_TAIL_BYTES = tuple(bytes((tail,)) for tail in range(256))
 
 
 def _frame_list(frames: object) -> list[tuple[int, bytes]]:
