@@ -1,4 +1,4 @@
-"""Fast paths generated at import time from the type definitions.
+"""Fast paths generated from the type definitions, on a type's first use (`codec.Codec.fast`).
 
 For a struct of scalars at fixed bit offsets (NodeStatus, esc.Status, Temperature,
 RestartNode, the empty GetNodeInfo request) this module writes Python functions that go
@@ -28,7 +28,8 @@ How the code stays cheap:
 
 Anything unusual (a value out of range or of the wrong type, a payload of the wrong length)
 raises inside the generated code; the caller then runs the generic `Serializer`, which
-raises the precise error or saturates.
+raises the precise error or saturates. Every other type (nested structs, arrays, unions)
+gets its fast paths from `compiled_tree`.
 """
 
 from __future__ import annotations
