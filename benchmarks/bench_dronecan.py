@@ -10,8 +10,9 @@ Then every type of the standard ``uavcan`` namespace (82 messages, requests and
 responses): a sample of each (integers at a third of their range, floats 1.5, dynamic
 arrays with up to 8 items, uint8 arrays up to 16 bytes, the integer member of a union),
 its frames decoded by ``decode_frames`` against the package's ``Transfer.from_frames`` plus
-its payload decode; the ratio per type, and its median and worst (``--all-seconds``,
-a tenth of ``--seconds`` unless given).
+its payload decode, and the message encoded into frames by ``encode`` against the package's
+``Transfer(payload=...).to_frames()``; the ratios per type, and their median and worst
+(``--all-seconds``, a tenth of ``--seconds`` unless given).
 
 Run: ``.venv/bin/python benchmarks/bench_dronecan.py [--seconds 0.5] [--all-seconds 0.05]``
 """
@@ -187,21 +188,18 @@ def _sample(t: Any) -> Any:
     return t.high // 3
 
 
-def _all_types(seconds: float) -> list[tuple[str, float]]:
-    """decode_frames against Transfer.from_frames + payload decode, per standard type."""
+def _all_types(seconds: float) -> list[tuple[str, float, float]]:
+    """Per standard type: decode_frames against Transfer.from_frames + payload decode, and
+    encode against Transfer(payload=...).to_frames(); (name, decode ratio, encode ratio)."""
     ratios = []
     for data_type in DATA_TYPES:
         message = v4.from_builtin(data_type.schema.cls, _sample(data_type.schema))
         service = data_type.kind is not v4.TransferKind.MESSAGE
-        frames = [
-            (f.can_id, f.data)
-            for f in v4.encode(
-                message,
-                source_node_id=42,
-                destination_node_id=7 if service else None,
-                transfer_id=5,
-            )
-        ]
+        destination = 7 if service else None
+        encode = functools.partial(
+            v4.encode, message, source_node_id=42, destination_node_id=destination, transfer_id=5
+        )
+        frames = [(f.can_id, f.data) for f in encode()]
         reference = [transport.Frame(can_id, data) for can_id, data in frames]
 
         def theirs(reference: list[Any] = reference) -> Any:
@@ -213,9 +211,32 @@ def _all_types(seconds: float) -> list[tuple[str, float]]:
             return v4.decode_frames(frames).message
 
         assert mine() == message
-        theirs()
-        a, b = _rates(mine, theirs, 1, seconds)
-        ratios.append((f"{data_type.full_name} {data_type.kind.name.lower()}", a / b))
+
+        payload = theirs()
+
+        def their_encode(
+            payload: Any = payload, kind: Any = data_type.kind, destination: Any = destination
+        ) -> Any:
+            return transport.Transfer(
+                transfer_id=5,
+                source_node_id=42,
+                dest_node_id=destination,
+                payload=payload,
+                transfer_priority=16,
+                service_not_message=kind is not v4.TransferKind.MESSAGE,
+                request_not_response=kind is v4.TransferKind.REQUEST,
+            ).to_frames()
+
+        assert [(f.message_id, bytes(f.bytes)) for f in their_encode()] == frames
+        decode_ours, decode_theirs = _rates(mine, theirs, 1, seconds)
+        encode_ours, encode_theirs = _rates(encode, their_encode, 1, seconds)
+        ratios.append(
+            (
+                f"{data_type.full_name} {data_type.kind.name.lower()}",
+                decode_ours / decode_theirs,
+                encode_ours / encode_theirs,
+            )
+        )
     return ratios
 
 
@@ -300,14 +321,16 @@ def main() -> None:
             lowest[op] = min(lowest.get(op, float("inf")), a / b)
             print(f"{name:22} {op:13} {a:12,.0f} {b:11,.0f} {a / b:6.1f}x")
     ratios = _all_types(args.seconds / 10 if args.all_seconds is None else args.all_seconds)
-    for name, ratio in ratios:
-        print(f"{name:60} decode_frames {ratio:6.1f}x")
-    values = sorted(r for _, r in ratios)
-    worst = min(ratios, key=lambda item: item[1])
-    print(
-        f"every standard type ({len(values)}): decode_frames median "
-        f"{statistics.median(values):.1f}x, worst {worst[1]:.1f}x ({worst[0]})"
-    )
+    print(f"{'standard type':60} {'decode_frames':>13} {'encode':>7}")
+    for name, decode, encode in ratios:
+        print(f"{name:60} {decode:12.1f}x {encode:6.1f}x")
+    for op, column in (("decode_frames", 1), ("encode", 2)):
+        values = [r[column] for r in ratios]
+        worst = min(ratios, key=lambda item: item[column])
+        print(
+            f"every standard type ({len(values)}): {op} median "
+            f"{statistics.median(values):.1f}x, worst {worst[column]:.1f}x ({worst[0]})"
+        )
     rates = _session_rows(args.seconds)
     print("lowest ratio: " + ", ".join(f"{op} {r:.1f}x" for op, r in lowest.items()))
     small, large = rates[SESSION_TABLE_SIZES[0]], rates[SESSION_TABLE_SIZES[-1]]

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import inspect
+import subprocess
+import sys
 import traceback
 
 import pytest
@@ -10,6 +12,7 @@ import pytest
 from veronte4x import codec, dronecan
 from veronte4x.codec import layouts
 from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.compiled import SlowPath
 from veronte4x.errors import DecodeError
 
 
@@ -20,6 +23,29 @@ def test_decode_error_in_generated_code_shows_its_line() -> None:
     text = "".join(traceback.format_exception(caught.value))
     assert "<veronte4x generated decode Score #" in text
     assert "raise _derr(" in text
+
+
+def test_dronecan_error_in_generated_code_shows_its_line() -> None:
+    fast = BY_CLASS[dronecan.standard.LightsCommand].fast
+    with pytest.raises(SlowPath) as caught:
+        fast.decode(bytes(4))  # a struct item cut short: the generated code hands over
+    text = "".join(traceback.format_exception(caught.value))
+    assert "<veronte4x generated fast paths uavcan.equipment.indication.LightsCommand #" in text
+    assert "raise SlowPath" in text
+    assert "def decode(buf):" in inspect.getsource(fast.decode)
+
+
+def test_dronecan_types_compile_on_first_use() -> None:
+    code = (
+        "import linecache, veronte4x.dronecan as d\n"
+        "def count():\n"
+        "    return sum('generated fast paths' in name for name in linecache.cache)\n"
+        "before = count()\n"
+        "d.decode_frames([(0x1015505, bytes(7) + b'\\xc0')])\n"
+        "print(before, count())\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.split() == ["0", "1"]  # nothing at import, then NodeStatus alone
 
 
 def test_getsource_of_generated_functions() -> None:

@@ -1,52 +1,84 @@
 """Payload encoding and decoding for each of the types, fast path first.
 
-Each top-level type gets the generated fast functions of
-`compiled` where its layout allows, and the generic
-`Serializer` otherwise and for everything the fast
-path hands over (errors, saturation, odd lengths).
+Each top-level type gets generated fast functions (`compiled` for flat structs and
+RawCommand, `compiled_tree` for everything else), compiled the first time the type is
+used, and the generic `Serializer` for everything the fast path hands over (errors,
+saturation, odd lengths).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+import functools
 from typing import Any
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.compiled import (
+    DECODE_FALLBACK,
     ENCODE_FALLBACK,
     FastPaths,
-    SlowPath,
     Transport,
     compile_int_array,
     compile_struct,
 )
+from veronte4x.dronecan.compiled_tree import compile_tree
 from veronte4x.dronecan.definitions import DATA_TYPES, DataType
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.serializer import Serializer
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 
-@dataclass(frozen=True)
 class Codec:
     """The payload functions of one top-level type.
 
     Attributes:
         data_type: The type definition.
-        encode: ``encode(message, saturate) -> payload bytes``; raises EncodeError.
-        decode: ``decode(payload) -> message``; raises DecodeError.
         crc_seed: The transfer CRC after the type's signature.
         max_payload: Largest payload in bytes.
-        fast: The generated fast paths, or None for types that only use the generic
-            serializer (GetNodeInfo response, GetSet, BeginFirmwareUpdate).
+        generic: The generic serializer of the type.
     """
 
-    data_type: DataType
-    encode: Callable[[Any, bool], bytes]
-    decode: Callable[[bytes], Any]
-    crc_seed: int
-    max_payload: int
-    fast: FastPaths | None
+    def __init__(self, data_type: DataType) -> None:
+        self.data_type = data_type
+        self.crc_seed = data_type.crc_seed
+        self.max_payload = data_type.max_payload
+        self.generic = Serializer(data_type.schema)
+
+    def __repr__(self) -> str:
+        return f"Codec({self.data_type.full_name} {self.data_type.kind.name.lower()})"
+
+    @functools.cached_property
+    def fast(self) -> FastPaths:
+        """The generated fast paths, compiled on first use (one type at a time: importing
+        the package compiles nothing)."""
+        data_type = self.data_type
+        transport = Transport(
+            Frame,
+            can_id_base(data_type),
+            data_type.kind is not TransferKind.MESSAGE,
+            data_type.crc_seed,
+        )
+        schema = data_type.schema
+        return (
+            compile_struct(schema, transport)
+            or compile_int_array(schema, transport)
+            or compile_tree(schema, transport)
+        )
+
+    def encode(self, message: Any, saturate: bool = False) -> bytes:
+        """Serialize ``message``; raise EncodeError for any value the type cannot hold."""
+        if not saturate:
+            try:
+                return self.fast.payload(message)
+            except ENCODE_FALLBACK:
+                pass
+        return self.generic.encode(message, saturate)
+
+    def decode(self, payload: bytes) -> Any:
+        """Deserialize a whole payload; raise DecodeError if it does not fit the type."""
+        try:
+            return self.fast.decode(payload)
+        except DECODE_FALLBACK:
+            return self.generic.decode(payload)
 
 
 def can_id_base(data_type: DataType) -> int:
@@ -57,41 +89,7 @@ def can_id_base(data_type: DataType) -> int:
     return data_type.data_type_id << 16 | request | 0x80
 
 
-def _codec(data_type: DataType) -> Codec:
-    generic = Serializer(data_type.schema)
-    transport = Transport(
-        Frame,
-        can_id_base(data_type),
-        data_type.kind is not TransferKind.MESSAGE,
-        data_type.crc_seed,
-    )
-    fast = compile_struct(data_type.schema, transport) or compile_int_array(
-        data_type.schema, transport
-    )
-    if fast is None:
-        encode: Callable[[Any, bool], bytes] = generic.encode
-        decode: Callable[[bytes], Any] = generic.decode
-    else:
-        fast_payload, fast_decode = fast.payload, fast.decode
-
-        def encode(message: Any, saturate: bool = False) -> bytes:
-            if not saturate:
-                try:
-                    return fast_payload(message)
-                except ENCODE_FALLBACK:
-                    pass
-            return generic.encode(message, saturate)
-
-        def decode(payload: bytes) -> Any:
-            try:
-                return fast_decode(payload)
-            except SlowPath:
-                return generic.decode(payload)
-
-    return Codec(data_type, encode, decode, data_type.crc_seed, data_type.max_payload, fast)
-
-
-CODECS: tuple[Codec, ...] = tuple(_codec(t) for t in DATA_TYPES)
+CODECS: tuple[Codec, ...] = tuple(Codec(t) for t in DATA_TYPES)
 """One codec per top-level type, in the order of `DATA_TYPES`."""
 
 BY_CLASS: dict[type, Codec] = {c.data_type.schema.cls: c for c in CODECS}

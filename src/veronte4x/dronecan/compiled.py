@@ -1,4 +1,4 @@
-"""Fast paths generated at import time from the type definitions.
+"""Fast paths generated from the type definitions, on a type's first use (`codec.Codec.fast`).
 
 For a struct of scalars at fixed bit offsets (NodeStatus, esc.Status, Temperature,
 RestartNode, the empty GetNodeInfo request) this module writes Python functions that go
@@ -28,7 +28,8 @@ How the code stays cheap:
 
 Anything unusual (a value out of range or of the wrong type, a payload of the wrong length)
 raises inside the generated code; the caller then runs the generic `Serializer`, which
-raises the precise error or saturates.
+raises the precise error or saturates. Every other type (nested structs, arrays, unions)
+gets its fast paths from `compiled_tree`.
 """
 
 from __future__ import annotations
@@ -39,7 +40,14 @@ from collections.abc import Callable, Sequence
 from typing import Any, NamedTuple
 
 from veronte4x.codegen import compile_source, slot_builder
-from veronte4x.dronecan.float16 import FLOAT16_VALUES, float16_bits, float32_bits, float32_value
+from veronte4x.dronecan.float16 import (
+    FLOAT16_VALUES,
+    float16_bits,
+    float32_bits,
+    float32_value,
+    float64_bits,
+    float64_value,
+)
 from veronte4x.dronecan.schema import Array, Scalar, Struct
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
@@ -57,6 +65,12 @@ ENCODE_FALLBACK = (SlowPath, TypeError, IndexError, OverflowError, struct.error)
 """What the generated encoders raise on values they do not handle (out of range, of
 another type, of another length): the generic serializer then decides. Nothing else is
 caught, so a fault in the generated code itself is not hidden."""
+
+
+DECODE_FALLBACK = (SlowPath, struct.error)
+"""What the generated decoders raise on a payload they do not decode (of another length,
+a count or union tag out of range, a read past the end): the generic serializer then
+decodes it or raises the precise `DecodeError`."""
 
 
 class FastPaths(NamedTuple):
@@ -137,6 +151,8 @@ class _Source:
             "SlowPath": SlowPath,
             "f16": float16_bits,
             "f32": float32_bits,
+            "f64": float64_bits,
+            "f64v": float64_value,
             "F16": FLOAT16_VALUES,
             "f32v": float32_value,
             "from_bytes": int.from_bytes,
@@ -147,7 +163,10 @@ class _Source:
 
     def name(self, prefix: str, value: Any) -> str:
         """Make ``value`` visible to the generated code under a fresh name."""
-        key = f"{prefix}{len(self.names)}"
+        number = len(self.names)
+        while f"{prefix}{number}" in self.names:  # F16 is taken, for one
+            number += 1
+        key = f"{prefix}{number}"
         self.names[key] = value
         return key
 
@@ -268,26 +287,39 @@ def _layout(src: _Source, scalars: Sequence[Scalar]) -> tuple[str, list[str], li
     return "".join(codes), values, checks
 
 
-def _floats(src: _Source, scalars: Sequence[Scalar]) -> None:
+def _floats(src: _Source, scalars: Sequence[Scalar], indent: str = "    ") -> None:
     """Emit the conversion of every float field v<i> to its raw bits, in place."""
     halves = [i for i, t in enumerate(scalars) if t.kind == "float" and t.bits == 16]
     for i, t in enumerate(scalars):
-        if t.kind == "float" and t.bits == 32:
-            src.lines.append(f"    v{i} = f32(v{i})")
+        if t.kind == "float" and t.bits in (32, 64):
+            src.lines.append(f"{indent}v{i} = f{t.bits}(v{i})")
     if not halves:
         return
     pack = src.name("F", struct.Struct(f"<{len(halves)}f"))
     unpack = src.name("U", struct.Struct(f"<{len(halves)}I"))
     names = "".join(f"a{i}, " for i in halves)
     values = ", ".join(f"v{i}" for i in halves)
-    src.lines.append(f"    {names}= {unpack}.unpack({pack}.pack({values}))")
+    # Beyond the float32 range struct refuses: every half then goes through float16_bits.
+    src.lines += [
+        f"{indent}try:",
+        f"{indent}    {names}= {unpack}.unpack({pack}.pack({values}))",
+        f"{indent}except OverflowError:",
+        f"{indent}    {' = '.join(f'a{i}' for i in halves)} = 0x7F800000",
+    ]
     for i in halves:
         src.lines += [
-            f"    m{i} = a{i} & 0x7FFFFFFF",
-            f"    v{i} = ((m{i} - 0x37FFF000) >> 13 | (a{i} >> 16) & 0x8000"
-            f" if 0x38800000 <= m{i} < 0x477FF000"
-            f" else (a{i} >> 16) & 0x8000 if m{i} < 0x33000000 else f16(v{i}))",
+            f"{indent}m{i} = a{i} & 0x7FFFFFFF",
+            f"{indent}v{i} = ({HALF_EXPR.format(a=f'a{i}', m=f'm{i}', v=f'v{i}')})",
         ]
+
+
+HALF_EXPR = (
+    "({m} - 0x37FFF000) >> 13 | ({a} >> 16) & 0x8000 if 0x38800000 <= {m} < 0x477FF000"
+    " else ({a} >> 16) & 0x8000 if {m} < 0x33000000 else f16({v})"
+)
+"""The float16 bits of float ``{v}`` from its float32 bits ``{a}`` (``{m}`` without the sign):
+rounded inline in the normal range and to a signed zero far below it, `float16_bits`
+elsewhere (subnormals, overflow, infinity, NaN)."""
 
 
 def _transport_checks(transport: Transport) -> list[str]:
@@ -343,8 +375,6 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     if len(fields) != len(schema.fields):
         return None
     scalars = [f.type for f in fields if isinstance(f.type, Scalar)]
-    if any(t.kind == "float" and t.bits == 64 for t in scalars):
-        return None
     unpack = " ".join(f"v{i} = m.{f.name};" for i, f in enumerate(fields) if f.name) or "pass"
     size = (sum(t.bits for t in scalars) + 7) // 8
     src = _Source()
@@ -391,7 +421,7 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
                         sign = 1 << (t.bits - 1)
                         raw = f"(({raw}) ^ {sign:#x}) - {sign:#x}"
                 if t.kind == "float":
-                    raw = f"F16[{raw}]" if t.bits == 16 else f"f32v({raw})"
+                    raw = f"F16[{raw}]" if t.bits == 16 else f"f{t.bits}v({raw})"
                 elif t.kind == "bool":
                     raw = f"({raw}) != 0"
                 elif f.enum is not None:

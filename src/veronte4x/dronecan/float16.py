@@ -25,9 +25,7 @@ MAX_FLOAT32 = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
 _F32 = struct.Struct("<f")
 _U32 = struct.Struct("<I")
 
-FLOAT16_VALUES: tuple[float, ...] = tuple(
-    v for (v,) in struct.iter_unpack("<e", b"".join(i.to_bytes(2, "little") for i in range(65536)))
-)
+FLOAT16_VALUES: tuple[float, ...] = struct.unpack("<65536e", struct.pack("<65536H", *range(65536)))
 """The float value of every float16 bit pattern, indexed by the pattern (exact)."""
 
 
@@ -78,4 +76,20 @@ def float32_bits(value: float, dronecan_inf: bool = False) -> int:
 def float32_value(bits: int) -> float:
     """Return the float value of a float32 bit pattern."""
     value: float = _F32.unpack(_U32.pack(bits))[0]
+    return value
+
+
+_F64 = struct.Struct("<d")
+_U64 = struct.Struct("<Q")
+
+
+def float64_bits(value: float) -> int:
+    """Return the float64 bit pattern of ``value`` (NaN and infinity kept as they are)."""
+    bits: int = _U64.unpack(_F64.pack(value))[0]
+    return bits
+
+
+def float64_value(bits: int) -> float:
+    """Return the float value of a float64 bit pattern."""
+    value: float = _F64.unpack(_U64.pack(bits))[0]
     return value

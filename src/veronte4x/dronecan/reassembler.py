@@ -26,14 +26,13 @@ from __future__ import annotations
 
 import enum
 import math
-import struct
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import OrderedDict, deque
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
-from veronte4x.dronecan.compiled import SlowPath
+from veronte4x.dronecan.compiled import DECODE_FALLBACK
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
@@ -167,22 +166,40 @@ def _shared(codec: Codec) -> tuple[Any, ...]:
         codec,
         codec.data_type.kind,
         codec.data_type.data_type_id,
-        codec.fast.decode_frame if codec.fast else None,
-        codec.fast.decode if codec.fast else codec.decode,
+        codec.fast.decode_frame,
+        codec.fast.decode,
         codec.crc_seed,
         codec.max_payload + 3,  # CRC and tail byte included
     )
 
 
 _new_tuple = tuple.__new__
-_MESSAGES = {dtid: _shared(c) for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
-_SERVICES = {
-    dtid << 1 | (kind is TransferKind.REQUEST): _shared(c)
-    for (kind, dtid), c in BY_ID.items()
-    if kind is not TransferKind.MESSAGE
-}
+_MESSAGES: dict[int, tuple[Any, ...]] = {}
+"""`_shared` of each message type met so far, by type id (see `_message`)."""
+_SERVICES: dict[int, tuple[Any, ...]] = {}
+"""`_shared` of each request and response type met so far, by type id << 1 | request."""
+
+
+def _message(dtid: int) -> tuple[Any, ...] | None:
+    """`_shared` of a message type, its decoders compiled on first use; None if unknown."""
+    codec = BY_ID.get((TransferKind.MESSAGE, dtid))
+    if codec is None:
+        return None
+    shared = _MESSAGES[dtid] = _shared(codec)
+    return shared
+
+
+def _service(key: int) -> tuple[Any, ...] | None:
+    """`_shared` of a request or response type (key: type id << 1 | request bit)."""
+    codec = BY_ID.get((TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE, key >> 1))
+    if codec is None:
+        return None
+    shared = _SERVICES[key] = _shared(codec)
+    return shared
+
+
 _BYTES_LIKE = (bytes, bytearray, memoryview)
-_FRAME_ERRORS = (struct.error, SlowPath)  # what a generated single-frame decoder raises
+_FRAME_ERRORS = DECODE_FALLBACK  # what a generated single-frame decoder raises
 
 
 def _check_arguments(can_id: object, data: object, timestamp: object) -> bytes:
@@ -355,12 +372,12 @@ class Reassembler:
             return None
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF) or _service((can_id >> 15) & 0x1FF)
             if not can_id & 0x7F or not can_id & 0x7F00:
                 self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
                 return None
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF) or _message((can_id >> 8) & 0xFFFF)
         else:
             if tail & 0xC0 != 0xC0:
                 self._report(
@@ -391,12 +408,12 @@ class Reassembler:
             return self._feed(can_id, data, timestamp)
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = _SERVICES.get((can_id >> 15) & 0x1FF) or _service((can_id >> 15) & 0x1FF)
             destination: int | None = (can_id >> 8) & 0x7F
             if not destination or not can_id & 0x7F:
                 return self._feed(can_id, data, timestamp)
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF) or _message((can_id >> 8) & 0xFFFF)
             destination = None
         else:
             return self._feed(can_id, data, timestamp)
@@ -603,7 +620,7 @@ class Reassembler:
         session.buffer = None
         try:
             message = session.decode_payload(payload)
-        except (SlowPath, DecodeError):  # odd length or bad content: the checked path decides
+        except (*DECODE_FALLBACK, DecodeError):  # bad length or content: the checked path decides
             return self._deliver(session, can_id, payload, tid, session.start, session.counted)
         session.closed = tid
         session.tid = (tid + 1) & 0x1F

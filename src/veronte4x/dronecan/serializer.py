@@ -16,7 +16,6 @@ for saturation; `compiled` holds the fast paths.
 from __future__ import annotations
 
 import functools
-import struct
 from typing import Any
 
 from veronte4x.dronecan.float16 import (
@@ -24,6 +23,8 @@ from veronte4x.dronecan.float16 import (
     float16_bits,
     float32_bits,
     float32_value,
+    float64_bits,
+    float64_value,
 )
 from veronte4x.dronecan.schema import Array, Field, Member, Scalar, Struct, Union, uses_tao
 from veronte4x.errors import DecodeError, EncodeError, boolean, integer, real
@@ -106,10 +107,6 @@ def enum_table(enum: type, bits: int) -> tuple[Any, ...]:
     return tuple(known.get(i, i) for i in range(1 << bits))
 
 
-_F64 = struct.Struct("<d")
-_U64 = struct.Struct("<Q")
-
-
 def _check_int(name: str, field: str, t: Scalar, value: object, saturate: bool) -> int:
     number = integer(value)
     if number is None:
@@ -136,8 +133,7 @@ def scalar_bits(name: str, field: str, t: Scalar, value: object, saturate: bool)
             raise EncodeError(name, field, value, f"a float for {t.dsdl}")
         number = float(exact)
         if t.bits == 64:
-            raw: int = _U64.unpack(_F64.pack(number))[0]
-            return raw
+            return float64_bits(number)
         return float16_bits(number) if t.bits == 16 else float32_bits(number)
     if t.kind == "bool" and boolean(value) is not None:
         return 1 if value else 0
@@ -282,8 +278,7 @@ class Serializer:
             return raw - ((raw >> (t.bits - 1)) << t.bits)
         if t.kind == "float":
             if t.bits == 64:
-                value: float = _F64.unpack(_U64.pack(raw))[0]
-                return value
+                return float64_value(raw)
             return FLOAT16_VALUES[raw] if t.bits == 16 else float32_value(raw)
         if t.kind == "bool":
             return bool(raw)

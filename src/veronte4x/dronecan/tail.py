@@ -29,15 +29,10 @@ def tail_byte(start: bool, end: bool, toggle: bool, transfer_id: int) -> int:
 
 def _tail_sequences() -> tuple[tuple[tuple[int, ...], ...], ...]:
     """Tail bytes of every multi-frame length, indexed by transfer id then frame count."""
-    by_tid = []
-    for tid in range(32):
-        rows: list[tuple[int, ...]] = [()]
-        for count in range(1, 64):
-            rows.append(
-                tuple(tail_byte(i == 0, i == count - 1, bool(i & 1), tid) for i in range(count))
-            )
-        by_tid.append(tuple(rows))
-    return tuple(by_tid)
+    rows: list[tuple[int, ...]] = [()]  # transfer id 0; the others add their id to each byte
+    for count in range(1, 64):
+        rows.append(tuple(tail_byte(i == 0, i == count - 1, bool(i & 1), 0) for i in range(count)))
+    return tuple(tuple(tuple(map(tid.__or__, row)) for row in rows) for tid in range(32))
 
 
 MULTI_FRAME_TAILS = _tail_sequences()

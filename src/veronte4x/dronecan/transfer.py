@@ -8,14 +8,13 @@ receiver for a stream of frames is
 
 from __future__ import annotations
 
-import struct
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections.abc import Iterable
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
 from veronte4x.dronecan.codec import BY_CLASS, BY_ID, Codec, can_id_base
-from veronte4x.dronecan.compiled import ENCODE_FALLBACK, SlowPath
+from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, FramesFunction
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
@@ -56,7 +55,18 @@ class Transfer(NamedTuple):
         return to_html(self)
 
 
-_FAST = {cls: codec.fast.frames for cls, codec in BY_CLASS.items() if codec.fast is not None}
+_FAST: dict[type, FramesFunction] = {}
+"""The generated frames function of each class used so far (see `_fast_frames`)."""
+
+
+def _fast_frames(cls: type) -> FramesFunction | None:
+    """The generated frames function of a class, compiled on its first use; None if the
+    class is no DroneCAN type."""
+    codec = BY_CLASS.get(cls)
+    if codec is None:
+        return None
+    fast = _FAST[cls] = codec.fast.frames
+    return fast
 
 
 def encode(
@@ -88,7 +98,7 @@ def encode(
     """
     if not saturate:
         # Generated fast path; on anything unusual the checked path raises the precise error.
-        fast = _FAST.get(message.__class__)
+        fast = _FAST.get(message.__class__) or _fast_frames(message.__class__)
         if fast is not None:
             try:
                 return fast(message, source_node_id, transfer_id, priority, destination_node_id)
@@ -164,23 +174,34 @@ _Single = tuple[Any, TransferKind, int, Any, Any, int]
 generated payload decoder and the CRC seed."""
 
 
-def _fast_types() -> dict[int, _Single]:
-    """Types with generated decoders, by `_type_key` of their CAN IDs."""
-    out: dict[int, _Single] = {}
-    for (kind, dtid), codec in BY_ID.items():
-        if codec.fast is None:
-            continue
-        key = (
-            dtid
-            if kind is TransferKind.MESSAGE
-            else 0x10000 | dtid << 1 | (kind is TransferKind.REQUEST)
-        )
-        out[key] = (codec, kind, dtid, codec.fast.decode_frame, codec.fast.decode, codec.crc_seed)
-    return out
+_FAST_TYPES: dict[int, _Single] = {}
+"""What `decode_frames` needs of each type met so far, by the key of its CAN IDs: the type id
+of a message, 0x10000 | the type id << 1 | the request bit of a service."""
 
 
-_FAST_TYPES = _fast_types()
-_FAST_ERRORS = (SlowPath, struct.error)  # what the generated decoders raise
+def _fast_type(key: int) -> _Single | None:
+    """What `decode_frames` needs of a type, its decoders compiled on first use; None for
+    an unknown type."""
+    if key < 0x10000:
+        codec = BY_ID.get((TransferKind.MESSAGE, key))
+    else:
+        kind = TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE
+        codec = BY_ID.get((kind, (key & 0xFFFF) >> 1))
+    if codec is None:
+        return None
+    data_type, fast = codec.data_type, codec.fast
+    found = _FAST_TYPES[key] = (
+        codec,
+        data_type.kind,
+        data_type.data_type_id,
+        fast.decode_frame,
+        fast.decode,
+        codec.crc_seed,
+    )
+    return found
+
+
+_FAST_ERRORS = DECODE_FALLBACK  # what the generated decoders raise
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 
 
@@ -213,13 +234,17 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
                 and 0 < can_id >> 7 < 1 << 22
             ):
                 service = can_id & 0x80
-                fast = _FAST_TYPES.get(
-                    0x10000 | (can_id >> 15) & 0x1FF if service else (can_id >> 8) & 0xFFFF
-                )
+                key = 0x10000 | (can_id >> 15) & 0x1FF if service else (can_id >> 8) & 0xFFFF
+                fast = _FAST_TYPES.get(key) or _fast_type(key)
                 if fast is not None and can_id & 0x7F and (not service or can_id & 0x7F00):
                     try:
-                        if count == 1:
-                            message = _fast_single(fast, data)
+                        if count == 1:  # a single frame (the frame decoder checks its length)
+                            decode = fast[3]
+                            message = (
+                                decode(data)
+                                if data[-1] & 0xE0 == 0xC0 and decode is not None
+                                else None
+                            )
                         else:
                             message = _fast_multi(fast, frames, can_id, count)
                     except _FAST_ERRORS:
@@ -244,39 +269,31 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
 _new_tuple = tuple.__new__
 
 
-def _fast_single(fast: _Single, data: bytes) -> Any:
-    """The message of a single frame, or None to let the checked path decide."""
-    if data[-1] & 0xE0 != 0xC0 or fast[3] is None:
-        return None
-    return fast[3](data)  # checks the exact length itself
-
-
 def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
     """The message of a multi-frame transfer, or None to let the checked path decide."""
     if count >= len(MULTI_FRAME_TAILS[0]):
         return None
+    chunks = []
     tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]
-    body = bytearray()
-    last = count - 1
-    for index, frame in enumerate(frames):
+    for frame, tail in zip(frames, tails, strict=True):
         if frame.__class__ is not tuple or len(frame) != 2:
             return None
         frame_id, data = frame
         if (
             frame_id != can_id
             or data.__class__ is not bytes
-            or data[-1:] != _TAIL_BYTES[tails[index]]
-            or (len(data) != 8 and (index != last or len(data) > 8))
+            or not 0 < len(data) <= 8
+            or data[-1] != tail
         ):
             return None
-        body += data[:-1]
-    payload = bytes(body[2:])
+        chunks.append(data[:-1])
+    body = b"".join(chunks)
+    if len(body) - len(chunks[-1]) != 7 * (count - 1):  # a frame before the last is short
+        return None
+    payload = body[2:]
     if crc_hqx(payload, fast[5]) != body[0] | body[1] << 8:
         return None
     return fast[4](payload)
-
-
-_TAIL_BYTES = tuple(bytes((tail,)) for tail in range(256))
 
 
 def _frame_list(frames: object) -> list[tuple[int, bytes]]:
