@@ -224,14 +224,14 @@ builder = slot_builder
 """`veronte4x.codegen.slot_builder`, under the name this module has always exported."""
 
 _PER_LAYOUT = re.compile(
-    r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
+    r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack"
     r"|_implied_\w+|_from_wire_\w+|_to_wire_\w+|_set_\w+|_byte\d+)\b"
 )
 """The names of a decoder's namespace that belong to its layout (the rest are shared)."""
 
 
 def inline_decoder(
-    layout: FrameLayout, suffix: str, indent: int, shorter: Decoder | None = None
+    layout: FrameLayout, suffix: str, indent: int
 ) -> tuple[list[str], dict[str, Any]]:
     """The body of a layout's decoder, to inline into a dispatching function.
 
@@ -244,11 +244,18 @@ def inline_decoder(
     """
     layout.check()
     namespace = _namespace(layout)
-    if shorter is not None:
-        namespace["_shorter"] = shorter
-    source = _decode_source(layout, shorter=shorter is not None)
+    source = _decode_source(layout)
     # Skip the def line and ``n = _len(data)``: the dispatching function has ``n`` already.
     return _renamed(source.splitlines()[2:], namespace, suffix, indent)
+
+
+def refuses(layout: FrameLayout, index: int, value: int) -> bool:
+    """Whether the layout's decoder refuses every frame whose byte ``index`` is ``value``
+    (a constant or a maximum it breaks), from the fields that lie in that byte alone."""
+    fields = [p for p in layout.placed if _byte_index(layout, p) == index]
+    if not fields or any(p.field.kind not in _TABLED for p in fields):
+        return False
+    return _byte_entry(fields, value) is None
 
 
 def _renamed(
@@ -346,7 +353,6 @@ def _values(layout: FrameLayout) -> list[tuple[str, str]]:
 
 def _decode_source(
     layout: FrameLayout,
-    shorter: bool = False,
     otherwise: str | None = None,
     assume: frozenset[str] = frozenset(),
 ) -> str:
@@ -362,10 +368,8 @@ def _decode_source(
     if otherwise is not None:
         lines = ["def decode(data, excess):"]
     elif layout.tail is None:
-        lines += [f"    if n != {size}:"]
-        if shorter:
-            lines += [f"        if n < {size}:", "            return _shorter(data, excess)"]
         lines += [
+            f"    if n != {size}:",
             f"        if n < {size} or not excess:",
             f"            raise _derr('{{}} bytes; the layout has {size}'.format(n), data)",
             f"        data = data[:{size}]",
@@ -384,7 +388,8 @@ def _decode_source(
         # Every field lies within one byte or is an aligned float32: one unpack reads them all.
         fmt, names = plan if otherwise is None else _skipping(layout, assume)
         unpack = "_unpack" if otherwise is None else "_unpack_exact"
-        lines.append(f"    {', '.join(names)}, = {unpack}(data)  # struct {fmt!r}")
+        unpacked = f"{', '.join(names)}, = " if names else ""  # no names: a length check
+        lines.append(f"    {unpacked}{unpack}(data)  # struct {fmt!r}")
     flag_bytes = _flag_bytes(layout)
     for index, numbers in flag_bytes.items():
         byte = f"b{index}" if plan is not None else f"data[{index}]"
