@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import FrameLayout, Placed
-from veronte4x.codec.fields import ByteOrder, Kind
+from veronte4x.codec.fields import ByteOrder, FieldKind
 from veronte4x.codec.pwm import PwmPacking
 from veronte4x.codec.routes import Route, RouteTable
 
@@ -31,14 +31,14 @@ def _position(layout: FrameLayout, p: Placed) -> tuple[str, str]:
 
 def _kind(layout: FrameLayout, p: Placed) -> str:
     f = p.field
-    if f.kind is Kind.CONSTANT:
+    if f.kind is FieldKind.CONSTANT:
         return f"constant `{f.value:#04x}`"
-    if f.kind is Kind.MAPPED:
+    if f.kind is FieldKind.MAPPED:
         return "uint8, one of " + ", ".join(str(wire) for wire, _ in f.mapping)
-    if f.kind is Kind.UNSIGNED:
+    if f.kind is FieldKind.UNSIGNED:
         top = f.maximum if f.maximum is not None else (1 << f.bits) - 1
         return f"uint{f.bits}, 0..{top}"
-    names = {Kind.BOOL: "bool", Kind.FLOAT32: "float32", Kind.SIGNED: f"int{f.bits}"}
+    names = {FieldKind.BOOL: "bool", FieldKind.FLOAT32: "float32", FieldKind.SIGNED: f"int{f.bits}"}
     return names.get(f.kind, f.kind.name.lower())
 
 
@@ -81,7 +81,7 @@ def _class(route: Route, commands: list[int]) -> str:
     """A route's message class as the message-type table names it."""
     layout = route.frame
     first = layout.fields[0]
-    if len(commands) > 1 and first.kind is Kind.MAPPED:
+    if len(commands) > 1 and first.kind is FieldKind.MAPPED:
         return f"`{layout.name}({first.attr}={dict(first.mapping)[route.command]})`"
     return f"`{layout.name}`"
 

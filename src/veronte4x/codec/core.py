@@ -18,8 +18,8 @@ from veronte4x.codec import layouts
 from veronte4x.codec import routes as routes_module
 from veronte4x.codec.compiler import (
     MAX_FRAME_BYTES,
-    Decoder,
-    Encoder,
+    FrameDecoder,
+    FrameEncoder,
     FrameLayout,
     inline_decoder,
     optimistic_decoder,
@@ -99,7 +99,7 @@ variables, one arbiter sends Status and Score."""
 
 
 class Codec:
-    """Encoder and decoder for Veronte 4x frames, with the open choices made explicit.
+    """FrameEncoder and decoder for Veronte 4x frames, with the open choices made explicit.
 
     Its decoders and encoders are generated from its route table (`routes`, built from
     `veronte4x.codec.routes.ROUTES`, the PWM packing and the declared layouts).
@@ -132,7 +132,7 @@ class Codec:
         # layouts' bodies inlined, so a frame costs one Python call.
         self._checked = self._compile_checked()
         self.__dict__["decode"] = self._compile_fast(self._checked)
-        self._decoders: dict[Sender, Decoder] = {}  # made by `decoder` on first use
+        self._decoders: dict[Sender, FrameDecoder] = {}  # made by `decoder` on first use
 
     def _compile_checked(self) -> Callable[..., Message]:
         """Generate the checked `decode` from the route table: every check, with the
@@ -224,7 +224,7 @@ class Codec:
                 lines.append(f"    if {test}:")
                 lines += by_sender(command, 8)
         lines += ["    if sender.__class__ is not _Sender:", "        raise _errors.sender(sender)"]
-        by_command: list[Decoder | None] = [None] * 256
+        by_command: list[FrameDecoder | None] = [None] * 256
         opaque: list[type[Message] | None] = [None] * 256
         for layout, commands in table.layout_commands().items():
             if table.by_sender(commands[0]):
@@ -264,7 +264,7 @@ class Codec:
         return decode
 
     @staticmethod
-    def _forms_decoder(group: list[Route]) -> Decoder:
+    def _forms_decoder(group: list[Route]) -> FrameDecoder:
         """The decoder of one command's forms (a layout's own decoder for one form)."""
         if len(group) == 1:
             return group[0].frame.functions[0]
@@ -283,7 +283,7 @@ class Codec:
             above = size
         lines.append("    raise _lengths(n, data)")
         compile_source("\n".join(lines), namespace, f"decode {group[0].frame.name} forms")
-        decode: Decoder = namespace["decode"]
+        decode: FrameDecoder = namespace["decode"]
         return decode
 
     def _compile_fast(
@@ -465,7 +465,7 @@ class Codec:
         generated: Callable[..., Message] = self.__dict__["decode"]
         return generated(data, sender=sender, allow_excess=allow_excess)
 
-    def decoder(self, sender: Sender) -> Decoder:
+    def decoder(self, sender: Sender) -> FrameDecoder:
         """`decode` for one sender's frames, called as ``decoder(data, allow_excess)``.
 
         The same generated function as `decode`, with the sender fixed and positional
@@ -501,7 +501,7 @@ class Codec:
         return encode(message)
 
 
-def _encoders(table: RouteTable) -> dict[type[Message], Encoder]:
+def _encoders(table: RouteTable) -> dict[type[Message], FrameEncoder]:
     """The encoder of each message class of a route table.
 
     A class with several layouts (Status: the 4x and the CEX forms) is encoded with the
@@ -511,7 +511,7 @@ def _encoders(table: RouteTable) -> dict[type[Message], Encoder]:
     by_class: dict[type[Message], list[FrameLayout]] = {}
     for layout in table.layouts():
         by_class.setdefault(layout.message, []).append(layout)
-    encoders: dict[type[Message], Encoder] = {}
+    encoders: dict[type[Message], FrameEncoder] = {}
     for cls, found in by_class.items():
         plain = [layout for layout in found if not layout.implied]
         implied = [layout for layout in found if layout.implied]
@@ -526,8 +526,8 @@ def _encoders(table: RouteTable) -> dict[type[Message], Encoder]:
         def encode(
             message: Message,
             get: Callable[[Message], object] = get,
-            encode_plain: Encoder = encode_plain,
-            encode_implied: Encoder = encode_implied,
+            encode_plain: FrameEncoder = encode_plain,
+            encode_implied: FrameEncoder = encode_implied,
         ) -> bytes:
             return (encode_plain if get(message) is not None else encode_implied)(message)
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.declared import Layout
-from veronte4x.codec.fields import Kind
+from veronte4x.codec.fields import FieldKind
 from veronte4x.codec.messages import Sender
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 from veronte4x.errors import LayoutError
@@ -214,8 +214,8 @@ def _check(route: Route) -> None:
         first is None
         or first.bits != 8
         or not (
-            (first.kind is Kind.CONSTANT and first.value == route.command)
-            or (first.kind is Kind.MAPPED and route.command in dict(first.mapping))
+            (first.kind is FieldKind.CONSTANT and first.value == route.command)
+            or (first.kind is FieldKind.MAPPED and route.command in dict(first.mapping))
         )
     ):
         raise LayoutError(

@@ -18,7 +18,7 @@ import pyarrow as pa
 
 from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
-from veronte4x.codec.fields import ByteOrder, Kind
+from veronte4x.codec.fields import ByteOrder, FieldKind
 from veronte4x.codec.messages import Sender
 from veronte4x.codec.routes import Route
 
@@ -113,22 +113,22 @@ def decode(
     for p in layout.placed:
         f = p.field
         raw = (word >> np.uint64(p.shift)) & np.uint64((1 << f.bits) - 1)
-        if f.kind is Kind.CONSTANT:
+        if f.kind is FieldKind.CONSTANT:
             good &= raw == f.value
-        elif f.kind is Kind.BOOL:
+        elif f.kind is FieldKind.BOOL:
             values[f.label] = raw == 1
-        elif f.kind is Kind.MAPPED:
+        elif f.kind is FieldKind.MAPPED:
             table = np.full(1 << f.bits, -1, np.int64)
             for wire, value in f.mapping:
                 table[wire] = value
             mapped = table[raw]
             good &= mapped >= 0
             values[f.label] = mapped
-        elif f.kind is Kind.FLOAT32:
+        elif f.kind is FieldKind.FLOAT32:
             values[f.label] = raw.astype(np.uint32).view(np.float32)
-        elif f.kind in (Kind.UNSIGNED, Kind.SIGNED):
+        elif f.kind in (FieldKind.UNSIGNED, FieldKind.SIGNED):
             number: np.ndarray = raw
-            if f.kind is Kind.SIGNED:
+            if f.kind is FieldKind.SIGNED:
                 number = raw.astype(np.int64)
                 number = number - ((number >> (f.bits - 1)) & 1) * (1 << f.bits)
             if f.maximum is not None:
