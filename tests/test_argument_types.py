@@ -141,7 +141,7 @@ CASES: list[tuple[str, Callable[[], Any], str]] = [
         _call(codec.Linear, 0, 255, 0.0, "1"),
         "Linear(): decoded_max must be a number, not str",
     ),
-    ("Field kind", _call(codec.Field, "unsigned", 8), "Field(): kind must be a Kind, not str"),
+    ("Field kind", _call(codec.Field, "unsigned", 8), "Field(): kind must be a FieldKind, not str"),
     ("Field bits", _call(codec.Field, codec.Kind.UNSIGNED, 8.0), "Field(): bits must be an int"),
     (
         "Field attr",

@@ -1,7 +1,7 @@
 """The columnar engine on captures of many DroneCAN sessions (issue 19, "no cliff"): the
 column-wise path takes every regular session whatever their number, and the tables stay
 those of the per-frame decoder, sessions concurrent or not, faults included; both for a
-file decoded in batches (`read_tables`) and for whole columns (`engine.decode_columns`,
+file decoded in batches (`read_tables`) and for whole columns (`engine.decode_into`,
 what standard input takes)."""
 
 from __future__ import annotations
@@ -43,7 +43,7 @@ def test_one_session_after_another_stays_column_wise(
     assert per_frame == 0
     expected = capture.tables_from_records(capture.read(path))
     assert_same_tables(got, expected)
-    assert_same_tables(engine.decode_columns(read_frames(path)), expected)
+    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)
 
 
 @pytest.mark.parametrize(
@@ -64,7 +64,7 @@ def test_many_sessions_agree(count: int, concurrent: bool, faults: float, tmp_pa
     path = write(tmp_path / "capture.log", many_sessions(count, concurrent, faults, seed=count))
     expected = capture.tables_from_records(capture.read(path))
     assert_same_tables(capture.read_tables(path), expected)
-    assert_same_tables(engine.decode_columns(read_frames(path)), expected)
+    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -90,6 +90,6 @@ def test_a_session_left_open_before_a_thousand_others_agrees(
         return original(*args)
 
     monkeypatch.setattr(engine, "_decode", counting)
-    assert_same_tables(engine.decode_columns(read_frames(path)), expected)  # whole
+    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)  # whole
     assert [whole.any() for whole in passes] == [False, True]  # decoded again, by frame
     assert_same_tables(capture.read_tables(path), expected)  # in batches

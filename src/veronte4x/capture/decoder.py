@@ -22,7 +22,7 @@ from veronte4x.capture.readers.candump import (
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import Truncated
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
-from veronte4x.codec.compiler import Decoder
+from veronte4x.codec.compiler import FrameDecoder as Decoder
 from veronte4x.dronecan import ProblemReport, Reassembler
 from veronte4x.dronecan.reassembler import Problem
 from veronte4x.errors import BytesLike, argument_type_error

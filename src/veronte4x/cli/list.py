@@ -9,8 +9,8 @@ from typing import Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES, BusMap
 from veronte4x.cli.exit_codes import EXIT_OK
-from veronte4x.codec import layouts
 from veronte4x.codec.compiler import FrameLayout
+from veronte4x.codec.routes import RouteTable, sender_names
 from veronte4x.dronecan.definitions import DATA_TYPES
 
 
@@ -24,21 +24,18 @@ def add_parser(commands: Any) -> None:
     parser.set_defaults(run=run)
 
 
-_FROM = {
-    "Status": "arbiter",
-    "Score": "arbiter",
-    "Ready": "autopilots",
-    "ArbitrationVariable": "autopilots",
-}
-"""Who sends the types that share command 0 (the sender decides which one it is)."""
-
-
-def _layouts(bus_map: BusMap) -> list[tuple[int | None, FrameLayout]]:
-    """Each layout with its command byte; a declared layout replaces the opaque one."""
-    declared = {layout.command: layout.frame for layout in bus_map.layouts}
-    opaque = {**layouts.OPAQUE, **declared}
-    fixed = [*layouts.ARBITRATION_AND_VERSION, layouts.PWM_SET[bus_map.pwm_packing]]
-    return [(layout.message.COMMAND, layout) for layout in fixed] + sorted(opaque.items())
+def _routes(bus_map: BusMap) -> list[tuple[int | None, str, FrameLayout]]:
+    """Each layout of the route table with its command byte (None for several) and who
+    sends it; a declared layout replaces the opaque one."""
+    table = RouteTable(bus_map.pwm_packing, bus_map.layouts)
+    commands = table.layout_commands()
+    found: dict[FrameLayout, tuple[int | None, str, FrameLayout]] = {}
+    for route in table.routes:
+        if route.frame not in found:
+            routed = commands[route.frame]
+            command = routed[0] if len(routed) == 1 else None
+            found[route.frame] = (command, sender_names(route), route.frame)
+    return list(found.values())
 
 
 def _veronte(bus_map: BusMap) -> dict[str, Any]:
@@ -51,10 +48,9 @@ def _veronte(bus_map: BusMap) -> dict[str, Any]:
         }
     )
     messages = []
-    for command, layout in _layouts(bus_map):
+    for command, sender, layout in _routes(bus_map):
         size = layout.fixed_size
         high = size + (layout.tail.bits // 8 if layout.tail is not None else 0)
-        sender = _FROM.get(layout.name, "any Veronte ID")
         messages.append(
             {
                 "message": layout.title or layout.name,

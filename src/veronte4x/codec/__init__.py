@@ -18,6 +18,7 @@ from veronte4x.codec.declared import DeclaredMessage, Layout
 from veronte4x.codec.fields import (
     ByteOrder,
     Field,
+    FieldKind,
     Kind,
     Linear,
     constant,
@@ -78,6 +79,7 @@ __all__ = [
     "DecodeError",
     "EncodeError",
     "Field",
+    "FieldKind",
     "JetiBecTelemetry1",
     "JetiBecTelemetry2",
     "JetiEscTelemetry",

@@ -18,14 +18,16 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
 
-from veronte4x.codec.fields import ByteOrder, Field, Kind
+from veronte4x.codec.fields import ByteOrder, Field, FieldKind
 from veronte4x.codec.float32 import bits_from_float, float_from_bits
 from veronte4x.codec.messages import Message
 from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, boolean, integer, real
 
-Decoder = Callable[[bytes, bool], Message]
-Encoder = Callable[[Message], bytes]
+FrameDecoder = Callable[[bytes, bool], Message]
+"""A layout's decoder: ``decode(data, allow_excess)`` of one frame's bytes."""
+FrameEncoder = Callable[[Message], bytes]
+"""A layout's encoder: a message to its frame's bytes."""
 
 MAX_FRAME_BYTES = 8
 """Classic CAN: byte 0 is the message type, up to 7 data bytes follow (4x Software Manual, section
@@ -78,7 +80,7 @@ class FrameLayout:
     def tail(self) -> Field | None:
         """The trailing BYTES field, if the layout ends with one."""
         last = self.fields[-1] if self.fields else None
-        return last if last is not None and last.kind is Kind.BYTES else None
+        return last if last is not None and last.kind is FieldKind.BYTES else None
 
     @cached_property
     def fields_by_attr(self) -> dict[str, Field]:
@@ -92,7 +94,7 @@ class FrameLayout:
     @cached_property
     def fixed_bits(self) -> int:
         """Bits before the trailing bytes (or in the whole layout)."""
-        return sum(f.bits for f in self.fields if f.kind is not Kind.BYTES)
+        return sum(f.bits for f in self.fields if f.kind is not FieldKind.BYTES)
 
     @cached_property
     def fixed_size(self) -> int:
@@ -106,7 +108,7 @@ class FrameLayout:
         start = 0
         total = self.fixed_size * 8
         for f in self.fields:
-            if f.kind is Kind.BYTES:
+            if f.kind is FieldKind.BYTES:
                 break
             shift = start if self.byte_order is ByteOrder.LITTLE else total - start - f.bits
             out.append(Placed(f, start, shift))
@@ -118,13 +120,15 @@ class FrameLayout:
         for position, f in enumerate(self.fields):
             if f.bits <= 0:
                 raise LayoutError(f"{self.name}: field {f.label} has {f.bits} bits")
-            if f.kind is Kind.BYTES and (position != len(self.fields) - 1 or self.fixed_bits % 8):
+            if f.kind is FieldKind.BYTES and (
+                position != len(self.fields) - 1 or self.fixed_bits % 8
+            ):
                 raise LayoutError(f"{self.name}: raw bytes must come last, byte-aligned")
-            if f.kind is Kind.FLOAT32 and f.bits != 32:
+            if f.kind is FieldKind.FLOAT32 and f.bits != 32:
                 raise LayoutError(f"{self.name}: float32 field {f.label} must have 32 bits")
-            if f.kind is Kind.MAPPED and not all(0 <= w < 1 << f.bits for w, _ in f.mapping):
+            if f.kind is FieldKind.MAPPED and not all(0 <= w < 1 << f.bits for w, _ in f.mapping):
                 raise LayoutError(f"{self.name}: a wire value of {f.label} does not fit")
-            if f.kind is Kind.CONSTANT and not 0 <= f.value < 1 << f.bits:
+            if f.kind is FieldKind.CONSTANT and not 0 <= f.value < 1 << f.bits:
                 raise LayoutError(f"{self.name}: constant {f.value} does not fit {f.bits} bits")
             if f.scale is not None and f.scale.encoded_min == f.scale.encoded_max:
                 raise LayoutError(f"{self.name}: field {f.label} has an empty compression")
@@ -141,7 +145,7 @@ class FrameLayout:
         return _decode_source(self), _encode_source(self)
 
     @cached_property
-    def functions(self) -> tuple[Decoder, Encoder]:
+    def functions(self) -> tuple[FrameDecoder, FrameEncoder]:
         """The compiled (decode, encode) pair."""
         self.check()
         namespace = _namespace(self)
@@ -203,7 +207,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
     for attr, value in layout.implied:
         namespace[f"_implied_{attr}"] = value
     for f in layout.fields:
-        if f.kind is Kind.MAPPED:
+        if f.kind is FieldKind.MAPPED:
             # Indexed by the wire value: a tuple is cheaper to index than a dict to query.
             table: list[Any] = [None] * (1 << f.bits)
             for wire, value in f.mapping:
@@ -224,14 +228,14 @@ builder = slot_builder
 """`veronte4x.codegen.slot_builder`, under the name this module has always exported."""
 
 _PER_LAYOUT = re.compile(
-    r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack|_shorter"
+    r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack"
     r"|_implied_\w+|_from_wire_\w+|_to_wire_\w+|_set_\w+|_byte\d+)\b"
 )
 """The names of a decoder's namespace that belong to its layout (the rest are shared)."""
 
 
 def inline_decoder(
-    layout: FrameLayout, suffix: str, indent: int, shorter: Decoder | None = None
+    layout: FrameLayout, suffix: str, indent: int
 ) -> tuple[list[str], dict[str, Any]]:
     """The body of a layout's decoder, to inline into a dispatching function.
 
@@ -244,11 +248,18 @@ def inline_decoder(
     """
     layout.check()
     namespace = _namespace(layout)
-    if shorter is not None:
-        namespace["_shorter"] = shorter
-    source = _decode_source(layout, shorter=shorter is not None)
+    source = _decode_source(layout)
     # Skip the def line and ``n = _len(data)``: the dispatching function has ``n`` already.
     return _renamed(source.splitlines()[2:], namespace, suffix, indent)
+
+
+def refuses(layout: FrameLayout, index: int, value: int) -> bool:
+    """Whether the layout's decoder refuses every frame whose byte ``index`` is ``value``
+    (a constant or a maximum it breaks), from the fields that lie in that byte alone."""
+    fields = [p for p in layout.placed if _byte_index(layout, p) == index]
+    if not fields or any(p.field.kind not in _TABLED for p in fields):
+        return False
+    return _byte_entry(fields, value) is None
 
 
 def _renamed(
@@ -298,7 +309,7 @@ def _skipping(layout: FrameLayout, assume: frozenset[str]) -> tuple[str, list[st
     skipped = {
         f"b{p.start // 8}"
         for p in layout.placed
-        if p.field.kind is Kind.CONSTANT
+        if p.field.kind is FieldKind.CONSTANT
         and p.field.label in assume
         and p.field.bits == 8
         and p.start % 8 == 0
@@ -346,7 +357,6 @@ def _values(layout: FrameLayout) -> list[tuple[str, str]]:
 
 def _decode_source(
     layout: FrameLayout,
-    shorter: bool = False,
     otherwise: str | None = None,
     assume: frozenset[str] = frozenset(),
 ) -> str:
@@ -362,10 +372,8 @@ def _decode_source(
     if otherwise is not None:
         lines = ["def decode(data, excess):"]
     elif layout.tail is None:
-        lines += [f"    if n != {size}:"]
-        if shorter:
-            lines += [f"        if n < {size}:", "            return _shorter(data, excess)"]
         lines += [
+            f"    if n != {size}:",
             f"        if n < {size} or not excess:",
             f"            raise _derr('{{}} bytes; the layout has {size}'.format(n), data)",
             f"        data = data[:{size}]",
@@ -384,7 +392,8 @@ def _decode_source(
         # Every field lies within one byte or is an aligned float32: one unpack reads them all.
         fmt, names = plan if otherwise is None else _skipping(layout, assume)
         unpack = "_unpack" if otherwise is None else "_unpack_exact"
-        lines.append(f"    {', '.join(names)}, = {unpack}(data)  # struct {fmt!r}")
+        unpacked = f"{', '.join(names)}, = " if names else ""  # no names: a length check
+        lines.append(f"    {unpacked}{unpack}(data)  # struct {fmt!r}")
     flag_bytes = _flag_bytes(layout)
     for index, numbers in flag_bytes.items():
         byte = f"b{index}" if plan is not None else f"data[{index}]"
@@ -392,7 +401,9 @@ def _decode_source(
     grouped = {n for numbers in flag_bytes.values() for n in numbers}
     if otherwise is not None:
         for index, (numbers, _) in _byte_tables(layout, assume).items():
-            targets = [f"f{n}" for n in numbers if layout.placed[n].field.kind is not Kind.CONSTANT]
+            targets = [
+                f"f{n}" for n in numbers if layout.placed[n].field.kind is not FieldKind.CONSTANT
+            ]
             body += [
                 f"    t{index} = _byte{index}[b{index}]",
                 f"    if t{index} is None:",
@@ -402,11 +413,11 @@ def _decode_source(
             grouped.update(numbers)
     needs_word = False
     for number, p in enumerate(layout.placed):
-        if p.field.kind is Kind.CONSTANT and p.field.label in assume:
+        if p.field.kind is FieldKind.CONSTANT and p.field.label in assume:
             continue
         if number not in grouped:
             body += _decode_field(layout, number, p, plan is not None)
-            needs_word |= _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING
+            needs_word |= _byte_index(layout, p) is None and p.field.kind is not FieldKind.PADDING
     needs_word &= plan is None
     if needs_word:  # without a tail, data has exactly `size` bytes here
         word = f"data[:{size}]" if layout.tail is not None else "data"
@@ -446,12 +457,14 @@ def _flag_bytes(layout: FrameLayout) -> dict[int, list[int]]:
     by_byte: dict[int, dict[int, int]] = {}
     for number, p in enumerate(layout.placed):
         index = _byte_index(layout, p)
-        if p.field.kind is Kind.BOOL and index is not None:
+        if p.field.kind is FieldKind.BOOL and index is not None:
             by_byte.setdefault(index, {})[p.shift % 8] = number
     return {index: [bits[b] for b in range(8)] for index, bits in by_byte.items() if len(bits) == 8}
 
 
-_TABLED = frozenset({Kind.CONSTANT, Kind.BOOL, Kind.UNSIGNED, Kind.SIGNED, Kind.MAPPED})
+_TABLED = frozenset(
+    {FieldKind.CONSTANT, FieldKind.BOOL, FieldKind.UNSIGNED, FieldKind.SIGNED, FieldKind.MAPPED}
+)
 
 
 def _byte_tables(
@@ -474,7 +487,7 @@ def _byte_tables(
     by_byte: dict[int, list[int]] = {}
     for number, p in enumerate(layout.placed):
         f = p.field
-        if f.kind is Kind.PADDING or (f.kind is Kind.CONSTANT and f.label in assume):
+        if f.kind is FieldKind.PADDING or (f.kind is FieldKind.CONSTANT and f.label in assume):
             continue
         index = _byte_index(layout, p)
         if index is not None and index not in flags:
@@ -494,21 +507,21 @@ def _byte_entry(fields: list[Placed], byte: int) -> tuple[Any, ...] | None:
     for p in fields:
         f = p.field
         raw = byte >> p.shift % 8 & (1 << f.bits) - 1
-        if f.kind is Kind.CONSTANT:
+        if f.kind is FieldKind.CONSTANT:
             if raw != f.value:
                 return None
             continue
-        if f.kind is Kind.BOOL:
+        if f.kind is FieldKind.BOOL:
             values.append(raw == 1)
             continue
-        if f.kind is Kind.MAPPED:
+        if f.kind is FieldKind.MAPPED:
             mapped = dict(f.mapping).get(raw)
             if mapped is None:
                 return None
             values.append(mapped)
             continue
         value: float = raw
-        if f.kind is Kind.SIGNED:
+        if f.kind is FieldKind.SIGNED:
             value = raw - ((raw & 1 << f.bits - 1) << 1)
         if f.maximum is not None and value > f.maximum:
             return None
@@ -523,9 +536,9 @@ def _struct_plan(layout: FrameLayout) -> tuple[str, list[str]] | None:
     aligned float32; None otherwise. Bytes unpack to ``b<index>``, floats to ``f<field>``."""
     floats: dict[int, int] = {}
     for number, p in enumerate(layout.placed):
-        if p.field.kind is Kind.FLOAT32 and p.shift % 8 == 0:
+        if p.field.kind is FieldKind.FLOAT32 and p.shift % 8 == 0:
             floats[p.start // 8] = number
-        elif _byte_index(layout, p) is None and p.field.kind is not Kind.PADDING:
+        elif _byte_index(layout, p) is None and p.field.kind is not FieldKind.PADDING:
             return None
     order = "<" if layout.byte_order is ByteOrder.LITTLE else ">"
     fmt, names, index = order, [], 0
@@ -556,24 +569,24 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -
     raw = _raw(layout, p, unpacked)
     var = f"f{number}"
     label = f.label
-    if f.kind is Kind.PADDING:
+    if f.kind is FieldKind.PADDING:
         return []
-    if f.kind is Kind.CONSTANT:
+    if f.kind is FieldKind.CONSTANT:
         return [
             f"    if {raw} != {f.value}:",
             f"        raise _derr('expected {f.value:#x}, got {{:#x}}'.format({raw}), data, "
             f"'{label}')",
         ]
-    if f.kind is Kind.BOOL:
+    if f.kind is FieldKind.BOOL:
         return [f"    {var} = ({raw}) == 1"]
-    if f.kind is Kind.MAPPED:
+    if f.kind is FieldKind.MAPPED:
         wires = ", ".join(str(wire) for wire, _ in f.mapping)
         return [
             f"    {var} = _from_wire_{f.attr}[{raw}]",
             f"    if {var} is None:",
             f"        raise _derr('{{}} is none of {wires}'.format({raw}), data, '{label}')",
         ]
-    if f.kind is Kind.FLOAT32:
+    if f.kind is FieldKind.FLOAT32:
         if p.shift % 8 == 0:
             offset = p.start // 8
             return [
@@ -584,7 +597,7 @@ def _decode_field(layout: FrameLayout, number: int, p: Placed, unpacked: bool) -
             ]
         return [f"    {var} = _float_from_bits({raw})"]
     lines = [f"    {var} = {raw}"]
-    if f.kind is Kind.SIGNED:
+    if f.kind is FieldKind.SIGNED:
         sign = 1 << (f.bits - 1)
         lines.append(f"    {var} -= ({var} & {sign:#x}) << 1")
     if f.maximum is not None:
@@ -625,10 +638,10 @@ def _encode_function(layout: FrameLayout, name: str, packed: bool) -> str:
         target, shift = (
             ("w", p.shift) if not packed or index is None else (f"b{index}", p.shift % 8)
         )
-        if f.kind is Kind.CONSTANT:
+        if f.kind is FieldKind.CONSTANT:
             constants[target] = constants.get(target, 0) | f.value << shift
-        elif f.kind is not Kind.PADDING:
-            float_var = f"f{number}" if packed and f.kind is Kind.FLOAT32 else None
+        elif f.kind is not FieldKind.PADDING:
+            float_var = f"f{number}" if packed and f.kind is FieldKind.FLOAT32 else None
             body += _encode_field(f, shift, seen_tuples, layout, target, float_var)
     if packed:
         plan = _struct_plan(layout)
@@ -687,7 +700,7 @@ def _encode_field(
         lines.append(f"    v = t_{f.attr}[{f.index}]")
     label = f.label
     place = f" << {shift}" if shift else ""
-    if f.kind is Kind.MAPPED:
+    if f.kind is FieldKind.MAPPED:
         allowed = "one of " + ", ".join(repr(value) for _, value in f.mapping)
         if all(value.__class__ is int for _, value in f.mapping):
             # Integers (a NumPy one too) by value; never a bool or a float equal to one.
@@ -706,7 +719,7 @@ def _encode_field(
             f"        raise _eerr('{label}', v, {allowed!r}) from None",
             f"    {target} |= v{place}",
         ]
-    if f.kind is Kind.BOOL:
+    if f.kind is FieldKind.BOOL:
         return [
             *lines,
             "    if v is not True and v is not False:",
@@ -716,7 +729,7 @@ def _encode_field(
             "        v = b",
             f"    {target} |= v{place}",
         ]
-    if f.kind is Kind.FLOAT32 and float_var is not None:
+    if f.kind is FieldKind.FLOAT32 and float_var is not None:
         return [
             *lines,
             "    if v.__class__ is not _float:",
@@ -728,7 +741,7 @@ def _encode_field(
             "        return encode_bits(m)",
             f"    {float_var} = v",
         ]
-    if f.kind is Kind.FLOAT32:
+    if f.kind is FieldKind.FLOAT32:
         return [
             *lines,
             "    if v.__class__ is not _float:",
@@ -742,7 +755,7 @@ def _encode_field(
             f"        raise _eerr('{label}', v, 'a float within the float32 range') from None",
             f"    {target} |= v{place}",
         ]
-    if f.kind is Kind.SIGNED:
+    if f.kind is FieldKind.SIGNED:
         low, high = -(1 << (f.bits - 1)), (1 << (f.bits - 1)) - 1
     else:
         low, high = 0, (1 << f.bits) - 1
@@ -777,7 +790,7 @@ def _encode_field(
             f"        raise _eerr('{label}', v, {allowed!r})",
             "    v = r",
         ]
-    if f.kind is Kind.SIGNED:
+    if f.kind is FieldKind.SIGNED:
         lines.append(f"    v &= {mask:#x}")
     lines.append(f"    {target} |= v{place}")
     return lines

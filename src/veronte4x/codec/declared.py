@@ -15,11 +15,13 @@ from collections.abc import Sequence
 from typing import Any
 
 from veronte4x.codec.compiler import FrameLayout
-from veronte4x.codec.fields import ByteOrder, Field, Kind, constant
+from veronte4x.codec.fields import ByteOrder, Field, FieldKind, constant
 from veronte4x.codec.messages import Message
 from veronte4x.errors import BytesLike, LayoutError, argument_type_error, check_types, integer
 
-_DECLARABLE = frozenset({Kind.CONSTANT, Kind.PADDING, Kind.UNSIGNED, Kind.SIGNED, Kind.FLOAT32})
+_DECLARABLE = frozenset(
+    {FieldKind.CONSTANT, FieldKind.PADDING, FieldKind.UNSIGNED, FieldKind.SIGNED, FieldKind.FLOAT32}
+)
 
 
 class DeclaredMessage(Message):
@@ -105,7 +107,7 @@ class Layout:
                 raise LayoutError(f"{self.name}: {f.attr!r} is not a valid field name")
             if any(name == f.attr for name, _ in annotations):
                 raise LayoutError(f"{self.name}: field {f.attr!r} is declared twice")
-            numeric = f.kind is Kind.FLOAT32 or f.scale is not None
+            numeric = f.kind is FieldKind.FLOAT32 or f.scale is not None
             annotations.append((f.attr, float if numeric else int))
         cls = dataclasses.make_dataclass(
             self.name,

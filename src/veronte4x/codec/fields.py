@@ -31,7 +31,7 @@ class ByteOrder(enum.Enum):
     BIG = "big"
 
 
-class Kind(enum.Enum):
+class FieldKind(enum.Enum):
     """What a field holds on the wire."""
 
     CONSTANT = "constant"
@@ -42,6 +42,10 @@ class Kind(enum.Enum):
     FLOAT32 = "float32"
     BYTES = "bytes"
     MAPPED = "mapped"
+
+
+Kind = FieldKind
+"""`FieldKind` under its earlier name, kept for code that imports ``veronte4x.codec.Kind``."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,7 +106,7 @@ class Field:
             the field may take.
     """
 
-    kind: Kind
+    kind: FieldKind
     bits: int
     attr: str | None = None
     index: int | None = None
@@ -116,7 +120,7 @@ class Field:
     def __post_init__(self) -> None:
         check_types(
             "Field",
-            ("kind", self.kind, Kind, "a Kind"),
+            ("kind", self.kind, FieldKind, "a FieldKind"),
             ("bits", self.bits, int, "an int"),
             ("attr", self.attr, (str, type(None)), "a str or None"),
             ("index", self.index, _OPTIONAL_INT, "an int or None"),
@@ -153,7 +157,7 @@ def constant(value: int, bits: int = 8, description: str = "", name: str = "cons
         ("description", description, str, "a str"),
         ("name", name, str, "a str"),
     )
-    return Field(Kind.CONSTANT, bits, value=value, description=description, name=name)
+    return Field(FieldKind.CONSTANT, bits, value=value, description=description, name=name)
 
 
 def skip(bits: int) -> Field:
@@ -163,7 +167,7 @@ def skip(bits: int) -> Field:
         TypeError: ``bits`` is not an int.
     """
     check_types("skip", ("bits", bits, int, "an int"))
-    return Field(Kind.PADDING, bits, description="ignored, sent as zeros", name="padding")
+    return Field(FieldKind.PADDING, bits, description="ignored, sent as zeros", name="padding")
 
 
 def _check_integer(
@@ -185,7 +189,7 @@ def unsigned(name: str, bits: int, scale: Linear | None = None, description: str
         TypeError: An argument of the wrong type.
     """
     _check_integer("unsigned", name, bits, scale, description)
-    return Field(Kind.UNSIGNED, bits, name, scale=scale, description=description)
+    return Field(FieldKind.UNSIGNED, bits, name, scale=scale, description=description)
 
 
 def signed(name: str, bits: int, scale: Linear | None = None, description: str = "") -> Field:
@@ -195,7 +199,7 @@ def signed(name: str, bits: int, scale: Linear | None = None, description: str =
         TypeError: An argument of the wrong type.
     """
     _check_integer("signed", name, bits, scale, description)
-    return Field(Kind.SIGNED, bits, name, scale=scale, description=description)
+    return Field(FieldKind.SIGNED, bits, name, scale=scale, description=description)
 
 
 def float32(name: str, description: str = "") -> Field:
@@ -205,4 +209,4 @@ def float32(name: str, description: str = "") -> Field:
         TypeError: An argument of the wrong type.
     """
     check_types("float32", ("name", name, str, "a str"), ("description", description, str, "a str"))
-    return Field(Kind.FLOAT32, 32, name, description=description)
+    return Field(FieldKind.FLOAT32, 32, name, description=description)

@@ -14,7 +14,7 @@ from collections.abc import Callable
 
 from veronte4x.codec import messages as m
 from veronte4x.codec.compiler import FrameLayout
-from veronte4x.codec.fields import ByteOrder, Field, Kind, constant, float32
+from veronte4x.codec.fields import ByteOrder, Field, FieldKind, constant, float32
 from veronte4x.codec.pwm import PWM_COMMANDS, PwmPacking
 
 MANUAL = "Veronte Autopilot 4x Software Manual"
@@ -27,14 +27,14 @@ _FF_HEADER = constant(0xFF, 8, "0xFF header", "header")
 
 
 def _flag(attr: str, description: str, index: int | None = None) -> Field:
-    return Field(Kind.BOOL, 1, attr, index, description=description)
+    return Field(FieldKind.BOOL, 1, attr, index, description=description)
 
 
 _STATUS_BYTES_0_3 = (
     _ARBITRATION,
     _FF_HEADER,
     Field(
-        Kind.UNSIGNED,
+        FieldKind.UNSIGNED,
         7,
         "selected",
         maximum=3,
@@ -86,7 +86,7 @@ SCORE = FrameLayout(
     (
         _ARBITRATION,
         Field(
-            Kind.UNSIGNED,
+            FieldKind.UNSIGNED,
             8,
             "autopilot",
             maximum=3,
@@ -112,7 +112,9 @@ ARBITRATION_VARIABLE = FrameLayout(
     m.ArbitrationVariable,
     (
         _ARBITRATION,
-        Field(Kind.UNSIGNED, 8, "number", maximum=31, description="arbitration variable number"),
+        Field(
+            FieldKind.UNSIGNED, 8, "number", maximum=31, description="arbitration variable number"
+        ),
         float32("value", "arbitration variable value, single-precision float"),
     ),
     source=f"{MANUAL}, section 3.1.4 Arbitration Message (numbers 0..31: at most 32 variables)",
@@ -128,8 +130,10 @@ VERSION_RESPONSE = FrameLayout(
     m.VersionResponse,
     (
         constant(0x01, 8, "message type t_version", "command"),
-        Field(Kind.UNSIGNED, 8, "application_code", description="application code (9 = CEXv2)"),
-        Field(Kind.BYTES, 48, "rest", description="version and the rest, layout not public"),
+        Field(
+            FieldKind.UNSIGNED, 8, "application_code", description="application code (9 = CEXv2)"
+        ),
+        Field(FieldKind.BYTES, 48, "rest", description="version and the rest, layout not public"),
     ),
     source=(
         f"{MANUAL_TABLE}; Embention's public manuals: byte 1 application code, the rest not public"
@@ -151,11 +155,13 @@ ARBITRATION_AND_VERSION: tuple[FrameLayout, ...] = (
 
 def _pwm(packing: PwmPacking) -> FrameLayout:
     values = tuple(
-        Field(Kind.UNSIGNED, 12, "values", i, description=f"channel first_channel + {i}, 0..4095")
+        Field(
+            FieldKind.UNSIGNED, 12, "values", i, description=f"channel first_channel + {i}, 0..4095"
+        )
         for i in range(4)
     )
     command = Field(
-        Kind.MAPPED,
+        FieldKind.MAPPED,
         8,
         "first_channel",
         mapping=tuple((wire, first) for first, wire in PWM_COMMANDS.items()),
@@ -248,7 +254,10 @@ def _opaque(cls: type[m.OpaqueMessage]) -> FrameLayout:
         (
             constant(cls.COMMAND, 8, "message type", "command"),
             Field(
-                Kind.BYTES, 56, "payload", description="payload, layout not public: kept exactly"
+                FieldKind.BYTES,
+                56,
+                "payload",
+                description="payload, layout not public: kept exactly",
             ),
         ),
         source=f"{MANUAL_TABLE}; no public source gives this payload's layout",

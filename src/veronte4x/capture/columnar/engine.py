@@ -34,13 +34,6 @@ from veronte4x.dronecan.reassembler import Problem, ProblemReport
 from veronte4x.errors import DecodeError
 
 
-def decode_columns(
-    frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
-) -> dict[str, pa.Table]:
-    """The tables of a capture's frames (see `veronte4x.capture.read_tables`)."""
-    return decode_into(frames, bus_map, channel).finish()
-
-
 def decode_into(
     frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
 ) -> Tables:

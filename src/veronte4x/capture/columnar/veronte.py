@@ -16,10 +16,11 @@ import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
-from veronte4x.codec import Codec, layouts
+from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
-from veronte4x.codec.fields import ByteOrder, Kind
+from veronte4x.codec.fields import ByteOrder, FieldKind
 from veronte4x.codec.messages import Sender
+from veronte4x.codec.routes import Route
 
 Columns = dict[str, Any]
 
@@ -34,47 +35,63 @@ def targets(
     """Which layout decodes each frame of one sender: an index into `layout_list`, or -1
     where the per-frame decoder must decide (unknown command, too short to tell).
 
-    ``data`` holds each frame's eight first bytes as one little-endian integer.
+    The routing is the codec's route table (`veronte4x.codec.routes`), applied to all the
+    frames at once. ``data`` holds each frame's eight first bytes as one little-endian
+    integer.
     """
-    table = layout_list(codec)
-    index = {id(layout): i for i, layout in enumerate(table)}
+    table = codec.routes
+    index = {id(layout): i for i, layout in enumerate(layout_list(codec))}
     by_command = np.full(256, -1, np.int16)
-    for wire, layout in _by_command(codec).items():
-        by_command[wire] = index[id(layout)]
+    told: list[int] = []  # commands of several routes: told apart below
+    for command in table.commands():
+        group = table.of(command)
+        if len(group) == 1 and group[0].sender is None and group[0].header is None:
+            by_command[command] = index[id(group[0].frame)]
+        else:
+            told.append(command)
     command = (data & np.uint64(0xFF)).astype(np.uint8)
     out = np.where(length > 0, by_command[command], -1).astype(np.int16)
-    version = (command == 1) & (length == 1)
-    out[version] = index[id(layouts.VERSION_REQUEST)]
-    zero = (command == 0) & (length >= 2)
-    header = (data >> np.uint64(8)) & np.uint64(0xFF) == 0xFF
-    if sender is Sender.ARBITER:
-        cex = (length == 4) | ((length == 5) & excess)
-        status = np.where(cex, index[id(layouts.STATUS_CEX)], index[id(layouts.STATUS_4X)])
-        status = np.where((length < 4) | ((length == 5) & ~cex), -1, status)
-        out[zero & header] = status[zero & header]
-        out[zero & ~header] = index[id(layouts.SCORE)]
-    else:
-        out[zero & header] = index[id(layouts.READY)]
-        out[zero & ~header] = index[id(layouts.ARBITRATION_VARIABLE)]
-    out[(command == 0) & (length < 2)] = -1
+    byte1 = (data >> np.uint64(8)) & np.uint64(0xFF)
+    for wire in told:
+        groups = table.for_sender(wire, sender)
+        mine = (command == wire) & (length > 0)
+        out[mine] = -1
+        if any(group[0].header is not None for group in groups):
+            mine &= length >= 2
+        rest = mine.copy()
+        for group in groups:
+            header = group[0].header
+            if header is None:
+                chosen, rest = rest, np.zeros_like(rest)
+            else:
+                chosen = rest & (byte1 == header)
+                rest &= ~chosen
+            out[chosen] = _form(group, length[chosen], excess, index)
+    return out
+
+
+def _form(
+    forms: list[Route], length: npt.NDArray[np.int64], excess: bool, index: dict[int, int]
+) -> npt.NDArray[np.int16]:
+    """The layout of each frame of one message's forms, by length (see
+    `veronte4x.codec.routes`): the largest form it holds, a smaller one only if exact or with
+    ``excess``; -1 otherwise."""
+    out = np.full(len(length), -1, np.int16)
+    above: int | None = None
+    for route in forms:
+        size = route.frame.fixed_size
+        if above is None:
+            fits = length >= size
+        else:
+            fits = (length == size) | ((length > size) & (length < above) & excess)
+        out[fits] = index[id(route.frame)]
+        above = size
     return out
 
 
 def layout_list(codec: Codec) -> list[FrameLayout]:
-    """Every layout this codec decodes with, in a fixed order."""
-    return [*layouts.ARBITRATION_AND_VERSION, *dict.fromkeys(_by_command(codec).values())]
-
-
-def _by_command(codec: Codec) -> dict[int, FrameLayout]:
-    """The layout of each non-zero command byte (command 1: the version response)."""
-    table: dict[int, FrameLayout] = {1: layouts.VERSION_RESPONSE}
-    pwm = layouts.PWM_SET[codec.pwm_packing]
-    for command in sorted({wire for wire, _ in pwm.fields[0].mapping}):
-        table[command] = pwm
-    table.update(layouts.OPAQUE)
-    for declared in codec.layouts:
-        table[declared.command] = declared.frame
-    return table
+    """Every layout this codec decodes with, in the order of its route table."""
+    return codec.routes.layouts()
 
 
 def decode(
@@ -96,22 +113,22 @@ def decode(
     for p in layout.placed:
         f = p.field
         raw = (word >> np.uint64(p.shift)) & np.uint64((1 << f.bits) - 1)
-        if f.kind is Kind.CONSTANT:
+        if f.kind is FieldKind.CONSTANT:
             good &= raw == f.value
-        elif f.kind is Kind.BOOL:
+        elif f.kind is FieldKind.BOOL:
             values[f.label] = raw == 1
-        elif f.kind is Kind.MAPPED:
+        elif f.kind is FieldKind.MAPPED:
             table = np.full(1 << f.bits, -1, np.int64)
             for wire, value in f.mapping:
                 table[wire] = value
             mapped = table[raw]
             good &= mapped >= 0
             values[f.label] = mapped
-        elif f.kind is Kind.FLOAT32:
+        elif f.kind is FieldKind.FLOAT32:
             values[f.label] = raw.astype(np.uint32).view(np.float32)
-        elif f.kind in (Kind.UNSIGNED, Kind.SIGNED):
+        elif f.kind in (FieldKind.UNSIGNED, FieldKind.SIGNED):
             number: np.ndarray = raw
-            if f.kind is Kind.SIGNED:
+            if f.kind is FieldKind.SIGNED:
                 number = raw.astype(np.int64)
                 number = number - ((number >> (f.bits - 1)) & 1) * (1 << f.bits)
             if f.maximum is not None:
