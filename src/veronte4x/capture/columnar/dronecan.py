@@ -26,14 +26,12 @@ from typing import Any
 
 import numpy as np
 import numpy.typing as npt
-import pyarrow as pa
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, Codec
 from veronte4x.dronecan.compiled import bit_runs
-from veronte4x.dronecan.definitions import RAW_COMMAND
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
-from veronte4x.dronecan.schema import Array, Scalar, Struct
+from veronte4x.dronecan.schema import Scalar, Struct
 
 MAX_SESSIONS = 1024
 """The per-frame reassembler's session table (its default ``max_sessions``)."""
@@ -414,30 +412,6 @@ def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
             out[f.name] = scalar(matrix, f.type, offset)
         offset += f.type.bits
     return out
-
-
-def raw_command_items(size: int) -> int | None:
-    """How many int14 items a RawCommand payload of ``size`` bytes holds, or None where the
-    codec refuses that size (tail array optimisation: items while 8 bits remain)."""
-    bits = 8 * size
-    count = 0
-    while bits - count * 14 >= 8:
-        count += 1
-    field = RAW_COMMAND.fields[0].type
-    assert isinstance(field, Array)
-    if count * 14 > bits or count > field.max_size:
-        return None
-    return count
-
-
-def decode_raw_command(matrix: np.ndarray, count: int) -> pa.Array:
-    """RawCommand ``cmd`` lists of ``count`` items for every row."""
-    item = Scalar("int", 14)
-    values = np.zeros((len(matrix), count), np.int64)
-    for i in range(count):
-        values[:, i] = scalar(matrix, item, 14 * i)
-    offsets = np.arange(len(matrix) + 1, dtype=np.int32) * count
-    return pa.ListArray.from_arrays(pa.array(offsets), pa.array(values.ravel().astype(np.int16)))
 
 
 def codec_of(index: int) -> Codec:
