@@ -331,16 +331,20 @@ def transfers(
 
 
 def crc_ok(found: Transfers, which: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
-    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads."""
-    crc = _SEEDS[found.type_index[which]].copy()
+    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads,
+    a byte position at a time over the transfers that long (longest first: a prefix)."""
     sizes = found.offsets[which + 1] - found.offsets[which]
-    starts = found.offsets[which]
-    for position in range(int(sizes.max(initial=0))):
-        active = np.flatnonzero(sizes > position)
-        byte = found.payload[starts[active] + position].astype(np.uint32)
-        value = crc[active]
-        crc[active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
-    computed: npt.NDArray[np.int64] = crc.astype(np.int64)
+    longest = np.argsort(-sizes, kind="stable")
+    sizes, starts = sizes[longest], found.offsets[which][longest]
+    crc = _SEEDS[found.type_index[which][longest]].astype(np.uint32)
+    positions = np.arange(int(sizes.max(initial=0)))
+    counts = np.searchsorted(-sizes, -positions, "left")  # transfers longer than each
+    for position, active in enumerate(counts.tolist()):
+        value = crc[:active]
+        byte = found.payload[starts[:active] + position]
+        crc[:active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
+    computed = np.empty(len(sizes), np.int64)
+    computed[longest] = crc
     return computed
 
 

@@ -27,6 +27,7 @@ becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allo
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from operator import attrgetter
@@ -194,6 +195,11 @@ def veronte_type(f: Field) -> pa.DataType:
 
 def dronecan_specs() -> dict[str, TableSpec]:
     """The table of every DroneCAN type, by class name."""
+    return dict(_dronecan_specs())
+
+
+@functools.cache
+def _dronecan_specs() -> dict[str, TableSpec]:
     specs = {}
     for data_type in DATA_TYPES:
         head: tuple[pa.Field, ...] = (*HEAD, NODE_ID)
