@@ -11,6 +11,10 @@ from hypothesis import strategies as st
 from veronte4x import codec, dronecan
 from veronte4x.capture import BusMap
 from veronte4x.codec import Linear
+from veronte4x.dronecan.codec import BY_CLASS, CODECS, Codec, can_id_base
+from veronte4x.dronecan.crc import crc16
+from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.dronecan.tail import SINGLE_FRAME_MAX, split_payload
 
 DECLARED = codec.Layout(
     5,
@@ -83,6 +87,63 @@ SERVICES = st.one_of(
 )
 
 
+def schema_values(t: Struct | Union | Array | Scalar) -> st.SearchStrategy[Any]:
+    """Plain data (as `veronte4x.dronecan.from_builtin` takes it) of any DSDL type: arrays
+    empty, full or between, every union member, integers at their ends."""
+    if isinstance(t, Struct):
+        return st.fixed_dictionaries({f.name: schema_values(f.type) for f in t.fields if f.name})
+    if isinstance(t, Union):
+        return st.one_of([schema_values(m.type).map(_named(m.name)) for m in t.members])
+    if isinstance(t, Array):
+        items = schema_values(t.item)
+        if not t.dynamic:
+            return st.lists(items, min_size=t.max_size, max_size=t.max_size)
+        return st.one_of(
+            st.just([]),
+            st.lists(items, min_size=t.max_size, max_size=t.max_size),
+            st.lists(items, max_size=min(t.max_size, 8)),
+        )
+    if t.kind == "float":
+        return st.floats(width=32) if t.bits < 64 else st.floats()
+    if t.kind == "bool":
+        return st.booleans()
+    return st.one_of(st.sampled_from((t.low, t.high)), st.integers(t.low, t.high))
+
+
+def _named(name: str) -> Any:
+    return lambda value: {name: value}
+
+
+@st.composite
+def any_payload(draw: st.DrawFn) -> tuple[Codec, bytes]:
+    """A standard type and a payload for it: a value's encoding (saturated), that cut
+    short or lengthened, or any bytes."""
+    found = draw(st.sampled_from(CODECS))
+    data = draw(schema_values(found.data_type.schema))
+    payload = found.encode(dronecan.from_builtin(found.data_type.schema.cls, data), True)
+    change = draw(st.integers(0, 5))
+    if change == 0:
+        payload = draw(st.binary(max_size=min(found.max_payload + 2, 300)))
+    elif change == 1 and payload:
+        payload = payload[: draw(st.integers(0, len(payload) - 1))]
+    elif change == 2:
+        payload += draw(st.binary(min_size=1, max_size=3))
+    return found, payload
+
+
+def transfer_frames(
+    found: Codec, payload: bytes, source: int, destination: int | None, transfer_id: int
+) -> list[tuple[int, bytes, bool]]:
+    """The frames of one transfer of any payload, cut as the encoder cuts them."""
+    can_id = 16 << 24 | can_id_base(found.data_type) | source
+    if destination is not None:
+        can_id |= destination << 8
+    if len(payload) <= SINGLE_FRAME_MAX:
+        return [(can_id, payload + bytes((0xC0 | transfer_id,)), True)]
+    crc = crc16(payload, found.crc_seed)
+    return [(can_id, data, True) for data in split_payload(payload, crc, transfer_id)]
+
+
 ODD_CHANNELS = ("can1\x00", "can1\x7f", "can1\x0b", "can1\x1f", "cän1")
 """Interface names with bytes the column parser leaves to the per-line parser (a control
 character, DEL, white space to ``str.split``, non-ASCII), one character longer than can1."""
@@ -128,25 +189,32 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
             sender = codec.Sender.ARBITER if index == 0 else codec.Sender.AUTOPILOT
             frames.append((ids[index], draw(veronte_payloads(sender)), bus_map.extended))
         elif what <= 6:
-            service = draw(st.integers(0, 4)) == 0
-            message = draw(SERVICES if service else DRONECAN_MESSAGES)
             source = draw(nodes)
-            key = (source, hash(type(message)))
+            if draw(st.booleans()):  # any standard type, any payload
+                found, payload = draw(any_payload())
+                service = found.data_type.kind is not dronecan.TransferKind.MESSAGE
+                key = (source, found.data_type.kind.value << 16 | found.data_type.data_type_id)
+            else:
+                service = draw(st.integers(0, 4)) == 0
+                message = draw(SERVICES if service else DRONECAN_MESSAGES)
+                found, payload = BY_CLASS[type(message)], None
+                key = (source, hash(type(message)))
             tid = tids.get(key, draw(st.integers(0, 31)))
             tid = (tid + draw(st.sampled_from([0, 1, 1, 1, 1, 2]))) % 32
             tids[key] = tid
-            made = dronecan.encode(
-                message,
-                source_node_id=source,
-                transfer_id=tid,
-                destination_node_id=draw(nodes) if service else None,
-            )
-            transfer = [(f.can_id, f.data, True) for f in made]
+            destination = draw(nodes) if service else None
+            if payload is None:
+                made = dronecan.encode(
+                    message, source_node_id=source, transfer_id=tid, destination_node_id=destination
+                )
+                transfer = [(f.can_id, f.data, True) for f in made]
+            else:
+                transfer = transfer_frames(found, payload, source, destination, tid)
             address = draw(st.integers(0, 7))
             if address == 0:  # anonymous (source 0), or a service to node 0: refused
                 mask = 0x7F00 if service and draw(st.booleans()) else 0x7F
                 transfer = [(can_id & ~mask, data, ext) for can_id, data, ext in transfer]
-            fault = draw(st.integers(0, 7))
+            fault = draw(st.integers(0, 9))
             if fault == 1 and transfer:
                 del transfer[draw(st.integers(0, len(transfer) - 1))]
             elif fault == 2 and transfer:
@@ -160,6 +228,14 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
                 flipped = bytearray(data)
                 flipped[draw(st.integers(0, len(data) - 1))] ^= 1 << draw(st.integers(0, 7))
                 transfer[at] = (can_id, bytes(flipped), ext)
+            elif fault == 5 and transfer:  # the toggle bit of one frame flipped
+                at = draw(st.integers(0, len(transfer) - 1))
+                can_id, data, ext = transfer[at]
+                transfer[at] = (can_id, data[:-1] + bytes((data[-1] ^ 0x20,)), ext)
+            elif fault == 6 and transfer:  # one frame cut short
+                at = draw(st.integers(0, len(transfer) - 1))
+                can_id, data, ext = transfer[at]
+                transfer[at] = (can_id, data[: draw(st.integers(0, len(data) - 1))], ext)
             frames += transfer
         elif what == 7:
             frames.append((draw(st.integers(0, 0x7FF)), draw(st.binary(max_size=8)), False))

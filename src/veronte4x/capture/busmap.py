@@ -30,6 +30,7 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 from __future__ import annotations
 
 import enum
+import functools
 import math
 import os
 import sys
@@ -108,8 +109,9 @@ class BusMap:
         return Role.UNKNOWN, None
 
     def codec(self) -> codec.Codec:
-        """A Veronte codec with this bus map's choices."""
-        return codec.Codec(pwm_packing=self.pwm_packing, layouts=self.layouts)
+        """A Veronte codec with this bus map's choices (made once for the same choices: a
+        codec does not change once made, and making one compiles its decoders)."""
+        return _codec(self.pwm_packing, tuple(self.layouts))
 
     @classmethod
     def from_toml(cls, path: str | os.PathLike[str]) -> BusMap:
@@ -350,3 +352,8 @@ def _scale(scale: Any, kind: str, bits: int, where: str) -> codec.Linear:
             "value: give finite decoded values of a smaller range"
         )
     return linear
+
+
+@functools.lru_cache(maxsize=32)
+def _codec(pwm_packing: codec.PwmPacking, layouts: tuple[codec.Layout, ...]) -> codec.Codec:
+    return codec.Codec(pwm_packing=pwm_packing, layouts=layouts)

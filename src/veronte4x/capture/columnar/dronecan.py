@@ -26,14 +26,12 @@ from typing import Any
 
 import numpy as np
 import numpy.typing as npt
-import pyarrow as pa
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, Codec
 from veronte4x.dronecan.compiled import bit_runs
-from veronte4x.dronecan.definitions import RAW_COMMAND
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
-from veronte4x.dronecan.schema import Array, Scalar, Struct
+from veronte4x.dronecan.schema import Scalar, Struct
 
 MAX_SESSIONS = 1024
 """The per-frame reassembler's session table (its default ``max_sessions``)."""
@@ -333,16 +331,20 @@ def transfers(
 
 
 def crc_ok(found: Transfers, which: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
-    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads."""
-    crc = _SEEDS[found.type_index[which]].copy()
+    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads,
+    a byte position at a time over the transfers that long (longest first: a prefix)."""
     sizes = found.offsets[which + 1] - found.offsets[which]
-    starts = found.offsets[which]
-    for position in range(int(sizes.max(initial=0))):
-        active = np.flatnonzero(sizes > position)
-        byte = found.payload[starts[active] + position].astype(np.uint32)
-        value = crc[active]
-        crc[active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
-    computed: npt.NDArray[np.int64] = crc.astype(np.int64)
+    longest = np.argsort(-sizes, kind="stable")
+    sizes, starts = sizes[longest], found.offsets[which][longest]
+    crc = _SEEDS[found.type_index[which][longest]].astype(np.uint32)
+    positions = np.arange(int(sizes.max(initial=0)))
+    counts = np.searchsorted(-sizes, -positions, "left")  # transfers longer than each
+    for position, active in enumerate(counts.tolist()):
+        value = crc[:active]
+        byte = found.payload[starts[:active] + position]
+        crc[:active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
+    computed = np.empty(len(sizes), np.int64)
+    computed[longest] = crc
     return computed
 
 
@@ -414,30 +416,6 @@ def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
             out[f.name] = scalar(matrix, f.type, offset)
         offset += f.type.bits
     return out
-
-
-def raw_command_items(size: int) -> int | None:
-    """How many int14 items a RawCommand payload of ``size`` bytes holds, or None where the
-    codec refuses that size (tail array optimisation: items while 8 bits remain)."""
-    bits = 8 * size
-    count = 0
-    while bits - count * 14 >= 8:
-        count += 1
-    field = RAW_COMMAND.fields[0].type
-    assert isinstance(field, Array)
-    if count * 14 > bits or count > field.max_size:
-        return None
-    return count
-
-
-def decode_raw_command(matrix: np.ndarray, count: int) -> pa.Array:
-    """RawCommand ``cmd`` lists of ``count`` items for every row."""
-    item = Scalar("int", 14)
-    values = np.zeros((len(matrix), count), np.int64)
-    for i in range(count):
-        values[:, i] = scalar(matrix, item, 14 * i)
-    offsets = np.arange(len(matrix) + 1, dtype=np.int32) * count
-    return pa.ListArray.from_arrays(pa.array(offsets), pa.array(values.ravel().astype(np.int16)))
 
 
 def codec_of(index: int) -> Codec:

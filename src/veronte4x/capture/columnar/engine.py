@@ -19,9 +19,9 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap, Role
-from veronte4x.capture.columnar import dronecan, veronte
+from veronte4x.capture.columnar import dronecan, payloads, veronte
 from veronte4x.capture.columnar.frames import FrameColumns
-from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs
+from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs, field_column
 from veronte4x.capture.columnar.tables import SUB, Tables
 from veronte4x.capture.decoder import CaptureDecoder, problem_record
 from veronte4x.capture.frames import BadLine, Frame
@@ -29,7 +29,6 @@ from veronte4x.capture.records import Record
 from veronte4x.codec import Codec
 from veronte4x.codec.messages import Sender
 from veronte4x.dronecan.codec import Codec as DroneCanCodec
-from veronte4x.dronecan.definitions import RAW_COMMAND
 from veronte4x.dronecan.reassembler import Problem, ProblemReport
 from veronte4x.errors import DecodeError
 
@@ -285,30 +284,30 @@ def _decode_type(
     stamp: np.ndarray,
     tables: Tables,
 ) -> list[tuple[int, Record]]:
-    """Decode one type's transfers: by columns where the layout allows, else one by one."""
+    """Decode one type's transfers column-wise; those the serializer refuses one by one
+    (to report its error)."""
     codec = dronecan.codec_of(index)
     schema = codec.data_type.schema
     kind = schema.cls.__name__
-    sizes = found.offsets[which + 1] - found.offsets[which]
+    starts = found.offsets[which]
+    sizes = found.offsets[which + 1] - starts
     fixed = dronecan.fixed_size(schema)
-    left = which
-    if fixed is not None:
+    if fixed is not None:  # every field at one place: read from a matrix of the payloads
         good = which[sizes == fixed]
         matrix = dronecan.payload_matrix(found, good, fixed)
         _add_transfers(frames, found, good, kind, dronecan.decode_fixed(schema, matrix), tables)
         left = which[sizes != fixed]
-    elif schema is RAW_COMMAND:
-        rest = []
-        for size in np.unique(sizes).tolist():
-            group = which[sizes == size]
-            count = dronecan.raw_command_items(size)
-            if count is None:
-                rest.append(group)
-                continue
-            matrix = dronecan.payload_matrix(found, group, size)
-            cmd = dronecan.decode_raw_command(matrix, count)
-            _add_transfers(frames, found, group, kind, {"cmd": cmd}, tables)
-        left = np.concatenate(rest) if rest else which[:0]
+    else:
+        fields, refused = payloads.decode(schema, found.payload, starts, sizes)
+        kept = ~refused
+        if not kept.all():
+            mask = pa.array(kept)
+            fields = {
+                name: value.filter(mask) if isinstance(value, pa.Array) else value[kept]
+                for name, value in fields.items()
+            }
+        _add_transfers(frames, found, which[kept], kind, fields, tables)
+        left = which[refused]
     return [item for t in left.tolist() for item in _one_transfer(frames, found, t, codec, stamp)]
 
 
@@ -327,7 +326,8 @@ def _add_transfers(
     head["node_id"] = source
     head["sender"] = (NODE_SENDER + source).astype(np.int16)
     head["destination_node_id"] = (can_id >> 8) & 0x7F
-    tables.add_columns(kind, frames.order[last] * SUB, head, fields)
+    named = {field_column(name): value for name, value in fields.items()}
+    tables.add_columns(kind, frames.order[last] * SUB, head, named)
 
 
 def _one_transfer(

@@ -14,11 +14,20 @@ A DSDL union (param ``Value``, ``NumericValue``) becomes ``name.type``, the memb
 name, and one nullable column per member with a value: ``name.integer_value`` (int64),
 ``name.real_value`` (float32), ``name.boolean_value`` (uint8), ``name.string_value``
 (binary); ``empty`` has no column.
+
+Every DroneCAN type of the standard set has its table, by the same rules: nested structs
+flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists of Arrow
+structs (``commands`` of ``actuator.ArrayCommand``, enums there as their integers), other
+arrays as lists (``covariance``), ``uint8`` arrays as ``binary``: DSDL v0 has no text
+type, so names and paths (``model_name`` of ``power.BatteryInfo``, ``text`` of
+``debug.LogMessage``) keep their exact bytes. A field named as a head column of its table
+becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from operator import attrgetter
@@ -69,6 +78,8 @@ PROBLEM = (
     pa.field("data", pa.binary()),
 )
 UNKNOWN = (pa.field("detail", pa.string()), pa.field("data", pa.binary()))
+HEAD_NAMES = frozenset(f.name for f in (*HEAD, NODE_ID, DESTINATION))
+"""The head columns of a DroneCAN table."""
 
 
 @dataclass(frozen=True)
@@ -184,13 +195,20 @@ def veronte_type(f: Field) -> pa.DataType:
 
 def dronecan_specs() -> dict[str, TableSpec]:
     """The table of every DroneCAN type, by class name."""
+    return dict(_dronecan_specs())
+
+
+@functools.cache
+def _dronecan_specs() -> dict[str, TableSpec]:
     specs = {}
     for data_type in DATA_TYPES:
         head: tuple[pa.Field, ...] = (*HEAD, NODE_ID)
         if data_type.kind is not TransferKind.MESSAGE:
             head = (*head, DESTINATION)
         kind = data_type.schema.cls.__name__
-        specs[kind] = TableSpec(kind, head, tuple(_struct_columns(data_type.schema, "", ())))
+        columns = _struct_columns(data_type.schema, "", ())
+        named = (dataclasses.replace(c, name=field_column(c.name)) for c in columns)
+        specs[kind] = TableSpec(kind, head, tuple(named))
     return specs
 
 
@@ -206,9 +224,9 @@ def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[
         elif isinstance(t, Union):
             columns += _union_columns(t, name, where)
         elif isinstance(t, Array) and isinstance(t.item, Struct):
-            columns.append(Column(name, pa.list_(_struct_type(t.item)), _items(where)))
+            columns.append(Column(name, pa.list_(struct_type(t.item)), _items(where)))
         elif isinstance(t, Array):
-            columns.append(Column(name, _value_type(t), _path(where)))
+            columns.append(Column(name, value_type(t), _path(where)))
         elif f.enum is not None:
             names = enum_names(f.enum, t.bits)
             columns.append(Column(name, enum_type(names), _enum_index(where), names))
@@ -217,18 +235,24 @@ def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[
     return columns
 
 
-def _struct_type(struct: Struct) -> pa.DataType:
+def field_column(name: str) -> str:
+    """The column of a DroneCAN field: its name, or ``message.`` and its name for a field
+    named as a head column (``node_id`` of ``dynamic_node_id.Allocation``)."""
+    return f"message.{name}" if name in HEAD_NAMES else name
+
+
+def struct_type(struct: Struct) -> pa.DataType:
     """The Arrow struct of the items of an array of structs (enums as their integers)."""
-    return pa.struct([pa.field(f.name, _value_type(f.type)) for f in struct.fields if f.name])
+    return pa.struct([pa.field(f.name, value_type(f.type)) for f in struct.fields if f.name])
 
 
-def _value_type(t: Scalar | Array | Struct | Union) -> pa.DataType:
+def value_type(t: Scalar | Array | Struct | Union) -> pa.DataType:
     if isinstance(t, Struct):
-        return _struct_type(t)
+        return struct_type(t)
     if isinstance(t, Array):
         if t.is_bytes:
             return pa.binary()
-        return pa.list_(_value_type(t.item))
+        return pa.list_(value_type(t.item))
     if isinstance(t, Union):
         raise TypeError(f"{t.name}: a union inside an array has no column type")
     return scalar_type(t)

@@ -80,7 +80,7 @@ class Tables:
                 arrays["channel"] = np.asarray(head["channel"], np.int32)
             elif field.name == "sender":
                 arrays["sender"] = np.asarray(head["sender"], np.int16)
-            elif field.name in head:
+            elif field.name in head and field.name not in names:
                 arrays[field.name] = _arrow(head[field.name], field.type, len(keys))
             else:
                 arrays[field.name] = _arrow(
