@@ -57,6 +57,7 @@ bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_columnar.py
 	$(BIN)/python benchmarks/bench_fleet.py
 	$(BIN)/python benchmarks/bench_dbc.py
+	$(BIN)/python benchmarks/bench_mf4_memory.py
 
 # Not part of check: a sampled mutation run (docs/contributing/mutation.md). Override with
 # e.g. make mutation MUTATION_ARGS="--size 30 --jobs 2".

@@ -25,9 +25,8 @@ from veronte4x.capture.dbc import export_dbc, write_dbc
 from veronte4x.capture.dbc_in import DbcDecoder
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
-from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
-from veronte4x.capture.source import Format, open_frames, read_chunks, resolve
+from veronte4x.capture.source import open_frames, resolve
 from veronte4x.capture.stats import Stats
 from veronte4x.extras import require
 
@@ -73,7 +72,8 @@ def read(
     Args:
         path: candump text (``.log``, ``.txt``, gzipped or not, or any other name whose
             content is candump; ``-`` for standard input), or a format python-can reads
-            (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra).
+            (``.asc``, ``.blf``, ``.csv``, ``.db``, ``.mf4``, ``.trc``; needs the ``can`` extra),
+            or a format registered in `veronte4x.capture.readers.registry`.
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
         dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
@@ -87,11 +87,7 @@ def read(
         OSError: The file cannot be opened.
     """
     source = resolve(path)
-    decoder = CaptureDecoder(bus_map)
-    if source.format is Format.CANDUMP:
-        records = decoder.decode_chunks(read_chunks(source), channel)
-    else:
-        records = decoder.decode(read_with_python_can(source.path, channel))
+    records = source.reader.read_records(source, CaptureDecoder(bus_map), channel)
     dbc = list(dbc)
     return DbcDecoder(dbc).records(records) if dbc else records
 

@@ -19,7 +19,7 @@ from veronte4x.capture.readers.candump import (
     parse_candump,
     parse_line,
 )
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, error_record, transfer_record, veronte_record
 from veronte4x.capture.source import Truncated
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.compiler import FrameDecoder as Decoder
@@ -28,7 +28,6 @@ from veronte4x.dronecan.reassembler import Problem
 from veronte4x.errors import BytesLike, argument_type_error
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
-_new = tuple.__new__  # NamedTuple's own __new__ is a Python function: skip it on hot paths
 
 Route = tuple[Role, int | None, Decoder]
 
@@ -57,7 +56,7 @@ class CaptureDecoder:
         veronte_extended = self.bus_map.extended
         dronecan = self.bus_map.dronecan
         excess = self.bus_map.allow_excess
-        new, dronecan_role = _new, Role.DRONECAN
+        decoded, delivered = veronte_record, transfer_record
         # The reassembler of the latest DroneCAN frame's channel (one lookup per change).
         last_channel, reassembler = None, None
         for item in items:
@@ -72,9 +71,7 @@ class CaptureDecoder:
                         except DecodeError as failure:
                             yield _failed(timestamp, channel, can_id, role, index, data, failure)
                         else:
-                            record = (timestamp, channel, can_id, role, index, None, message,
-                                      None, "", data, None)  # fmt: skip
-                            yield new(Record, record)
+                            yield decoded(timestamp, channel, can_id, role, index, message, data)
                         continue
                     if extended and dronecan:
                         # _dronecan, inlined: no generator per frame.
@@ -86,10 +83,9 @@ class CaptureDecoder:
                         if reassembler.reported != before:
                             yield from self._problems(reassembler, before, channel)
                         if transfer is not None:
-                            delivered = (timestamp, channel, can_id, dronecan_role, None,
-                                         transfer.source_node_id, transfer.message, None, "",
-                                         data, transfer.destination_node_id)  # fmt: skip
-                            yield new(Record, delivered)
+                            yield delivered(timestamp, channel, can_id, transfer.source_node_id,
+                                            transfer.message, data,
+                                            transfer.destination_node_id)  # fmt: skip
                         continue
                 yield self._odd_frame(item)
             else:
@@ -130,7 +126,7 @@ class CaptureDecoder:
         excess = self.bus_map.allow_excess
         unhexlify = binascii.unhexlify
         identifiers = Identifiers()
-        new, dronecan_role = _new, Role.DRONECAN
+        decoded, delivered = veronte_record, transfer_record
         # The interface of the latest frame and its DroneCAN reassembler (or None, made on
         # the first DroneCAN frame): looked up again only when the interface changes.
         name_before, interface, reassembler = b"", "", None
@@ -175,9 +171,8 @@ class CaptureDecoder:
                                     yield _failed(seconds, interface, can_id, role, index, data,
                                                   failure)  # fmt: skip
                                 else:
-                                    record = (seconds, interface, can_id, role, index, None,
-                                              message, None, "", data, None)  # fmt: skip
-                                    yield new(Record, record)
+                                    yield decoded(seconds, interface, can_id, role, index,
+                                                  message, data)  # fmt: skip
                                 continue
                         elif dronecan and len(ident) == 8:
                             try:
@@ -198,13 +193,9 @@ class CaptureDecoder:
                                 if reassembler.reported != before:
                                     yield from self._problems(reassembler, before, interface)
                                 if transfer is not None:
-                                    node = transfer.source_node_id
-                                    message = transfer.message
-                                    target = transfer.destination_node_id
-                                    delivered = (seconds, interface, can_id, dronecan_role,
-                                                 None, node, message, None, "", data,
-                                                 target)  # fmt: skip
-                                    yield new(Record, delivered)
+                                    yield delivered(seconds, interface, can_id,
+                                                    transfer.source_node_id, transfer.message,
+                                                    data, transfer.destination_node_id)  # fmt: skip
                                 continue
                     yield from self._parsed_line(line.decode("ascii"), number, channel)
         except Truncated as cut:
@@ -222,14 +213,14 @@ class CaptureDecoder:
         """The record of a frame that is neither a plain Veronte nor a plain DroneCAN frame:
         an error or remote frame, CAN FD, or a foreign ID."""
         role, index = self.bus_map.role(frame.can_id, frame.extended)
-        base = (frame.timestamp, frame.channel, frame.can_id, role, index, None, None)
+        base = (frame.timestamp, frame.channel, frame.can_id, role, index, None)
         if frame.error:
-            return Record(*base, "error frame", "error frame", frame.data)
+            return error_record(*base, "error frame", "error frame", frame.data)
         if frame.remote:
-            return Record(*base, "remote frame", "remote frame", frame.data)
+            return error_record(*base, "remote frame", "remote frame", frame.data)
         if role is Role.ARBITER or role is Role.AUTOPILOT:
-            return Record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
-        return Record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
+            return error_record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
+        return error_record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
 
     def _reassembler(self, channel: str) -> Reassembler:
         """The reassembler of a channel, made on its first DroneCAN frame."""
@@ -248,10 +239,10 @@ class CaptureDecoder:
     @staticmethod
     def _bad_line(item: BadLine) -> Record:
         if isinstance(item, Truncation):
-            return Record(None, "", 0, Role.UNKNOWN, None, None, None, "truncated", item.reason,
-                          b"")  # fmt: skip
+            return error_record(None, "", 0, Role.UNKNOWN, None, None, "truncated", item.reason,
+                                b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
-        return Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", detail, b"")
+        return error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", detail, b"")
 
 
 def _routes_by_text(
@@ -330,20 +321,20 @@ def _failed(
 ) -> Record:
     """The record of a Veronte frame its codec refused."""
     kind = "unknown command" if isinstance(failure, UnknownCommandError) else "decode error"
-    return Record(timestamp, channel, can_id, role, index, None, None, kind, str(failure), data)
+    return error_record(timestamp, channel, can_id, role, index, None, kind, str(failure), data)
 
 
 def problem_record(report: ProblemReport, channel: str) -> Record:
     """The record of a DroneCAN reassembly problem on a channel; a frame of a data type
     with no codec is undecoded traffic (error None, `foreign_data_type` as its detail)."""
     if report.problem is Problem.UNKNOWN_TYPE:
-        return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
-                      report.can_id & 0x7F or None, None, None, foreign_data_type(report.can_id),
-                      report.data)  # fmt: skip
+        return error_record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                            report.can_id & 0x7F or None, None, foreign_data_type(report.can_id),
+                            report.data)  # fmt: skip
     kind = report.problem.name.lower().replace("_", " ")
     detail = f"{report.problem.value} {report.detail}"
-    return Record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
-                  report.can_id & 0x7F or None, None, kind, detail, report.data)  # fmt: skip
+    return error_record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
+                        report.can_id & 0x7F or None, kind, detail, report.data)  # fmt: skip
 
 
 def foreign_id(can_id: int, extended: bool) -> str:

@@ -1,15 +1,16 @@
-"""Where a capture comes from, decided once: candump text (plain, gzip or standard input) or a
-format python-can reads.
+"""Where a capture comes from, decided once: which format's reader reads it (see
+`veronte4x.capture.readers.registry`), and how candump text is opened (plain, gzip or
+standard input).
 
-Every reader of the package, per-frame and columnar, asks `resolve` and opens through it, so
-that one rule decides how a source is read: by suffix where the suffix says it, by content
-otherwise (a candump file saved as ``flight`` or ``flight.bin`` is still candump), and with a
-`SourceError` naming the path for a directory or a file in no format veronte4x knows.
+Every entry point of the package, per-frame and columnar, asks `resolve` and reads through
+the reader it picks, so that one rule decides how a source is read: by suffix where the
+suffix says it, by content otherwise (a candump file saved as ``flight`` or ``flight.bin``
+is still candump), and with a `SourceError` naming the path for a directory or a file in no
+format veronte4x knows.
 """
 
 from __future__ import annotations
 
-import enum
 import gzip
 import io
 import os
@@ -21,27 +22,14 @@ from dataclasses import dataclass
 from typing import IO, BinaryIO, cast
 
 from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.capture.readers import registry
+from veronte4x.capture.readers.registry import Reader
 from veronte4x.errors import SourceError
 
-CANDUMP_SUFFIXES = (".log", ".txt", ".candump")
-"""File names the native candump parser reads, gzipped (``.gz``) or not."""
-
-PYTHON_CAN_SUFFIXES = (".asc", ".blf", ".csv", ".db", ".mf4", ".trc")
-"""File names python-can's ``LogReader`` reads (needs the ``can`` extra)."""
-
 _GZIP_MAGIC = b"\x1f\x8b"
-_SNIFF_BYTES = 4096
-_SNIFF_LINES = 8
 
 STDIN = "-"
 """The path that stands for candump text on standard input."""
-
-
-class Format(enum.Enum):
-    """How a source is parsed."""
-
-    CANDUMP = "candump"
-    PYTHON_CAN = "python-can"
 
 
 @dataclass(frozen=True, slots=True)
@@ -50,13 +38,18 @@ class Source:
 
     Attributes:
         path: The file's path, or ``-`` for standard input.
-        format: How it is parsed.
+        reader: The format's reader, from `veronte4x.capture.readers.registry.READERS`.
         gzipped: The file is gzip-compressed.
     """
 
     path: str
-    format: Format
+    reader: Reader
     gzipped: bool = False
+
+    @property
+    def format(self) -> str:
+        """The format's name (``candump``, ``python-can``, ``mf4``, ...)."""
+        return self.reader.name
 
     @property
     def is_stdin(self) -> bool:
@@ -67,12 +60,13 @@ class Source:
 def resolve(path: str | os.PathLike[str]) -> Source:
     """Decide how a capture is read from its path, and its content where the suffix is silent.
 
-    candump text (``.log``, ``.txt``, ``.candump``, gzipped or not, or ``-`` for standard
-    input) is parsed natively, gzip recognised by its first bytes whatever the name; ``.asc``,
-    ``.blf``, ``.csv``, ``.db``, ``.mf4`` and ``.trc`` go through python-can's
-    ``LogReader``. A file with any other suffix, or none, is read as candump text if its
-    first lines are candump frames; a pipe without a suffix is read as
-    candump text.
+    The format whose reader claims the suffix (``.gz`` aside) reads it: candump text
+    (``.log``, ``.txt``, ``.candump``) natively; ``.asc``, ``.blf``, ``.csv``, ``.db``,
+    ``.mf4`` and ``.trc`` through python-can (MF4 column-wise through asammdf); see
+    `veronte4x.capture.readers.registry`. A file with any other suffix, or none, is read
+    by the first format that recognises its first bytes (gunzipped if they are gzip's);
+    standard input (``-``) and a pipe are read as candump text, the one format that
+    streams. Gzip is recognised by the file's first bytes, whatever its name.
 
     Raises:
         SourceError: The path is a directory, or a file in no format veronte4x knows.
@@ -80,34 +74,27 @@ def resolve(path: str | os.PathLike[str]) -> Source:
     """
     name = os.fspath(path)
     if name == STDIN:
-        return Source(name, Format.CANDUMP, _stdin_is_gzip())
+        return Source(name, registry.streaming(), _stdin_is_gzip())
     if os.path.isdir(name):
         raise SourceError(f"{name} is a directory: give a capture file")
-    lower = name.lower()
-    gzipped = lower.endswith(".gz")
-    stem = lower[:-3] if gzipped else lower
-    if stem.endswith(CANDUMP_SUFFIXES):
-        if os.path.isfile(name):  # its first bytes say whether it is gzip, not its name
-            with open(name, "rb") as file:
-                gzipped = file.read(len(_GZIP_MAGIC)) == _GZIP_MAGIC
-        return Source(name, Format.CANDUMP, gzipped)
-    if stem.endswith(PYTHON_CAN_SUFFIXES):
-        return Source(name, Format.PYTHON_CAN, gzipped)
+    head = b""
+    if os.path.isfile(name):
+        with open(name, "rb") as file:
+            head = file.read(registry.SNIFF_BYTES)
+    gzipped = head.startswith(_GZIP_MAGIC) or (not head and name.lower().endswith(".gz"))
+    reader = registry.by_suffix(name)
+    if reader is not None:
+        return Source(name, reader, gzipped)
     if not os.path.isfile(name):
-        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is candump text,
-        # the one format that streams. A missing file fails when it is opened.
-        return Source(name, Format.CANDUMP, gzipped)
-    with open(name, "rb") as file:
-        head = file.read(_SNIFF_BYTES)
-    gzipped = head.startswith(_GZIP_MAGIC)
-    if gzipped:
-        head = _gunzip_head(name)
-    if _is_candump(head):
-        return Source(name, Format.CANDUMP, gzipped)
-    known = ", ".join(CANDUMP_SUFFIXES + PYTHON_CAN_SUFFIXES)
+        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is read by the
+        # format that streams. A missing file fails when it is opened.
+        return Source(name, registry.streaming(), gzipped)
+    reader = registry.by_content(_gunzip_head(name) if gzipped else head)
+    if reader is not None:
+        return Source(name, reader, gzipped)
     raise SourceError(
-        f"{name}: not candump text, and its suffix is none of {known}: convert it, or rename "
-        "it to the suffix of its format"
+        f"{name}: not candump text, and its suffix is none of {registry.known_suffixes()}: "
+        "convert it, or rename it to the suffix of its format"
     )
 
 
@@ -123,27 +110,14 @@ def _gunzip_head(name: str) -> bytes:
     out = b""
     try:
         with gzip.open(name, "rb") as file:
-            while len(out) < _SNIFF_BYTES:
-                chunk = file.read(_SNIFF_BYTES - len(out))
+            while len(out) < registry.SNIFF_BYTES:
+                chunk = file.read(registry.SNIFF_BYTES - len(out))
                 if not chunk:
                     break
                 out += chunk
     except (EOFError, OSError, zlib.error):
         pass
     return out
-
-
-def _is_candump(head: bytes) -> bool:
-    """Whether most of the first complete lines of a file are candump frames (a capture may
-    start with a bad line; other text or binary data has none or few)."""
-    from veronte4x.capture.readers.candump import parse_line
-
-    lines = head.decode("utf-8", "replace").splitlines()
-    if len(head) == _SNIFF_BYTES and len(lines) > 1:
-        lines.pop()  # cut by the sniff, not by the file
-    numbered = [(n, line) for n, line in enumerate(lines, 1) if line.strip()][:_SNIFF_LINES]
-    frames = sum(isinstance(parse_line(text, n), Frame) for n, text in numbered)
-    return frames * 2 > len(numbered)
 
 
 class Truncated(SourceError):
@@ -226,10 +200,11 @@ def open_lines(source: Source) -> Iterator[Iterator[str]]:
     """Open candump text as lines; gzip text that ends early raises `Truncated` after its
     last whole line."""
     with open_text(source) as text:
-        yield _until_truncated(text, source.path) if source.gzipped else text
+        yield until_truncated(text, source.path) if source.gzipped else text
 
 
-def _until_truncated(lines: IO[str], path: str) -> Iterator[str]:
+def until_truncated(lines: IO[str], path: str) -> Iterator[str]:
+    """The lines of gzip text; `Truncated` after the last whole one where the data ends early."""
     number = 0
     try:
         for number, line in enumerate(lines, 1):  # noqa: B007 - the count is read after
@@ -252,18 +227,4 @@ def open_frames(
         MissingExtraError: The format needs python-can and it is not installed.
     """
     source = resolve(path)
-    if source.format is Format.CANDUMP:
-        return _candump_frames(source, channel)
-    from veronte4x.capture.readers.pythoncan import read_with_python_can
-
-    return read_with_python_can(source.path, channel)
-
-
-def _candump_frames(source: Source, channel: str | None) -> Iterator[Frame | BadLine]:
-    from veronte4x.capture.readers.candump import parse_candump
-
-    with open_lines(source) as lines:
-        try:
-            yield from parse_candump(lines, channel)
-        except Truncated as cut:
-            yield cut.bad_line()
+    return source.reader.open_frames(source, channel)

@@ -2,11 +2,12 @@
 with the file: the streaming side of `veronte4x.capture.columnar.sources`.
 
 The batches, joined, are the frames `sources.read_frames` gives for the whole file, with the
-same positions: candump text is cut at line breaks into blocks parsed column-wise (lines
-numbered as the per-frame reader numbers them, lone carriage returns included), and a gzip
-file that ends early is read on line by line from where the blocks stopped, as
-`read_frames` reads it. Formats python-can reads go message by message; MF4 is read whole
-(asammdf reads its arrays at once) and then cut.
+same positions. Each format is read by the ``batches`` of its reader in
+`veronte4x.capture.readers.registry`, or its frames cut into batches: candump text is cut
+at line breaks into blocks parsed column-wise here (lines numbered as the per-frame reader
+numbers them, lone carriage returns included), and a gzip file that ends early is read on
+line by line from where the blocks stopped, as `read_frames` reads it; MF4 is read in chunks
+of records (`veronte4x.capture.columnar.mf4`); other formats go frame by frame.
 """
 
 from __future__ import annotations
@@ -25,10 +26,10 @@ from typing import BinaryIO
 
 from veronte4x.capture.columnar.candump import parse_text
 from veronte4x.capture.columnar.frames import FrameColumns, from_frames
-from veronte4x.capture.columnar.sources import read_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
-from veronte4x.capture.source import Format, Source, Truncated, open_lines, resolve
+from veronte4x.capture.readers.registry import load
+from veronte4x.capture.source import Source, Truncated, open_lines, resolve
 
 BATCH_BYTES = 1 << 22
 """Bytes of candump text decoded at once."""
@@ -61,22 +62,21 @@ def read_batches(
         ImportError: The format needs python-can (or asammdf) and it is not installed.
     """
     source = resolve(path)
-    if source.format is Format.CANDUMP:
-        return _candump(source, batch_bytes, batch_frames)
-    if source.path.lower().endswith(".mf4"):
-        return _cut(read_frames(source.path), batch_frames)
-    return _python_can(source.path, batch_frames)
+    if source.reader.batches is not None:
+        batches: Iterator[Batch] = load(source.reader.batches)(source, batch_bytes, batch_frames)
+        return batches
+    return _frames(source, batch_frames)
 
 
-def _python_can(path: str, batch_frames: int) -> Iterator[Batch]:
-    """Opened on the first batch, so that one thread opens, reads and closes the file
-    (python-can's SQLite reader works only in the thread that opened it)."""
-    from veronte4x.capture.readers.pythoncan import read_with_python_can
+def _frames(source: Source, batch_frames: int) -> Iterator[Batch]:
+    """The reader's frames, cut into batches. Opened on the first batch, so that one thread
+    opens, reads and closes the file (python-can's SQLite reader works only in the thread
+    that opened it)."""
+    yield from _items(enumerate(source.reader.open_frames(source), 1), batch_frames)
 
-    yield from _items(enumerate(read_with_python_can(path), 1), batch_frames)
 
-
-def _candump(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Batch]:
+def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Batch]:
+    """candump text in blocks parsed column-wise, the reader registry's ``batches``."""
     line = 1
     with _open_raw(source) as raw:
         stream: BinaryIO = gzip.GzipFile(fileobj=raw) if source.gzipped else raw  # type: ignore[assignment]
@@ -160,14 +160,6 @@ def _items(items: Iterable[tuple[int, Frame | BadLine]], batch_frames: int) -> I
         yield Batch(from_frames(chunk), None)
 
 
-def _cut(frames: FrameColumns, batch_frames: int) -> Iterator[Batch]:
-    from veronte4x.capture.columnar.stream import split
-
-    sizes = [batch_frames] * (len(frames) // max(batch_frames, 1))
-    for part in split(frames, sizes):
-        yield Batch(part, None)
-
-
 def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
     """The batches, each read on a thread while the one before it is decoded."""
     with ThreadPoolExecutor(1) as thread:
@@ -182,5 +174,5 @@ def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
             with contextlib.suppress(Exception):
                 coming.result()
             close = getattr(batches, "close", None)
-            if close is not None:  # in the thread that read them (see _python_can)
+            if close is not None:  # in the thread that read them (see _frames)
                 thread.submit(close).result()

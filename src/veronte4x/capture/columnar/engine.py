@@ -18,14 +18,14 @@ import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
-from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import dronecan, payloads, veronte
 from veronte4x.capture.columnar.frames import FrameColumns
 from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs, field_column
 from veronte4x.capture.columnar.tables import SUB, Tables
 from veronte4x.capture.decoder import CaptureDecoder, problem_record
 from veronte4x.capture.frames import BadLine, Frame
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, transfer_record
 from veronte4x.codec import Codec
 from veronte4x.codec.messages import Sender
 from veronte4x.dronecan.codec import Codec as DroneCanCodec
@@ -350,16 +350,12 @@ def _one_transfer(
             Problem.BAD_PAYLOAD, can_id, payload, float(stamp[first]), str(error)
         )
         return [(key, problem_record(report, channel))]
-    record = Record(
+    record = transfer_record(
         float(frames.timestamp[last]) if frames.has_time[last] else None,
         channel,
         can_id,
-        Role.DRONECAN,
-        None,
         can_id & 0x7F,
         message,
-        None,
-        "",
         frames.data[last, : frames.length[last]].tobytes(),
         (can_id >> 8) & 0x7F if can_id & 0x80 else None,
     )

@@ -24,8 +24,15 @@ from __future__ import annotations
 import datetime as _dt
 import math
 from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING
 
 from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.readers.registry import SNIFF_BYTES
+
+if TYPE_CHECKING:
+    from veronte4x.capture.decoder import CaptureDecoder
+    from veronte4x.capture.records import Record
+    from veronte4x.capture.source import Source
 
 CAN_ERR_FLAG = 0x2000_0000
 """Error-frame flag of a SocketCAN identifier (linux/can.h)."""
@@ -50,6 +57,39 @@ class Identifiers(dict[str | bytes, int]):
         if len(self) < _MAX_IDENTIFIERS:
             self[ident] = can_id
         return can_id
+
+
+def frames(source: Source) -> Iterator[Frame | BadLine]:
+    """The frames of candump text (a file, gzip or not, or standard input), the reader
+    registry's ``frames``; a `Truncation` last where gzip data ends early."""
+    from veronte4x.capture.source import Truncated, open_lines
+
+    with open_lines(source) as lines:
+        try:
+            yield from parse_candump(lines)
+        except Truncated as cut:
+            yield cut.bad_line()
+
+
+def records(source: Source, decoder: CaptureDecoder, channel: str | None) -> Iterator[Record]:
+    """The records of candump text, parsed as bytes (`CaptureDecoder.decode_chunks`)."""
+    from veronte4x.capture.source import read_chunks
+
+    return decoder.decode_chunks(read_chunks(source), channel)
+
+
+_SNIFF_LINES = 8
+
+
+def sniff(head: bytes) -> bool:
+    """Whether most of the first complete lines of a file are candump frames (a capture may
+    start with a bad line; other text or binary data has none or few)."""
+    lines = head.decode("utf-8", "replace").splitlines()
+    if len(head) == SNIFF_BYTES and len(lines) > 1:
+        lines.pop()  # cut by the sniff, not by the file
+    numbered = [(n, line) for n, line in enumerate(lines, 1) if line.strip()][:_SNIFF_LINES]
+    found = sum(isinstance(parse_line(text, n), Frame) for n, text in numbered)
+    return found * 2 > len(numbered)
 
 
 def parse_candump(

@@ -15,11 +15,14 @@ import os
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.errors import SourceError
 from veronte4x.extras import require
+
+if TYPE_CHECKING:
+    from veronte4x.capture.source import Source
 
 _NOT_DAMAGE = (ImportError, FileNotFoundError, PermissionError, IsADirectoryError)
 """Errors that say something other than a damaged file: passed on as they are."""
@@ -38,6 +41,11 @@ def frame_from_message(message: Any) -> Frame:
         message.is_fd,
         message.is_error_frame,
     )
+
+
+def frames(source: Source) -> Iterator[Frame | BadLine]:
+    """The frames of a file python-can reads: the reader registry's ``frames``."""
+    return read_with_python_can(source.path)
 
 
 def read_with_python_can(
