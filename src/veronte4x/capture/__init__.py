@@ -28,6 +28,7 @@ from veronte4x.capture.readers.pythoncan import read_with_python_can
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import Format, open_frames, read_chunks, resolve
 from veronte4x.capture.stats import Stats
+from veronte4x.dronecan.typeset import TypeSet
 from veronte4x.extras import require
 
 if TYPE_CHECKING:
@@ -65,6 +66,7 @@ def read(
     bus_map: BusMap | None = None,
     channel: str | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
+    types: TypeSet | None = None,
 ) -> Iterator[Record]:
     """Stream the decoded records of a capture file.
 
@@ -76,6 +78,10 @@ def read(
         channel: Keep only this interface's frames.
         dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
             decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows, or
@@ -84,6 +90,7 @@ def read(
             installed.
         OSError: The file cannot be opened.
     """
+    bus_map = (bus_map or BusMap()).with_types(types)
     source = resolve(path)
     decoder = CaptureDecoder(bus_map)
     if source.format is Format.CANDUMP:
@@ -109,6 +116,7 @@ def read_tables(
     relative_time: bool = False,
     progress: bool | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
+    types: TypeSet | None = None,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -137,6 +145,10 @@ def read_tables(
         dbc: DBC files: the ``unknown`` rows on a CAN ID one of them knows become tables
             of their own, one per DBC message, a column per signal with its unit (the
             ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -155,6 +167,7 @@ def read_tables(
         ['unknown command']
     """
     dbc = list(dbc)
+    bus_map = (bus_map or BusMap()).with_types(types)
     decoder = DbcDecoder(dbc) if dbc else None
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time, progress
@@ -163,12 +176,14 @@ def read_tables(
 
 
 def tables_from_records(
-    records: Iterable[Record], bus_map: BusMap | None = None
+    records: Iterable[Record], bus_map: BusMap | None = None, types: TypeSet | None = None
 ) -> dict[str, pyarrow.Table]:
     """The tables of `read_tables` from records decoded one by one (a live bus, `read`).
 
-    Rows keep the order of the records. Needs the ``arrow`` extra.
+    Rows keep the order of the records. Needs the ``arrow`` extra. ``types``: the DroneCAN
+    type set the records were decoded with, as in `read`.
     """
+    bus_map = (bus_map or BusMap()).with_types(types)
     tables: dict[str, pyarrow.Table] = _columnar().tables_from_records(records, bus_map)
     return tables
 
@@ -180,6 +195,7 @@ def to_parquet(
     client: Any = None,
     progress: bool | None = None,
     channel: str | None = None,
+    types: TypeSet | None = None,
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -205,6 +221,10 @@ def to_parquet(
         progress: Show a progress bar (tqdm's, in a terminal or a notebook); None shows
             it when standard error is a terminal or in a notebook.
         channel: Keep only this interface's frames.
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added). Dask workers load the same DSDL directories, which they must see.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -218,6 +238,7 @@ def to_parquet(
     require("pyarrow.parquet", "parquet", "writing Parquet")
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
+    bus_map = (bus_map or BusMap()).with_types(types)
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
     return summary
 

@@ -27,14 +27,17 @@ from __future__ import annotations
 import enum
 import math
 import struct
+import weakref
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import OrderedDict, deque
+from collections.abc import Mapping
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
 from veronte4x.dronecan.compiled import SlowPath
 from veronte4x.dronecan.transfer import Transfer
+from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 TRANSFER_ID_TIMEOUT = 2.0
@@ -175,12 +178,25 @@ def _shared(codec: Codec) -> tuple[Any, ...]:
 
 
 _new_tuple = tuple.__new__
-_MESSAGES = {dtid: _shared(c) for (kind, dtid), c in BY_ID.items() if kind is TransferKind.MESSAGE}
-_SERVICES = {
-    dtid << 1 | (kind is TransferKind.REQUEST): _shared(c)
-    for (kind, dtid), c in BY_ID.items()
-    if kind is not TransferKind.MESSAGE
-}
+
+
+def _session_types(
+    by_id: Mapping[tuple[TransferKind, int], Codec],
+) -> tuple[dict[int, tuple[Any, ...]], dict[int, tuple[Any, ...]]]:
+    """What the sessions of each message type id and each service key share."""
+    messages = {
+        dtid: _shared(c) for (kind, dtid), c in by_id.items() if kind is TransferKind.MESSAGE
+    }
+    services = {
+        dtid << 1 | (kind is TransferKind.REQUEST): _shared(c)
+        for (kind, dtid), c in by_id.items()
+        if kind is not TransferKind.MESSAGE
+    }
+    return messages, services
+
+
+_STANDARD_TYPES = _session_types(BY_ID)
+_SESSION_TYPES: weakref.WeakKeyDictionary[TypeSet, Any] = weakref.WeakKeyDictionary()
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 _FRAME_ERRORS = (struct.error, SlowPath)  # what a generated single-frame decoder raises
 
@@ -206,6 +222,8 @@ class Reassembler:
             then the one whose latest transfer began first. Memory is bounded by this times
             the largest payload (378 B).
         max_reports: How many recent `ProblemReport` entries `problems` keeps.
+        types: The DroneCAN types to decode (`TypeSet`); None for the default set
+            (the standard one, plus what `veronte4x.dronecan.load_dsdl` added).
 
     Attributes:
         counts: Number of each `Problem` so far.
@@ -220,7 +238,17 @@ class Reassembler:
         transfer_id_timeout: float = TRANSFER_ID_TIMEOUT,
         max_sessions: int = 1024,
         max_reports: int = 256,
+        types: TypeSet | None = None,
     ) -> None:
+        types = resolve(types, "Reassembler")
+        if types is TypeSet.standard():
+            self._messages, self._services = _STANDARD_TYPES
+        else:
+            found = _SESSION_TYPES.get(types)
+            if found is None:
+                found = _SESSION_TYPES[types] = _session_types(types.by_id)
+            self._messages, self._services = found
+        self.types = types
         if not isinstance(transfer_id_timeout, (int, float)) or isinstance(
             transfer_id_timeout, bool
         ):
@@ -355,12 +383,12 @@ class Reassembler:
             return None
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = self._services.get((can_id >> 15) & 0x1FF)
             if not can_id & 0x7F or not can_id & 0x7F00:
                 self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
                 return None
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = self._messages.get((can_id >> 8) & 0xFFFF)
         else:
             if tail & 0xC0 != 0xC0:
                 self._report(
@@ -391,12 +419,12 @@ class Reassembler:
             return self._feed(can_id, data, timestamp)
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF)
+            shared = self._services.get((can_id >> 15) & 0x1FF)
             destination: int | None = (can_id >> 8) & 0x7F
             if not destination or not can_id & 0x7F:
                 return self._feed(can_id, data, timestamp)
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF)
+            shared = self._messages.get((can_id >> 8) & 0xFFFF)
             destination = None
         else:
             return self._feed(can_id, data, timestamp)
