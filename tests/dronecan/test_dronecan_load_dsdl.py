@@ -107,6 +107,32 @@ def test_generated_classes_names_enums_and_union_members() -> None:
     assert repr(TYPES).startswith("TypeSet(85 types, ")
 
 
+def test_text_fields_follow_the_dsdl() -> None:
+    from veronte4x.capture.readable import TEXT_FIELDS, readable_fields
+
+    standard = TypeSet.standard().text_fields
+    vendor = {cls.__name__: a for cls, a in TYPES.text_fields.items() if cls not in standard}
+    assert vendor == {
+        "Telemetry": {"name"},
+        "ReadingLabel": {"value"},
+        "SetGainResponse": {"message"},
+    }
+    assert readable_fields(_telemetry())["name"] == "front left"
+    assert readable_fields(_telemetry())["reading.value"] == "rpm"
+    assert {
+        ("GetNodeInfoResponse", "name"),
+        ("GetSetRequest", "name"),
+        ("GetSetResponse", "name"),
+        ("StringValue", "value"),
+        ("Path", "path"),
+        ("BeginFirmwareUpdateResponse", "optional_error_message"),
+        ("LogMessage", "text"),
+        ("LogMessage", "source"),
+        ("BatteryInfo", "model_name"),
+    } <= TEXT_FIELDS
+    assert not {("FileReadResponse", "data"), ("HardwareVersion", "unique_id")} & TEXT_FIELDS
+
+
 def test_generated_source_is_in_linecache() -> None:
     import inspect
 

@@ -17,6 +17,7 @@ import linecache
 import os
 import sys
 import types as _types
+import weakref
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -28,10 +29,16 @@ from veronte4x.dronecan.codec import _codec as make_codec
 from veronte4x.dronecan.definitions import DataType
 from veronte4x.dronecan.generate import keys, module_source, plan
 from veronte4x.dronecan.parser import Definition, DsdlError, check_references, parse_namespaces
-from veronte4x.dronecan.types import data_types, standard_definitions
+from veronte4x.dronecan.types import data_types, standard_definitions, text_attributes
 from veronte4x.errors import argument_type_error
 
 _serial = itertools.count(1)
+_TEXT: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
+
+
+def text_fields(cls: type) -> frozenset[str]:
+    """The attributes of a DroneCAN class (of any type set) that hold text."""
+    return _TEXT.get(cls, frozenset())
 
 
 class TypeSet:
@@ -48,6 +55,8 @@ class TypeSet:
         classes: Class of each key (full name, ``.Request``/``.Response`` for a service).
         roots: The vendor root namespace directories loaded, in order.
         definitions: Every parsed definition, by full name.
+        text_fields: The attributes of each class that hold text
+            (`veronte4x.dronecan.types.is_text`).
     """
 
     def __init__(
@@ -73,6 +82,10 @@ class TypeSet:
         self.by_id: Mapping[tuple[TransferKind, int], Codec] = _types.MappingProxyType(
             {(c.data_type.kind, c.data_type.data_type_id): c for c in codecs}
         )
+        self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(
+            text_attributes(definitions, classes, members)
+        )
+        _TEXT.update(self.text_fields)
 
     @classmethod
     def standard(cls) -> TypeSet:
