@@ -101,6 +101,9 @@ def test_generated_classes_names_enums_and_union_members() -> None:
     assert type(telemetry.reading).__name__ == "ReadingLabel"
     assert type(telemetry.timestamp) is v4.standard.Timestamp  # a standard nested type
     assert telemetry.cells[1].ok is False
+    html = telemetry._repr_html_()  # veronte4x.display.HtmlDisplay, as the standard classes
+    assert "<td>name</td><td>front left</td>" in html
+    assert "<td>state</td><td>FAULT</td>" in html
     assert TYPES["com.example.SetGain.Request"].__name__ == "SetGainRequest"
     assert "com.example.motor.Telemetry" in TYPES
     assert "com.example.motor.Telemetry" not in TypeSet.standard()
@@ -137,7 +140,7 @@ def test_generated_source_is_in_linecache() -> None:
     import inspect
 
     source = inspect.getsource(TYPES["com.example.motor.Telemetry"])
-    assert source.startswith("@dataclass(frozen=True, slots=True)\nclass Telemetry:")
+    assert source.startswith("@dataclass(frozen=True, slots=True)\nclass Telemetry(HtmlDisplay):")
     assert "message 20990" in source
 
 
