@@ -231,6 +231,7 @@ class Reassembler:
         reported: Number of problem reports so far; the reports of one `feed` are the
             last ``reported - before`` entries of `problems` (up to its length).
         transfers: Number of transfers delivered.
+        types: The `TypeSet` it decodes with.
     """
 
     def __init__(
