@@ -28,6 +28,7 @@ from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames, resolve
 from veronte4x.capture.stats import Stats
+from veronte4x.dronecan.typeset import TypeSet
 from veronte4x.extras import require
 
 if TYPE_CHECKING:
@@ -66,6 +67,7 @@ def read(
     bus_map: BusMap | None = None,
     channel: str | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
+    types: TypeSet | None = None,
 ) -> Iterator[Record]:
     """Stream the decoded records of a capture file.
 
@@ -78,6 +80,10 @@ def read(
         channel: Keep only this interface's frames.
         dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
             decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows, or
@@ -86,6 +92,7 @@ def read(
             installed.
         OSError: The file cannot be opened.
     """
+    bus_map = (bus_map or BusMap()).with_types(types)
     source = resolve(path)
     records = source.reader.read_records(source, CaptureDecoder(bus_map), channel)
     dbc = list(dbc)
@@ -107,6 +114,7 @@ def read_tables(
     relative_time: bool = False,
     progress: bool | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
+    types: TypeSet | None = None,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -135,6 +143,10 @@ def read_tables(
         dbc: DBC files: the ``unknown`` rows on a CAN ID one of them knows become tables
             of their own, one per DBC message, a column per signal with its unit (the
             ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -153,6 +165,7 @@ def read_tables(
         ['unknown command']
     """
     dbc = list(dbc)
+    bus_map = (bus_map or BusMap()).with_types(types)
     decoder = DbcDecoder(dbc) if dbc else None
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time, progress
@@ -161,12 +174,14 @@ def read_tables(
 
 
 def tables_from_records(
-    records: Iterable[Record], bus_map: BusMap | None = None
+    records: Iterable[Record], bus_map: BusMap | None = None, types: TypeSet | None = None
 ) -> dict[str, pyarrow.Table]:
     """The tables of `read_tables` from records decoded one by one (a live bus, `read`).
 
-    Rows keep the order of the records. Needs the ``arrow`` extra.
+    Rows keep the order of the records. Needs the ``arrow`` extra. ``types``: the DroneCAN
+    type set the records were decoded with, as in `read`.
     """
+    bus_map = (bus_map or BusMap()).with_types(types)
     tables: dict[str, pyarrow.Table] = _columnar().tables_from_records(records, bus_map)
     return tables
 
@@ -178,6 +193,7 @@ def to_parquet(
     client: Any = None,
     progress: bool | None = None,
     channel: str | None = None,
+    types: TypeSet | None = None,
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -203,6 +219,10 @@ def to_parquet(
         progress: Show a progress bar (tqdm's, in a terminal or a notebook); None shows
             it when standard error is a terminal or in a notebook.
         channel: Keep only this interface's frames.
+        types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
+            ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
+            the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
+            added). Dask workers load the same DSDL directories, which they must see.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -216,6 +236,7 @@ def to_parquet(
     require("pyarrow.parquet", "parquet", "writing Parquet")
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
+    bus_map = (bus_map or BusMap()).with_types(types)
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
     return summary
 

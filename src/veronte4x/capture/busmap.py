@@ -29,6 +29,7 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import functools
 import math
@@ -40,7 +41,8 @@ from types import MappingProxyType
 from typing import Any
 
 from veronte4x import codec
-from veronte4x.errors import Veronte4xError
+from veronte4x.dronecan.typeset import TypeSet
+from veronte4x.errors import Veronte4xError, argument_type_error
 from veronte4x.extras import require
 
 AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external")
@@ -72,6 +74,9 @@ class BusMap:
         allow_excess: Ignore bytes past a layout instead of reporting an error.
         layouts: Declared layouts for the commands whose payload is not public.
         dronecan: Decode the other 29-bit frames as DroneCAN.
+        dronecan_types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`);
+            None for the default set (the standard one, plus what
+            `veronte4x.dronecan.load_dsdl` added).
     """
 
     arbiter_id: int = 255
@@ -81,6 +86,7 @@ class BusMap:
     allow_excess: bool = False
     layouts: tuple[codec.Layout, ...] = ()
     dronecan: bool = True
+    dronecan_types: TypeSet | None = None
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )
@@ -107,6 +113,14 @@ class BusMap:
         if extended and self.dronecan:
             return Role.DRONECAN, None
         return Role.UNKNOWN, None
+
+    def with_types(self, types: TypeSet | None) -> BusMap:
+        """This bus map with the DroneCAN type set ``types`` (itself for None)."""
+        if types is None:
+            return self
+        if not isinstance(types, TypeSet):
+            raise argument_type_error("BusMap.with_types", "types", "a TypeSet", types)
+        return dataclasses.replace(self, dronecan_types=types)
 
     def codec(self) -> codec.Codec:
         """A Veronte codec with this bus map's choices (made once for the same choices: a

@@ -226,7 +226,9 @@ class CaptureDecoder:
         """The reassembler of a channel, made on its first DroneCAN frame."""
         reassembler = self.reassemblers.get(channel)
         if reassembler is None:
-            reassembler = self.reassemblers[channel] = Reassembler()
+            reassembler = self.reassemblers[channel] = Reassembler(
+                types=self.bus_map.dronecan_types
+            )
         return reassembler
 
     @staticmethod

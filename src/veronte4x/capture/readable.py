@@ -13,6 +13,7 @@ from typing import Any
 
 from veronte4x.dronecan import definitions as _dronecan
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.dronecan.typeset import TypeSet, text_fields
 from veronte4x.numbers import shortest
 from veronte4x.times import format_time
 from veronte4x.units import unit
@@ -51,17 +52,12 @@ FLOAT16_FIELDS = _float16_fields()
 """(class, attribute) of the half-precision fields (DroneCAN ``float16``)."""
 
 TEXT_FIELDS = frozenset(
-    {
-        ("GetNodeInfoResponse", "name"),
-        ("GetSetRequest", "name"),
-        ("GetSetResponse", "name"),
-        ("StringValue", "value"),
-        ("Path", "path"),
-        ("BeginFirmwareUpdateResponse", "optional_error_message"),
-    }
+    (cls.__name__, attr) for cls, attrs in TypeSet.standard().text_fields.items() for attr in attrs
 )
-"""(class name, attribute) of the byte fields that hold text (DroneCAN names, strings and
-paths); every other byte field is data, shown in hex."""
+"""(class name, attribute) of the byte fields of the standard types that hold text: the
+``uint8[<=N]`` arrays whose DSDL name or comment says name, path, text, string, message,
+key, description, reason, label or source (`veronte4x.dronecan.types.is_text`; vendor types follow
+the same rule). Every other byte field is data, shown in hex."""
 
 
 def _float_bits(owner: type, attr: str) -> int:
@@ -77,7 +73,7 @@ def readable(owner: type, attr: str, value: Any) -> Any:
     if isinstance(value, enum.Enum):
         return value.name
     if kind is bytes:
-        if (owner.__name__, attr) in TEXT_FIELDS:
+        if attr in text_fields(owner):
             return value.decode("utf-8", "backslashreplace")
         return value.hex()
     return value

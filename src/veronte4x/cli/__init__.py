@@ -4,9 +4,10 @@ Data goes to standard output; summaries and errors go to standard error, an erro
 naming what was wrong and what to do, never a traceback. Exit codes (`exit_codes`): 0 on
 success (bad frames skipped or kept are not failures), 1 when the capture failed a check
 (``--on-error raise`` met a bad frame, ``replay`` found disagreements), 2 for a usage error or
-an input that cannot be read (missing file, directory, unknown format, bad bus map, missing
-extra, a CAN bus that cannot be opened), 3 when a DroneCAN node did not answer and 4 when it
-refused (``esc``), 130 when interrupted by Ctrl-C.
+an input that cannot be read (missing file, directory, unknown format, bad bus map, a
+``--dsdl`` directory that cannot be used, missing extra, a CAN bus that cannot be opened), 3
+when a DroneCAN node did not answer and 4 when it refused (``esc``), 130 when interrupted by
+Ctrl-C.
 
 Each command lives in its own module with an ``add_parser`` function that registers it.
 """
@@ -24,6 +25,7 @@ from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
 from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
+from veronte4x.dronecan import DsdlError, load_dsdl
 from veronte4x.errors import SourceError
 
 COMMANDS = (
@@ -48,6 +50,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser = _parser()
         args = parser.parse_args(argv)
         bus_map = BusMap.from_toml(args.bus_map) if args.bus_map else BusMap()
+        if getattr(args, "dsdl", None):
+            bus_map = bus_map.with_types(load_dsdl(*args.dsdl))
         result: int = args.run(args, bus_map)
         return result
     except KeyboardInterrupt:
@@ -59,7 +63,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_OK
     except OSError as error:
         return _fail(_os_error(error), EXIT_USAGE)
-    except (SourceError, BusMapError, ConfigError, ImportError) as error:
+    except (SourceError, BusMapError, ConfigError, DsdlError, ImportError) as error:
         return _fail(str(error), EXIT_USAGE)
 
 

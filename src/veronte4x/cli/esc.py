@@ -27,7 +27,7 @@ from veronte4x.cli.exit_codes import (
     EXIT_USAGE,
 )
 from veronte4x.cli.fleet import each, exit_code, node_list, resolve, total
-from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
 from veronte4x.client import operations, paramfile
 from veronte4x.client.errors import (
     ClientError,
@@ -231,6 +231,7 @@ def _node(parser: argparse.ArgumentParser) -> None:
 
 def _options(parser: argparse.ArgumentParser, *, timeout: bool = True) -> None:
     add_bus_options(parser)
+    add_dsdl_option(parser)
     parser.add_argument(
         "--node-id",
         type=node_id,

@@ -28,6 +28,19 @@ def add_capture_options(parser: argparse.ArgumentParser) -> None:
         help="decode the frames outside the bus map that this DBC knows (repeatable; "
         "needs veronte4x[dbc])",
     )
+    add_dsdl_option(parser)
+
+
+def add_dsdl_option(parser: argparse.ArgumentParser) -> None:
+    """``--dsdl DIR``: DroneCAN types of a vendor root namespace (`main` loads them)."""
+    parser.add_argument(
+        "--dsdl",
+        metavar="DIR",
+        action="append",
+        default=[],
+        help="also decode the DroneCAN types of this DSDL root namespace directory, "
+        "e.g. dsdl/ardupilot (repeatable)",
+    )
 
 
 def add_bus_options(parser: argparse.ArgumentParser, *, channel: bool = True) -> None:

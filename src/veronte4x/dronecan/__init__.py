@@ -66,6 +66,7 @@ from veronte4x.dronecan.reassembler import (
 )
 from veronte4x.dronecan.standard import *  # noqa: F403  (every standard type, generated)
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, decode_frames, encode
+from veronte4x.dronecan.typeset import TypeSet, default_types, load_dsdl, set_default_types
 from veronte4x.errors import DecodeError, EncodeError, Veronte4xError
 
 __all__ = [
@@ -120,16 +121,20 @@ __all__ = [
     "TemperatureErrorFlag",
     "Transfer",
     "TransferKind",
+    "TypeSet",
     "Value",
     "Veronte4xError",
     "anonymous_can_id",
     "decode_frames",
     "decode_payload",
+    "default_types",
     "encode",
     "from_builtin",
+    "load_dsdl",
     "message_can_id",
     "parse_can_id",
     "service_can_id",
+    "set_default_types",
     "standard",
     "to_builtin",
     "vertiq",

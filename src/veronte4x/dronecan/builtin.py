@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import enum
+import weakref
 from typing import Any, TypeVar
 
 from veronte4x.dronecan.definitions import DATA_TYPES, VALUE
 from veronte4x.dronecan.schema import Array, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.transfer import Transfer
+from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.errors import EncodeError, argument_type_error
 
 T = TypeVar("T")
@@ -32,6 +34,22 @@ for _data_type in DATA_TYPES:
     _structs(_data_type.schema, _STRUCTS)
 assert isinstance(VALUE, Union)
 _MEMBERS = {member.cls for member in VALUE.members if not isinstance(member.type, Struct)}
+_VENDOR_STRUCTS: weakref.WeakKeyDictionary[TypeSet, dict[type, Struct]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def _structs_of(types: TypeSet | None, where: str) -> dict[type, Struct]:
+    """The struct schema of every class of a type set (nested types included)."""
+    found = resolve(types, where)
+    if found is TypeSet.standard():
+        return _STRUCTS
+    structs = _VENDOR_STRUCTS.get(found)
+    if structs is None:
+        structs = _VENDOR_STRUCTS[found] = dict(_STRUCTS)
+        for data_type in found.data_types:
+            _structs(data_type.schema, structs)
+    return structs
 
 
 def _convert(value: Any, t: Any) -> Any:
@@ -52,22 +70,28 @@ def _convert(value: Any, t: Any) -> Any:
     return value
 
 
-def to_builtin(value: Any) -> Any:
+def to_builtin(value: Any, types: TypeSet | None = None) -> Any:
     """Return ``value`` as plain dicts, lists, ints, floats and bools.
 
     Structs become dicts keyed by DSDL field names (void fields left out), unions one-key
     dicts ``{member_name: value}`` (``{"empty": {}}`` for an empty value), byte and int
     arrays lists of ints, enums their int value. A `Transfer`
     becomes a dict of its fields with the message converted. Anything else is returned as is.
+
+    Args:
+        value: A message, a `Transfer`, or anything else.
+        types: The `TypeSet` that knows the classes; None for the default set.
     """
     schema = _STRUCTS.get(type(value))
+    if schema is None and types is not TypeSet.standard():
+        schema = _structs_of(types, "to_builtin").get(type(value))
     if schema is not None:
         return _convert(value, schema)
     if type(value) in _MEMBERS:
         return _convert(value, VALUE)
     if isinstance(value, Transfer):
         out = value._asdict()
-        out["message"] = to_builtin(value.message)
+        out["message"] = to_builtin(value.message, types)
         out["kind"] = value.kind.name.lower()
         return out
     if isinstance(value, enum.Enum):
@@ -108,17 +132,22 @@ def _build(t: Any, data: Any, enum: type | None, path: str) -> Any:
     return data
 
 
-def from_builtin(cls: type[T], data: dict[str, Any]) -> T:
+def from_builtin(cls: type[T], data: dict[str, Any], types: TypeSet | None = None) -> T:
     """Build a message of class ``cls`` from plain data, the inverse of `to_builtin`.
 
     Missing keys take the class defaults; a ``str`` is accepted for a uint8 array (UTF-8).
     No range check is made here: `encode` does that.
 
+    Args:
+        cls: The class to build.
+        data: Plain data, as `to_builtin` gives.
+        types: The `TypeSet` that knows ``cls``; None for the default set.
+
     Raises:
         EncodeError: The data does not have the shape of ``cls``.
         TypeError: ``cls`` is not a DroneCAN message class, or ``data`` not a dict.
     """
-    schema = _STRUCTS.get(cls) if isinstance(cls, type) else None
+    schema = _structs_of(types, "from_builtin").get(cls) if isinstance(cls, type) else None
     if schema is None:
         raise argument_type_error("from_builtin", "cls", "a DroneCAN message class", cls)
     if not isinstance(data, dict):

@@ -17,7 +17,8 @@ Naming rules (documented in the DroneCAN types page):
   become an ``enum.IntEnum`` named ``CamelCase(P)`` (``ActuatorCommand.command_type``:
   ``CommandType``); where two types would give the same name, or the name is taken, the
   class name goes in front (``FixStatus``, ``Fix2Status``, ``ArmingStatusStatus``). The
-  field decodes to it (an int where the value has no member). Constants ``P_FLAG_*`` for a
+  field decodes to it (an int where the value has no member; annotated with the enum alone
+  where every value has one). Constants ``P_FLAG_*`` for a
   field ``p_flags`` become an ``enum.IntFlag`` and the field stays an int. Members drop
   the prefix unless a name would then start with a digit. Every constant also stays a
   class attribute of its DSDL name.
@@ -72,8 +73,8 @@ HAND_NAMES: dict[str, str] = {
     "uavcan.protocol.file.Read.Request": "FileReadRequest",
     "uavcan.protocol.file.Read.Response": "FileReadResponse",
 }
-"""The classes written by hand in `veronte4x.dronecan.messages` before the DSDL compiler
-(their names, fields and enums are public API): key (full name, ``.Request`` or
+"""The classes veronte4x had before the DSDL compiler (their names, fields and enums are
+public API, re-exported by `veronte4x.dronecan.messages`): key (full name, ``.Request`` or
 ``.Response`` for a service half) to class name."""
 
 HAND_ENUMS: dict[tuple[str, str], str] = {
@@ -81,8 +82,23 @@ HAND_ENUMS: dict[tuple[str, str], str] = {
     ("uavcan.protocol.NodeStatus", "mode"): "Mode",
     ("uavcan.protocol.file.BeginFirmwareUpdate.Response", "error"): "FirmwareUpdateError",
     ("uavcan.protocol.param.ExecuteOpcode.Request", "opcode"): "Opcode",
+    ("uavcan.equipment.device.Temperature", "error_flags"): "TemperatureErrorFlag",
+    ("uavcan.protocol.SoftwareVersion", "optional_field_flags"): "SoftwareVersionFlag",
+    ("uavcan.protocol.file.EntryType", "flags"): "EntryTypeFlag",
 }
-"""The enum fields of the hand-written classes."""
+"""The enums (and flags) of the classes of `HAND_NAMES`, by their names of before; the
+other constants of those classes stay class attributes only."""
+
+HAND_CONSTANT_ENUMS: dict[str, str] = {"uavcan.protocol.file.Error": "FileError"}
+"""Types whose constants, without a common prefix, form an enum of their own that no
+field decodes to (``file.Error``'s ``value`` stays an int that compares equal to them)."""
+
+HAND_CONSTANTS: dict[str, tuple[tuple[str, int, str], ...]] = {
+    "uavcan.protocol.file.Read.Response": (
+        ("MAX_DATA", 256, "Most bytes of ``data`` in one response (its DSDL array size)."),
+    ),
+}
+"""Class attributes that veronte4x added to the DSDL constants before (public API)."""
 
 HAND_UNION_MEMBERS: dict[str, tuple[str, ...]] = {
     "uavcan.protocol.param.Value": (
@@ -94,7 +110,8 @@ HAND_UNION_MEMBERS: dict[str, tuple[str, ...]] = {
     ),
     "uavcan.protocol.param.NumericValue": ("Empty", "IntegerValue", "RealValue"),
 }
-"""The member classes of the hand-written unions, in member order."""
+"""The member classes of the unions veronte4x had before, in member order (``Value`` and
+``NumericValue`` share ``IntegerValue`` and ``RealValue``)."""
 
 _RESERVED = {
     "Health",
@@ -127,6 +144,8 @@ class Plan:
     """(key, field) -> (enum name, ``IntEnum`` or ``IntFlag``, constants, their prefix)."""
     members: dict[str, tuple[str, ...]] = field(default_factory=dict)
     """Union key -> member class names."""
+    constant_enums: dict[str, tuple[str, list[Constant]]] = field(default_factory=dict)
+    """Key -> (enum name, constants) of `HAND_CONSTANT_ENUMS`."""
 
 
 def keys(d: Definition) -> list[str]:
@@ -202,7 +221,12 @@ def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
     for d in definitions.values():
         for key, section in zip(keys(d), d.sections, strict=True):
             result.sections[key] = (d, section)
+            if key in HAND_CONSTANT_ENUMS:
+                result.constant_enums[key] = (HAND_CONSTANT_ENUMS[key], section.constants)
             if key in HAND_NAMES:
+                for where, kind, constants, prefix in _enum_candidates(key, section):
+                    if where in HAND_ENUMS:
+                        result.enums[where] = (HAND_ENUMS[where], kind, constants, prefix)
                 continue
             if section.union and d.default_id is not None:
                 raise DsdlError(d.path, None, "a union as a top-level type is not supported")
@@ -296,6 +320,16 @@ def _python_type(t: FieldType, p: Plan, enum: str | None) -> tuple[str, str]:
     return "int", "0"
 
 
+def _covers(t: FieldType, constants: list[Constant]) -> bool:
+    """Whether the constants name every value of an unsigned field (it always decodes to
+    the enum: ``NodeStatus.health``)."""
+    return (
+        isinstance(t, PrimitiveType)
+        and t.kind == "uint"
+        and {c.value for c in constants} == set(range(1 << t.bits))
+    )
+
+
 def _literal(value: int | float | bool) -> str:
     return repr(value)
 
@@ -303,18 +337,21 @@ def _literal(value: int | float | bool) -> str:
 def _class_source(key: str, p: Plan) -> list[str]:
     d, section = p.sections[key]
     name = p.names[key]
-    lines = ["", "", "@dataclass(frozen=True, slots=True)", f"class {name}:"]
+    lines = ["", "", "@dataclass(frozen=True, slots=True)", f"class {name}(HtmlDisplay):"]
     doc = _title(d, key)
     if section.doc:
         doc += "\n\n" + section.doc
     lines += _doc(doc, "    ")
-    if section.constants:
+    if section.constants or key in HAND_CONSTANTS:
         lines.append("")
     for c in section.constants:
         kind = "float" if c.type.kind == "float" else "bool" if c.type.kind == "bool" else "int"
         lines.append(f"    {c.name}: ClassVar[{kind}] = {_literal(c.value)}")
         if c.comment:
             lines += _doc(c.comment, "    ")
+    for constant, value, comment in HAND_CONSTANTS.get(key, ()):
+        lines.append(f"    {constant}: ClassVar[int] = {value}")
+        lines += _doc(comment, "    ")
     fields = [a for a in section.fields if a.name]
     if fields:
         lines.append("")
@@ -322,6 +359,8 @@ def _class_source(key: str, p: Plan) -> list[str]:
         enum = p.enums.get((key, a.name))
         enum_name = enum[0] if enum is not None and enum[1] == "IntEnum" else None
         annotation, default = _python_type(a.type, p, enum_name)
+        if enum is not None and enum_name is not None and _covers(a.type, enum[2]):
+            annotation, default = enum_name, f"{enum_name}(0)"  # every value has a member
         lines.append(f"    {attribute_name(a.name)}: {annotation} = {default}")
         if a.comment:
             lines += _doc(a.comment, "    ")
@@ -392,6 +431,7 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
         "from dataclasses import dataclass",
         "from typing import Any, ClassVar, TypeAlias",
         "",
+        "from veronte4x.display import HtmlDisplay",
     ]
     by_module: dict[str, list[str]] = {}
     for name, module in sorted(imports.items()):
@@ -404,13 +444,18 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
     for (key, _), (name, kind, constants, prefix) in p.enums.items():
         if key in generated:
             body += _enum_source(name, kind, constants, len(prefix))
+    for key, (name, constants) in p.constant_enums.items():
+        if key in generated:
+            body += _enum_source(name, "IntEnum", constants, 0)
+    done: set[str] = set()
     for key in generated:
         if key in p.members:
-            body += _union_source(key, p)
+            body += _union_source(key, p, done)
         else:
             body += _class_source(key, p)
     exported = sorted(
         {e[0] for k, e in p.enums.items() if k[0] in generated}
+        | {e[0] for k, e in p.constant_enums.items() if k in generated}
         | {p.names[k] for k in generated}
         | {m for k in generated for m in p.members.get(k, ()) if m not in imports}
     )
@@ -428,21 +473,23 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
     tables += ["}", '"""The enum a field decodes to, by (key, field name)."""']
     tables += ["", "UNION_MEMBERS: dict[str, tuple[type, ...]] = {"]
     tables += [
-        f"    {key!r}: ({', '.join(p.members[key])},)" for key in generated if key in p.members
+        f"    {key!r}: ({', '.join(p.members[key])},)," for key in generated if key in p.members
     ]
     tables += ["}", '"""The member classes of each union, in member order."""', ""]
     return "\n".join(head + body + tables)
 
 
-def _union_source(key: str, p: Plan) -> list[str]:
+def _union_source(key: str, p: Plan, done: set[str]) -> list[str]:
+    """The member classes of a union (each once: unions may share them), and its alias."""
     d, section = p.sections[key]
     name = p.names[key]
     lines: list[str] = []
     for a, member in zip(section.fields, p.members[key], strict=True):
-        if isinstance(a.type, str):
+        if isinstance(a.type, str) or member in done:
             continue
+        done.add(member)
         annotation, default = _python_type(a.type, p, None)
-        lines += ["", "", "@dataclass(frozen=True, slots=True)", f"class {member}:"]
+        lines += ["", "", "@dataclass(frozen=True, slots=True)", f"class {member}(HtmlDisplay):"]
         lines += _doc(f"Member ``{a.name}`` of the union ``{d.full_name}``.", "    ")
         lines += ["", f"    value: {annotation} = {default}"]
     lines += ["", "", f"{name}: TypeAlias = {' | '.join(p.members[key])}"]
@@ -454,45 +501,16 @@ def standard_source() -> str:
     """The source of `veronte4x.dronecan.standard`."""
     from veronte4x.dronecan.types import standard_definitions
 
-    definitions = standard_definitions()
-    p = plan(definitions)
-    generate = [k for k in p.sections if k not in HAND_NAMES]
-    imports = {name: "veronte4x.dronecan.messages" for name in HAND_NAMES.values()}
-    imports.update(
-        {
-            name: "veronte4x.dronecan.messages"
-            for names in HAND_UNION_MEMBERS.values()
-            for name in names
-        }
-    )
-    imports.update({name: "veronte4x.dronecan.messages" for name in HAND_ENUMS.values()})
-    source = module_source(p, generate, _STANDARD_DOC, imports)
-    # The hand-written classes are in the tables too, so that they list every type.
-    extra_classes = "".join(f"    {k!r}: {HAND_NAMES[k]},\n" for k in p.sections if k in HAND_NAMES)
-    extra_enums = "".join(f"    ({k!r}, {f!r}): {n},\n" for (k, f), n in HAND_ENUMS.items())
-    extra_members = "".join(
-        f"    {k!r}: ({', '.join(m)},),\n" for k, m in HAND_UNION_MEMBERS.items()
-    )
-    source = source.replace(
-        "CLASSES: dict[str, Any] = {\n", "CLASSES: dict[str, Any] = {\n" + extra_classes
-    )
-    source = source.replace(
-        "ENUMS: dict[tuple[str, str], type] = {\n",
-        "ENUMS: dict[tuple[str, str], type] = {\n" + extra_enums,
-    )
-    source = source.replace(
-        "UNION_MEMBERS: dict[str, tuple[type, ...]] = {\n",
-        "UNION_MEMBERS: dict[str, tuple[type, ...]] = {\n" + extra_members,
-    )
-    return source
+    p = plan(standard_definitions())
+    return module_source(p, list(p.sections), _STANDARD_DOC, {})
 
 
 _STANDARD_DOC = """Every type of the standard ``uavcan`` DSDL namespace, as frozen dataclasses.
 
 GENERATED from the DSDL files shipped in ``veronte4x/dronecan/dsdl`` by
 ``python -m veronte4x.dronecan.generate``: do not edit (a test regenerates and compares).
-The classes veronte4x had before are those of `veronte4x.dronecan.messages`; the naming
-rules are those of `veronte4x.dronecan.generate`.
+The naming rules are those of `veronte4x.dronecan.generate`; `veronte4x.dronecan.messages`
+re-exports the classes veronte4x had before the DSDL compiler.
 """
 
 

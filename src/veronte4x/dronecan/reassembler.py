@@ -26,14 +26,17 @@ from __future__ import annotations
 
 import enum
 import math
+import weakref
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import OrderedDict, deque
+from collections.abc import Mapping
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK
 from veronte4x.dronecan.transfer import Transfer
+from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 TRANSFER_ID_TIMEOUT = 2.0
@@ -174,30 +177,39 @@ def _shared(codec: Codec) -> tuple[Any, ...]:
 
 
 _new_tuple = tuple.__new__
-_MESSAGES: dict[int, tuple[Any, ...]] = {}
-"""`_shared` of each message type met so far, by type id (see `_message`)."""
-_SERVICES: dict[int, tuple[Any, ...]] = {}
-"""`_shared` of each request and response type met so far, by type id << 1 | request."""
 
 
-def _message(dtid: int) -> tuple[Any, ...] | None:
-    """`_shared` of a message type, its decoders compiled on first use; None if unknown."""
-    codec = BY_ID.get((TransferKind.MESSAGE, dtid))
-    if codec is None:
-        return None
-    shared = _MESSAGES[dtid] = _shared(codec)
-    return shared
+class _SessionTypes:
+    """What the sessions of each type of a type set share (`_shared`), filled in per type
+    on first use so that a type's decoders are compiled only when its first frame comes."""
+
+    def __init__(self, by_id: Mapping[tuple[TransferKind, int], Codec]) -> None:
+        self.by_id = by_id
+        self.messages: dict[int, tuple[Any, ...]] = {}
+        """By message type id."""
+        self.services: dict[int, tuple[Any, ...]] = {}
+        """By service key: type id << 1 | request bit."""
+
+    def message(self, dtid: int) -> tuple[Any, ...] | None:
+        """`_shared` of a message type, now in `messages`; None if the set has no such type."""
+        codec = self.by_id.get((TransferKind.MESSAGE, dtid))
+        if codec is None:
+            return None
+        shared = self.messages[dtid] = _shared(codec)
+        return shared
+
+    def service(self, key: int) -> tuple[Any, ...] | None:
+        """`_shared` of a request or response type, now in `services`; None if unknown."""
+        kind = TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE
+        codec = self.by_id.get((kind, key >> 1))
+        if codec is None:
+            return None
+        shared = self.services[key] = _shared(codec)
+        return shared
 
 
-def _service(key: int) -> tuple[Any, ...] | None:
-    """`_shared` of a request or response type (key: type id << 1 | request bit)."""
-    codec = BY_ID.get((TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE, key >> 1))
-    if codec is None:
-        return None
-    shared = _SERVICES[key] = _shared(codec)
-    return shared
-
-
+_STANDARD_TYPES = _SessionTypes(BY_ID)
+_SESSION_TYPES: weakref.WeakKeyDictionary[TypeSet, _SessionTypes] = weakref.WeakKeyDictionary()
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 _FRAME_ERRORS = DECODE_FALLBACK  # what a generated single-frame decoder raises
 
@@ -223,6 +235,8 @@ class Reassembler:
             then the one whose latest transfer began first. Memory is bounded by this times
             the largest payload (378 B).
         max_reports: How many recent `ProblemReport` entries `problems` keeps.
+        types: The DroneCAN types to decode (`TypeSet`); None for the default set
+            (the standard one, plus what `veronte4x.dronecan.load_dsdl` added).
 
     Attributes:
         counts: Number of each `Problem` so far.
@@ -230,6 +244,7 @@ class Reassembler:
         reported: Number of problem reports so far; the reports of one `feed` are the
             last ``reported - before`` entries of `problems` (up to its length).
         transfers: Number of transfers delivered.
+        types: The `TypeSet` it decodes with.
     """
 
     def __init__(
@@ -237,7 +252,15 @@ class Reassembler:
         transfer_id_timeout: float = TRANSFER_ID_TIMEOUT,
         max_sessions: int = 1024,
         max_reports: int = 256,
+        types: TypeSet | None = None,
     ) -> None:
+        types = resolve(types, "Reassembler")
+        found = _STANDARD_TYPES if types is TypeSet.standard() else _SESSION_TYPES.get(types)
+        if found is None:
+            found = _SESSION_TYPES[types] = _SessionTypes(types.by_id)
+        self._session_types = found
+        self._messages, self._services = found.messages, found.services
+        self.types = types
         if not isinstance(transfer_id_timeout, (int, float)) or isinstance(
             transfer_id_timeout, bool
         ):
@@ -372,12 +395,14 @@ class Reassembler:
             return None
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF) or _service((can_id >> 15) & 0x1FF)
+            key = (can_id >> 15) & 0x1FF
+            shared = self._services.get(key) or self._session_types.service(key)
             if not can_id & 0x7F or not can_id & 0x7F00:
                 self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
                 return None
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF) or _message((can_id >> 8) & 0xFFFF)
+            dtid = (can_id >> 8) & 0xFFFF
+            shared = self._messages.get(dtid) or self._session_types.message(dtid)
         else:
             if tail & 0xC0 != 0xC0:
                 self._report(
@@ -408,12 +433,14 @@ class Reassembler:
             return self._feed(can_id, data, timestamp)
         tail = data[-1]
         if can_id & 0x80:
-            shared = _SERVICES.get((can_id >> 15) & 0x1FF) or _service((can_id >> 15) & 0x1FF)
+            key = (can_id >> 15) & 0x1FF
+            shared = self._services.get(key) or self._session_types.service(key)
             destination: int | None = (can_id >> 8) & 0x7F
             if not destination or not can_id & 0x7F:
                 return self._feed(can_id, data, timestamp)
         elif can_id & 0x7F:
-            shared = _MESSAGES.get((can_id >> 8) & 0xFFFF) or _message((can_id >> 8) & 0xFFFF)
+            dtid = (can_id >> 8) & 0xFFFF
+            shared = self._messages.get(dtid) or self._session_types.message(dtid)
             destination = None
         else:
             return self._feed(can_id, data, timestamp)

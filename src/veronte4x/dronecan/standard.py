@@ -2,8 +2,8 @@
 
 GENERATED from the DSDL files shipped in ``veronte4x/dronecan/dsdl`` by
 ``python -m veronte4x.dronecan.generate``: do not edit (a test regenerates and compares).
-The classes veronte4x had before are those of `veronte4x.dronecan.messages`; the naming
-rules are those of `veronte4x.dronecan.generate`.
+The naming rules are those of `veronte4x.dronecan.generate`; `veronte4x.dronecan.messages`
+re-exports the classes veronte4x had before the DSDL compiler.
 """
 
 from __future__ import annotations
@@ -12,42 +12,82 @@ import enum
 from dataclasses import dataclass
 from typing import Any, ClassVar, TypeAlias
 
-from veronte4x.dronecan.messages import (
-    BeginFirmwareUpdateRequest,
-    BeginFirmwareUpdateResponse,
-    BooleanValue,
-    Empty,
-    EntryType,
-    EscStatus,
-    ExecuteOpcodeRequest,
-    ExecuteOpcodeResponse,
-    FileErrorCode,
-    FileGetInfoRequest,
-    FileGetInfoResponse,
-    FileReadRequest,
-    FileReadResponse,
-    FirmwareUpdateError,
-    GetNodeInfoRequest,
-    GetNodeInfoResponse,
-    GetSetRequest,
-    GetSetResponse,
-    HardwareVersion,
-    Health,
-    IntegerValue,
-    Mode,
-    NodeStatus,
-    NumericValue,
-    Opcode,
-    Path,
-    RawCommand,
-    RealValue,
-    RestartNodeRequest,
-    RestartNodeResponse,
-    SoftwareVersion,
-    StringValue,
-    Temperature,
-    Value,
-)
+from veronte4x.display import HtmlDisplay
+
+
+class TemperatureErrorFlag(enum.IntFlag):
+    """DSDL constants ``ERROR_FLAG_*``."""
+
+    OVERHEATING = 1
+    OVERCOOLING = 2
+
+
+class Health(enum.IntEnum):
+    """DSDL constants ``HEALTH_*``."""
+
+    OK = 0
+    """The node is functioning properly."""
+    WARNING = 1
+    """A critical parameter went out of range or the node encountered a minor failure."""
+    ERROR = 2
+    """The node encountered a major failure."""
+    CRITICAL = 3
+    """The node suffered a fatal malfunction."""
+
+
+class Mode(enum.IntEnum):
+    """DSDL constants ``MODE_*``."""
+
+    OPERATIONAL = 0
+    """Normal operating mode."""
+    INITIALIZATION = 1
+    """Initialization is in progress; this mode is entered immediately after startup."""
+    MAINTENANCE = 2
+    """E.g. calibration, the bootloader is running, etc."""
+    SOFTWARE_UPDATE = 3
+    """New software/firmware is being loaded."""
+    OFFLINE = 7
+    """The node is no longer available."""
+
+
+class SoftwareVersionFlag(enum.IntFlag):
+    """DSDL constants ``OPTIONAL_FIELD_FLAG_*``."""
+
+    VCS_COMMIT = 1
+    IMAGE_CRC = 2
+
+
+class FirmwareUpdateError(enum.IntEnum):
+    """DSDL constants ``ERROR_*``."""
+
+    OK = 0
+    INVALID_MODE = 1
+    """Cannot perform the update in the current operating mode or state."""
+    IN_PROGRESS = 2
+    """Firmware update is already in progress, and the slave doesn't want to restart."""
+    UNKNOWN = 255
+
+
+class EntryTypeFlag(enum.IntFlag):
+    """DSDL constants ``FLAG_*``."""
+
+    FILE = 1
+    """Excludes FLAG_DIRECTORY"""
+    DIRECTORY = 2
+    """Excludes FLAG_FILE"""
+    SYMLINK = 4
+    """Link target is either FLAG_FILE or FLAG_DIRECTORY"""
+    READABLE = 8
+    WRITEABLE = 16
+
+
+class Opcode(enum.IntEnum):
+    """DSDL constants ``OPCODE_*``."""
+
+    SAVE = 0
+    """Save all parameters to non-volatile storage."""
+    ERASE = 1
+    """Clear the non-volatile storage; some changes may take effect only after reboot."""
 
 
 class CommandType(enum.IntEnum):
@@ -340,8 +380,25 @@ class Error(enum.IntEnum):
     """Generic error"""
 
 
+class FileError(enum.IntEnum):
+    """DSDL constants ``*``."""
+
+    OK = 0
+    UNKNOWN_ERROR = 32767
+    NOT_FOUND = 2
+    IO_ERROR = 5
+    ACCESS_DENIED = 13
+    IS_DIRECTORY = 21
+    """I.e. attempt to read/write on a path that points to a directory"""
+    INVALID_VALUE = 22
+    """E.g. file name is not valid for the target file system"""
+    FILE_TOO_LARGE = 27
+    OUT_OF_SPACE = 28
+    NOT_IMPLEMENTED = 38
+
+
 @dataclass(frozen=True, slots=True)
-class CoarseOrientation:
+class CoarseOrientation(HtmlDisplay):
     """``uavcan.CoarseOrientation`` (nested; ``CoarseOrientation.uavcan``).
 
     Nested type.
@@ -366,7 +423,7 @@ class CoarseOrientation:
 
 
 @dataclass(frozen=True, slots=True)
-class Timestamp:
+class Timestamp(HtmlDisplay):
     """``uavcan.Timestamp`` (nested; ``Timestamp.uavcan``).
 
     Global timestamp in microseconds, 7 bytes.
@@ -382,7 +439,7 @@ class Timestamp:
 
 
 @dataclass(frozen=True, slots=True)
-class ActuatorCommand:
+class ActuatorCommand(HtmlDisplay):
     """``uavcan.equipment.actuator.Command`` (nested; ``equipment/actuator/Command.uavcan``).
 
     Nested type.
@@ -406,7 +463,7 @@ class ActuatorCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class ArrayCommand:
+class ArrayCommand(HtmlDisplay):
     """``uavcan.equipment.actuator.ArrayCommand``, message 1010 (``equipment/actuator/1010.ArrayCommand.uavcan``).
 
     Actuator commands.
@@ -417,7 +474,7 @@ class ArrayCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class ActuatorStatus:
+class ActuatorStatus(HtmlDisplay):
     """``uavcan.equipment.actuator.Status``, message 1011 (``equipment/actuator/1011.Status.uavcan``).
 
     Generic actuator feedback, if available.
@@ -438,7 +495,7 @@ class ActuatorStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class Solution:
+class Solution(HtmlDisplay):
     """``uavcan.equipment.ahrs.Solution``, message 1000 (``equipment/ahrs/1000.Solution.uavcan``).
 
     Inertial data and orientation in body frame.
@@ -454,7 +511,7 @@ class Solution:
 
 
 @dataclass(frozen=True, slots=True)
-class MagneticFieldStrength:
+class MagneticFieldStrength(HtmlDisplay):
     """``uavcan.equipment.ahrs.MagneticFieldStrength``, message 1001 (``equipment/ahrs/1001.MagneticFieldStrength.uavcan``).
 
     Magnetic field readings, in Gauss, in body frame.
@@ -467,7 +524,7 @@ class MagneticFieldStrength:
 
 
 @dataclass(frozen=True, slots=True)
-class MagneticFieldStrength2:
+class MagneticFieldStrength2(HtmlDisplay):
     """``uavcan.equipment.ahrs.MagneticFieldStrength2``, message 1002 (``equipment/ahrs/1002.MagneticFieldStrength2.uavcan``).
 
     Magnetic field readings, in Gauss, in body frame.
@@ -480,7 +537,7 @@ class MagneticFieldStrength2:
 
 
 @dataclass(frozen=True, slots=True)
-class RawIMU:
+class RawIMU(HtmlDisplay):
     """``uavcan.equipment.ahrs.RawIMU``, message 1003 (``equipment/ahrs/1003.RawIMU.uavcan``).
 
     Raw IMU data with timestamps.
@@ -502,7 +559,7 @@ class RawIMU:
 
 
 @dataclass(frozen=True, slots=True)
-class TrueAirspeed:
+class TrueAirspeed(HtmlDisplay):
     """``uavcan.equipment.air_data.TrueAirspeed``, message 1020 (``equipment/air_data/1020.TrueAirspeed.uavcan``).
 
     TAS.
@@ -515,7 +572,7 @@ class TrueAirspeed:
 
 
 @dataclass(frozen=True, slots=True)
-class IndicatedAirspeed:
+class IndicatedAirspeed(HtmlDisplay):
     """``uavcan.equipment.air_data.IndicatedAirspeed``, message 1021 (``equipment/air_data/1021.IndicatedAirspeed.uavcan``).
 
     IAS.
@@ -528,7 +585,7 @@ class IndicatedAirspeed:
 
 
 @dataclass(frozen=True, slots=True)
-class AngleOfAttack:
+class AngleOfAttack(HtmlDisplay):
     """``uavcan.equipment.air_data.AngleOfAttack``, message 1025 (``equipment/air_data/1025.AngleOfAttack.uavcan``).
 
     Angle of attack.
@@ -545,7 +602,7 @@ class AngleOfAttack:
 
 
 @dataclass(frozen=True, slots=True)
-class Sideslip:
+class Sideslip(HtmlDisplay):
     """``uavcan.equipment.air_data.Sideslip``, message 1026 (``equipment/air_data/1026.Sideslip.uavcan``).
 
     Body sideslip in radians.
@@ -558,7 +615,7 @@ class Sideslip:
 
 
 @dataclass(frozen=True, slots=True)
-class RawAirData:
+class RawAirData(HtmlDisplay):
     """``uavcan.equipment.air_data.RawAirData``, message 1027 (``equipment/air_data/1027.RawAirData.uavcan``).
 
     Raw Air Data.
@@ -587,7 +644,7 @@ class RawAirData:
 
 
 @dataclass(frozen=True, slots=True)
-class StaticPressure:
+class StaticPressure(HtmlDisplay):
     """``uavcan.equipment.air_data.StaticPressure``, message 1028 (``equipment/air_data/1028.StaticPressure.uavcan``).
 
     Static pressure.
@@ -600,7 +657,7 @@ class StaticPressure:
 
 
 @dataclass(frozen=True, slots=True)
-class StaticTemperature:
+class StaticTemperature(HtmlDisplay):
     """``uavcan.equipment.air_data.StaticTemperature``, message 1029 (``equipment/air_data/1029.StaticTemperature.uavcan``).
 
     Static temperature.
@@ -613,7 +670,7 @@ class StaticTemperature:
 
 
 @dataclass(frozen=True, slots=True)
-class CameraGimbalMode:
+class CameraGimbalMode(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.Mode`` (nested; ``equipment/camera_gimbal/Mode.uavcan``).
 
     Gimbal operating mode
@@ -628,7 +685,7 @@ class CameraGimbalMode:
 
 
 @dataclass(frozen=True, slots=True)
-class AngularCommand:
+class AngularCommand(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.AngularCommand``, message 1040 (``equipment/camera_gimbal/1040.AngularCommand.uavcan``).
 
     Generic camera gimbal control.
@@ -645,7 +702,7 @@ class AngularCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class GEOPOICommand:
+class GEOPOICommand(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.GEOPOICommand``, message 1041 (``equipment/camera_gimbal/1041.GEOPOICommand.uavcan``).
 
     Generic camera gimbal control.
@@ -668,7 +725,7 @@ class GEOPOICommand:
 
 
 @dataclass(frozen=True, slots=True)
-class CameraGimbalStatus:
+class CameraGimbalStatus(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.Status``, message 1044 (``equipment/camera_gimbal/1044.Status.uavcan``).
 
     Generic gimbal status.
@@ -682,7 +739,37 @@ class CameraGimbalStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class RPMCommand:
+class Temperature(HtmlDisplay):
+    """``uavcan.equipment.device.Temperature``, message 1110 (``equipment/device/1110.Temperature.uavcan``).
+
+    Generic device temperature
+    """
+
+    ERROR_FLAG_OVERHEATING: ClassVar[int] = 1
+    ERROR_FLAG_OVERCOOLING: ClassVar[int] = 2
+
+    device_id: int = 0
+    temperature: float = 0.0
+    """in kelvin"""
+    error_flags: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RawCommand(HtmlDisplay):
+    """``uavcan.equipment.esc.RawCommand``, message 1030 (``equipment/esc/1030.RawCommand.uavcan``).
+
+    Raw ESC command normalized into [-8192, 8191]. The ESC should normalize the setpoint into its effective input range.
+    Non-zero setpoint value below minimum should be interpreted as min valid setpoint for the given motor. Positive
+    values indicate forward rotation, negative values indicate reverse rotation, and zero indicates no rotation. For example,
+    a typical quadcopter always commands non-negative values for all four motors, independent of ESC configuration,
+    motor wiring, or propeller direction. ESCs which do not allow reverse rotation shall clamp negative commands to zero.
+    """
+
+    cmd: tuple[int, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class RPMCommand(HtmlDisplay):
     """``uavcan.equipment.esc.RPMCommand``, message 1031 (``equipment/esc/1031.RPMCommand.uavcan``).
 
     Simple RPM setpoint.
@@ -697,7 +784,31 @@ class RPMCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class StatusExtended:
+class EscStatus(HtmlDisplay):
+    """``uavcan.equipment.esc.Status``, message 1034 (``equipment/esc/1034.Status.uavcan``).
+
+    Generic ESC status.
+    Unknown fields should be set to NAN.
+    """
+
+    error_count: int = 0
+    """Resets when the motor restarts"""
+    voltage: float = 0.0
+    """Volt"""
+    current: float = 0.0
+    """Ampere. Can be negative in case of a regenerative braking."""
+    temperature: float = 0.0
+    """Kelvin"""
+    rpm: int = 0
+    """Current value, with the same sign convention as RPMCommand. For example, a typical"""
+    power_rating_pct: int = 0
+    """Instant demand factor in percent (percent of maximum power); range 0% to 127%."""
+    esc_index: int = 0
+    """zero is first ESC. This should match the index into the cmd[] array in RawCommand"""
+
+
+@dataclass(frozen=True, slots=True)
+class StatusExtended(HtmlDisplay):
     """``uavcan.equipment.esc.StatusExtended``, message 1036 (``equipment/esc/1036.StatusExtended.uavcan``).
 
     Extended Generic ESC status.
@@ -720,7 +831,7 @@ class StatusExtended:
 
 
 @dataclass(frozen=True, slots=True)
-class Fix:
+class Fix(HtmlDisplay):
     """``uavcan.equipment.gnss.Fix``, message 1060 (``equipment/gnss/1060.Fix.uavcan``).
 
     GNSS navigation solution with uncertainty.
@@ -754,7 +865,7 @@ class Fix:
     ned_velocity: tuple[float, ...] = (0.0,) * 3
     """NED frame (north-east-down) in meters per second"""
     sats_used: int = 0
-    status: FixStatus | int = 0
+    status: FixStatus = FixStatus(0)
     pdop: float = 0.0
     position_covariance: tuple[float, ...] = ()
     """m^2"""
@@ -763,7 +874,7 @@ class Fix:
 
 
 @dataclass(frozen=True, slots=True)
-class Auxiliary:
+class Auxiliary(HtmlDisplay):
     """``uavcan.equipment.gnss.Auxiliary``, message 1061 (``equipment/gnss/1061.Auxiliary.uavcan``).
 
     GNSS low priority auxiliary info.
@@ -784,7 +895,7 @@ class Auxiliary:
 
 
 @dataclass(frozen=True, slots=True)
-class RTCMStream:
+class RTCMStream(HtmlDisplay):
     """``uavcan.equipment.gnss.RTCMStream``, message 1062 (``equipment/gnss/1062.RTCMStream.uavcan``).
 
     GNSS RTCM SC-104 protocol raw stream container.
@@ -800,7 +911,7 @@ class RTCMStream:
 
 
 @dataclass(frozen=True, slots=True)
-class ECEFPositionVelocity:
+class ECEFPositionVelocity(HtmlDisplay):
     """``uavcan.equipment.gnss.ECEFPositionVelocity`` (nested; ``equipment/gnss/ECEFPositionVelocity.uavcan``).
 
     Nested type.
@@ -824,7 +935,7 @@ class ECEFPositionVelocity:
 
 
 @dataclass(frozen=True, slots=True)
-class Fix2:
+class Fix2(HtmlDisplay):
     """``uavcan.equipment.gnss.Fix2``, message 1063 (``equipment/gnss/1063.Fix2.uavcan``).
 
     GNSS ECEF and LLA navigation solution with uncertainty.
@@ -864,7 +975,7 @@ class Fix2:
     ned_velocity: tuple[float, ...] = (0.0,) * 3
     """NED frame (north-east-down) in meters per second"""
     sats_used: int = 0
-    status: Fix2Status | int = 0
+    status: Fix2Status = Fix2Status(0)
     mode: Fix2Mode | int = 0
     sub_mode: SubMode | int = 0
     covariance: tuple[float, ...] = ()
@@ -874,7 +985,7 @@ class Fix2:
 
 
 @dataclass(frozen=True, slots=True)
-class HardpointCommand:
+class HardpointCommand(HtmlDisplay):
     """``uavcan.equipment.hardpoint.Command``, message 1070 (``equipment/hardpoint/1070.Command.uavcan``).
 
     Generic cargo holder/hardpoint command.
@@ -885,7 +996,7 @@ class HardpointCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class HardpointStatus:
+class HardpointStatus(HtmlDisplay):
     """``uavcan.equipment.hardpoint.Status``, message 1071 (``equipment/hardpoint/1071.Status.uavcan``).
 
     Generic cargo holder/hardpoint status.
@@ -899,7 +1010,7 @@ class HardpointStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class FuelTankStatus:
+class FuelTankStatus(HtmlDisplay):
     """``uavcan.equipment.ice.FuelTankStatus``, message 1129 (``equipment/ice/1129.FuelTankStatus.uavcan``).
 
     Generic fuel tank status message.
@@ -916,7 +1027,7 @@ class FuelTankStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class CylinderStatus:
+class CylinderStatus(HtmlDisplay):
     """``uavcan.equipment.ice.reciprocating.CylinderStatus`` (nested; ``equipment/ice/reciprocating/CylinderStatus.uavcan``).
 
     Cylinder state information.
@@ -933,7 +1044,7 @@ class CylinderStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class ReciprocatingStatus:
+class ReciprocatingStatus(HtmlDisplay):
     """``uavcan.equipment.ice.reciprocating.Status``, message 1120 (``equipment/ice/reciprocating/1120.Status.uavcan``).
 
     Generic status message of a piston engine control system.
@@ -982,7 +1093,7 @@ class ReciprocatingStatus:
     SPARK_PLUG_SECOND_ACTIVE: ClassVar[int] = 2
     SPARK_PLUG_BOTH_ACTIVE: ClassVar[int] = 3
 
-    state: State | int = 0
+    state: State = State(0)
     flags: int = 0
     engine_load_percent: int = 0
     engine_speed_rpm: int = 0
@@ -1003,7 +1114,7 @@ class ReciprocatingStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class BeepCommand:
+class BeepCommand(HtmlDisplay):
     """``uavcan.equipment.indication.BeepCommand``, message 1080 (``equipment/indication/1080.BeepCommand.uavcan``).
 
     Nodes that are capable of producing sounds should obey.
@@ -1016,7 +1127,7 @@ class BeepCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class RGB565:
+class RGB565(HtmlDisplay):
     """``uavcan.equipment.indication.RGB565`` (nested; ``equipment/indication/RGB565.uavcan``).
 
     Nested type.
@@ -1030,7 +1141,7 @@ class RGB565:
 
 
 @dataclass(frozen=True, slots=True)
-class SingleLightCommand:
+class SingleLightCommand(HtmlDisplay):
     """``uavcan.equipment.indication.SingleLightCommand`` (nested; ``equipment/indication/SingleLightCommand.uavcan``).
 
     Nested type.
@@ -1054,7 +1165,7 @@ class SingleLightCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class LightsCommand:
+class LightsCommand(HtmlDisplay):
     """``uavcan.equipment.indication.LightsCommand``, message 1081 (``equipment/indication/1081.LightsCommand.uavcan``).
 
     Lights control command.
@@ -1064,7 +1175,7 @@ class LightsCommand:
 
 
 @dataclass(frozen=True, slots=True)
-class PrimaryPowerSupplyStatus:
+class PrimaryPowerSupplyStatus(HtmlDisplay):
     """``uavcan.equipment.power.PrimaryPowerSupplyStatus``, message 1090 (``equipment/power/1090.PrimaryPowerSupplyStatus.uavcan``).
 
     Primary power supply status.
@@ -1083,7 +1194,7 @@ class PrimaryPowerSupplyStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class CircuitStatus:
+class CircuitStatus(HtmlDisplay):
     """``uavcan.equipment.power.CircuitStatus``, message 1091 (``equipment/power/1091.CircuitStatus.uavcan``).
 
     Generic electrical circuit info.
@@ -1101,7 +1212,7 @@ class CircuitStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class BatteryInfo:
+class BatteryInfo(HtmlDisplay):
     """``uavcan.equipment.power.BatteryInfo``, message 1092 (``equipment/power/1092.BatteryInfo.uavcan``).
 
     Single battery info.
@@ -1166,7 +1277,7 @@ class BatteryInfo:
 
 
 @dataclass(frozen=True, slots=True)
-class Measurement:
+class Measurement(HtmlDisplay):
     """``uavcan.equipment.range_sensor.Measurement``, message 1050 (``equipment/range_sensor/1050.Measurement.uavcan``).
 
     Generic narrow-beam range sensor data.
@@ -1197,7 +1308,7 @@ class Measurement:
 
 
 @dataclass(frozen=True, slots=True)
-class ArmingStatus:
+class ArmingStatus(HtmlDisplay):
     """``uavcan.equipment.safety.ArmingStatus``, message 1100 (``equipment/safety/1100.ArmingStatus.uavcan``).
 
     This message represents the system arming status.
@@ -1211,7 +1322,7 @@ class ArmingStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class GlobalNavigationSolution:
+class GlobalNavigationSolution(HtmlDisplay):
     """``uavcan.navigation.GlobalNavigationSolution``, message 2000 (``navigation/2000.GlobalNavigationSolution.uavcan``).
 
     Inertial data and orientation in body frame with fused location.
@@ -1243,7 +1354,97 @@ class GlobalNavigationSolution:
 
 
 @dataclass(frozen=True, slots=True)
-class DataTypeKind:
+class GetNodeInfoRequest(HtmlDisplay):
+    """``uavcan.protocol.GetNodeInfo`` request, service 1 (``protocol/1.GetNodeInfo.uavcan``).
+
+    Full node info request.
+    Note that all fields of the response section are byte-aligned.
+    """
+
+
+@dataclass(frozen=True, slots=True)
+class NodeStatus(HtmlDisplay):
+    """``uavcan.protocol.NodeStatus``, message 341 (``protocol/341.NodeStatus.uavcan``).
+
+    Abstract node status information.
+
+    All UAVCAN nodes are required to publish this message periodically.
+    """
+
+    MAX_BROADCASTING_PERIOD_MS: ClassVar[int] = 1000
+    MIN_BROADCASTING_PERIOD_MS: ClassVar[int] = 2
+    OFFLINE_TIMEOUT_MS: ClassVar[int] = 3000
+    HEALTH_OK: ClassVar[int] = 0
+    """The node is functioning properly."""
+    HEALTH_WARNING: ClassVar[int] = 1
+    """A critical parameter went out of range or the node encountered a minor failure."""
+    HEALTH_ERROR: ClassVar[int] = 2
+    """The node encountered a major failure."""
+    HEALTH_CRITICAL: ClassVar[int] = 3
+    """The node suffered a fatal malfunction."""
+    MODE_OPERATIONAL: ClassVar[int] = 0
+    """Normal operating mode."""
+    MODE_INITIALIZATION: ClassVar[int] = 1
+    """Initialization is in progress; this mode is entered immediately after startup."""
+    MODE_MAINTENANCE: ClassVar[int] = 2
+    """E.g. calibration, the bootloader is running, etc."""
+    MODE_SOFTWARE_UPDATE: ClassVar[int] = 3
+    """New software/firmware is being loaded."""
+    MODE_OFFLINE: ClassVar[int] = 7
+    """The node is no longer available."""
+
+    uptime_sec: int = 0
+    health: Health = Health(0)
+    mode: Mode | int = 0
+    sub_mode: int = 0
+    vendor_specific_status_code: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class SoftwareVersion(HtmlDisplay):
+    """``uavcan.protocol.SoftwareVersion`` (nested; ``protocol/SoftwareVersion.uavcan``).
+
+    Nested type.
+    Generic software version information.
+    """
+
+    OPTIONAL_FIELD_FLAG_VCS_COMMIT: ClassVar[int] = 1
+    OPTIONAL_FIELD_FLAG_IMAGE_CRC: ClassVar[int] = 2
+
+    major: int = 0
+    minor: int = 0
+    optional_field_flags: int = 0
+    vcs_commit: int = 0
+    image_crc: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class HardwareVersion(HtmlDisplay):
+    """``uavcan.protocol.HardwareVersion`` (nested; ``protocol/HardwareVersion.uavcan``).
+
+    Nested type.
+    Generic hardware version information.
+    These values should remain unchanged for the device's lifetime.
+    """
+
+    major: int = 0
+    minor: int = 0
+    unique_id: bytes = b""
+    certificate_of_authenticity: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class GetNodeInfoResponse(HtmlDisplay):
+    """``uavcan.protocol.GetNodeInfo`` response, service 1 (``protocol/1.GetNodeInfo.uavcan``)."""
+
+    status: NodeStatus = NodeStatus()
+    software_version: SoftwareVersion = SoftwareVersion()
+    hardware_version: HardwareVersion = HardwareVersion()
+    name: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class DataTypeKind(HtmlDisplay):
     """``uavcan.protocol.DataTypeKind`` (nested; ``protocol/DataTypeKind.uavcan``).
 
     Data type kind (message or service).
@@ -1256,7 +1457,7 @@ class DataTypeKind:
 
 
 @dataclass(frozen=True, slots=True)
-class GetDataTypeInfoRequest:
+class GetDataTypeInfoRequest(HtmlDisplay):
     """``uavcan.protocol.GetDataTypeInfo`` request, service 2 (``protocol/2.GetDataTypeInfo.uavcan``).
 
     Get the implementation details of a given data type.
@@ -1276,7 +1477,7 @@ class GetDataTypeInfoRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class GetDataTypeInfoResponse:
+class GetDataTypeInfoResponse(HtmlDisplay):
     """``uavcan.protocol.GetDataTypeInfo`` response, service 2 (``protocol/2.GetDataTypeInfo.uavcan``)."""
 
     FLAG_KNOWN: ClassVar[int] = 1
@@ -1300,7 +1501,7 @@ class GetDataTypeInfoResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class GetTransportStatsRequest:
+class GetTransportStatsRequest(HtmlDisplay):
     """``uavcan.protocol.GetTransportStats`` request, service 4 (``protocol/4.GetTransportStats.uavcan``).
 
     Get transport statistics.
@@ -1308,7 +1509,7 @@ class GetTransportStatsRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class CANIfaceStats:
+class CANIfaceStats(HtmlDisplay):
     """``uavcan.protocol.CANIfaceStats`` (nested; ``protocol/CANIfaceStats.uavcan``).
 
     Single CAN iface statistics.
@@ -1323,7 +1524,7 @@ class CANIfaceStats:
 
 
 @dataclass(frozen=True, slots=True)
-class GetTransportStatsResponse:
+class GetTransportStatsResponse(HtmlDisplay):
     """``uavcan.protocol.GetTransportStats`` response, service 4 (``protocol/4.GetTransportStats.uavcan``)."""
 
     transfers_tx: int = 0
@@ -1336,7 +1537,7 @@ class GetTransportStatsResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class GlobalTimeSync:
+class GlobalTimeSync(HtmlDisplay):
     """``uavcan.protocol.GlobalTimeSync``, message 4 (``protocol/4.GlobalTimeSync.uavcan``).
 
     Global time synchronization.
@@ -1357,7 +1558,7 @@ class GlobalTimeSync:
 
 
 @dataclass(frozen=True, slots=True)
-class Panic:
+class Panic(HtmlDisplay):
     """``uavcan.protocol.Panic``, message 5 (``protocol/5.Panic.uavcan``).
 
     This message may be published periodically to inform network participants that the system has encountered
@@ -1375,7 +1576,30 @@ class Panic:
 
 
 @dataclass(frozen=True, slots=True)
-class AccessCommandShellRequest:
+class RestartNodeRequest(HtmlDisplay):
+    """``uavcan.protocol.RestartNode`` request, service 5 (``protocol/5.RestartNode.uavcan``).
+
+    Restart the node.
+
+    Some nodes may require restart before the new configuration will be applied.
+
+    The request should be rejected if magic_number does not equal MAGIC_NUMBER.
+    """
+
+    MAGIC_NUMBER: ClassVar[int] = 742196058910
+
+    magic_number: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RestartNodeResponse(HtmlDisplay):
+    """``uavcan.protocol.RestartNode`` response, service 5 (``protocol/5.RestartNode.uavcan``)."""
+
+    ok: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class AccessCommandShellRequest(HtmlDisplay):
     """``uavcan.protocol.AccessCommandShell`` request, service 6 (``protocol/6.AccessCommandShell.uavcan``).
 
     THIS DEFINITION IS SUBJECT TO CHANGE.
@@ -1409,7 +1633,7 @@ class AccessCommandShellRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class AccessCommandShellResponse:
+class AccessCommandShellResponse(HtmlDisplay):
     """``uavcan.protocol.AccessCommandShell`` response, service 6 (``protocol/6.AccessCommandShell.uavcan``)."""
 
     FLAG_RUNNING: ClassVar[int] = 1
@@ -1427,7 +1651,7 @@ class AccessCommandShellResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class KeyValue:
+class KeyValue(HtmlDisplay):
     """``uavcan.protocol.debug.KeyValue``, message 16370 (``protocol/debug/16370.KeyValue.uavcan``).
 
     Generic named parameter (key/value pair).
@@ -1438,7 +1662,7 @@ class KeyValue:
 
 
 @dataclass(frozen=True, slots=True)
-class LogLevel:
+class LogLevel(HtmlDisplay):
     """``uavcan.protocol.debug.LogLevel`` (nested; ``protocol/debug/LogLevel.uavcan``).
 
     Log message severity
@@ -1453,7 +1677,7 @@ class LogLevel:
 
 
 @dataclass(frozen=True, slots=True)
-class LogMessage:
+class LogMessage(HtmlDisplay):
     """``uavcan.protocol.debug.LogMessage``, message 16383 (``protocol/debug/16383.LogMessage.uavcan``).
 
     Generic log message.
@@ -1466,7 +1690,7 @@ class LogMessage:
 
 
 @dataclass(frozen=True, slots=True)
-class Allocation:
+class Allocation(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.Allocation``, message 1 (``protocol/dynamic_node_id/1.Allocation.uavcan``).
 
     This message is used for dynamic Node ID allocation.
@@ -1545,7 +1769,7 @@ class Allocation:
 
 
 @dataclass(frozen=True, slots=True)
-class Entry:
+class Entry(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.Entry`` (nested; ``protocol/dynamic_node_id/server/Entry.uavcan``).
 
     THIS DEFINITION IS SUBJECT TO CHANGE.
@@ -1564,7 +1788,7 @@ class Entry:
 
 
 @dataclass(frozen=True, slots=True)
-class AppendEntriesRequest:
+class AppendEntriesRequest(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` request, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``).
 
     THIS DEFINITION IS SUBJECT TO CHANGE.
@@ -1584,7 +1808,7 @@ class AppendEntriesRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class AppendEntriesResponse:
+class AppendEntriesResponse(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` response, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``)."""
 
     term: int = 0
@@ -1592,7 +1816,7 @@ class AppendEntriesResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class RequestVoteRequest:
+class RequestVoteRequest(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.RequestVote`` request, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``).
 
     THIS DEFINITION IS SUBJECT TO CHANGE.
@@ -1607,7 +1831,7 @@ class RequestVoteRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class RequestVoteResponse:
+class RequestVoteResponse(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.RequestVote`` response, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``)."""
 
     term: int = 0
@@ -1615,7 +1839,7 @@ class RequestVoteResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class Discovery:
+class Discovery(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.Discovery``, message 390 (``protocol/dynamic_node_id/server/390.Discovery.uavcan``).
 
     THIS DEFINITION IS SUBJECT TO CHANGE.
@@ -1638,7 +1862,7 @@ class Discovery:
 
 
 @dataclass(frozen=True, slots=True)
-class BeginRequest:
+class BeginRequest(HtmlDisplay):
     """``uavcan.protocol.enumeration.Begin`` request, service 15 (``protocol/enumeration/15.Begin.uavcan``).
 
     This service instructs the node to begin the process of automated enumeration.
@@ -1655,7 +1879,7 @@ class BeginRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class BeginResponse:
+class BeginResponse(HtmlDisplay):
     """``uavcan.protocol.enumeration.Begin`` response, service 15 (``protocol/enumeration/15.Begin.uavcan``)."""
 
     ERROR_OK: ClassVar[int] = 0
@@ -1673,7 +1897,39 @@ class BeginResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class Indication:
+class Empty(HtmlDisplay):
+    """``uavcan.protocol.param.Empty`` (nested; ``protocol/param/Empty.uavcan``).
+
+    Ex nihilo nihil fit.
+    """
+
+
+@dataclass(frozen=True, slots=True)
+class IntegerValue(HtmlDisplay):
+    """Member ``integer_value`` of the union ``uavcan.protocol.param.NumericValue``."""
+
+    value: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RealValue(HtmlDisplay):
+    """Member ``real_value`` of the union ``uavcan.protocol.param.NumericValue``."""
+
+    value: float = 0.0
+
+
+NumericValue: TypeAlias = Empty | IntegerValue | RealValue
+"""``uavcan.protocol.param.NumericValue`` (nested; ``protocol/param/NumericValue.uavcan``).
+
+Numeric-only value.
+
+This is a union, which means that this structure can contain either one of the fields below.
+The structure is prefixed with tag - a selector value that indicates which particular field is encoded.
+"""
+
+
+@dataclass(frozen=True, slots=True)
+class Indication(HtmlDisplay):
     """``uavcan.protocol.enumeration.Indication``, message 380 (``protocol/enumeration/380.Indication.uavcan``).
 
     This message will be broadcasted when the node receives user input in the process of enumeration.
@@ -1684,7 +1940,127 @@ class Indication:
 
 
 @dataclass(frozen=True, slots=True)
-class GetDirectoryEntryInfoRequest:
+class Path(HtmlDisplay):
+    """``uavcan.protocol.file.Path`` (nested; ``protocol/file/Path.uavcan``).
+
+    Nested type.
+
+    File system path in UTF8.
+
+    The only valid separator is forward slash.
+    """
+
+    SEPARATOR: ClassVar[int] = 47
+
+    path: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class BeginFirmwareUpdateRequest(HtmlDisplay):
+    """``uavcan.protocol.file.BeginFirmwareUpdate`` request, service 40 (``protocol/file/40.BeginFirmwareUpdate.uavcan``).
+
+    This service initiates firmware update on a remote node.
+
+    The node that is being updated (slave) will retrieve the firmware image file 'image_file_remote_path' from the node
+    'source_node_id' using the file read service, then it will update the firmware and reboot.
+
+    The slave can explicitly reject this request if it is not possible to update the firmware at the moment
+    (e.g. if the node is busy).
+
+    If the slave node accepts this request, the initiator will get a response immediately, before the update process
+    actually begins.
+
+    While the firmware is being updated, the slave should set its mode (uavcan.protocol.NodeStatus.mode) to
+    MODE_SOFTWARE_UPDATE.
+    """
+
+    source_node_id: int = 0
+    """If this field is zero, the caller's Node ID will be used instead."""
+    image_file_remote_path: Path = Path()
+
+
+@dataclass(frozen=True, slots=True)
+class BeginFirmwareUpdateResponse(HtmlDisplay):
+    """``uavcan.protocol.file.BeginFirmwareUpdate`` response, service 40 (``protocol/file/40.BeginFirmwareUpdate.uavcan``)."""
+
+    ERROR_OK: ClassVar[int] = 0
+    ERROR_INVALID_MODE: ClassVar[int] = 1
+    """Cannot perform the update in the current operating mode or state."""
+    ERROR_IN_PROGRESS: ClassVar[int] = 2
+    """Firmware update is already in progress, and the slave doesn't want to restart."""
+    ERROR_UNKNOWN: ClassVar[int] = 255
+
+    error: FirmwareUpdateError | int = 0
+    optional_error_message: bytes = b""
+    """Detailed description of the error."""
+
+
+@dataclass(frozen=True, slots=True)
+class FileGetInfoRequest(HtmlDisplay):
+    """``uavcan.protocol.file.GetInfo`` request, service 45 (``protocol/file/45.GetInfo.uavcan``).
+
+    Request info about a remote file system entry (file, directory, etc).
+    """
+
+    path: Path = Path()
+
+
+@dataclass(frozen=True, slots=True)
+class FileErrorCode(HtmlDisplay):
+    """``uavcan.protocol.file.Error`` (nested; ``protocol/file/Error.uavcan``).
+
+    Nested type.
+    File operation result code.
+    """
+
+    OK: ClassVar[int] = 0
+    UNKNOWN_ERROR: ClassVar[int] = 32767
+    NOT_FOUND: ClassVar[int] = 2
+    IO_ERROR: ClassVar[int] = 5
+    ACCESS_DENIED: ClassVar[int] = 13
+    IS_DIRECTORY: ClassVar[int] = 21
+    """I.e. attempt to read/write on a path that points to a directory"""
+    INVALID_VALUE: ClassVar[int] = 22
+    """E.g. file name is not valid for the target file system"""
+    FILE_TOO_LARGE: ClassVar[int] = 27
+    OUT_OF_SPACE: ClassVar[int] = 28
+    NOT_IMPLEMENTED: ClassVar[int] = 38
+
+    value: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class EntryType(HtmlDisplay):
+    """``uavcan.protocol.file.EntryType`` (nested; ``protocol/file/EntryType.uavcan``).
+
+    Nested type.
+    Represents the type of the file system entry (e.g. file or directory).
+    If such entry does not exist, 'flags' must be set to zero.
+    """
+
+    FLAG_FILE: ClassVar[int] = 1
+    """Excludes FLAG_DIRECTORY"""
+    FLAG_DIRECTORY: ClassVar[int] = 2
+    """Excludes FLAG_FILE"""
+    FLAG_SYMLINK: ClassVar[int] = 4
+    """Link target is either FLAG_FILE or FLAG_DIRECTORY"""
+    FLAG_READABLE: ClassVar[int] = 8
+    FLAG_WRITEABLE: ClassVar[int] = 16
+
+    flags: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class FileGetInfoResponse(HtmlDisplay):
+    """``uavcan.protocol.file.GetInfo`` response, service 45 (``protocol/file/45.GetInfo.uavcan``)."""
+
+    size: int = 0
+    error: FileErrorCode = FileErrorCode()
+    entry_type: EntryType = EntryType()
+
+
+@dataclass(frozen=True, slots=True)
+class GetDirectoryEntryInfoRequest(HtmlDisplay):
     """``uavcan.protocol.file.GetDirectoryEntryInfo`` request, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``).
 
     This service can be used to retrieve a remote directory listing, one entry per request.
@@ -1701,7 +2077,7 @@ class GetDirectoryEntryInfoRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class GetDirectoryEntryInfoResponse:
+class GetDirectoryEntryInfoResponse(HtmlDisplay):
     """``uavcan.protocol.file.GetDirectoryEntryInfo`` response, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``)."""
 
     error: FileErrorCode = FileErrorCode()
@@ -1711,7 +2087,7 @@ class GetDirectoryEntryInfoResponse:
 
 
 @dataclass(frozen=True, slots=True)
-class DeleteRequest:
+class DeleteRequest(HtmlDisplay):
     """``uavcan.protocol.file.Delete`` request, service 47 (``protocol/file/47.Delete.uavcan``).
 
     Delete remote file system entry.
@@ -1722,14 +2098,46 @@ class DeleteRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class DeleteResponse:
+class DeleteResponse(HtmlDisplay):
     """``uavcan.protocol.file.Delete`` response, service 47 (``protocol/file/47.Delete.uavcan``)."""
 
     error: FileErrorCode = FileErrorCode()
 
 
 @dataclass(frozen=True, slots=True)
-class WriteRequest:
+class FileReadRequest(HtmlDisplay):
+    """``uavcan.protocol.file.Read`` request, service 48 (``protocol/file/48.Read.uavcan``).
+
+    Read file from a remote node.
+
+    There are two possible outcomes of a successful service call:
+    1. Data array size equals its capacity. This means that the end of the file is not reached yet.
+    2. Data array size is less than its capacity, possibly zero. This means that the end of file is reached.
+
+    Thus, if the client needs to fetch the entire file, it should repeatedly call this service while increasing the
+    offset, until incomplete data is returned.
+
+    If the object pointed by 'path' cannot be read (e.g. it is a directory or it does not exist), appropriate error code
+    will be returned, and data array will be empty.
+    """
+
+    offset: int = 0
+    path: Path = Path()
+
+
+@dataclass(frozen=True, slots=True)
+class FileReadResponse(HtmlDisplay):
+    """``uavcan.protocol.file.Read`` response, service 48 (``protocol/file/48.Read.uavcan``)."""
+
+    MAX_DATA: ClassVar[int] = 256
+    """Most bytes of ``data`` in one response (its DSDL array size)."""
+
+    error: FileErrorCode = FileErrorCode()
+    data: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class WriteRequest(HtmlDisplay):
     """``uavcan.protocol.file.Write`` request, service 49 (``protocol/file/49.Write.uavcan``).
 
     Write into a remote file.
@@ -1754,14 +2162,90 @@ class WriteRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class WriteResponse:
+class WriteResponse(HtmlDisplay):
     """``uavcan.protocol.file.Write`` response, service 49 (``protocol/file/49.Write.uavcan``)."""
 
     error: FileErrorCode = FileErrorCode()
 
 
 @dataclass(frozen=True, slots=True)
-class Protocol:
+class ExecuteOpcodeRequest(HtmlDisplay):
+    """``uavcan.protocol.param.ExecuteOpcode`` request, service 10 (``protocol/param/10.ExecuteOpcode.uavcan``).
+
+    Service to control the node configuration.
+    """
+
+    OPCODE_SAVE: ClassVar[int] = 0
+    """Save all parameters to non-volatile storage."""
+    OPCODE_ERASE: ClassVar[int] = 1
+    """Clear the non-volatile storage; some changes may take effect only after reboot."""
+
+    opcode: Opcode | int = 0
+    argument: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class ExecuteOpcodeResponse(HtmlDisplay):
+    """``uavcan.protocol.param.ExecuteOpcode`` response, service 10 (``protocol/param/10.ExecuteOpcode.uavcan``)."""
+
+    argument: int = 0
+    ok: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class BooleanValue(HtmlDisplay):
+    """Member ``boolean_value`` of the union ``uavcan.protocol.param.Value``."""
+
+    value: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class StringValue(HtmlDisplay):
+    """Member ``string_value`` of the union ``uavcan.protocol.param.Value``."""
+
+    value: bytes = b""
+
+
+Value: TypeAlias = Empty | IntegerValue | RealValue | BooleanValue | StringValue
+"""``uavcan.protocol.param.Value`` (nested; ``protocol/param/Value.uavcan``).
+
+Single parameter value.
+
+This is a union, which means that this structure can contain either one of the fields below.
+The structure is prefixed with tag - a selector value that indicates which particular field is encoded.
+"""
+
+
+@dataclass(frozen=True, slots=True)
+class GetSetRequest(HtmlDisplay):
+    """``uavcan.protocol.param.GetSet`` request, service 11 (``protocol/param/11.GetSet.uavcan``).
+
+    Get or set a parameter by name or by index.
+    Note that access by index should only be used to retrieve the list of parameters; it is highly
+    discouraged to use it for anything else, because persistent ordering is not guaranteed.
+    """
+
+    index: int = 0
+    value: Value = Empty()
+    name: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class GetSetResponse(HtmlDisplay):
+    """``uavcan.protocol.param.GetSet`` response, service 11 (``protocol/param/11.GetSet.uavcan``)."""
+
+    value: Value = Empty()
+    default_value: Value = Empty()
+    """Optional"""
+    max_value: NumericValue = Empty()
+    """Optional, not applicable for bool/string"""
+    min_value: NumericValue = Empty()
+    """Optional, not applicable for bool/string"""
+    name: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class Protocol(HtmlDisplay):
     """``uavcan.tunnel.Protocol`` (nested; ``tunnel/Protocol.uavcan``).
 
     This enumeration specifies the encapsulated protocol.
@@ -1781,7 +2265,7 @@ class Protocol:
 
 
 @dataclass(frozen=True, slots=True)
-class Broadcast:
+class Broadcast(HtmlDisplay):
     """``uavcan.tunnel.Broadcast``, message 2010 (``tunnel/2010.Broadcast.uavcan``).
 
     This message struct carries arbitrary data in the format of the specified high-level protocol.
@@ -1797,7 +2281,7 @@ class Broadcast:
 
 
 @dataclass(frozen=True, slots=True)
-class SerialConfig:
+class SerialConfig(HtmlDisplay):
     """``uavcan.tunnel.SerialConfig``, message 2011 (``tunnel/2011.SerialConfig.uavcan``).
 
     This message carries baudrate for tunnel channel_id
@@ -1809,7 +2293,7 @@ class SerialConfig:
 
 
 @dataclass(frozen=True, slots=True)
-class Targetted:
+class Targetted(HtmlDisplay):
     """``uavcan.tunnel.Targetted``, message 3001 (``tunnel/3001.Targetted.uavcan``).
 
     This message struct carries arbitrary data in the format of the specified high-level protocol.
@@ -1831,7 +2315,7 @@ class Targetted:
 
 
 @dataclass(frozen=True, slots=True)
-class CallRequest:
+class CallRequest(HtmlDisplay):
     """``uavcan.tunnel.Call`` request, service 63 (``tunnel/63.Call.uavcan``).
 
     This service carries arbitrary data in the format of the specified high-level protocol.
@@ -1848,7 +2332,7 @@ class CallRequest:
 
 
 @dataclass(frozen=True, slots=True)
-class CallResponse:
+class CallResponse(HtmlDisplay):
     """``uavcan.tunnel.Call`` response, service 63 (``tunnel/63.Call.uavcan``)."""
 
     buffer: bytes = b""
@@ -1873,8 +2357,11 @@ __all__ = [
     'Auxiliary',
     'BatteryInfo',
     'BeepCommand',
+    'BeginFirmwareUpdateRequest',
+    'BeginFirmwareUpdateResponse',
     'BeginRequest',
     'BeginResponse',
+    'BooleanValue',
     'Broadcast',
     'CANIfaceStats',
     'CallRequest',
@@ -1891,9 +2378,22 @@ __all__ = [
     'DeleteResponse',
     'Discovery',
     'ECEFPositionVelocity',
+    'Empty',
     'Entry',
+    'EntryType',
+    'EntryTypeFlag',
     'Error',
     'ErrorFlag',
+    'EscStatus',
+    'ExecuteOpcodeRequest',
+    'ExecuteOpcodeResponse',
+    'FileError',
+    'FileErrorCode',
+    'FileGetInfoRequest',
+    'FileGetInfoResponse',
+    'FileReadRequest',
+    'FileReadResponse',
+    'FirmwareUpdateError',
     'Fix',
     'Fix2',
     'Fix2GnssTimeStandard',
@@ -1908,15 +2408,22 @@ __all__ = [
     'GetDataTypeInfoResponseFlag',
     'GetDirectoryEntryInfoRequest',
     'GetDirectoryEntryInfoResponse',
+    'GetNodeInfoRequest',
+    'GetNodeInfoResponse',
+    'GetSetRequest',
+    'GetSetResponse',
     'GetTransportStatsRequest',
     'GetTransportStatsResponse',
     'GlobalNavigationSolution',
     'GlobalTimeSync',
     'HardpointCommand',
     'HardpointStatus',
+    'HardwareVersion',
+    'Health',
     'HeightReference',
     'IndicatedAirspeed',
     'Indication',
+    'IntegerValue',
     'KeyValue',
     'LightId',
     'LightsCommand',
@@ -1925,7 +2432,12 @@ __all__ = [
     'MagneticFieldStrength',
     'MagneticFieldStrength2',
     'Measurement',
+    'Mode',
+    'NodeStatus',
+    'NumericValue',
+    'Opcode',
     'Panic',
+    'Path',
     'PrimaryPowerSupplyStatus',
     'Protocol',
     'ProtocolId',
@@ -1934,58 +2446,42 @@ __all__ = [
     'RTCMStream',
     'RawAirData',
     'RawAirDataFlag',
+    'RawCommand',
     'RawIMU',
     'ReadingType',
+    'RealValue',
     'ReciprocatingStatus',
     'ReciprocatingStatusFlag',
     'RequestVoteRequest',
     'RequestVoteResponse',
+    'RestartNodeRequest',
+    'RestartNodeResponse',
     'SensorId',
     'SensorType',
     'SerialConfig',
     'Sideslip',
     'SingleLightCommand',
+    'SoftwareVersion',
+    'SoftwareVersionFlag',
     'Solution',
     'State',
     'StaticPressure',
     'StaticTemperature',
     'StatusExtended',
     'StatusFlag',
+    'StringValue',
     'SubMode',
     'Targetted',
+    'Temperature',
+    'TemperatureErrorFlag',
     'Timestamp',
     'TrueAirspeed',
+    'Value',
     'WriteRequest',
     'WriteResponse',
 ]
 
 CLASSES: dict[str, Any] = {
-    'uavcan.equipment.device.Temperature': Temperature,
-    'uavcan.equipment.esc.RawCommand': RawCommand,
-    'uavcan.equipment.esc.Status': EscStatus,
-    'uavcan.protocol.GetNodeInfo.Request': GetNodeInfoRequest,
-    'uavcan.protocol.GetNodeInfo.Response': GetNodeInfoResponse,
-    'uavcan.protocol.NodeStatus': NodeStatus,
-    'uavcan.protocol.RestartNode.Request': RestartNodeRequest,
-    'uavcan.protocol.RestartNode.Response': RestartNodeResponse,
-    'uavcan.protocol.HardwareVersion': HardwareVersion,
-    'uavcan.protocol.SoftwareVersion': SoftwareVersion,
-    'uavcan.protocol.file.BeginFirmwareUpdate.Request': BeginFirmwareUpdateRequest,
-    'uavcan.protocol.file.BeginFirmwareUpdate.Response': BeginFirmwareUpdateResponse,
-    'uavcan.protocol.file.GetInfo.Request': FileGetInfoRequest,
-    'uavcan.protocol.file.GetInfo.Response': FileGetInfoResponse,
-    'uavcan.protocol.file.Read.Request': FileReadRequest,
-    'uavcan.protocol.file.Read.Response': FileReadResponse,
-    'uavcan.protocol.file.EntryType': EntryType,
-    'uavcan.protocol.file.Error': FileErrorCode,
-    'uavcan.protocol.file.Path': Path,
-    'uavcan.protocol.param.ExecuteOpcode.Request': ExecuteOpcodeRequest,
-    'uavcan.protocol.param.ExecuteOpcode.Response': ExecuteOpcodeResponse,
-    'uavcan.protocol.param.GetSet.Request': GetSetRequest,
-    'uavcan.protocol.param.GetSet.Response': GetSetResponse,
-    'uavcan.protocol.param.Empty': Empty,
-    'uavcan.protocol.param.NumericValue': NumericValue,
-    'uavcan.protocol.param.Value': Value,
     'uavcan.CoarseOrientation': CoarseOrientation,
     'uavcan.Timestamp': Timestamp,
     'uavcan.equipment.actuator.Command': ActuatorCommand,
@@ -2006,7 +2502,10 @@ CLASSES: dict[str, Any] = {
     'uavcan.equipment.camera_gimbal.AngularCommand': AngularCommand,
     'uavcan.equipment.camera_gimbal.GEOPOICommand': GEOPOICommand,
     'uavcan.equipment.camera_gimbal.Status': CameraGimbalStatus,
+    'uavcan.equipment.device.Temperature': Temperature,
+    'uavcan.equipment.esc.RawCommand': RawCommand,
     'uavcan.equipment.esc.RPMCommand': RPMCommand,
+    'uavcan.equipment.esc.Status': EscStatus,
     'uavcan.equipment.esc.StatusExtended': StatusExtended,
     'uavcan.equipment.gnss.Fix': Fix,
     'uavcan.equipment.gnss.Auxiliary': Auxiliary,
@@ -2028,6 +2527,11 @@ CLASSES: dict[str, Any] = {
     'uavcan.equipment.range_sensor.Measurement': Measurement,
     'uavcan.equipment.safety.ArmingStatus': ArmingStatus,
     'uavcan.navigation.GlobalNavigationSolution': GlobalNavigationSolution,
+    'uavcan.protocol.GetNodeInfo.Request': GetNodeInfoRequest,
+    'uavcan.protocol.NodeStatus': NodeStatus,
+    'uavcan.protocol.SoftwareVersion': SoftwareVersion,
+    'uavcan.protocol.HardwareVersion': HardwareVersion,
+    'uavcan.protocol.GetNodeInfo.Response': GetNodeInfoResponse,
     'uavcan.protocol.DataTypeKind': DataTypeKind,
     'uavcan.protocol.GetDataTypeInfo.Request': GetDataTypeInfoRequest,
     'uavcan.protocol.GetDataTypeInfo.Response': GetDataTypeInfoResponse,
@@ -2036,6 +2540,8 @@ CLASSES: dict[str, Any] = {
     'uavcan.protocol.GetTransportStats.Response': GetTransportStatsResponse,
     'uavcan.protocol.GlobalTimeSync': GlobalTimeSync,
     'uavcan.protocol.Panic': Panic,
+    'uavcan.protocol.RestartNode.Request': RestartNodeRequest,
+    'uavcan.protocol.RestartNode.Response': RestartNodeResponse,
     'uavcan.protocol.AccessCommandShell.Request': AccessCommandShellRequest,
     'uavcan.protocol.AccessCommandShell.Response': AccessCommandShellResponse,
     'uavcan.protocol.debug.KeyValue': KeyValue,
@@ -2050,13 +2556,29 @@ CLASSES: dict[str, Any] = {
     'uavcan.protocol.dynamic_node_id.server.Discovery': Discovery,
     'uavcan.protocol.enumeration.Begin.Request': BeginRequest,
     'uavcan.protocol.enumeration.Begin.Response': BeginResponse,
+    'uavcan.protocol.param.Empty': Empty,
+    'uavcan.protocol.param.NumericValue': NumericValue,
     'uavcan.protocol.enumeration.Indication': Indication,
+    'uavcan.protocol.file.Path': Path,
+    'uavcan.protocol.file.BeginFirmwareUpdate.Request': BeginFirmwareUpdateRequest,
+    'uavcan.protocol.file.BeginFirmwareUpdate.Response': BeginFirmwareUpdateResponse,
+    'uavcan.protocol.file.GetInfo.Request': FileGetInfoRequest,
+    'uavcan.protocol.file.Error': FileErrorCode,
+    'uavcan.protocol.file.EntryType': EntryType,
+    'uavcan.protocol.file.GetInfo.Response': FileGetInfoResponse,
     'uavcan.protocol.file.GetDirectoryEntryInfo.Request': GetDirectoryEntryInfoRequest,
     'uavcan.protocol.file.GetDirectoryEntryInfo.Response': GetDirectoryEntryInfoResponse,
     'uavcan.protocol.file.Delete.Request': DeleteRequest,
     'uavcan.protocol.file.Delete.Response': DeleteResponse,
+    'uavcan.protocol.file.Read.Request': FileReadRequest,
+    'uavcan.protocol.file.Read.Response': FileReadResponse,
     'uavcan.protocol.file.Write.Request': WriteRequest,
     'uavcan.protocol.file.Write.Response': WriteResponse,
+    'uavcan.protocol.param.ExecuteOpcode.Request': ExecuteOpcodeRequest,
+    'uavcan.protocol.param.ExecuteOpcode.Response': ExecuteOpcodeResponse,
+    'uavcan.protocol.param.Value': Value,
+    'uavcan.protocol.param.GetSet.Request': GetSetRequest,
+    'uavcan.protocol.param.GetSet.Response': GetSetResponse,
     'uavcan.tunnel.Protocol': Protocol,
     'uavcan.tunnel.Broadcast': Broadcast,
     'uavcan.tunnel.SerialConfig': SerialConfig,
@@ -2092,7 +2614,7 @@ ENUMS: dict[tuple[str, str], type] = {
 """The enum a field decodes to, by (key, field name)."""
 
 UNION_MEMBERS: dict[str, tuple[type, ...]] = {
-    'uavcan.protocol.param.Value': (Empty, IntegerValue, RealValue, BooleanValue, StringValue,),
     'uavcan.protocol.param.NumericValue': (Empty, IntegerValue, RealValue,),
+    'uavcan.protocol.param.Value': (Empty, IntegerValue, RealValue, BooleanValue, StringValue,),
 }
 """The member classes of each union, in member order."""

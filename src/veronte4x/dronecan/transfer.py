@@ -18,6 +18,7 @@ from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, Frames
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
+from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
 
 DEFAULT_PRIORITY = 16
@@ -77,6 +78,7 @@ def encode(
     priority: int = DEFAULT_PRIORITY,
     destination_node_id: int | None = None,
     saturate: bool = False,
+    types: TypeSet | None = None,
 ) -> list[Frame]:
     """Encode a message, request or response into the frames of one transfer.
 
@@ -90,6 +92,8 @@ def encode(
             must be None for messages.
         saturate: Clamp out-of-range integers to their DSDL range (the spec's saturated
             cast) instead of raising.
+        types: The `TypeSet` that knows the message's class; None for the default set
+            (the standard one, plus what `veronte4x.dronecan.load_dsdl` added).
 
     Raises:
         EncodeError: A field the type cannot hold, or a transport field out of range.
@@ -105,7 +109,13 @@ def encode(
             except ENCODE_FALLBACK:
                 pass
     return _encode_checked(
-        message, source_node_id, transfer_id, priority, destination_node_id, saturate
+        message,
+        source_node_id,
+        transfer_id,
+        priority,
+        destination_node_id,
+        saturate,
+        types,
     )
 
 
@@ -116,9 +126,10 @@ def _encode_checked(
     priority: int,
     destination_node_id: int | None,
     saturate: bool,
+    types: TypeSet | None = None,
 ) -> list[Frame]:
     """`encode` through the generic serializer, checking every argument."""
-    codec = BY_CLASS.get(type(message))
+    codec = resolve(types, "encode").by_class.get(type(message))
     if codec is None:
         raise argument_type_error(
             "encode", "message", "a DroneCAN message, request or response", message
@@ -205,7 +216,11 @@ _FAST_ERRORS = DECODE_FALLBACK  # what the generated decoders raise
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 
 
-def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.0) -> Transfer:
+def decode_frames(
+    frames: Iterable[tuple[int, BytesLike]],
+    timestamp: float = 0.0,
+    types: TypeSet | None = None,
+) -> Transfer:
     """Decode the frames of exactly one transfer, in order, checking everything.
 
     Checks the CAN IDs (all equal), the tail bytes (start, end, toggle, transfer id), the
@@ -214,6 +229,8 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
     Args:
         frames: ``(can_id, data)`` pairs: an int CAN ID and bytes-like data, tail byte last.
         timestamp: Returned as the transfer's timestamp.
+        types: The `TypeSet` to decode with; None for the default set (the standard
+            one, plus what `veronte4x.dronecan.load_dsdl` added).
 
     Raises:
         DecodeError: Any inconsistency in the frames.
@@ -263,7 +280,7 @@ def decode_frames(frames: Iterable[tuple[int, BytesLike]], timestamp: float = 0.
                                 fast[2],
                             ),
                         )
-    return _decode_frames_checked(_frame_list(frames), _check_timestamp(timestamp))
+    return _decode_frames_checked(_frame_list(frames), _check_timestamp(timestamp), types)
 
 
 _new_tuple = tuple.__new__
@@ -325,13 +342,15 @@ def _check_timestamp(timestamp: object) -> float:
     return timestamp
 
 
-def _decode_frames_checked(items: list[tuple[int, bytes]], timestamp: float) -> Transfer:
+def _decode_frames_checked(
+    items: list[tuple[int, bytes]], timestamp: float, types: TypeSet | None = None
+) -> Transfer:
     """`decode_frames` through the generic path, checking every field in turn."""
     if not 0 < len(items) < len(MULTI_FRAME_TAILS[0]):
         raise DecodeError(None, f"{len(items)} frames, not 1..{len(MULTI_FRAME_TAILS[0]) - 1}", b"")
     can_id = items[0][0]
     fields = parse_can_id(can_id)
-    codec = BY_ID.get((fields.kind, fields.data_type_id))
+    codec = resolve(types, "decode_frames").by_id.get((fields.kind, fields.data_type_id))
     name = codec.data_type.full_name if codec else None
     tid = items[0][1][-1] & 0x1F if items[0][1] else 0
     for index, (frame_id, data) in enumerate(items):

@@ -9,6 +9,7 @@ compiled at run time for a vendor namespace) and computes every signature.
 from __future__ import annotations
 
 import functools
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -19,6 +20,7 @@ from veronte4x.dronecan.crc import signature_seed
 from veronte4x.dronecan.generate import attribute_name, keys
 from veronte4x.dronecan.parser import (
     ArrayType,
+    Attribute,
     Definition,
     DsdlError,
     FieldType,
@@ -166,6 +168,51 @@ def data_types(
             kind = kinds[i] if d.service else TransferKind.MESSAGE
             found.append(DataType(d.full_name, kind, d.default_id, value, schema, d.path))
     return found
+
+
+TEXT_WORDS = frozenset(
+    {"name", "path", "text", "string", "message", "key", "description", "reason", "label", "source"}
+)
+"""The words that make a ``uint8[<=N]`` field text (see `is_text`)."""
+
+
+def is_text(attribute: Attribute) -> bool:
+    """Whether a field holds text: a dynamic ``uint8`` array whose name or DSDL comment
+    has one of the `TEXT_WORDS` (``name``, ``parameter_name``, ``reason_text``,
+    ``string_value``, ``optional_error_message``, ``source``, or a comment such as "Full
+    data type name"). Other byte arrays are data (``data``, ``buffer``, ``unique_id``)."""
+    t = attribute.type
+    if not (
+        isinstance(t, ArrayType)
+        and t.dynamic
+        and isinstance(t.item, PrimitiveType)
+        and t.item.kind == "uint"
+        and t.item.bits == 8
+    ):
+        return False
+    words = re.findall(r"[a-z]+", f"{attribute.name} {attribute.comment}".lower())
+    return not TEXT_WORDS.isdisjoint(words)
+
+
+def text_attributes(
+    definitions: Mapping[str, Definition],
+    classes: Mapping[str, type],
+    members: Mapping[str, tuple[type, ...]],
+) -> dict[type, frozenset[str]]:
+    """The attributes of each class that hold text (`is_text`); a union member's ``value``."""
+    found: dict[type, set[str]] = {}
+    for d in definitions.values():
+        for key, section in zip(keys(d), d.sections, strict=True):
+            if key not in classes:
+                continue
+            for index, a in enumerate(section.fields):
+                if not is_text(a):
+                    continue
+                if section.union:
+                    found.setdefault(members[key][index], set()).add("value")
+                else:
+                    found.setdefault(classes[key], set()).add(attribute_name(a.name))
+    return {cls: frozenset(names) for cls, names in found.items()}
 
 
 def nested_signatures(definitions: Mapping[str, Definition]) -> dict[str, int]:

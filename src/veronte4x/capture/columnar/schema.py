@@ -41,9 +41,9 @@ from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import Field, Kind
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
+from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.units import unit
 
 SENDERS: tuple[str, ...] = (
@@ -193,15 +193,15 @@ def veronte_type(f: Field) -> pa.DataType:
 # DroneCAN --------------------------------------------------------------------------------
 
 
-def dronecan_specs() -> dict[str, TableSpec]:
-    """The table of every DroneCAN type, by class name."""
-    return dict(_dronecan_specs())
+def dronecan_specs(types: TypeSet | None = None) -> dict[str, TableSpec]:
+    """The table of every DroneCAN type of a type set (None: the default), by class name."""
+    return dict(_dronecan_specs(resolve(types, "dronecan_specs")))
 
 
 @functools.cache
-def _dronecan_specs() -> dict[str, TableSpec]:
+def _dronecan_specs(types: TypeSet) -> dict[str, TableSpec]:
     specs = {}
-    for data_type in DATA_TYPES:
+    for data_type in types.data_types:
         head: tuple[pa.Field, ...] = (*HEAD, NODE_ID)
         if data_type.kind is not TransferKind.MESSAGE:
             head = (*head, DESTINATION)
@@ -323,12 +323,13 @@ def enum_type(names: tuple[str, ...]) -> pa.DataType:
     return pa.dictionary(integer_type(0, len(names) - 1), pa.string())
 
 
-def all_specs(codec: Codec) -> dict[str, TableSpec]:
-    """Every message table a capture decoded with this codec can give, by kind."""
+def all_specs(codec: Codec, types: TypeSet | None = None) -> dict[str, TableSpec]:
+    """Every message table a capture decoded with this codec and these DroneCAN types
+    (None: the default set) can give, by kind."""
     specs = {
         kind: veronte_spec(kind, variants) for kind, variants in veronte_layouts(codec).items()
     }
-    specs.update(dronecan_specs())
+    specs.update(dronecan_specs(types))
     return specs
 
 

@@ -84,7 +84,7 @@ class StreamDecoder:
         self.channel = channel
         self.per_frame_channels = frozenset(per_frame_channels)
         self.decoder = CaptureDecoder(self.bus_map)
-        self._specs = all_specs(self.bus_map.codec())
+        self._specs = all_specs(self.bus_map.codec(), self.bus_map.dronecan_types)
         self._pending: FrameColumns | None = None
         self._context = np.zeros(0, np.bool_)
         self._channel_ids: dict[str, int] = {}
@@ -309,7 +309,9 @@ class StreamDecoder:
             name = frames.channels[frames.channel[rows[start]]]
             reassembler = self.decoder.reassemblers.get(name)
             if reassembler is None:
-                reassembler = self.decoder.reassemblers[name] = Reassembler()
+                reassembler = self.decoder.reassemblers[name] = Reassembler(
+                    types=self.bus_map.dronecan_types
+                )
             at = start
             while at < len(rows) and context[rows[at]]:  # the last whole transfer, again
                 row = int(rows[at])
