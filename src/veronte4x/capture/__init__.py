@@ -13,6 +13,7 @@ Examples:
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
@@ -21,7 +22,7 @@ from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.dbc import export_dbc, write_dbc
-from veronte4x.capture.dbc_in import DbcDecoder
+from veronte4x.capture.dbc_in import DbcDecoder, decoder_of
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.pythoncan import read_with_python_can
@@ -75,7 +76,8 @@ def read(
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
         dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
-            decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+            decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`), after
+            those of the bus map's own ``dbc``.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows, or
@@ -84,14 +86,15 @@ def read(
             installed.
         OSError: The file cannot be opened.
     """
+    bus_map = with_dbc(bus_map, dbc)
+    dbc_decoder = decoder_of(bus_map.dbc) if bus_map.dbc else None
     source = resolve(path)
     decoder = CaptureDecoder(bus_map)
     if source.format is Format.CANDUMP:
         records = decoder.decode_chunks(read_chunks(source), channel)
     else:
         records = decoder.decode(read_with_python_can(source.path, channel))
-    dbc = list(dbc)
-    return DbcDecoder(dbc).records(records) if dbc else records
+    return records if dbc_decoder is None else dbc_decoder.records(records)
 
 
 def stats(records: Iterable[Record]) -> Stats:
@@ -134,9 +137,10 @@ def read_tables(
         progress: Show a progress bar over the captures' bytes (tqdm's, in a terminal or
             a notebook); None shows it when standard error is a terminal or in a
             notebook, and tqdm is installed.
-        dbc: DBC files: the ``unknown`` rows on a CAN ID one of them knows become tables
-            of their own, one per DBC message, a column per signal with its unit (the
-            ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        dbc: DBC files: the frames outside the bus map on a CAN ID one of them knows
+            (after the bus map's own ``dbc``) fill tables of their own instead of
+            ``unknown``, one per DBC message, a column per signal with its unit in the
+            field's metadata (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -154,12 +158,13 @@ def read_tables(
         >>> tables["errors"].column("error").to_pylist()
         ['unknown command']
     """
-    dbc = list(dbc)
-    decoder = DbcDecoder(dbc) if dbc else None
+    bus_map = with_dbc(bus_map, dbc)
+    if bus_map.dbc:
+        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time, progress
     )
-    return tables if decoder is None else decoder.tables(tables)
+    return tables
 
 
 def tables_from_records(
@@ -180,6 +185,7 @@ def to_parquet(
     client: Any = None,
     progress: bool | None = None,
     channel: str | None = None,
+    dbc: Iterable[str | os.PathLike[str]] = (),
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -205,6 +211,8 @@ def to_parquet(
         progress: Show a progress bar (tqdm's, in a terminal or a notebook); None shows
             it when standard error is a terminal or in a notebook.
         channel: Keep only this interface's frames.
+        dbc: DBC files, as `read_tables` takes them: each DBC message a table
+            (``message=BmsStatus``); with ``client``, every worker must see them too.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -218,8 +226,19 @@ def to_parquet(
     require("pyarrow.parquet", "parquet", "writing Parquet")
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
+    bus_map = with_dbc(bus_map, dbc)
+    if bus_map.dbc:
+        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any file
+
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
     return summary
+
+
+def with_dbc(bus_map: BusMap | None, dbc: Iterable[str | os.PathLike[str]]) -> BusMap:
+    """``bus_map`` (or the default one) with these DBC files after its own."""
+    bus_map = bus_map or BusMap()
+    paths = tuple(os.fspath(path) for path in dbc)
+    return dataclasses.replace(bus_map, dbc=(*bus_map.dbc, *paths)) if paths else bus_map
 
 
 def _columnar() -> Any:

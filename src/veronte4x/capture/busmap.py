@@ -71,6 +71,7 @@ class BusMap:
         allow_excess: Ignore bytes past a layout instead of reporting an error.
         layouts: Declared layouts for the commands whose payload is not public.
         dronecan: Decode the other 29-bit frames as DroneCAN.
+        dbc: DBC files for the frames outside the bus map (see `veronte4x.capture.dbc_in`).
     """
 
     arbiter_id: int = 255
@@ -80,6 +81,7 @@ class BusMap:
     allow_excess: bool = False
     layouts: tuple[codec.Layout, ...] = ()
     dronecan: bool = True
+    dbc: tuple[str, ...] = ()
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )
