@@ -43,7 +43,7 @@ def chunk(draw: st.DrawFn, cursor: int, end: int, name: str) -> tuple[dict[str, 
         return None
     signal: dict[str, Any] = {"name": name, "float": kind == "float", "choices": None}
     signal["signed"] = draw(st.booleans()) and kind != "float"
-    signal["length"] = 32 if kind == "float" else draw(st.integers(1, min(room, 32)))
+    signal["length"] = 32 if kind == "float" else draw(st.integers(1, min(room, 64)))
     signal["order"] = "0" if kind == "big" or (kind == "float" and draw(st.booleans())) else "1"
     signal["start"] = cursor + 7 if signal["order"] == "0" else cursor
     signal["scale"] = 1 if kind == "float" else draw(SCALES)
