@@ -22,7 +22,11 @@ RUNS = [
         ["--frames", "3000", "--repeat", "1"],
         ["third DroneCAN", "veronte4x to records", "veronte4x to DataFrame"],
     ),
-    ("bench_dbc.py", ["--frames", "2000", "--repeat", "1"], ["read_tables, only DBC frames"]),
+    (
+        "bench_dbc.py",
+        ["--frames", "2000", "--repeat", "1"],
+        ["columnar DBC pass, only DBC frames", "read_tables, only DBC frames"],
+    ),
     (
         "bench_columnar.py",
         [

@@ -91,3 +91,14 @@ def test_declared_layouts_travel_to_the_workers(client: distributed.Client, tmp_
     expected = capture.read_tables(path, bus_map)
     assert len(expected["ScorpionTelemetry"]) == 5
     assert_same_tables(read_back(tmp_path / "data"), expected)
+
+
+def test_dbc_files_travel_to_the_workers(client: distributed.Client, tmp_path: Path) -> None:
+    dbc = Path(__file__).with_name("data") / "payload.dbc"
+    lines = [f"({t}.0) can0 123#E803F6FF0119{t:04X}" for t in range(5)]
+    path = write(tmp_path / "payload.log", [*lines, "(6.0) can0 123#E8"])
+    bus_map = BusMap(dronecan=False)
+    capture.to_parquet(path, tmp_path / "data", bus_map, client=client, progress=False, dbc=[dbc])
+    expected = capture.read_tables(path, bus_map, dbc=[dbc])
+    assert (len(expected["BmsStatus"]), len(expected["errors"])) == (5, 1)
+    assert_same_tables(read_back(tmp_path / "data"), expected)

@@ -13,6 +13,7 @@ Examples:
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Any
@@ -22,7 +23,7 @@ from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.dbc import export_dbc, write_dbc
-from veronte4x.capture.dbc_in import DbcDecoder
+from veronte4x.capture.dbc_in import DbcDecoder, decoder_of
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
@@ -79,7 +80,8 @@ def read(
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
         dbc: DBC files: the frames outside the bus map whose CAN ID one of them knows are
-            decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+            decoded by cantools (the ``dbc`` extra; see `veronte4x.capture.dbc_in`), after
+            those of the bus map's own ``dbc``.
         types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
@@ -92,11 +94,11 @@ def read(
             installed.
         OSError: The file cannot be opened.
     """
-    bus_map = (bus_map or BusMap()).with_types(types)
+    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    dbc_decoder = decoder_of(bus_map.dbc) if bus_map.dbc else None
     source = resolve(path)
     records = source.reader.read_records(source, CaptureDecoder(bus_map), channel)
-    dbc = list(dbc)
-    return DbcDecoder(dbc).records(records) if dbc else records
+    return records if dbc_decoder is None else dbc_decoder.records(records)
 
 
 def stats(records: Iterable[Record]) -> Stats:
@@ -140,9 +142,10 @@ def read_tables(
         progress: Show a progress bar over the captures' bytes (tqdm's, in a terminal or
             a notebook); None shows it when standard error is a terminal or in a
             notebook, and tqdm is installed.
-        dbc: DBC files: the ``unknown`` rows on a CAN ID one of them knows become tables
-            of their own, one per DBC message, a column per signal with its unit (the
-            ``dbc`` extra; see `veronte4x.capture.dbc_in`).
+        dbc: DBC files: the frames outside the bus map on a CAN ID one of them knows
+            (after the bus map's own ``dbc``) fill tables of their own instead of
+            ``unknown``, one per DBC message, a column per signal with its unit in the
+            field's metadata (the ``dbc`` extra; see `veronte4x.capture.dbc_in`).
         types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
@@ -164,13 +167,13 @@ def read_tables(
         >>> tables["errors"].column("error").to_pylist()
         ['unknown command']
     """
-    dbc = list(dbc)
-    bus_map = (bus_map or BusMap()).with_types(types)
-    decoder = DbcDecoder(dbc) if dbc else None
+    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    if bus_map.dbc:
+        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, relative_time, progress
     )
-    return tables if decoder is None else decoder.tables(tables)
+    return tables
 
 
 def tables_from_records(
@@ -193,6 +196,7 @@ def to_parquet(
     client: Any = None,
     progress: bool | None = None,
     channel: str | None = None,
+    dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
@@ -219,6 +223,8 @@ def to_parquet(
         progress: Show a progress bar (tqdm's, in a terminal or a notebook); None shows
             it when standard error is a terminal or in a notebook.
         channel: Keep only this interface's frames.
+        dbc: DBC files, as `read_tables` takes them: each DBC message a table
+            (``message=BmsStatus``); with ``client``, every worker must see them too.
         types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
@@ -236,9 +242,19 @@ def to_parquet(
     require("pyarrow.parquet", "parquet", "writing Parquet")
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
-    bus_map = (bus_map or BusMap()).with_types(types)
+    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    if bus_map.dbc:
+        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any file
+
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
     return summary
+
+
+def with_dbc(bus_map: BusMap | None, dbc: Iterable[str | os.PathLike[str]]) -> BusMap:
+    """``bus_map`` (or the default one) with these DBC files after its own."""
+    bus_map = bus_map or BusMap()
+    paths = tuple(os.fspath(path) for path in dbc)
+    return dataclasses.replace(bus_map, dbc=(*bus_map.dbc, *paths)) if paths else bus_map
 
 
 def _columnar() -> Any:

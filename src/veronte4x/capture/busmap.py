@@ -77,6 +77,7 @@ class BusMap:
         dronecan_types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`);
             None for the default set (the standard one, plus what
             `veronte4x.dronecan.load_dsdl` added).
+        dbc: DBC files for the frames outside the bus map (see `veronte4x.capture.dbc_in`).
     """
 
     arbiter_id: int = 255
@@ -87,6 +88,7 @@ class BusMap:
     layouts: tuple[codec.Layout, ...] = ()
     dronecan: bool = True
     dronecan_types: TypeSet | None = None
+    dbc: tuple[str, ...] = ()
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )

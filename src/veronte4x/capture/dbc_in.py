@@ -9,24 +9,28 @@ the frame does not carry, a value table's name for an enum); its table has a col
 signal with the signal's unit in the field metadata. Only frames that the bus map leaves
 unknown are looked up: on a bus where DroneCAN is enabled (the default), every 29-bit
 frame is DroneCAN's, so a DBC of 29-bit frames needs ``[dronecan] enabled = false``.
+
+Names become Python identifiers (other characters as ``_``); a name that is a Python
+keyword, a message name that is one of veronte4x's tables (``Status``, ``errors``) or a
+signal name that is a record column (``timestamp``, ``can_id``) takes a trailing ``_``.
+The columnar engine decodes these frames in its column-wise pass
+(`veronte4x.capture.columnar.dbc`), to the same rows.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 import keyword
 import os
 import re
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from veronte4x.capture.busmap import Role
+from veronte4x.capture.busmap import RECORD_COLUMNS, Role, reserved_names
 from veronte4x.capture.records import Record
 from veronte4x.errors import SourceError
 from veronte4x.extras import require
-
-if TYPE_CHECKING:
-    import pyarrow
 
 
 class DbcMessage:
@@ -90,13 +94,17 @@ class DbcDecoder:
         try:
             values = message.decode(data, decode_choices=True, scaling=True)
         except Exception as error:  # cantools' DecodeError and the struct errors it lets out
-            raise ValueError(f"{message.name}: {error}") from None
+            raise ValueError(failure(message, error)) from None
         get = values.get
         arguments = [get(name) for name in cls.SIGNALS]
         for position in cls.CHOICES:
             if arguments[position] is not None:
                 arguments[position] = str(arguments[position])
         return cls(*arguments)
+
+    def entries(self) -> dict[tuple[int, bool], tuple[Any, type[Any]]]:
+        """(CAN ID, extended) to the cantools message and its class, for every ID known."""
+        return dict(self._messages)
 
     def record(self, record: Record) -> Record:
         """``record`` decoded if it is unknown traffic on a CAN ID a DBC knows, else as is."""
@@ -122,76 +130,52 @@ class DbcDecoder:
         for record in records:
             yield self.record(record)
 
-    def tables(self, tables: dict[str, pyarrow.Table]) -> dict[str, pyarrow.Table]:
-        """`read_tables`' tables with the known rows of ``unknown`` moved to tables of their
-        own, one per DBC message (and the frames cantools cannot decode, to ``errors``)."""
-        import pyarrow as pa
 
-        unknown = tables.get("unknown")
-        if unknown is None:
-            return tables
-        keep: list[int] = []
-        found: dict[type[Any], tuple[Any, list[int], list[dict[str, Any]]]] = {}
-        failed: list[tuple[int, str]] = []
-        columns = (unknown.column(n).to_pylist() for n in ("can_id", "detail", "data"))
-        for index, (can_id, detail, data) in enumerate(zip(*columns, strict=True)):
-            entry = None
-            if detail.startswith("11-bit CAN ID "):
-                entry = self._messages.get((can_id, False))
-            elif detail.startswith("29-bit CAN ID "):
-                entry = self._messages.get((can_id, True))
-            if entry is None:
-                keep.append(index)
-                continue
-            message, cls = entry
-            try:
-                values = message.decode(data, decode_choices=True, scaling=True)
-            except Exception as error:  # as in `decode`
-                failed.append((index, f"{message.name}: {error}"))
-                continue
-            rows = found.setdefault(cls, (message, [], []))
-            rows[1].append(index)
-            rows[2].append(values)
-        out = {name: table for name, table in tables.items() if name != "unknown"}
-        for cls, (message, indices, values) in found.items():
-            routing = unknown.select(["timestamp", "channel", "can_id", "sender"])
-            out[cls.__name__] = _table(
-                routing.take(pa.array(indices, pa.int64())), cls, message, values
-            )
-        if keep:
-            out["unknown"] = unknown.take(pa.array(keep, pa.int64()))
-        if failed:
-            rows = unknown.take(pa.array([i for i, _ in failed], pa.int64())).to_pylist()
-            for row, (_, detail) in zip(rows, failed, strict=True):
-                row.update(error="decode error", detail=detail)
-            errors = pa.Table.from_pylist(rows, schema=_errors_schema(unknown.schema, tables))
-            out["errors"] = pa.concat_tables([t for t in (tables.get("errors"), errors) if t])
-        return out
+def failure(message: Any, error: Exception) -> str:
+    """The detail of a frame cantools cannot decode."""
+    return f"{message.name}: {error}"
 
 
-def _plain(signal: Any, value: Any) -> Any:
-    """A value table's entry as its name (a number it does not name as text); numbers as
-    they are."""
-    if value is None or not (signal.choices or isinstance(value, str)):
-        return value
-    return str(value)
+def decoder_of(paths: Iterable[str | os.PathLike[str]]) -> DbcDecoder:
+    """The decoder of these DBC files, loaded once while the files stay as they are.
+
+    Raises:
+        SourceError: As `DbcDecoder` does.
+    """
+    key = []
+    for path in paths:
+        try:
+            status = os.stat(path)
+        except OSError:
+            return DbcDecoder([path])  # raises SourceError
+        key.append((os.fspath(path), status.st_mtime_ns, status.st_size))
+    return _cached(tuple(key))
 
 
-def _identifier(name: str) -> str:
+@functools.lru_cache(maxsize=16)
+def _cached(key: tuple[tuple[str, int, int], ...]) -> DbcDecoder:
+    return DbcDecoder([path for path, _, _ in key])
+
+
+def _identifier(name: str, taken: frozenset[str] = frozenset()) -> str:
     text = re.sub(r"\W", "_", name)
     if not text or text[0].isdigit():
         text = "_" + text
-    return text + "_" if keyword.iskeyword(text) else text
+    return text + "_" if keyword.iskeyword(text) or text in taken else text
 
 
 def _message_class(message: Any) -> type[Any]:
     fields: list[tuple[str, Any]] = []
     units: dict[str, str] = {}
     for signal in message.signals:
-        attr = _identifier(signal.name)
+        attr = _identifier(signal.name, RECORD_COLUMNS)
         if signal.choices:
             kind: Any = str
-        elif signal.is_float or not float(signal.scale).is_integer() or signal.offset % 1:
+        elif (
+            signal.is_float
+            or not isinstance(signal.scale, int)
+            or not isinstance(signal.offset, int)
+        ):
             kind = float
         else:
             kind = int
@@ -199,7 +183,7 @@ def _message_class(message: Any) -> type[Any]:
         if signal.unit:
             units[attr] = signal.unit
     cls = dataclasses.make_dataclass(
-        _identifier(message.name),
+        _identifier(message.name, reserved_names()),
         [(attr, kind, dataclasses.field(default=None)) for attr, kind in fields],
         bases=(DbcMessage,),
         namespace={
@@ -213,38 +197,3 @@ def _message_class(message: Any) -> type[Any]:
         slots=True,
     )
     return cls
-
-
-def _table(
-    routing: pyarrow.Table, cls: type[Any], message: Any, rows: list[dict[str, Any]]
-) -> pyarrow.Table:
-    """The routing columns, then a column per signal of ``message`` (``cls``'s fields)."""
-    import pyarrow as pa
-
-    for item, signal in zip(dataclasses.fields(cls), message.signals, strict=True):
-        kind = {str: pa.string(), float: pa.float64()}.get(_base(item.type), pa.int64())
-        unit = cls.UNITS.get(item.name)
-        values = [_plain(signal, row.get(signal.name)) for row in rows]
-        if kind == pa.float64():
-            values = [None if v is None else float(v) for v in values]
-        field = pa.field(item.name, kind, metadata={"unit": unit} if unit else None)
-        routing = routing.append_column(field, pa.array(values, kind))
-    return routing
-
-
-def _base(annotation: Any) -> Any:
-    """``int`` of ``int | None``."""
-    for kind in (str, float, int):
-        if annotation == kind | None or annotation is kind:
-            return kind
-    return int
-
-
-def _errors_schema(unknown: pyarrow.Schema, tables: dict[str, pyarrow.Table]) -> pyarrow.Schema:
-    import pyarrow as pa
-
-    if "errors" in tables:
-        return tables["errors"].schema
-    fields = [unknown.field(n) for n in ("timestamp", "channel", "can_id", "sender")]
-    fields.append(pa.field("error", pa.dictionary(pa.int16(), pa.string())))
-    return pa.schema([*fields, unknown.field("detail"), unknown.field("data")])

@@ -4,17 +4,24 @@
 fields (as `veronte4x.capture.readable` writes them: shortest numbers, enums by name,
 units), the count, the rate over the last seconds and the errors; and the arbiter's state
 from its Status and Score frames (Veronte Autopilot 4x Software Manual, the arbiter's CAN
-messages). Time is the records' own timestamps, so a capture and a live bus give the same
-table. `render_text` writes the table as plain text; the terminal view is drawn by the CLI.
+messages). Each row also keeps its timing as `veronte4x.capture.rates` counts a stream:
+usual period, jitter, longest gap, and the flags ``stopped`` (silent for more than 3
+periods: a DroneCAN node whose NodeStatus is stopped is offline) and ``slow``; the table
+shows them with ``rates=True`` (``monitor --rates``). Time is the records' own timestamps,
+so a capture and a live bus give the same table; "now", for the silence of a stream, is
+the latest timestamp unless the caller gives it. `render_text` writes the table as plain
+text; the terminal view is drawn by the CLI.
 """
 
 from __future__ import annotations
 
+import math
 from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.rates import Stream
 from veronte4x.capture.readable import format_message
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
@@ -51,6 +58,11 @@ class Row:
         rate: Records per second over the last `RATE_WINDOW` seconds.
         fields: The latest message's fields, as people read them (`fields_text`).
         last_seen: Timestamp of the latest one.
+        period: Usual (median) period in seconds, to 1/64 octave (NaN below 2 records).
+        jitter: Standard deviation of the periods, in seconds (NaN below 3 records).
+        longest_gap: Longest period, in seconds.
+        flags: ``stopped`` (silent for more than 3 periods), ``slow`` (its recent rate
+            under half its usual one); see `veronte4x.capture.rates`.
     """
 
     sender: str
@@ -61,6 +73,10 @@ class Row:
     rate: float
     fields: str
     last_seen: float | None
+    period: float = math.nan
+    jitter: float = math.nan
+    longest_gap: float = 0.0
+    flags: tuple[str, ...] = ()
 
 
 @dataclass
@@ -71,6 +87,7 @@ class _Entry:
     fields: str = ""
     last_seen: float | None = None
     times: deque[float] = field(default_factory=deque)
+    timing: Stream = field(default_factory=Stream)
 
 
 @dataclass(frozen=True, slots=True)
@@ -112,6 +129,7 @@ class MonitorState:
 
     Args:
         rate_window: Seconds over which rates are counted.
+        rates: Show each row's timing (period, jitter, longest gap, flags) in the table.
 
     Examples:
         >>> from veronte4x import capture
@@ -122,8 +140,9 @@ class MonitorState:
         [('arbiter', 'Score', 3)]
     """
 
-    def __init__(self, rate_window: float = RATE_WINDOW) -> None:
+    def __init__(self, rate_window: float = RATE_WINDOW, rates: bool = False) -> None:
         self.rate_window = rate_window
+        self.rates = rates
         self.records = 0
         self.errors = 0
         self.first_timestamp: float | None = None
@@ -158,6 +177,8 @@ class MonitorState:
         entry.fields = fields_text(message)
         entry.last_seen = stamp
         if stamp is not None:
+            if not entry.timing.count or stamp >= entry.timing.last:
+                entry.timing.add(stamp)
             entry.times.append(stamp)
             while entry.times and entry.times[0] <= stamp - self.rate_window:
                 entry.times.popleft()
@@ -171,16 +192,22 @@ class MonitorState:
         """The arbiter's latest Status and Scores."""
         return ArbiterView(self._status, tuple(sorted(self._scores.items())))
 
-    def rows(self, text_filter: str = "") -> list[Row]:
+    def rows(self, text_filter: str = "", now: float | None = None) -> list[Row]:
         """The rows by sender and type; only those whose sender or type contains the filter
-        (any case)."""
+        (any case). ``now`` (default: the latest timestamp) is when a stream's silence ends,
+        for its ``stopped`` flag."""
         wanted = text_filter.lower()
-        now = self.last_timestamp
+        latest = self.last_timestamp
+        if now is None:
+            now = latest
         rows = []
         for (sender, kind), e in sorted(self._rows.items()):
             if wanted and wanted not in sender.lower() and wanted not in kind.lower():
                 continue
-            recent = 0 if now is None else sum(1 for t in e.times if t > now - self.rate_window)
+            recent = (
+                0 if latest is None else sum(1 for t in e.times if t > latest - self.rate_window)
+            )
+            usual = e.timing.usual()
             rows.append(
                 Row(
                     sender,
@@ -191,6 +218,10 @@ class MonitorState:
                     recent / self.rate_window,
                     e.fields,
                     e.last_seen,
+                    math.nan if usual is None else usual,
+                    e.timing.jitter(),
+                    e.timing.longest,
+                    () if now is None else e.timing.flags(now),
                 )
             )
         return rows
@@ -208,20 +239,53 @@ def can_id_text(can_id: int) -> str:
     return f"{can_id:08X}" if can_id > 0x7FF else f"{can_id:03X}"
 
 
-def render_text(state: MonitorState, text_filter: str = "") -> str:
-    """The monitor as plain text: the arbiter line, a summary, then one line per row."""
-    rows = state.rows(text_filter)
+def seconds_text(value: float) -> str:
+    """A duration to 3 significant digits, in µs, ms or s (``-`` for NaN): ``100 ms``."""
+    if math.isnan(value):
+        return "-"
+    if value < 1e-3:
+        return f"{value * 1e6:.3g} µs"
+    return f"{value * 1000:.3g} ms" if value < 1 else f"{value:.3g} s"
+
+
+def flags_text(flags: tuple[str, ...]) -> str:
+    """A row's flags as the table shows them: ``STOPPED``, ``slow``."""
+    return " ".join(flag.upper() if flag == "stopped" else flag for flag in flags)
+
+
+TIMING_HEADS = ("period", "jitter", "gap", "state")
+"""The timing columns of the table with ``rates``."""
+
+
+def timing_texts(row: Row) -> tuple[str, str, str, str]:
+    """A row's timing columns (`TIMING_HEADS`) as text."""
+    gap = seconds_text(row.longest_gap) if row.count > 1 else "-"
+    return seconds_text(row.period), seconds_text(row.jitter), gap, flags_text(row.flags)
+
+
+def render_text(state: MonitorState, text_filter: str = "", now: float | None = None) -> str:
+    """The monitor as plain text: the arbiter line, a summary, then one line per row (with
+    its timing columns if the state shows rates)."""
+    rows = state.rows(text_filter, now)
     lines = [state.arbiter.describe(), state.summary()]
     sender_width = max([len("sender"), *(len(r.sender) for r in rows)])
     kind_width = max([len("type"), *(len(r.kind) for r in rows)])
+    timing: list[tuple[str, ...]] = [timing_texts(r) if state.rates else () for r in rows]
+    heads = TIMING_HEADS if state.rates else ()
+    widths = [max([len(head), *(len(t[i]) for t in timing)]) for i, head in enumerate(heads)]
     lines.append(
         f"{'sender':<{sender_width}}  {'type':<{kind_width}}  {'id':>8}  {'count':>7}  "
-        f"{'rate/s':>7}  {'errors':>6}  fields"
+        f"{'rate/s':>7}  {_cells(heads, widths)}{'errors':>6}  fields"
     )
-    for r in rows:
+    for r, texts in zip(rows, timing, strict=True):
+        columns = _cells(texts, widths)
         line = (
             f"{r.sender:<{sender_width}}  {r.kind:<{kind_width}}  {can_id_text(r.can_id):>8}  "
-            f"{r.count:>7}  {rate_text(r.rate):>7}  {r.errors:>6}  {r.fields}"
+            f"{r.count:>7}  {rate_text(r.rate):>7}  {columns}{r.errors:>6}  {r.fields}"
         )
         lines.append(line.rstrip())
     return "\n".join(lines) + "\n"
+
+
+def _cells(texts: tuple[str, ...], widths: list[int]) -> str:
+    return "".join(f"{text:>{width}}  " for text, width in zip(texts, widths, strict=True))

@@ -65,9 +65,21 @@ def frame_bits(data_bytes: int, extended: bool, stuffing: bool = True) -> int:
 
 
 @dataclass
-class _Stream:
-    label: str
-    channel: str
+class Stream:
+    """The timing of one stream, fed its times in order (see the module's rules).
+
+    Attributes:
+        label: What the stream is, as reports name it.
+        channel: Interface name.
+        count: Times fed.
+        first: The first time (NaN before it).
+        last: The latest time (NaN before it).
+        longest: Longest period, in seconds.
+        gaps: Periods longer than `STOP_PERIODS` usual ones.
+    """
+
+    label: str = ""
+    channel: str = ""
     count: int = 0
     first: float = math.nan
     last: float = math.nan
@@ -76,10 +88,12 @@ class _Stream:
     longest: float = 0.0
     gaps: int = 0
     bins: dict[int, int] = field(default_factory=dict)  # log-binned periods, for the median
+    sums: dict[int, float] = field(default_factory=dict)  # the periods of each bin, added
     recent: deque[float] = field(default_factory=lambda: deque(maxlen=RECENT))
     cached: float | None = None  # `usual`, refreshed every RECENT periods while counting
 
     def add(self, time: float) -> None:
+        """Count one frame (or transfer, or record) at ``time`` seconds."""
         if self.count:
             period = time - self.last
             if self.count % RECENT == 1 or self.cached is None:
@@ -94,6 +108,7 @@ class _Stream:
             self.longest = max(self.longest, period)
             key = _bin(period)
             self.bins[key] = self.bins.get(key, 0) + 1
+            self.sums[key] = self.sums.get(key, 0.0) + period
             self.recent.append(period)
         else:
             self.first = time
@@ -101,7 +116,8 @@ class _Stream:
         self.last = time
 
     def usual(self) -> float | None:
-        """The median period (to 1/64 octave), or None before the first."""
+        """The median period (to 1/64 octave: the mean of the periods in the median's
+        bin), or None before the first."""
         total = sum(self.bins.values())
         if not total:
             return None
@@ -109,16 +125,38 @@ class _Stream:
         for key in sorted(self.bins):
             seen += self.bins[key]
             if 2 * seen >= total:
-                return _unbin(key)
+                return self.sums[key] / self.bins[key]
         raise AssertionError("unreachable")  # pragma: no cover
+
+    def rate(self) -> float:
+        """Count per second over the stream's span (NaN below 2)."""
+        periods, span = self.count - 1, self.last - self.first
+        return periods / span if periods > 0 and span > 0 else math.nan
+
+    def jitter(self) -> float:
+        """Standard deviation of the periods, in seconds (NaN below 3 times)."""
+        periods = self.count - 1
+        return math.sqrt(self.m2 / (periods - 1)) if periods > 1 else math.nan
+
+    def flags(self, now: float) -> tuple[str, ...]:
+        """``stopped`` if silent at ``now`` for more than `STOP_PERIODS` periods (its usual
+        one, or its recent one if longer); ``slow`` if its last `RECENT` periods run at
+        under 1/`SLOW_FACTOR` of its usual rate."""
+        usual = self.usual()
+        if usual is None or not self.recent:
+            return ()
+        recent = sorted(self.recent)[len(self.recent) // 2]
+        flags = []
+        # Stopped against the current cadence: a slow stream is not stopped yet.
+        if now - self.last > STOP_PERIODS * max(usual, recent):
+            flags.append("stopped")
+        if len(self.recent) == RECENT and recent > SLOW_FACTOR * usual:
+            flags.append("slow")
+        return tuple(flags)
 
 
 def _bin(period: float) -> int:
     return math.floor(math.log2(max(period, _MIN_PERIOD)) * _BINS_PER_OCTAVE)
-
-
-def _unbin(key: int) -> float:
-    return float(2 ** ((key + 0.5) / _BINS_PER_OCTAVE))
 
 
 @dataclass(frozen=True, slots=True)
@@ -186,7 +224,7 @@ class RateTracker:
     def __init__(self, bus_map: BusMap | None = None, bitrate: int | None = None) -> None:
         self.bus_map = bus_map or BusMap()
         self.bitrate = bitrate
-        self._streams: dict[tuple[str, tuple[int, ...], bool], _Stream] = {}
+        self._streams: dict[tuple[str, tuple[int, ...], bool], Stream] = {}
         self._bits: dict[str, int] = {}
         self._frames: dict[str, int] = {}
         self._span: dict[str, tuple[float, float]] = {}
@@ -221,7 +259,7 @@ class RateTracker:
             key = (can_id, data[0], data[1] if not data[0] and len(data) > 1 else -1)
         stream = self._streams.get((channel, key, extended))
         if stream is None:
-            stream = _Stream(self._label(can_id, extended, role, key), channel)
+            stream = Stream(self._label(can_id, extended, role, key), channel)
             self._streams[(channel, key, extended)] = stream
         stream.add(time)
 
@@ -245,29 +283,18 @@ class RateTracker:
         now = end if now is None else now
         for stream in self._streams.values():
             usual = stream.usual()
-            periods = stream.count - 1
-            span = stream.last - stream.first
-            flags = []
-            silent = now - stream.last
-            recent = sorted(stream.recent)[len(stream.recent) // 2] if stream.recent else None
-            if usual is not None and recent is not None:
-                # Stopped against the current cadence: a slow stream is not stopped yet.
-                if silent > STOP_PERIODS * max(usual, recent):
-                    flags.append("stopped")
-                if len(stream.recent) == RECENT and recent > SLOW_FACTOR * usual:
-                    flags.append("slow")
             out.append(
                 StreamRate(
                     stream.channel,
                     stream.label,
                     stream.count,
-                    periods / span if periods and span > 0 else math.nan,
+                    stream.rate(),
                     usual if usual is not None else math.nan,
-                    math.sqrt(stream.m2 / (periods - 1)) if periods > 1 else math.nan,
+                    stream.jitter(),
                     stream.longest,
-                    silent,
+                    now - stream.last,
                     stream.gaps,
-                    tuple(flags),
+                    stream.flags(now),
                 )
             )
         return sorted(out, key=lambda s: (s.channel, s.label))

@@ -60,7 +60,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         distributed = require("distributed", "dask", "--scheduler")
         client = distributed.Client(args.scheduler, timeout="10s")
     try:
-        summary = capture.to_parquet(args.files, out_dir, bus_map, client, None, args.channel)
+        summary = capture.to_parquet(
+            args.files, out_dir, bus_map, client, None, args.channel, dbc=args.dbc
+        )
     finally:
         if client is not None:
             client.close()

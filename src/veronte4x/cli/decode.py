@@ -204,7 +204,7 @@ def _csv_columns(args: argparse.Namespace, bus_map: BusMap) -> Iterable[str] | N
     if args.file == "-":
         return None
     columns: dict[str, None] = {}
-    for record in capture.read(args.file, bus_map, args.channel):
+    for record in capture.read(args.file, bus_map, args.channel, args.dbc):
         if record.message is not None:
             columns.update(dict.fromkeys(_row(record, _Clock(False))))
     return columns

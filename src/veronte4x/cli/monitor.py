@@ -7,6 +7,10 @@ an ellipsis at the terminal's edge; rows below the screen are counted in a last 
 (``+N more rows``). When standard output is not a terminal it prints the table as plain
 text, every ``--interval`` seconds for a live bus, once at the end for a capture. Ctrl-C
 stops it with code 130, as every command; ``q`` with 0.
+
+With ``--rates`` the table shows each row's timing live (period, jitter, longest gap, and
+``STOPPED`` or ``slow``: `veronte4x.capture.monitor`), the summary line the bus load, and
+the per-stream report of ``stats --rates`` follows the last table.
 """
 
 from __future__ import annotations
@@ -22,7 +26,15 @@ from collections.abc import Iterator
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.monitor import MonitorState, Row, can_id_text, rate_text, render_text
+from veronte4x.capture.monitor import (
+    TIMING_HEADS,
+    MonitorState,
+    Row,
+    can_id_text,
+    rate_text,
+    render_text,
+    timing_texts,
+)
 from veronte4x.capture.records import Record
 from veronte4x.cli import play, rates
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
@@ -71,6 +83,8 @@ class _Reader:
         self.watch = InputWatch(None if live(args) else args.file)
         self.rates = rates.tracker(args, bus_map)
         self._source = (args, bus_map)
+        self._pace = None if not (live(args) or args.speed) else (args.speed or 1.0)
+        self._seen: tuple[float, float] | None = None  # latest timestamp, when it came
         self._thread = threading.Thread(target=self._run, name="veronte4x-monitor", daemon=True)
 
     def _open(self) -> Iterator[Record]:
@@ -89,6 +103,9 @@ class _Reader:
             for record in self.watch.records(self._open()):
                 with self.lock:
                     self.state.add(record)
+                    latest = self.state.last_timestamp
+                    if latest is not None and self._pace is not None:
+                        self._seen = (latest, time.monotonic())
                 if self.stop.is_set():
                     break
         except BaseException as error:
@@ -111,16 +128,32 @@ class _Reader:
         if self.failure is not None:
             raise self.failure
 
+    def now(self) -> float | None:
+        """The bus time now, for the silence of streams (under the lock): a live bus's or
+        a paced capture's latest timestamp plus the time since it came (times the
+        speed); else None, the latest timestamp."""
+        if self._seen is None or self.done.is_set():
+            return None
+        latest, at = self._seen
+        return latest + (time.monotonic() - at) * (self._pace or 1.0)
+
+    def summary(self) -> str:
+        """The state's summary, and the bus load with ``--rates`` (under the lock)."""
+        text = self.state.summary()
+        if self.rates is not None:
+            text += "; " + rates.load_text(self.rates)
+        return text
+
     def text(self, text_filter: str) -> str:
         with self.lock:
-            return render_text(self.state, text_filter)
+            return render_text(self.state, text_filter, self.now())
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
     if sys.stdout.isatty():
         require("rich", "monitor", "veronte4x monitor on a terminal")
-    state = MonitorState()
+    state = MonitorState(rates=args.rates)
     reader = _Reader(args, bus_map, state)
     reader.start()
     status = EXIT_OK
@@ -150,14 +183,16 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     return status
 
 
-Snapshot = tuple[str, str, list[Row]]
-"""The arbiter line, the summary line and every row, taken under the reader's lock."""
+Snapshot = tuple[str, str, list[Row], bool]
+"""The arbiter line, the summary line, every row and whether to show their timing, taken
+under the reader's lock."""
 
 
 def _snapshot(reader: _Reader) -> Snapshot:
     with reader.lock:
         state = reader.state
-        return state.arbiter.describe(), state.summary(), state.rows()
+        rows = state.rows(now=reader.now())
+        return state.arbiter.describe(), reader.summary(), rows, state.rates
 
 
 def _table(
@@ -177,7 +212,7 @@ def _table(
     from rich.table import Table
     from rich.text import Text
 
-    header, summary, rows = snapshot
+    header, summary, rows, timing = snapshot
     wanted = text_filter.lower()
     shown = [
         r for r in rows if not wanted or wanted in r.sender.lower() or wanted in r.kind.lower()
@@ -200,6 +235,7 @@ def _table(
         ("id", "right"),
         ("count", "right"),
         ("rate/s", "right"),
+        *((head, "right") for head in (TIMING_HEADS if timing else ())),
         ("errors", "right"),
     ):
         table.add_column(name, justify=justify, no_wrap=True)  # type: ignore[arg-type]
@@ -211,6 +247,7 @@ def _table(
             can_id_text(r.can_id),
             str(r.count),
             rate_text(r.rate),
+            *(_timing_cells(r) if timing else ()),
             Text(str(r.errors), style="bold red" if r.errors else ""),
             r.fields,
         )
@@ -219,6 +256,14 @@ def _table(
         more = [f"+{below} more rows (↓)" if below else "", f"{above} above (↑)" if above else ""]
         parts.append(Text(", ".join(m for m in more if m) + "; f to filter", style="bold"))
     return Group(*parts)
+
+
+def _timing_cells(row: Row) -> list[Any]:
+    from rich.text import Text
+
+    period, jitter, gap, flags = timing_texts(row)
+    style = "bold red" if "stopped" in row.flags else "yellow" if row.flags else ""
+    return [period, jitter, gap, Text(flags, style=style)]
 
 
 _TABLE_HEAD = 2

@@ -20,8 +20,9 @@ def add_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--rates",
         action="store_true",
-        help="show per CAN ID or DroneCAN session: rate, jitter, longest gap; and the bus "
-        "load in %% of --bitrate (default: detected from the closest frames)",
+        help="show per CAN ID or DroneCAN session: rate, jitter, longest gap, stopped and "
+        "slow streams; and the bus load in %% of --bitrate (default: detected from the "
+        "closest frames); monitor shows them live in its table",
     )
 
 
@@ -73,6 +74,18 @@ def report(rates: RateTracker, now: float | None = None) -> str:
             rate = f"{_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s ({how})"
         lines.append(f"  {load.channel or '-'}: {load.frames} frames, {rate}")
     return "\n".join(lines)
+
+
+def load_text(rates: RateTracker) -> str:
+    """The bus load of every channel in a few words: ``bus load can0 12.3 %``."""
+    parts = []
+    for load in rates.load():
+        where = load.channel or "-"
+        if load.bitrate is None:
+            parts.append(f"{where} ? (give --bitrate)")
+        else:
+            parts.append(f"{where} {_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s")
+    return "bus load " + (", ".join(parts) if parts else "-")
 
 
 def _hz(value: float) -> str:

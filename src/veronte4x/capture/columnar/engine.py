@@ -19,7 +19,7 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import dronecan, payloads, veronte
+from veronte4x.capture.columnar import dbc, dronecan, payloads, veronte
 from veronte4x.capture.columnar.frames import FrameColumns
 from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs, field_column
 from veronte4x.capture.columnar.tables import SUB, Tables
@@ -63,6 +63,7 @@ def _decode(
         taken = pool.submit(_decode_dronecan, frames, dronecan_rows, tables, whole)
         done = _decode_senders(frames, bus_map, sender_code, tables)
         done[taken.result()] = True
+    dbc.decode_frames(frames, bus_map, done, tables)
     decoder = CaptureDecoder(bus_map)
     tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
     return tables, decoder, dronecan_inputs(frames, dronecan_rows)[0]

@@ -42,7 +42,7 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import dronecan, engine
+from veronte4x.capture.columnar import dbc, dronecan, engine
 from veronte4x.capture.columnar.frames import FrameColumns, concat
 from veronte4x.capture.columnar.schema import all_specs
 from veronte4x.capture.columnar.tables import Tables
@@ -120,6 +120,7 @@ class StreamDecoder:
         if self.bus_map.dronecan:
             done |= self._dronecan(joined, candidates, context, tables)
         done |= context
+        dbc.decode_frames(joined, self.bus_map, done, tables)
         tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
         return tables.finish_with_keys()
 

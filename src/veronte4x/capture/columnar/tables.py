@@ -104,7 +104,11 @@ class Tables:
             self._add_record_rows(kind, rows)
 
     def _add_record_rows(self, kind: str, rows: list[tuple[int, Record]]) -> None:
-        spec = self.specs[kind]
+        spec = self.specs.get(kind)
+        if spec is None:  # a DBC message's (`veronte4x.capture.dbc_in`)
+            from veronte4x.capture.columnar.dbc import table_spec
+
+            spec = self.specs[kind] = table_spec(type(rows[0][1].message))
         records = [record for _, record in rows]
         head: dict[str, Any] = {
             "timestamp": np.array(

@@ -1,0 +1,93 @@
+"""``veronte4x monitor --rates`` as a person sees it in a terminal (tmux): each row's period,
+jitter and longest gap live in the table, the bus load in the summary line, and a node
+whose NodeStatus falls silent flagged STOPPED while the others run on."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+START = 1_763_737_000.0
+
+
+def capture(path: Path) -> Path:
+    """AP2's Ready at 20 Hz and node 21's NodeStatus at 10 Hz for 60 s; node 20's
+    NodeStatus at 10 Hz for its first second only."""
+    lines = []
+    for tick in range(1200):
+        stamp = START + tick * 0.05
+        lines.append((stamp, "009#00FF01"))
+        if tick % 2 == 0:
+            tail = 0xC0 | (tick // 2) & 0x1F
+            lines.append((stamp + 0.001, f"{0x10015515:08X}#00000000000000{tail:02X}"))
+            if tick < 20:
+                lines.append((stamp + 0.002, f"{0x10015514:08X}#00000000000000{tail:02X}"))
+    path.write_text("".join(f"({stamp:.6f}) can0 {frame}\n" for stamp, frame in sorted(lines)))
+    return path
+
+
+def _screen(tmux: list[str]) -> str:
+    return subprocess.run(
+        [*tmux, "capture-pane", "-p", "-t", "monitor"], capture_output=True, text=True, check=True
+    ).stdout
+
+
+def _wait_for(tmux: list[str], condition: Callable[[str], bool], timeout: float = 60.0) -> str:
+    end = time.monotonic() + timeout
+    screen = ""
+    while time.monotonic() < end:
+        screen = _screen(tmux)
+        if condition(screen):
+            return screen
+        time.sleep(0.1)
+    raise AssertionError(f"screen never matched:\n{screen}")
+
+
+def _row(screen: str, start: str) -> str:
+    return next((line for line in screen.splitlines() if line.startswith(start)), "")
+
+
+def _node_20_stopped_alone(screen: str) -> bool:
+    return "STOPPED" in _row(screen, "node 20") and "STOPPED" not in _row(screen, "node 21")
+
+
+@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
+    path = capture(tmp_path / "silent.log")
+    tmux = ["tmux", "-L", f"veronte4x-rates-{os.getpid()}"]
+    # The terminal's size is the pane's, not that of the environment pytest runs in.
+    command = (
+        f"env -u COLUMNS -u LINES {sys.executable} -m veronte4x monitor {path} --rates --speed 1"
+    )
+    subprocess.run(
+        [*tmux, "new-session", "-d", "-s", "monitor", "-x", "160", "-y", "12",
+         f"{command}; echo exit=$?; sleep 30"],
+        check=True,
+    )  # fmt: skip
+    try:
+        screen = _wait_for(tmux, lambda s: "node 21" in s and "period" in s)
+        head = _row(screen, "sender").split()
+        assert head[:12] == [
+            "sender", "┃", "type", "┃", "id", "┃", "count", "┃", "rate/s", "┃", "period", "┃",
+        ]  # fmt: skip
+        assert "jitter" in head and "gap" in head and "state" in head
+        assert "bus load can0 " in screen and " kbit/s" in screen
+        screen = _wait_for(tmux, _node_20_stopped_alone)
+        node = [cell.strip() for cell in _row(screen, "node 20").split("│")]
+        assert node[1:3] == ["NodeStatus", "10015514"]
+        assert node[3] == "10"  # its count stays at its 10 records
+        assert node[5] == "100 ms"  # period
+        assert node[8] == "STOPPED"
+        assert "STOPPED" not in _row(screen, "AP2")
+        subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
+        screen = _wait_for(tmux, lambda s: "exit=" in s)
+        assert "exit=0" in screen
+    finally:
+        subprocess.run([*tmux, "kill-server"], check=False)

@@ -1,0 +1,140 @@
+"""The monitor's live timing per row (``monitor --rates``): period, jitter, longest gap and
+the stopped and slow flags, on generated traffic with known periods."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import random
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from veronte4x import dronecan
+from veronte4x.capture import Record, Role
+from veronte4x.capture.monitor import MonitorState, Row, render_text
+from veronte4x.capture.rates import STOP_PERIODS, Stream
+from veronte4x.codec import Ready
+
+OCTAVE_BIN = 2 ** (1 / 64)
+"""Periods are medians to 1/64 octave."""
+
+
+def node_status(stamp: float, node: int) -> Record:
+    message = dronecan.NodeStatus(int(stamp), dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    can_id = 0x10015500 | node
+    return Record(stamp, "can0", can_id, Role.DRONECAN, None, node, message, None, "", b"")
+
+
+def ready(stamp: float) -> Record:
+    return Record(stamp, "can0", 9, Role.AUTOPILOT, 1, None, Ready(True), None, "", b"")
+
+
+def row(state: MonitorState, sender: str, now: float | None = None) -> Row:
+    (found,) = [r for r in state.rows(now=now) if r.sender == sender]
+    return found
+
+
+def close(got: float, period: float) -> bool:
+    return period / OCTAVE_BIN <= got <= period * OCTAVE_BIN
+
+
+@settings(max_examples=60)
+@given(
+    st.sampled_from([0.001, 0.01, 0.02, 0.1, 0.5, 1.0]),
+    st.integers(3, 200),
+    st.floats(0.0, 0.2),
+    st.integers(0, 2**32 - 1),
+)
+def test_known_periods_with_jitter(period: float, count: int, spread: float, seed: int) -> None:
+    rng = random.Random(seed)
+    state = MonitorState(rates=True)
+    stamps = [1000.0 + i * period + rng.uniform(-spread, spread) * period / 2 for i in range(count)]
+    stamps.sort()
+    for stamp in stamps:
+        state.add(node_status(stamp, 20))
+    got = row(state, "node 20")
+    periods = [b - a for a, b in itertools.pairwise(stamps)]
+    assert got.count == count
+    median = sorted(periods)[(len(periods) - 1) // 2]  # the lower one of an even count
+    assert close(got.period, median)
+    mean = sum(periods) / len(periods)
+    jitter = math.sqrt(sum((p - mean) ** 2 for p in periods) / (len(periods) - 1))
+    assert got.jitter == pytest.approx(jitter, rel=1e-6, abs=1e-12)
+    assert got.longest_gap == pytest.approx(max(periods), rel=1e-9)
+    assert got.flags == ()  # "now" is its own last record
+
+
+def test_a_node_whose_node_status_falls_silent_is_stopped_after_3_periods() -> None:
+    state = MonitorState(rates=True)
+    for tick in range(100):  # node 20 at 1 Hz for 10 s, node 21 for 100 s, AP2 at 10 Hz
+        stamp = 1000.0 + tick
+        if tick < 10:
+            state.add(node_status(stamp, 20))
+        state.add(node_status(stamp, 21))
+        for tenth in range(10):
+            state.add(ready(stamp + tenth / 10))
+    last = 1009.0
+    assert close(row(state, "node 20", last).period, 1.0)
+    assert row(state, "node 20", last + STOP_PERIODS * 1.0 * 0.99).flags == ()
+    assert row(state, "node 20", last + STOP_PERIODS * 1.0 * OCTAVE_BIN + 0.01).flags == (
+        "stopped",
+    )
+    assert row(state, "node 20").flags == ("stopped",)  # now: the latest record, 1099.9 s
+    assert row(state, "node 21").flags == ()
+    assert row(state, "AP2").flags == ()
+    # Everything falls silent: at 1099.9 + 0.4 s the 10 Hz stream has stopped, 1 Hz not yet.
+    rows = {r.sender: r.flags for r in state.rows(now=1100.3)}
+    assert rows == {"AP2": ("stopped",), "node 20": ("stopped",), "node 21": ()}
+
+
+def test_a_stream_at_half_its_rate_is_slow_then_stopped() -> None:
+    stream = Stream()
+    for tick in range(100):
+        stream.add(tick * 0.1)
+    last = 9.9
+    for tick in range(1, 17):
+        stream.add(last + tick * 0.25)  # 16 periods at 2.5 times the usual one
+    assert close(stream.usual() or 0.0, 0.1)
+    assert stream.flags(stream.last) == ("slow",)
+    # Silent against the recent cadence: 3 x 0.25 s, not 3 x 0.1 s.
+    assert stream.flags(stream.last + 0.5) == ("slow",)
+    assert stream.flags(stream.last + 0.8) == ("stopped", "slow")
+
+
+def test_one_record_has_no_period_and_is_never_stopped() -> None:
+    state = MonitorState(rates=True)
+    state.add(node_status(5.0, 30))
+    got = row(state, "node 30", 500.0)
+    assert (got.count, math.isnan(got.period), math.isnan(got.jitter)) == (1, True, True)
+    assert got.flags == ()
+
+
+def test_records_out_of_order_do_not_make_negative_periods() -> None:
+    state = MonitorState(rates=True)
+    for stamp in (1.0, 2.0, 1.5, 3.0, 4.0):
+        state.add(node_status(stamp, 20))
+    got = row(state, "node 20")
+    assert close(got.period, 1.0) and got.longest_gap == 1.0
+
+
+def test_the_plain_table_shows_timing_only_with_rates() -> None:
+    plain, timed = MonitorState(), MonitorState(rates=True)
+    for tick in range(6):
+        for state in (plain, timed):
+            state.add(node_status(10.0 + tick, 20))
+            if tick < 2:
+                state.add(ready(10.0 + tick))
+    head = "sender   type              id    count   rate/s  errors  fields"
+    assert render_text(plain).splitlines()[2] == head
+    lines = render_text(timed).splitlines()
+    assert lines[2].split() == [
+        "sender", "type", "id", "count", "rate/s", "period", "jitter", "gap", "state",
+        "errors", "fields",
+    ]  # fmt: skip
+    ap2 = lines[3].split()
+    assert ap2[:5] == ["AP2", "Ready", "009", "2", "0.0"]
+    assert ap2[5:11] == ["1", "s", "-", "1", "s", "STOPPED"]  # silent 4 s at 15 s
+    node = lines[4].split()
+    assert node[6:11] == ["1", "s", "0", "µs", "1"] and "STOPPED" not in node  # "node 20"
