@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import gzip
-from datetime import datetime, timedelta, timezone
 import runpy
 import subprocess
 import sys
+from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 import can
@@ -173,7 +173,7 @@ def test_dataframe_from_a_path_has_every_row_in_order(flight: Path) -> None:
         None if r.error or r.message is None else r.kind for r in records[:50]
     ]
     assert frame["timestamp"].tolist() == [
-        pandas.Timestamp(round(r.timestamp * 1e6), unit="us", tz="UTC") for r in records
+        pandas.Timestamp(round((r.timestamp or 0.0) * 1e6), unit="us", tz="UTC") for r in records
     ]
 
 
