@@ -50,7 +50,6 @@ def main(path: str, plot_path: str) -> None:
         """Times as seconds from the start, for the x axis."""
         return (times - start) / timedelta(seconds=1)
 
-
     figure = Figure(figsize=(9, 6), layout="constrained")
     rpm, voltage, selected = figure.subplots(3, 1, sharex=True)
     for node_id, rows in esc.to_pandas().groupby("node_id"):
