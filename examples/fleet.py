@@ -77,7 +77,9 @@ ORDER BY w.source, w.timestamp
 
 def switches_duckdb(data: Path) -> pl.DataFrame:
     """Question 1 in SQL: the switches, and each autopilot's last score before them."""
-    return duckdb.sql(SWITCHES_SQL.format(data=data.as_posix())).pl()
+    switches = duckdb.sql(SWITCHES_SQL.format(data=data.as_posix())).pl()
+    # DuckDB gives TIMESTAMP WITH TIME ZONE in the session's zone: shown here in UTC.
+    return switches.with_columns(pl.col(pl.Datetime).dt.convert_time_zone("UTC"))
 
 
 def _scan(data: Path, kind: str) -> pl.LazyFrame:
@@ -179,10 +181,10 @@ def plot(switches: pl.DataFrame, heat: pl.DataFrame, path: Path) -> None:
 
 
 def _readable(frame: pl.DataFrame) -> pl.DataFrame:
-    """File names for paths, UTC times for Unix times."""
+    """File names for paths, times to the millisecond (they are UTC timestamps already)."""
     return frame.with_columns(
         pl.col("source").str.split("/").list.last(),
-        pl.from_epoch((pl.col("timestamp", "scored_at") * 1000).round().cast(pl.Int64), "ms"),
+        pl.col("timestamp", "scored_at").dt.round("1ms"),
     )
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import datetime as _dt
+from typing import Literal
 
 EPOCH_THRESHOLD = 1e8
 """Timestamps at or above this many seconds (March 1973) are read as Unix time, printed as
@@ -39,3 +40,25 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
 
 
 _EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
+
+
+TimeForm = Literal["timestamp", "relative", "seconds"]
+"""How tables, DataFrames and datasets give a capture's time (their ``time`` option):
+``timestamp``, an Arrow ``timestamp[us, tz=UTC]`` exact to the log (the default);
+``relative``, float seconds from the capture's first timestamped frame; ``seconds``, float
+seconds as logged (Unix time for candump)."""
+TIME_FORMS: tuple[TimeForm, ...] = ("timestamp", "relative", "seconds")
+
+
+def check_time_form(time: str) -> TimeForm:
+    """The ``time`` option, checked.
+
+    Raises:
+        ValueError: It is none of `TIME_FORMS`.
+    """
+    if time not in TIME_FORMS:
+        raise ValueError(
+            f"time={time!r}: give 'timestamp' (UTC, the default), 'relative' (seconds from "
+            "the first frame) or 'seconds' (seconds as logged)"
+        )
+    return time

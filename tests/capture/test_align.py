@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from veronte4x import capture
 from veronte4x.capture import AlignError, align
 
+EPOCH = datetime.datetime(1970, 1, 1, tzinfo=datetime.timezone.utc)
 ROOT = Path(__file__).resolve().parents[2]
 
 TABLES: dict[str, tuple[list[str], dict[str, Any]]] = {
@@ -203,12 +204,18 @@ def test_the_example_on_a_10ms_grid() -> None:
     tables = capture.read_tables(ROOT / "examples" / "capture.log")
     grid = align(tables, every="10ms", tolerance="50ms")
     times = grid.column("timestamp").to_pylist()
-    assert all(round((b - a) * 1000, 3) == 10 for a, b in itertools.pairwise(times))
+    assert all(b - a == datetime.timedelta(milliseconds=10) for a, b in itertools.pairwise(times))
     assert "Score/arbiter/autopilot=1/score" in grid.column_names
     assert "errors" not in {name.split("/")[0] for name in grid.column_names}
     frame = grid.to_pandas()
     assert len(frame) == grid.num_rows
-    assert grid.schema.field("timestamp").metadata == {b"unit": b"s"}
+    assert grid.schema.field("timestamp").type == pa.timestamp("us", tz="UTC")
+    seconds = align(capture.read_tables(ROOT / "examples" / "capture.log", time="seconds"),
+                    every="10ms", tolerance="50ms")  # fmt: skip
+    assert seconds.schema.field("timestamp").metadata == {b"unit": b"s"}
+    assert seconds.column("timestamp").to_pylist() == [
+        (t - EPOCH) / datetime.timedelta(seconds=1) for t in times
+    ]
 
 
 def test_units_carry_over(tmp_path: Path) -> None:
@@ -242,7 +249,9 @@ def test_convert_to_an_aligned_csv(tmp_path: Path) -> None:
         done.stderr
         == f"veronte4x: {aligned.num_rows} rows, {len(frame.columns)} columns, in {out}\n"
     )
-    assert frame["time"].tolist() == aligned.column("timestamp").to_pylist()
+    assert frame["time"].tolist() == [
+        t.strftime("%Y-%m-%dT%H:%M:%S.%fZ") for t in aligned.column("timestamp").to_pylist()
+    ]
     for name in ["Score/arbiter/autopilot=1/score", "PwmSet/AP2/first_channel=0/values_0"]:
         want = [None if v is None else float(v) for v in aligned.column(name).to_pylist()]
         got = [None if math.isnan(v) else float(np.float32(v)) for v in frame[name]]  # float32 form

@@ -6,6 +6,7 @@ import gzip
 import runpy
 import subprocess
 import sys
+from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 import can
@@ -33,7 +34,7 @@ def test_schemas_are_fixed_by_the_layouts() -> None:
     tables = capture.read_tables(EXAMPLE)
     assert tables["Score"].schema == pa.schema(
         [
-            ("timestamp", pa.float64()),
+            ("timestamp", pa.timestamp("us", tz="UTC")),
             ("channel", pa.dictionary(pa.int32(), pa.string())),
             ("can_id", pa.uint32()),
             ("sender", pa.dictionary(pa.int16(), pa.string())),
@@ -50,7 +51,7 @@ def test_exact_values_of_the_example() -> None:
     tables = capture.read_tables(EXAMPLE)
     ready = rows(tables["Ready"])[0]
     assert ready == {
-        "timestamp": 1763737200.01,
+        "timestamp": datetime(2025, 11, 21, 15, 0, 0, 10000, tzinfo=timezone.utc),
         "channel": "can0",
         "can_id": 8,
         "sender": "AP1",
@@ -163,13 +164,17 @@ def test_python_can_formats(flight: Path, tmp_path: Path, suffix: str) -> None:
 
 
 def test_dataframe_from_a_path_has_every_row_in_order(flight: Path) -> None:
+    import pandas
+
     frame = capture.to_dataframe(flight)
     records = list(capture.read(flight))
     assert len(frame) == len(records)
     assert list(frame["message"].head(50)) == [
         None if r.error or r.message is None else r.kind for r in records[:50]
     ]
-    assert frame["timestamp"].tolist() == [r.timestamp for r in records]
+    assert frame["timestamp"].tolist() == [
+        pandas.Timestamp(round((r.timestamp or 0.0) * 1e6), unit="us", tz="UTC") for r in records
+    ]
 
 
 def test_missing_extra_names_it() -> None:
@@ -200,24 +205,28 @@ def test_units_in_field_metadata_and_dataframe_attrs(flight: Path) -> None:
     esc = capture.read_tables(flight)["EscStatus"].schema
     assert esc.field("voltage").metadata == {b"unit": b"V"}
     assert esc.field("temperature").metadata == {b"unit": b"K"}
-    assert esc.field("timestamp").metadata == {b"unit": b"s"}
+    assert esc.field("timestamp").metadata is None  # a timestamp; seconds carry "s"
+    seconds = capture.read_tables(flight, time="seconds")["EscStatus"].schema
+    assert seconds.field("timestamp").metadata == {b"unit": b"s"}
     assert esc.field("esc_index").metadata is None
     for frame in (capture.to_dataframe(flight), capture.to_dataframe(capture.read(flight))):
         units = frame.attrs["units"]
-        assert units["voltage"] == "V" and units["rpm"] == "rpm" and units["timestamp"] == "s"
+        assert units["voltage"] == "V" and units["rpm"] == "rpm" and "timestamp" not in units
         assert "selected" not in units
 
 
 def test_relative_time(flight: Path) -> None:
     absolute = capture.read_tables(flight)
-    relative = capture.read_tables(flight, relative_time=True)
+    relative = capture.read_tables(flight, time="relative")
     first = min(t.column("timestamp")[0].as_py() for t in absolute.values())
     for kind, table in absolute.items():
-        expected = [stamp - first for stamp in table.column("timestamp").to_pylist()]
+        expected = [
+            (s - first) / timedelta(seconds=1) for s in table.column("timestamp").to_pylist()
+        ]
         assert relative[kind].column("timestamp").to_pylist() == expected, kind
     assert min(t.column("timestamp")[0].as_py() for t in relative.values()) == 0.0
-    frame = capture.to_dataframe(flight, relative_time=True)
-    per_record = capture.to_dataframe(capture.read(flight), relative_time=True)
+    frame = capture.to_dataframe(flight, time="relative")
+    per_record = capture.to_dataframe(capture.read(flight), time="relative")
     assert frame["timestamp"].tolist() == per_record["timestamp"].tolist()
     assert frame["timestamp"].iloc[0] == 0.0
 

@@ -17,6 +17,8 @@ from veronte4x import capture
 from veronte4x.capture import BusMap, CaptureDecoder, Record
 from veronte4x.capture.busmap import Role
 from veronte4x.capture.dataframe import _dtype  # the dtype rule both algorithms share
+from veronte4x.capture.frames import micros
+from veronte4x.times import TIME_FORMS
 from veronte4x.units import unit
 
 pandas = pytest.importorskip("pandas")
@@ -24,19 +26,23 @@ pandas = pytest.importorskip("pandas")
 HEAD = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
 
 
-def reference(records: Iterable[Record], relative_time: bool = False) -> Any:
-    """One record at a time: its fields appended to growing lists, then pandas' dtypes."""
-    units: dict[str, str] = {"timestamp": "s"}
-    start: float | None = None
+def reference(records: Iterable[Record], time: str = "timestamp") -> Any:
+    """One record at a time: its fields appended to growing lists, then pandas' dtypes;
+    times from each record's exact microseconds, one at a time."""
+    units: dict[str, str] = {} if time == "timestamp" else {"timestamp": "s"}
+    start: int | None = None
     head: dict[str, list[Any]] = {name: [] for name in HEAD}
     columns: dict[str, list[Any]] = {}
     kinds: dict[str, set[type]] = {}
     rows = 0
     for record in records:
-        stamp = record.timestamp
-        if relative_time and stamp is not None:
-            start = stamp if start is None else start
-            stamp -= start
+        exact = None if record.timestamp is None else micros(record.timestamp)
+        stamp: Any = exact
+        if exact is not None and time == "timestamp":
+            stamp = pandas.Timestamp(exact, unit="us", tz="UTC")
+        elif exact is not None:
+            start = exact if start is None else start
+            stamp = (exact - (start if time == "relative" else 0)) / 1_000_000
         head["timestamp"].append(stamp)
         head["channel"].append(record.channel)
         head["can_id"].append(record.can_id)
@@ -57,6 +63,8 @@ def reference(records: Iterable[Record], relative_time: bool = False) -> Any:
                 kinds[name].add(type(value))
         rows += 1
     data: dict[str, Any] = dict(head)
+    if time == "timestamp":
+        data["timestamp"] = pandas.Series(head["timestamp"], dtype="datetime64[us, UTC]")
     for name, values in columns.items():
         values += [None] * (rows - len(values))
         data[name] = pandas.array(values, dtype=_dtype(kinds[name]))
@@ -67,14 +75,14 @@ def reference(records: Iterable[Record], relative_time: bool = False) -> Any:
 
 def assert_same(records: list[Record]) -> None:
     """Both algorithms give equal frames, attrs and column order included, or one error."""
-    for relative_time in (False, True):
+    for time in TIME_FORMS:
         try:
-            expected = reference(records, relative_time)
+            expected = reference(records, time)
         except Exception as error:  # the new one must fail the same way
             with pytest.raises(type(error), match=re.escape(str(error))):
-                capture.to_dataframe(iter(records), relative_time=relative_time)
+                capture.to_dataframe(iter(records), time=time)
             continue
-        got = capture.to_dataframe(iter(records), relative_time=relative_time)
+        got = capture.to_dataframe(iter(records), time=time)
         pandas.testing.assert_frame_equal(got, expected, check_exact=True)
         assert list(got.columns) == list(expected.columns)
         assert list(got.attrs["units"].items()) == list(expected.attrs["units"].items())
@@ -184,7 +192,7 @@ def test_columns_in_first_seen_order_with_nullable_dtypes() -> None:
     assert frame["mode"].tolist() == [na, "on", na, na, na]
     assert frame["y"].fillna(-1.0).tolist() == [-1.0, -1.0, -1.0, 2.5, -1.0]
     assert frame["b_2"].tolist() == [na, na, na, na, 6]
-    assert frame.attrs["units"] == {"timestamp": "s"}
+    assert frame.attrs["units"] == {}
 
 
 def test_ints_beyond_int64_fail_as_pandas_fails() -> None:
@@ -199,7 +207,7 @@ def test_no_records_gives_the_head_columns() -> None:
     frame = capture.to_dataframe([])
     assert list(frame.columns) == list(HEAD)
     assert len(frame) == 0
-    assert frame.attrs["units"] == {"timestamp": "s"}
+    assert frame.attrs["units"] == {}
 
 
 def test_nested_messages_whose_shapes_differ() -> None:

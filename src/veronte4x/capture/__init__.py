@@ -31,6 +31,7 @@ from veronte4x.capture.source import open_frames, resolve
 from veronte4x.capture.stats import Stats
 from veronte4x.dronecan.typeset import TypeSet
 from veronte4x.extras import require
+from veronte4x.times import TimeForm
 
 if TYPE_CHECKING:
     import pyarrow
@@ -113,7 +114,7 @@ def read_tables(
     source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
     bus_map: BusMap | None = None,
     channel: str | None = None,
-    relative_time: bool = False,
+    time: TimeForm = "timestamp",
     progress: bool | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
@@ -125,7 +126,9 @@ def read_tables(
     tables: one per `Record.kind` of a message (``Status``, ``EscStatus``, ...), plus
     ``errors`` (every record whose ``error`` is set: columns ``error``, ``detail``,
     ``data``) and ``unknown`` (undecoded traffic), each only when the capture has such
-    rows. Every table starts with ``timestamp``, ``channel``, ``can_id`` and ``sender``
+    rows. Every table starts with ``timestamp`` (the capture's time: by default an Arrow
+    ``timestamp[us, tz=UTC]``, exactly the log's microseconds), ``channel``, ``can_id`` and
+    ``sender``
     (DroneCAN tables then ``node_id``, and ``destination_node_id`` for services), then one
     column per message field, with an Arrow type fixed by the layout (a field with a
     physical unit carries it in its metadata: ``unit`` ``V``, ``A``, ``K``, ...). Rows keep
@@ -137,8 +140,11 @@ def read_tables(
             standard input) or a list of them.
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
-        relative_time: Timestamps in seconds from each capture's first timestamped frame,
-            as ``candump -t z`` shows them.
+        time: The form of the ``timestamp`` column: ``timestamp`` (the default), UTC times
+            to the microsecond; ``relative``, float seconds from each capture's first
+            timestamped frame, as ``candump -t z`` shows them; ``seconds``, float seconds as
+            logged (Unix time for candump). A time outside the years 1 to 9999, or one
+            python-can gives as NaN, is null.
         progress: Show a progress bar over the captures' bytes (tqdm's, in a terminal or
             a notebook); None shows it when standard error is a terminal or in a
             notebook, and tqdm is installed.
@@ -155,6 +161,7 @@ def read_tables(
         SourceError: The path is a directory or a file in no format veronte4x knows.
         MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
             than candump text and MF4) is not installed; the message names it.
+        ValueError: ``time`` is none of the forms above.
 
     Examples:
         >>> from veronte4x import capture
@@ -162,6 +169,10 @@ def read_tables(
         >>> scores = tables["Score"]
         >>> scores.column_names
         ['timestamp', 'channel', 'can_id', 'sender', 'autopilot', 'score']
+        >>> str(scores.column("timestamp")[0])
+        '2025-11-21 15:00:00.260000+00:00'
+        >>> capture.read_tables("examples/capture.log", time="seconds")["Score"][0][0]
+        <pyarrow.DoubleScalar: 1763737200.26>
         >>> scores.column("sender")[0].as_py(), scores.column("score").type
         ('arbiter', DataType(float))
         >>> tables["errors"].column("error").to_pylist()
@@ -171,7 +182,7 @@ def read_tables(
     if bus_map.dbc:
         decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
-        source, bus_map, channel, relative_time, progress
+        source, bus_map, channel, time, progress
     )
     return tables
 
@@ -198,6 +209,7 @@ def to_parquet(
     channel: str | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
+    time: TimeForm = "timestamp",
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -229,6 +241,11 @@ def to_parquet(
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
             added). Dask workers load the same DSDL directories, which they must see.
+        time: The form of the ``timestamp`` column, as in `read_tables`: ``timestamp``
+            (the default; Parquet ``TIMESTAMP(isAdjustedToUTC=true, MICROS)``, which
+            DuckDB reads as ``TIMESTAMP WITH TIME ZONE`` and Polars as
+            ``Datetime(us, UTC)``), ``relative`` or ``seconds`` (float64). Keep one form
+            per dataset: files of two forms do not read back as one table.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -245,8 +262,7 @@ def to_parquet(
     bus_map = with_dbc(bus_map, dbc).with_types(types)
     if bus_map.dbc:
         decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any file
-
-    summary: Summary = convert(source, out_dir, bus_map, client, progress, channel)
+    summary: Summary = convert(source, out_dir, bus_map, client, progress, channel, time_form=time)
     return summary
 
 

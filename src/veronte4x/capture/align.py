@@ -268,9 +268,11 @@ def _period(value: float | str | datetime.timedelta, name: str) -> int:
 def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
     """Write an `align` result as a flat CSV that PlotJuggler or a spreadsheet opens.
 
-    The first column, ``time``, holds epoch seconds (microsecond precision); numbers keep
-    their shortest form, flags are 0 or 1, enums their names, and a missing value is an
-    empty cell. Columns a plot cannot use (raw bytes, lists) are left out.
+    The first column, ``time``, holds the time as ISO 8601 in UTC to the microsecond
+    (``2025-11-21T15:00:00.010000Z``) when the tables carry timestamps, else their seconds
+    (``time="seconds"`` or ``"relative"``); numbers keep their shortest form, flags are 0
+    or 1, enums their names, and a missing value is an empty cell. Columns a plot cannot use
+    (raw bytes, lists) are left out.
 
     Returns:
         The number of columns written, time included.
@@ -284,10 +286,11 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
 
     time = aligned.column(0)
     if pa.types.is_timestamp(time.type):
-        seconds = pc.divide(pc.cast(time, pa.int64()).cast(pa.float64()), 1e6)
+        micros = pc.cast(pc.cast(time, pa.timestamp("us", tz="UTC")), pa.timestamp("us"))
+        time = pc.strftime(micros, format="%Y-%m-%dT%H:%M:%SZ")  # %S: with microseconds
     else:
-        seconds = time.cast(pa.float64())
-    names, columns = ["time"], [seconds]
+        time = time.cast(pa.float64())
+    names, columns = ["time"], [time]
     for name, column in zip(aligned.column_names[1:], aligned.columns[1:], strict=True):
         kind = column.type
         if pa.types.is_boolean(kind):

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.records import Record
+from veronte4x.times import TimeForm, check_time_form
 from veronte4x.units import unit
 
 if TYPE_CHECKING:
@@ -63,7 +64,7 @@ def to_dataframe(
     source: Iterable[Record] | str | os.PathLike[str],
     bus_map: BusMap | None = None,
     channel: str | None = None,
-    relative_time: bool = False,
+    time: TimeForm = "timestamp",
 ) -> pandas.DataFrame:
     """One row per record, the record's columns then every message field as a column.
 
@@ -79,41 +80,45 @@ def to_dataframe(
     the tables' column names and Arrow-backed dtypes (enums as categories of names,
     RawCommand's ``cmd`` as a list); ``data`` is kept for errors only.
 
-    Either way, ``frame.attrs["units"]`` maps each column with a physical unit to its
-    symbol (``timestamp``: ``s``, ``voltage``: ``V``, ... see `veronte4x.units`).
+    Either way, ``timestamp`` is the capture's time in UTC to the microsecond (the log's,
+    exactly), and ``frame.attrs["units"]`` maps each column with a physical unit to its
+    symbol (``voltage``: ``V``, ... see `veronte4x.units`; ``timestamp``: ``s`` when given
+    as seconds).
 
     Args:
         source: Records, or a capture file (``bus_map`` and ``channel`` apply to a file).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         channel: Keep only this interface's frames.
-        relative_time: Timestamps in seconds from the first timestamped record, as
-            ``candump -t z`` and ``veronte4x decode --relative-time`` show them.
+        time: ``timestamp`` (the default): times in UTC, a pandas datetime column;
+            ``relative``: float seconds from the first timestamped record, as
+            ``candump -t z`` and ``veronte4x decode --relative-time`` show them;
+            ``seconds``: float seconds as logged (Unix time for candump).
+
+    Raises:
+        ValueError: ``time`` is none of those.
     """
     import pandas  # noqa: F401  (without the pandas extra, fail first, either way)
 
+    check_time_form(time)
     if isinstance(source, (str, os.PathLike)):
         from veronte4x.capture import _columnar
 
-        frame: pandas.DataFrame = _columnar().frame.dataframe(
-            source, bus_map, channel, relative_time
-        )
+        frame: pandas.DataFrame = _columnar().frame.dataframe(source, bus_map, channel, time)
         return frame
-    return _records_frame(source, relative_time)
+    return _records_frame(source, time)
 
 
 _Classes = dict[type, tuple[list[int], list[Any]]]
 """Messages grouped by class: their rows and themselves."""
 
 
-def _records_frame(records: Iterable[Record], relative_time: bool) -> pandas.DataFrame:
+def _records_frame(records: Iterable[Record], time: TimeForm) -> pandas.DataFrame:
     """`to_dataframe` of records: the messages grouped by class, each field a column."""
     import pandas
 
     data, classes = _gather(records)
-    if relative_time:
-        start = next((stamp for stamp in data["timestamp"] if stamp is not None), None)
-        data["timestamp"] = [t if t is None else t - start for t in data["timestamp"]]
-    units: dict[str, str] = {"timestamp": "s"}
+    data["timestamp"] = _times(data["timestamp"], time)
+    units: dict[str, str] = {} if time == "timestamp" else {"timestamp": "s"}
     pieces: dict[str, list[tuple[numpy.ndarray, list[Any]]]] = {}
     for class_name, rows, columns in sorted(_parts(classes), key=lambda part: part[1][0]):
         for name, values in columns:
@@ -153,6 +158,29 @@ def _gather(records: Iterable[Record]) -> tuple[dict[str, list[Any]], _Classes]:
         group[0].append(row)
         group[1].append(message)
     return head, classes
+
+
+def _times(stamps: list[float | None], time: TimeForm) -> Any:
+    """The ``timestamp`` column of records' timestamps, in the form ``time`` names (the
+    records' microseconds as the tables have them)."""
+    import numpy
+    import pandas
+
+    from veronte4x.capture.columnar.frames import NO_TIME, micros_of
+
+    micros = micros_of(stamps)
+    missing = (micros == NO_TIME) | numpy.array([s is None for s in stamps], numpy.bool_)
+    if time == "timestamp":
+        values = numpy.where(missing, numpy.datetime64("NaT"), micros.astype("datetime64[us]"))
+        return pandas.Series(values, dtype="datetime64[us]").dt.tz_localize("UTC")
+    start = 0
+    if time == "relative" and not missing.all():
+        start = int(micros[numpy.flatnonzero(~missing)[0]])
+    seconds = (micros - start) / 1e6
+    big = numpy.flatnonzero(~missing & (numpy.abs(micros - start) >= 1 << 53))
+    for row in big.tolist():
+        seconds[row] = (int(micros[row]) - start) / 1_000_000
+    return [None if gone else value for gone, value in zip(missing, seconds.tolist(), strict=True)]
 
 
 _HEAD = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")

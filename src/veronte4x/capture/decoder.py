@@ -12,7 +12,7 @@ import math
 from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.busmap import BusMap, Role
-from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.capture.frames import BadLine, Frame, Truncation, text_seconds
 from veronte4x.capture.readers.candump import (
     CAN_ERR_FLAG,
     Identifiers,
@@ -156,7 +156,7 @@ class CaptureDecoder:
                         route = veronte.get(ident)
                         if route is not None:
                             try:
-                                seconds = float(stamp[1:-1])
+                                seconds = _seconds(stamp)
                                 data = unhexlify(text)
                             except ValueError:
                                 seconds = math.nan
@@ -176,7 +176,7 @@ class CaptureDecoder:
                                 continue
                         elif dronecan and len(ident) == 8:
                             try:
-                                seconds = float(stamp[1:-1])
+                                seconds = _seconds(stamp)
                                 can_id = identifiers[ident]
                                 data = unhexlify(text)
                             except ValueError:
@@ -353,3 +353,17 @@ def foreign_data_type(can_id: int) -> str:
     if can_id & 0x7F:
         return f"DroneCAN data type {(can_id >> 8) & 0xFFFF}"
     return f"DroneCAN anonymous data type {(can_id >> 8) & 0x3}"
+
+
+def _seconds(stamp: bytes) -> float:
+    """The time of a log line's ``(seconds)``: a float, exact as `text_seconds` gives it
+    unless it is candump's own ``%010lu.%06lu`` before 2242 (the float holds those)."""
+    seconds = float(stamp[1:-1])
+    if (
+        len(stamp) == 19
+        and stamp[11] == 46
+        and seconds < 8_589_934_592.0
+        and stamp[12:18].isdigit()
+    ):
+        return seconds
+    return text_seconds(stamp[1:-1].decode("ascii"), seconds)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+from fractions import Fraction
 from typing import NamedTuple
 
 
@@ -12,7 +14,8 @@ class Frame(NamedTuple):
     cheapest immutable record Python builds.
 
     Attributes:
-        timestamp: Seconds (the capture's clock), or None when the capture has no time.
+        timestamp: Seconds (the capture's clock), or None when the capture has no time; a
+            `Seconds` where the float alone does not hold the log's microseconds.
         channel: Interface name, such as ``can0``.
         can_id: 11-bit or 29-bit identifier.
         data: Data bytes (empty for a remote frame).
@@ -54,3 +57,58 @@ class Truncation(BadLine):
     """
 
     __slots__ = ()
+
+
+FIRST_MICROS = -62_135_596_800_000_000
+"""0001-01-01 00:00:00 UTC in microseconds since the epoch: the first time a table holds."""
+END_MICROS = 253_402_300_800_000_000
+"""10000-01-01 00:00:00 UTC in microseconds: times from here on have no table value."""
+_SAFE = 8_589_934_592.0
+"""2**33 seconds (year 2242): below, a float of at most six decimals gives them back."""
+
+
+class Seconds(float):
+    """A timestamp in seconds (the float a reader gives) that also holds the log's time in
+    whole microseconds, made only where the float cannot give them back: a text with more
+    than six decimals, or a time after 2242. Equal to, and used as, the float."""
+
+    __slots__ = ("micros",)
+    micros: int
+
+    def __new__(cls, seconds: float, micros: int) -> Seconds:
+        self = super().__new__(cls, seconds)
+        self.micros = micros
+        return self
+
+    def __reduce__(self) -> tuple[type[Seconds], tuple[float, int]]:
+        return Seconds, (float(self), self.micros)
+
+
+def micros(seconds: float) -> int | None:
+    """A timestamp in whole microseconds since the epoch: those a `Seconds` holds, else the
+    nearest to the float (half to even); None when it is not finite or outside the years
+    1 to 9999."""
+    exact = getattr(seconds, "micros", None)
+    if exact is None:
+        if not math.isfinite(seconds):
+            return None
+        exact = round(Fraction(seconds) * 1_000_000)
+    return exact if FIRST_MICROS <= exact < END_MICROS else None
+
+
+def text_seconds(text: str, seconds: float | None = None) -> float:
+    """The timestamp of a log's decimal text: ``float(text)``, as a `Seconds` with the
+    text's microseconds (rounded half to even past the sixth decimal) where the float alone
+    would not give them (``seconds``: ``float(text)``, if the caller has it)."""
+    if seconds is None:
+        seconds = float(text)
+    if (-_SAFE < seconds < _SAFE and _plain(text)) or not math.isfinite(seconds):
+        return seconds
+    exact = round(Fraction(text) * 1_000_000)
+    return seconds if micros(seconds) == exact else Seconds(seconds, exact)
+
+
+def _plain(text: str) -> bool:
+    """Decimal digits with at most six after the point."""
+    dot = text.find(".")
+    return (dot < 0 or len(text) - dot <= 7) and text.replace(".", "", 1).lstrip("+-").isdigit()

@@ -13,6 +13,7 @@ from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import tell
 from veronte4x.cli.options import add_capture_options
 from veronte4x.extras import require
+from veronte4x.times import TIME_FORMS
 
 FORMATS = ("parquet", "csv")
 """What ``--to`` writes."""
@@ -39,6 +40,13 @@ def add_parser(commands: Any) -> None:
         help="convert on the workers of this Dask scheduler (tcp://host:8786; "
         "needs veronte4x[dask]); OUT_DIR must be a directory every worker sees",
     )
+    parser.add_argument(
+        "--time",
+        choices=TIME_FORMS,
+        default="timestamp",
+        help="the time column: timestamp (UTC to the microsecond, the default; ISO 8601 in "
+        "a CSV), relative (seconds from the first frame) or seconds (as logged)",
+    )
     add_capture_options(parser)
     aligned.add_options(parser)
     parser.set_defaults(run=run)
@@ -61,7 +69,14 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         client = distributed.Client(args.scheduler, timeout="10s")
     try:
         summary = capture.to_parquet(
-            args.files, out_dir, bus_map, client, None, args.channel, dbc=args.dbc
+            args.files,
+            out_dir,
+            bus_map,
+            client,
+            None,
+            args.channel,
+            dbc=args.dbc,
+            time=args.time,
         )
     finally:
         if client is not None:

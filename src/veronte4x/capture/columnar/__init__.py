@@ -23,7 +23,7 @@ from veronte4x.capture.columnar.batches import ahead, read_batches
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
 from veronte4x.capture.columnar.sources import read_frames
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
-from veronte4x.capture.columnar.tables import relative_time as make_relative
+from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.source import STDIN
 from veronte4x.progress import Bar
 
@@ -36,10 +36,11 @@ def read_tables(
     source: Source | Iterable[Source],
     bus_map: BusMap | None = None,
     channel: str | None = None,
-    relative_time: bool = False,
+    time: str = "timestamp",
     progress: bool | None = False,
 ) -> dict[str, pa.Table]:
     """See `veronte4x.capture.read_tables`."""
+    Clock(time)  # a wrong option fails before any file is read
     paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
     sizes = [_size(path) for path in paths]
     bar = Bar(progress, sum(sizes), "B", "decoding")
@@ -47,7 +48,7 @@ def read_tables(
         parts = []
         for path, size in zip(paths, sizes, strict=True):
             progress_of = _Advance(bar, size)
-            keyed = keyed_tables(path, bus_map, channel, relative_time, progress_of.reach)
+            keyed = keyed_tables(path, bus_map, channel, time, progress_of.reach)
             parts.append({kind: table for kind, (table, _) in keyed.items()})
             progress_of.reach(size)
     finally:
@@ -89,7 +90,7 @@ def keyed_tables(
     path: Source,
     bus_map: BusMap | None,
     channel: str | None,
-    relative_time: bool,
+    time: str = "timestamp",
     reached: Callable[[int], None] | None = None,
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
     """The tables of one capture, each with the capture-order keys of its rows.
@@ -98,14 +99,16 @@ def keyed_tables(
     that memory holds the tables and one batch, not the whole capture's frames; standard
     input, which cannot be read twice, is decoded whole. ``reached``, if given, is called
     with the bytes of the file read so far after each batch (for a progress bar).
+    ``time``: the form of the ``timestamp`` column (`veronte4x.times.TimeForm`).
     """
+    clock = Clock(time, channel)
     if os.fspath(path) == STDIN:
-        tables = decode_into(read_frames(path), bus_map, channel).finish_with_keys()
+        frames = read_frames(path)
+        clock.see(frames)
+        tables = decode_into(frames, bus_map, channel).finish_with_keys()
     else:
-        tables = _batched(path, bus_map, channel, reached)
-    if relative_time:
-        make_relative(tables)
-    return tables
+        tables = _batched(path, bus_map, channel, reached, clock)
+    return clock(tables)
 
 
 def _batched(
@@ -113,6 +116,7 @@ def _batched(
     bus_map: BusMap | None,
     channel: str | None,
     reached: Callable[[int], None] | None,
+    clock: Clock,
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
     per_frame: list[str] = []
     while True:  # once more per channel whose DroneCAN frames must go frame by frame
@@ -120,6 +124,7 @@ def _batched(
         parts: dict[str, list[tuple[pa.Table, npt.NDArray[np.int64]]]] = {}
         try:
             for batch in ahead(read_batches(path, batches.BATCH_BYTES)):
+                clock.see(batch.frames)
                 for kind, part in decoder.feed_with_keys(batch.frames).items():
                     parts.setdefault(kind, []).append(part)
                 if reached is not None and batch.position is not None:

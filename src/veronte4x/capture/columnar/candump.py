@@ -4,10 +4,11 @@ The whole text is one NumPy byte array. Line breaks, spaces and ``#`` are found 
 each; every line of the plain log form (``(seconds) interface ID#DATA``, a classic frame,
 not an error frame) is then cut, checked and converted for all lines at once: timestamps to
 the float the per-frame reader's ``float()`` gives (an exact integer mantissa divided by a
-power of ten, one correctly rounded division), identifiers and data from hex through a
-lookup table. Every other line (the human view, remote, FD and error frames, raw DLCs, odd
-lines) goes through the per-frame reader's own `parse_line`, so that both paths agree
-line for line.
+power of ten, one correctly rounded division) and, from the same integer, to the exact
+microseconds of the text; identifiers and data from hex through a lookup table. Every other
+line (the human view, remote, FD and error frames, raw DLCs, odd lines, times with more
+than six decimals or past 2242) goes through the per-frame reader's own `parse_line`, so
+that both paths agree line for line.
 """
 
 from __future__ import annotations
@@ -22,7 +23,13 @@ from typing import BinaryIO
 import numpy as np
 import numpy.typing as npt
 
-from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns, concat, from_frames
+from veronte4x.capture.columnar.frames import (
+    MAX_DATA,
+    NO_TIME,
+    FrameColumns,
+    concat,
+    from_frames,
+)
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
 
@@ -46,6 +53,9 @@ _POW10 = 10 ** np.arange(19, dtype=np.int64)
 _POW10F = 10.0 ** np.arange(23)
 _EXACT = 1 << 53
 """Mantissas below this convert to float64 exactly."""
+_SAFE_MICROS = (1 << 33) * 1_000_000
+"""Times below 2**33 seconds (year 2242) of at most six decimals: their float gives back
+their microseconds. Others go line by line, where the reader keeps them exact."""
 
 
 def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
@@ -114,15 +124,17 @@ class _LogLines:
     extended: npt.NDArray[np.bool_]
     length: npt.NDArray[np.int64]
     data: npt.NDArray[np.uint8]
+    micros: npt.NDArray[np.int64]
     has_time: npt.NDArray[np.bool_] | None = None
 
     def columns(self, first_line: int) -> FrameColumns:
         n = len(self.line)
         no = np.zeros(n, np.bool_)
+        has_time = np.ones(n, np.bool_) if self.has_time is None else self.has_time
         return FrameColumns(
             order=self.line + first_line,
             timestamp=self.stamp,
-            has_time=np.ones(n, np.bool_) if self.has_time is None else self.has_time,
+            has_time=has_time,
             channel=self.interface,
             channels=self.interfaces,
             can_id=self.can_id,
@@ -132,6 +144,7 @@ class _LogLines:
             error=no,
             length=self.length,
             data=self.data,
+            time=np.where(has_time, self.micros, NO_TIME),
         )
 
 
@@ -187,7 +200,7 @@ def _log_lines(
     rows = np.flatnonzero(ok)
     words = _words(a)
     space1, space2, hash1 = space1[rows], space2[rows], hash1[rows]
-    stamp, good = _stamps(a, words, starts[rows] + 1, stamp_size[rows])
+    stamp, micros, good = _stamps(a, words, starts[rows] + 1, stamp_size[rows])
     can_id, extended, good_id = _identifiers(words[space2 + 1], id_size[rows])
     size = data_size[rows]
     data, good_data = _data(words[hash1 + 1], words[hash1 + 9], size)
@@ -195,7 +208,9 @@ def _log_lines(
     good &= good_id & good_data
     data_bytes = data.view(np.uint8).reshape(-1, MAX_DATA)
     if good.all():
-        return _LogLines(rows, stamp, interface, names, can_id, extended, size // 2, data_bytes)
+        return _LogLines(
+            rows, stamp, interface, names, can_id, extended, size // 2, data_bytes, micros
+        )
     keep = np.flatnonzero(good)
     return _LogLines(
         rows[keep],
@@ -206,6 +221,7 @@ def _log_lines(
         extended[keep],
         size[keep] // 2,
         data_bytes[keep],
+        micros[keep],
     )
 
 
@@ -260,16 +276,18 @@ def _human_lines(
     can_id, extended, good = _identifiers(words[token_start[ident]], id_size)
     good &= ((id_size == 3) | (id_size == 8)) & (iface_size <= _INTERFACE)
     stamp = np.zeros(len(lines))
+    micros = np.zeros(len(lines), np.int64)
     timed = np.flatnonzero(stamped == 1)
     if len(timed):
         at, end = token_start[first[timed]], token_end[first[timed]]
         good[timed] &= a[end - 1] == 41  # ")"
-        stamp[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
+        stamp[timed], micros[timed], timed_ok = _stamps(a, words, at + 1, end - at - 2)
         good[timed] &= timed_ok & (end - at - 2 > 0) & (end - at - 2 <= _STAMP)
     dated_rows = np.flatnonzero(stamped == 2)
     if len(dated_rows):
-        stamp[dated_rows], dated_ok = _date_stamps(a, token_start[first[dated_rows]] + 1)
-        good[dated_rows] &= dated_ok
+        dated = _date_stamps(a, token_start[first[dated_rows]] + 1)
+        stamp[dated_rows], micros[dated_rows], good_dates = dated
+        good[dated_rows] &= good_dates
     # The data bytes: one two-character token each.
     owner = np.repeat(np.arange(len(lines)), size)
     position = np.arange(len(owner)) - np.repeat(np.cumsum(size) - size, size)
@@ -296,6 +314,7 @@ def _human_lines(
         extended[keep],
         size[keep],
         data[keep],
+        micros[keep],
         stamped[keep] > 0,
     )
 
@@ -305,10 +324,11 @@ _DAYS_IN_MONTH = np.array([0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31], n
 
 def _date_stamps(
     a: npt.NDArray[np.uint8], at: npt.NDArray[np.int64]
-) -> tuple[np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``YYYY-MM-DD HH:MM:SS.ffffff)`` at ``at`` to seconds since the epoch (UTC), exactly as
-    ``datetime.strptime(...).replace(tzinfo=utc).timestamp()`` gives them: whole
-    microseconds divided once by a million. Dates ``datetime`` refuses are not good."""
+    ``datetime.strptime(...).replace(tzinfo=utc).timestamp()`` gives them (whole
+    microseconds divided once by a million), and to the microseconds. Dates ``datetime``
+    refuses, and those past 2242, are not good."""
     digits = {k: a[at + k].astype(np.int64) - 48 for k in (*range(4), 5, 6, 8, 9)}
     digits.update({k: a[at + k].astype(np.int64) - 48 for k in (11, 12, 14, 15, 17, 18)})
     digits.update({k: a[at + k].astype(np.int64) - 48 for k in range(20, 26)})
@@ -339,8 +359,8 @@ def _date_stamps(
     of_year = (153 * (month + np.where(month > 2, -3, 9)) + 2) // 5 + day - 1
     days = era * 146097 + of_era * 365 + of_era // 4 - of_era // 100 + of_year - 719468
     total = ((days * 86400 + hour * 3600 + minute * 60 + second) * 1_000_000) + micro
-    good &= np.abs(total) < _EXACT
-    return total.astype(np.float64) / 1e6, good
+    good &= np.abs(total) < _SAFE_MICROS
+    return total.astype(np.float64) / 1e6, total, good
 
 
 def _words(a: npt.NDArray[np.uint8]) -> npt.NDArray[np.uint64]:
@@ -385,8 +405,9 @@ def _stamps(
     words: npt.NDArray[np.uint64],
     at: npt.NDArray[np.int64],
     sizes: npt.NDArray[np.int64],
-) -> tuple[np.ndarray, np.ndarray]:
-    """Decimal ``digits[.digits]`` to float64, exactly as ``float()``; others not good.
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Decimal ``digits[.digits]`` to float64, exactly as ``float()``, and to whole
+    microseconds; others, and those `_SAFE_MICROS` leaves out, not good.
 
     The timestamps of a capture share one shape (``1436509052.249713``): for those of the
     first one's shape, the digits are moved into two words of eight (zero-padded in front)
@@ -394,9 +415,10 @@ def _stamps(
     of ten once; the rest go through `_stamps_any`.
     """
     stamp = np.zeros(len(at))
+    micros = np.zeros(len(at), np.int64)
     good = np.zeros(len(at), np.bool_)
     if not len(at):
-        return stamp, good
+        return stamp, micros, good
     size = int(sizes[0])
     shape = bytes(a[at[0] : at[0] + size])
     dot = shape.find(b".")
@@ -422,15 +444,30 @@ def _stamps(
         high, high_ok = _eight_digits(halves[0])
         low, low_ok = _eight_digits(halves[1])
         mantissa = high * np.uint64(100_000_000) + low
-        shaped = high_ok & low_ok & (mantissa < _EXACT)
+        decimals = size - dot - 1 if dot >= 0 else 0
+        shaped = high_ok & low_ok & (mantissa < _EXACT) & (decimals <= 6)
         if dot >= 0:
             shaped &= a[base + dot] == 46
-        stamp[rows] = mantissa.astype(np.float64) / _POW10F[size - dot - 1 if dot >= 0 else 0]
-        good[rows] = shaped
+        stamp[rows] = mantissa.astype(np.float64) / _POW10F[decimals]
+        micros[rows], safe = _micros(mantissa.astype(np.int64), np.full(len(rows), decimals))
+        good[rows] = shaped & safe
     rest = np.flatnonzero(~good)
     if len(rest):
-        stamp[rest], good[rest] = _stamps_any(_window(a, at[rest], _STAMP), sizes[rest])
-    return stamp, good
+        stamp[rest], micros[rest], good[rest] = _stamps_any(
+            _window(a, at[rest], _STAMP), sizes[rest]
+        )
+    return stamp, micros, good
+
+
+def _micros(
+    mantissa: npt.NDArray[np.int64], decimals: npt.NDArray[np.int64]
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
+    """``mantissa / 10**decimals`` seconds (mantissas from 0 to 2**53) in microseconds, and
+    whether they are `_SAFE_MICROS`: up to six decimals, below 2**33 seconds (others 0)."""
+    places = np.clip(decimals, 0, 6)
+    safe = (decimals <= 6) & (mantissa < (1 << 33) * _POW10[places])
+    micros = np.where(safe, mantissa, 0) * _POW10[6 - places]
+    return micros, safe
 
 
 def _eight_digits(words: npt.NDArray[np.uint64]) -> tuple[np.ndarray, np.ndarray]:
@@ -445,7 +482,7 @@ def _eight_digits(words: npt.NDArray[np.uint64]) -> tuple[np.ndarray, np.ndarray
     return value & np.uint64(0xFFFFFFFF), valid
 
 
-def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
     """`_stamps` for timestamps of any shape, up to `_STAMP` characters."""
     inside = np.arange(chars.shape[1]) < sizes[:, None]
     digits = chars - np.uint8(48)
@@ -459,7 +496,10 @@ def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np.nd
     mantissa = (np.where(is_digit, digits, 0).astype(np.int64) * _POW10[power]).sum(axis=1)
     before_dot = np.where(dots.any(axis=1), (counted * dots).sum(axis=1), total)
     good &= mantissa < _EXACT
-    return mantissa / _POW10F[np.minimum(total - before_dot, 22)], good
+    decimals = total - before_dot
+    micros, safe = _micros(mantissa, decimals)
+    good &= safe
+    return mantissa / _POW10F[np.minimum(decimals, 22)], micros, good
 
 
 def _identifiers(word: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:

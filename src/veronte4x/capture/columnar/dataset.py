@@ -44,6 +44,7 @@ import pyarrow.parquet as pq
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
+from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.source import STDIN
 from veronte4x.errors import SourceError
 from veronte4x.progress import Bar
@@ -117,8 +118,10 @@ def convert_file(
     channel: str | None = None,
     batch_bytes: int = BATCH_BYTES,
     progress: Progress | None = None,
+    time_form: str = "timestamp",
 ) -> Summary:
-    """Decode one capture batch by batch into the dataset at ``out_dir``.
+    """Decode one capture batch by batch into the dataset at ``out_dir``, its
+    ``timestamp`` column in the form ``time_form`` names (`veronte4x.times.TimeForm`).
 
     Raises:
         SourceError: The path is standard input (a dataset names its files).
@@ -132,12 +135,14 @@ def convert_file(
     while True:  # once more per channel with more DroneCAN sessions than a table holds
         writer = _Writer(Path(out_dir), name)
         decoder = StreamDecoder(bus_map, channel, per_frame)
+        clock = Clock(time_form, channel)
         frames = 0
         truncated.clear()
         try:
             for batch in ahead(read_batches(name, batch_bytes)):
                 frames += len(batch.frames)
-                for kind, table in decoder.feed(batch.frames).items():
+                clock.see(batch.frames)
+                for kind, (table, _) in clock(decoder.feed_with_keys(batch.frames)).items():
                     if kind == "errors":
                         truncated.extend(_truncations(table))
                     writer.write(kind, table)
@@ -358,16 +363,20 @@ def to_parquet(
     progress: bool | None = None,
     channel: str | None = None,
     batch_bytes: int = BATCH_BYTES,
+    time_form: str = "timestamp",
 ) -> Summary:
-    """See `veronte4x.capture.to_parquet`."""
+    """See `veronte4x.capture.to_parquet` (``time_form``: its ``time``)."""
+    Clock(time_form)  # a wrong option fails before any file is read
     started = time.perf_counter()
     paths = sources(source)
     if client is not None:
         from veronte4x.capture.columnar.fleet import convert_on
 
-        parts = convert_on(client, paths, out_dir, bus_map, channel, batch_bytes, progress)
+        parts = convert_on(
+            client, paths, out_dir, bus_map, channel, batch_bytes, progress, time_form
+        )
     else:
-        parts = _convert_here(paths, out_dir, bus_map, channel, batch_bytes, progress)
+        parts = _convert_here(paths, out_dir, bus_map, channel, batch_bytes, progress, time_form)
     total = Summary()
     for part in parts:
         total.add(part)
@@ -382,6 +391,7 @@ def _convert_here(
     channel: str | None,
     batch_bytes: int,
     progress: bool | None,
+    time_form: str,
 ) -> list[Summary]:
     """Convert the captures one after the other in this process."""
     sizes = [os.path.getsize(p) for p in paths]
@@ -395,7 +405,9 @@ def _convert_here(
                 bar.update(position - read[0])
                 read[0] = position
 
-            parts.append(convert_file(path, out_dir, bus_map, channel, batch_bytes, advance))
+            parts.append(
+                convert_file(path, out_dir, bus_map, channel, batch_bytes, advance, time_form)
+            )
             bar.update(size - read[0])
     finally:
         bar.close()

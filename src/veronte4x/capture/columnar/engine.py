@@ -153,7 +153,7 @@ def only_channel(frames: FrameColumns, channel: str) -> FrameColumns:
 
 def _head(frames: FrameColumns, rows: npt.NDArray[np.int64]) -> dict[str, np.ndarray]:
     return {
-        "timestamp": frames.timestamp[rows],
+        "time": frames.time[rows],
         "has_time": frames.has_time[rows],
         "channel": frames.channel[rows],
         "can_id": frames.can_id[rows],
@@ -269,7 +269,7 @@ def _crc_mismatches(
             Problem.CRC_MISMATCH,
             int(frames.can_id[last]),
             frames.data[last, : frames.length[last]].tobytes(),
-            float(stamp[found.first[transfer]]),
+            frames.fed(int(found.first[transfer])),
             f"CRC {carried:#06x}, computed {crc:#06x}",
         )
         channel = frames.channels[frames.channel[last]]
@@ -347,12 +347,10 @@ def _one_transfer(
     try:
         message = codec.decode(payload)
     except DecodeError as error:
-        report = ProblemReport(
-            Problem.BAD_PAYLOAD, can_id, payload, float(stamp[first]), str(error)
-        )
+        report = ProblemReport(Problem.BAD_PAYLOAD, can_id, payload, frames.fed(first), str(error))
         return [(key, problem_record(report, channel))]
     record = transfer_record(
-        float(frames.timestamp[last]) if frames.has_time[last] else None,
+        frames.seconds(last),
         channel,
         can_id,
         can_id & 0x7F,

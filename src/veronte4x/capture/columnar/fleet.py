@@ -28,6 +28,7 @@ def convert_on(
     channel: str | None,
     batch_bytes: int,
     progress: bool | None,
+    time: str = "timestamp",
 ) -> list[Summary]:
     """Convert the captures on the workers of a ``dask.distributed.Client``; return each
     file's summary, in the order of ``paths``. A failure on a worker is raised here."""
@@ -39,6 +40,7 @@ def convert_on(
         bus_map=_portable(bus_map),
         channel=channel,
         batch_bytes=batch_bytes,
+        time=time,
         pure=False,
     )
     bar = Bar(progress, len(futures), "file", "converting")
@@ -69,11 +71,16 @@ def _portable(bus_map: BusMap | None) -> Portable | None:
 
 
 def _convert(
-    path: str, out_dir: str, bus_map: Portable | None, channel: str | None, batch_bytes: int
+    path: str,
+    out_dir: str,
+    bus_map: Portable | None,
+    channel: str | None,
+    batch_bytes: int,
+    time: str,
 ) -> Summary:
     """`convert_file` on a worker, the bus map rebuilt there."""
     rebuilt = None
     if bus_map is not None:
         settings, layouts = bus_map
         rebuilt = BusMap(**settings, layouts=tuple(Layout(*args) for args in layouts))
-    return convert_file(path, out_dir, rebuilt, channel, batch_bytes)
+    return convert_file(path, out_dir, rebuilt, channel, batch_bytes, time_form=time)

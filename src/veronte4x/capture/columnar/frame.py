@@ -17,7 +17,7 @@ def dataframe(
     path: str | os.PathLike[str],
     bus_map: BusMap | None = None,
     channel: str | None = None,
-    relative_time: bool = False,
+    time: str = "timestamp",
 ) -> pandas.DataFrame:
     """See `veronte4x.capture.to_dataframe`: every table of `read_tables` in one frame."""
     import pandas
@@ -26,8 +26,8 @@ def dataframe(
 
     parts = []
     keys = []
-    units: dict[str, str] = {"timestamp": "s"}
-    for kind, (table, key) in keyed_tables(path, bus_map, channel, relative_time).items():
+    units: dict[str, str] = {}
+    for kind, (table, key) in keyed_tables(path, bus_map, channel, time).items():
         for field in table.schema:
             if field.metadata and b"unit" in field.metadata:
                 units[field.name] = field.metadata[b"unit"].decode()

@@ -13,10 +13,20 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
-from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.frames import (
+    END_MICROS,
+    FIRST_MICROS,
+    BadLine,
+    Frame,
+    Seconds,
+    micros,
+)
 
 MAX_DATA = 8
 """Data bytes a row of `FrameColumns.data` holds; longer (CAN FD) data lives in `long_data`."""
+NO_TIME = np.iinfo(np.int64).min
+"""`FrameColumns.time` of a frame whose time has no table value (none, not finite, or
+outside the years 1 to 9999)."""
 
 
 @dataclass
@@ -39,6 +49,9 @@ class FrameColumns:
         data: The first eight data bytes of each frame, zero-padded.
         long_data: The data of frames with more than eight bytes, by row.
         bad_lines: Lines that are no frame, with their position in the capture order.
+        time: The log's time in whole microseconds since the epoch (UTC), exact where
+            ``timestamp`` is rounded, `NO_TIME` where it has no table value; None when
+            made: taken from ``timestamp`` (`nearest_micros`).
     """
 
     order: npt.NDArray[np.int64]
@@ -55,6 +68,11 @@ class FrameColumns:
     data: npt.NDArray[np.uint8]
     long_data: dict[int, bytes] = field(default_factory=dict)
     bad_lines: list[tuple[int, BadLine]] = field(default_factory=list)
+    time: npt.NDArray[np.int64] = None  # type: ignore[assignment]
+
+    def __post_init__(self) -> None:
+        if self.time is None:
+            self.time = nearest_micros(self.timestamp, self.has_time)
 
     def __len__(self) -> int:
         return len(self.order)
@@ -79,6 +97,7 @@ class FrameColumns:
             data=self.data[rows],
             long_data={where[r]: d for r, d in self.long_data.items() if r in where},
             bad_lines=self.bad_lines,
+            time=self.time[rows],
         )
 
     def frame(self, row: int) -> Frame:
@@ -87,7 +106,7 @@ class FrameColumns:
         if data is None:
             data = self.data[row, : self.length[row]].tobytes()
         return Frame(
-            float(self.timestamp[row]) if self.has_time[row] else None,
+            self.seconds(row),
             self.channels[self.channel[row]],
             int(self.can_id[row]),
             data,
@@ -97,10 +116,30 @@ class FrameColumns:
             bool(self.error[row]),
         )
 
+    def seconds(self, row: int) -> float | None:
+        """The timestamp of one row as the per-frame readers give it (a `Seconds` where the
+        float alone does not hold `time`)."""
+        if not self.has_time[row]:
+            return None
+        seconds, exact = float(self.timestamp[row]), int(self.time[row])
+        if exact == NO_TIME or micros(seconds) == exact:
+            return seconds
+        return Seconds(seconds, exact)
+
+    def fed(self, row: int) -> float:
+        """The timestamp the reassembler is fed for one row: `seconds`, 0.0 for none."""
+        seconds = self.seconds(row)
+        return 0.0 if seconds is None else seconds
+
     def frames_of(self, rows: npt.NDArray[np.int64]) -> list[Frame]:
         """The frames of ``rows``, as `frame` gives them, built a column at a time."""
         names = self.channels
         stamps = np.where(self.has_time[rows], self.timestamp[rows], np.nan).tolist()
+        exact = self.time[rows]
+        nearest = nearest_micros(self.timestamp[rows], self.has_time[rows])
+        odd = np.flatnonzero((exact != NO_TIME) & (exact != nearest))
+        for at in odd.tolist():
+            stamps[at] = Seconds(stamps[at], int(exact[at]))
         lengths = self.length[rows].tolist()
         blob = self.data[rows].tobytes()
         long_data = self.long_data
@@ -154,6 +193,7 @@ def from_frames(items: list[tuple[int, Frame | BadLine]]) -> FrameColumns:
         order=np.array([o for o, _ in frames], np.int64),
         timestamp=np.array([np.nan if s is None else s for s in stamps], np.float64),
         has_time=np.array([s is not None for s in stamps], np.bool_),
+        time=micros_of(stamps),
         channel=np.array(
             [channels.setdefault(f.channel, len(channels)) for _, f in frames], np.int32
         ),
@@ -217,4 +257,40 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
         data=joined("data"),
         long_data=long_data,
         bad_lines=sorted((b for p in parts for b in p.bad_lines), key=lambda b: b[0]),
+        time=joined("time"),
     )
+
+
+_FIRST_SECONDS = FIRST_MICROS // 1_000_000
+_END_SECONDS = END_MICROS // 1_000_000
+
+
+def nearest_micros(
+    seconds: npt.NDArray[np.float64], has_time: npt.NDArray[np.bool_]
+) -> npt.NDArray[np.int64]:
+    """`veronte4x.capture.frames.micros` of every float, column-wise: the whole
+    microseconds nearest to each (half to even), `NO_TIME` where it has none."""
+    ok = has_time & np.isfinite(seconds)
+    ok &= (seconds >= _FIRST_SECONDS) & (seconds < _END_SECONDS)
+    clean = np.where(ok, seconds, 0.0)
+    whole = np.floor(clean)
+    part = (clean - whole) * 1e6  # the subtraction is exact, the product rounds once
+    found = whole.astype(np.int64) * 1_000_000 + np.rint(part).astype(np.int64)
+    # The product is within 2**-33 of the exact value: only near a tie can rint misround.
+    doubt = np.flatnonzero(ok & (np.abs(part - np.floor(part) - 0.5) < 1e-6))
+    for row in doubt.tolist():
+        exact = micros(float(seconds[row]))
+        found[row] = NO_TIME if exact is None else exact
+    ok &= (found >= FIRST_MICROS) & (found < END_MICROS)
+    return np.where(ok, found, NO_TIME)
+
+
+def micros_of(stamps: list[float | None]) -> npt.NDArray[np.int64]:
+    """`FrameColumns.time` of frames' timestamps (those a `Seconds` holds, else nearest)."""
+    floats = np.array([np.nan if s is None else s for s in stamps], np.float64)
+    found = nearest_micros(floats, np.ones(len(stamps), np.bool_))
+    for row, stamp in enumerate(stamps):
+        if type(stamp) is Seconds:
+            exact = micros(stamp)
+            found[row] = NO_TIME if exact is None else exact
+    return found

@@ -63,8 +63,15 @@ CHANNEL = pa.dictionary(pa.int32(), pa.string())
 SENDER = pa.dictionary(pa.int16(), pa.string())
 ERROR = pa.dictionary(pa.int16(), pa.string())
 
+TIME = pa.timestamp("us", tz="UTC")
+"""The ``timestamp`` column: the capture's time in microseconds, UTC. candump logs have
+microseconds; python-can's readers give float seconds, which hold a time of today to about
+0.24 us: they are taken to the nearest microsecond."""
+SECONDS = pa.field("timestamp", pa.float64(), metadata={"unit": "s"})
+"""The ``timestamp`` column as float seconds (``time="seconds"`` or ``"relative"``)."""
+
 HEAD = (
-    pa.field("timestamp", pa.float64(), metadata={"unit": "s"}),
+    pa.field("timestamp", TIME),
     pa.field("channel", CHANNEL),
     pa.field("can_id", pa.uint32()),
     pa.field("sender", SENDER),

@@ -16,16 +16,19 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
-import pyarrow.compute as pc
 
+from veronte4x.capture.columnar.frames import NO_TIME, FrameColumns, micros_of
 from veronte4x.capture.columnar.schema import (
     ERRORS,
+    SECONDS,
     SENDER_INDEX,
     SENDERS,
+    TIME,
     UNDECODED,
     TableSpec,
 )
 from veronte4x.capture.records import Record
+from veronte4x.times import check_time_form
 
 SUB = 16
 """Sort keys are ``position * SUB + index among the records of that position``."""
@@ -62,7 +65,7 @@ class Tables:
     ) -> None:
         """Add rows given as columns (NumPy or Arrow), head columns included.
 
-        ``head`` holds ``timestamp`` (NaN for none), ``has_time``, ``channel`` (codes),
+        ``head`` holds ``time`` (`FrameColumns.time`), ``has_time``, ``channel`` (codes),
         ``can_id``, ``sender`` (codes into `SENDERS`), and for DroneCAN ``node_id`` and
         ``destination_node_id``.
         """
@@ -73,9 +76,9 @@ class Tables:
         arrays: dict[str, pa.Array] = {}
         for field in spec.schema:
             if field.name == "timestamp":
-                arrays["timestamp"] = pa.array(
-                    head["timestamp"], pa.float64(), mask=~head["has_time"]
-                )
+                time = np.asarray(head["time"], np.int64)
+                missing = ~np.asarray(head["has_time"], np.bool_) | (time == NO_TIME)
+                arrays["timestamp"] = pa.array(time, TIME, mask=missing)
             elif field.name == "channel":
                 arrays["channel"] = np.asarray(head["channel"], np.int32)
             elif field.name == "sender":
@@ -110,11 +113,10 @@ class Tables:
 
             spec = self.specs[kind] = table_spec(type(rows[0][1].message))
         records = [record for _, record in rows]
+        stamps = [r.timestamp for r in records]
         head: dict[str, Any] = {
-            "timestamp": np.array(
-                [np.nan if r.timestamp is None else r.timestamp for r in records], np.float64
-            ),
-            "has_time": np.array([r.timestamp is not None for r in records], np.bool_),
+            "time": micros_of(stamps),
+            "has_time": np.array([s is not None for s in stamps], np.bool_),
             "channel": [self._channel(r.channel) for r in records],
             "can_id": [r.can_id for r in records],
             "sender": [SENDER_INDEX[r.sender] for r in records],
@@ -165,21 +167,59 @@ class Tables:
         return out
 
 
-def relative_time(tables: dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]) -> None:
-    """Make every table's timestamps relative to the capture's first timestamped row (the
-    one with the smallest key), in place."""
-    first: tuple[int, float] | None = None
-    for table, keys in tables.values():
-        stamps = table.column("timestamp")
-        valid = np.flatnonzero(~np.asarray(stamps.is_null()))
-        if len(valid) and (first is None or keys[valid[0]] < first[0]):
-            first = int(keys[valid[0]]), stamps[int(valid[0])].as_py()
-    if first is None:
-        return
-    for kind, (table, keys) in tables.items():
-        index = table.schema.get_field_index("timestamp")
-        shifted = pc.subtract(table.column("timestamp"), first[1])
-        tables[kind] = table.set_column(index, table.schema.field(index), shifted), keys
+Keyed = dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]
+"""Tables by kind, each with the capture-order keys of its rows."""
+
+
+class Clock:
+    """Gives the ``timestamp`` column of a capture's tables in the form asked for
+    (`veronte4x.times.TimeForm`), batch after batch in capture order.
+
+    ``timestamp`` keeps the column; ``seconds`` makes it float seconds (the microseconds
+    divided by a million, correctly rounded); ``relative`` float seconds from the capture's
+    first timestamped frame (of ``channel``, when given), which `see` finds.
+    """
+
+    def __init__(self, time: str, channel: str | None = None) -> None:
+        self.time = check_time_form(time)
+        self.channel = channel
+        self.start: int | None = None
+
+    def see(self, frames: FrameColumns) -> None:
+        """Look at the capture's next frames, before their rows are retimed."""
+        if self.time != "relative" or self.start is not None:
+            return
+        timed = frames.has_time & (frames.time != NO_TIME)
+        if self.channel is not None:
+            if self.channel not in frames.channels:
+                return
+            timed &= frames.channel == frames.channels.index(self.channel)
+        found = np.flatnonzero(timed)
+        if len(found):
+            self.start = int(frames.time[found[0]])
+
+    def __call__(self, tables: Keyed) -> Keyed:
+        """The tables of the frames seen so far, retimed."""
+        if self.time == "timestamp":
+            return tables
+        offset = self.start if self.time == "relative" and self.start is not None else 0
+        return {kind: (_in_seconds(table, offset), keys) for kind, (table, keys) in tables.items()}
+
+
+def _in_seconds(table: pa.Table, offset: int) -> pa.Table:
+    """A table with its ``timestamp`` column as float seconds since ``offset`` us."""
+    index = table.schema.get_field_index("timestamp")
+    column = table.column(index).combine_chunks().cast(pa.int64())
+    missing = np.asarray(column.is_null())
+    micros = np.asarray(column.fill_null(0)) - offset
+    seconds = micros / 1e6  # exact micros, one correctly rounded division ...
+    for row in np.flatnonzero(np.abs(micros) >= _EXACT).tolist():  # ... or Python's
+        seconds[row] = int(micros[row]) / 1_000_000
+    return table.set_column(index, SECONDS, pa.array(seconds, pa.float64(), mask=missing))
+
+
+_EXACT = 1 << 53
+"""Integers below this convert to float64 exactly."""
 
 
 def _dictionary(codes: np.ndarray, type_: pa.DataType, names: pa.Array) -> pa.Array:

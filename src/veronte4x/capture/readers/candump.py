@@ -26,7 +26,7 @@ import math
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING
 
-from veronte4x.capture.frames import BadLine, Frame
+from veronte4x.capture.frames import BadLine, Frame, Seconds, micros, text_seconds
 from veronte4x.capture.readers.registry import SNIFF_BYTES
 
 if TYPE_CHECKING:
@@ -38,6 +38,8 @@ CAN_ERR_FLAG = 0x2000_0000
 """Error-frame flag of a SocketCAN identifier (linux/can.h)."""
 
 _ID_MASK = 0x1FFF_FFFF
+_SAFE = 8_589_934_592.0
+"""2**33 seconds: below, a float of six decimals gives back their microseconds."""
 _MAX_IDENTIFIERS = 65_536
 
 
@@ -116,7 +118,17 @@ def parse_candump(
             if separator and stamp[0] == "(" and stamp[-1] == ")" and (size == 3 or size == 8):
                 try:
                     can_id = identifiers[ident]
-                    frame = (float(stamp[1:-1]), interface, can_id, fromhex(data), size == 8)
+                    text = stamp[1:-1]
+                    seconds = float(text)
+                    # candump's own "%010lu.%06lu": the float gives back its microseconds.
+                    if not (
+                        len(text) == 17
+                        and text[10] == "."
+                        and seconds < _SAFE
+                        and text[11:].isdigit()
+                    ):
+                        seconds = text_seconds(text, seconds)
+                    frame = (seconds, interface, can_id, fromhex(data), size == 8)
                 except ValueError:
                     pass
                 else:
@@ -164,7 +176,7 @@ def _log_line(parts: list[str]) -> Frame | str:
     stamp, interface, frame = parts
     if not (stamp.startswith("(") and stamp.endswith(")")):
         return "timestamp not in parentheses"
-    timestamp = float(stamp[1:-1])
+    timestamp = text_seconds(stamp[1:-1])
     if not math.isfinite(timestamp):
         return f"timestamp {stamp} is not a finite number"
     ident, _, data = frame.partition("#")
@@ -239,7 +251,7 @@ def _human_line(parts: list[str], line: str) -> Frame | str:
 def _human_timestamp(stamp: str) -> float | None:
     """Seconds from ``1436509052.249713``, ``000.000000`` or ``2015-07-10 08:17:32.249713``."""
     try:
-        seconds = float(stamp)
+        seconds = text_seconds(stamp)
     except ValueError:
         pass
     else:
@@ -248,7 +260,13 @@ def _human_timestamp(stamp: str) -> float | None:
         moment = _dt.datetime.strptime(stamp.strip(), "%Y-%m-%d %H:%M:%S.%f")
     except ValueError:
         return None
-    return moment.replace(tzinfo=_dt.timezone.utc).timestamp()
+    moment = moment.replace(tzinfo=_dt.timezone.utc)
+    seconds = moment.timestamp()
+    exact = (moment - _EPOCH) // _dt.timedelta(microseconds=1)
+    return seconds if micros(seconds) == exact else Seconds(seconds, exact)
+
+
+_EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
 
 
 _HEX_DIGITS = "0123456789abcdefABCDEF"
