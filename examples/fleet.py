@@ -77,7 +77,8 @@ ORDER BY w.source, w.timestamp
 
 def switches_duckdb(data: Path) -> pl.DataFrame:
     """Question 1 in SQL: the switches, and each autopilot's last score before them."""
-    switches = duckdb.sql(SWITCHES_SQL.format(data=data.as_posix())).pl()
+    with duckdb.connect() as connection:  # its own, not the module's shared connection
+        switches = connection.sql(SWITCHES_SQL.format(data=data.as_posix())).pl()
     # DuckDB gives TIMESTAMP WITH TIME ZONE in the session's zone: shown here in UTC.
     return switches.with_columns(pl.col(pl.Datetime).dt.convert_time_zone("UTC"))
 
@@ -136,7 +137,8 @@ ORDER BY throttle
 def heat_duckdb(data: Path) -> pl.DataFrame:
     """Question 2 in SQL: mean ESC temperature (degC) per tenth of throttle, each status
     paired with the last RawCommand before it in the same flight."""
-    return duckdb.sql(HEAT_SQL.format(data=data.as_posix(), full=RAW_FULL_SCALE)).pl()
+    with duckdb.connect() as connection:
+        return connection.sql(HEAT_SQL.format(data=data.as_posix(), full=RAW_FULL_SCALE)).pl()
 
 
 def heat_polars(data: Path) -> pl.DataFrame:

@@ -285,8 +285,13 @@ def rows(table: Any) -> list[dict[str, Any]]:
 
 
 def _plain(value: Any) -> Any:
+    """NaN as a string, also inside list and struct values (a NaN is not equal to another)."""
     if isinstance(value, float) and math.isnan(value):
         return "NaN"
+    if isinstance(value, list):
+        return [_plain(item) for item in value]
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
     return value
 
 

@@ -504,14 +504,19 @@ class Codec:
 def _encoders(table: RouteTable) -> dict[type[Message], FrameEncoder]:
     """The encoder of each message class of a route table.
 
-    A class with several layouts (Status: the 4x and the CEX forms) is encoded with the
+    Opaque messages are encoded even when a declared layout decodes their command. A class
+    with several layouts (Status: the 4x and the CEX forms) is encoded with the
     layout whose first implied attribute the message carries (``cbit_ok is None``: CEX),
     else with the layout that implies nothing.
     """
     by_class: dict[type[Message], list[FrameLayout]] = {}
     for layout in table.layouts():
         by_class.setdefault(layout.message, []).append(layout)
-    encoders: dict[type[Message], FrameEncoder] = {}
+    # An opaque message keeps its encoder when a declared layout takes its command over:
+    # its payload bytes are still a frame of that command.
+    encoders: dict[type[Message], FrameEncoder] = {
+        layout.message: layout.functions[1] for layout in layouts.OPAQUE.values()
+    }
     for cls, found in by_class.items():
         plain = [layout for layout in found if not layout.implied]
         implied = [layout for layout in found if layout.implied]

@@ -22,7 +22,7 @@ from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns
 from veronte4x.capture.columnar.schema import HEAD, SENDER_INDEX, Column, TableSpec
 from veronte4x.capture.columnar.tables import SUB, Tables
 from veronte4x.capture.dbc_in import decoder_of, failure
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, error_record
 from veronte4x.errors import SourceError
 
 _UNKNOWN = SENDER_INDEX["unknown"]
@@ -107,7 +107,7 @@ def _add(
     if not len(taken):
         return
     head = {
-        "timestamp": frames.timestamp[taken],
+        "time": frames.time[taken],
         "has_time": frames.has_time[taken],
         "channel": frames.channel[taken],
         "can_id": frames.can_id[taken],
@@ -170,8 +170,8 @@ def _vectorised(message: Any, spec: TableSpec, data: npt.NDArray[np.uint8]) -> d
 
 def _error(frames: FrameColumns, row: int, detail: str) -> Record:
     (frame,) = frames.frames_of(np.array([row], np.int64))
-    return Record(frame.timestamp, frame.channel, frame.can_id, Role.UNKNOWN, None, None,
-                  None, "decode error", detail, frame.data)  # fmt: skip
+    return error_record(frame.timestamp, frame.channel, frame.can_id, Role.UNKNOWN, None, None,
+                        "decode error", detail, frame.data)  # fmt: skip
 
 
 def _choices(cls: type[Any]) -> list[bool]:
