@@ -202,12 +202,20 @@ class StreamDecoder:
         self._pending_keys = np.zeros(0, np.int64)
         if pending is None or not len(pending):
             return None, context
-        batch = self._keys(frames, np.arange(len(frames)))
-        batch = batch[stable_order(batch)]
-        by_key = stable_order(keys)  # sorted look-ups: fast
-        at = np.minimum(np.searchsorted(batch, keys[by_key]), max(len(batch) - 1, 0))
+        batch = self._keys(frames)
         needed = ~context
-        if len(batch):
+        by_key = stable_order(keys)  # look-ups in order: fast
+        if len(keys) * 8 < len(batch):  # few carried: look the batch's keys up in theirs
+            carried = keys[by_key]
+            at = np.minimum(np.searchsorted(carried, batch), len(carried) - 1)
+            found = np.zeros(len(carried) + 1, np.bool_)
+            found[np.where(carried[at] == batch, at, len(carried))] = True
+            # Rows of one key are adjacent in key order: the first found marks them all.
+            same = np.searchsorted(carried, carried)
+            needed[by_key] |= found[same]
+        elif len(batch):
+            batch = batch[stable_order(batch)]
+            at = np.minimum(np.searchsorted(batch, keys[by_key]), len(batch) - 1)
             needed[by_key] |= batch[at] == keys[by_key]
         if needed.all():
             return pending, context
@@ -232,16 +240,19 @@ class StreamDecoder:
         self._context = np.concatenate([np.ones(len(kept), np.bool_), self._context])[by_order]
         self._pending_keys = np.concatenate([self._kept_keys, self._pending_keys])[by_order]
 
-    def _keys(self, frames: FrameColumns, rows: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
-        """Session keys that hold across batches: a channel number of this decoder's and the
-        CAN ID without its priority bits."""
+    def _keys(
+        self, frames: FrameColumns, rows: npt.NDArray[np.int64] | None = None
+    ) -> npt.NDArray[np.int64]:
+        """Session keys that hold across batches (of ``rows``, else of every frame): a
+        channel number of this decoder's and the CAN ID without its priority bits."""
         codes = np.array(
             [self._channel_ids.setdefault(c, len(self._channel_ids)) for c in frames.channels]
             or [0],
             np.int64,
         )
-        channel = codes[frames.channel[rows]]
-        keys: npt.NDArray[np.int64] = channel << 24 | (frames.can_id[rows] & 0xFFFFFF)
+        channel = codes[frames.channel if rows is None else frames.channel[rows]]
+        can_id = frames.can_id if rows is None else frames.can_id[rows]
+        keys: npt.NDArray[np.int64] = channel << 24 | (can_id & 0xFFFFFF)
         return keys
 
     def finish(self) -> None:
@@ -402,7 +413,7 @@ class StreamDecoder:
         pending.bad_lines = []
         self._pending = pending
         self._context = context[keep][by_order]
-        self._pending_keys = self._keys(pending, np.arange(len(pending)))
+        self._pending_keys = self._keys(pending)
 
 
 def stable_order(values: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
