@@ -144,3 +144,72 @@ def test_a_session_left_open_before_a_thousand_others_starts_over() -> None:
             decoder.feed(batch)
         decoder.finish()
     assert_same_tables(batched(frames, [400] * 10), expected)
+
+
+def _returning_sessions(count: int, transfers: int, seed: int) -> list[str]:
+    """candump lines of ``count`` sessions that fall silent and come back at random, with
+    faults: frames dropped or doubled, toggle bits flipped, transfer ids repeated (within
+    the timeout and after it), and gaps past the transfer-ID timeout."""
+    import random
+
+    chooser = random.Random(seed)
+    messages = [
+        dronecan.NodeStatus(
+            uptime_sec=5, health=dronecan.Health.OK, mode=0, sub_mode=0,
+            vendor_specific_status_code=0,
+        ),
+        dronecan.RawCommand(cmd=tuple(range(12))),  # two frames
+        dronecan.GetSetRequest(index=3, name=b"a parameter"),  # three frames
+    ]  # fmt: skip
+    sessions = chooser.sample(
+        [(kind, node, target) for kind in range(3) for node in range(1, 128)
+         for target in ((None,) if kind < 2 else range(1, 40))],
+        count,
+    )  # fmt: skip
+    tids = [chooser.randrange(32) for _ in sessions]
+    lines = []
+    stamp = 1_700_000_000.0
+    for _ in range(transfers):
+        session = chooser.randrange(count)
+        kind, node, target = sessions[session]
+        fault = chooser.randrange(12)
+        if fault == 0:
+            stamp += 2.5  # past the transfer-ID timeout
+        if fault != 1:  # 1: the transfer id of the session's last transfer, again
+            tids[session] = (tids[session] + 1) % 32
+        made = dronecan.encode(
+            messages[kind],
+            source_node_id=node,
+            transfer_id=tids[session],
+            destination_node_id=target,
+        )
+        frames = [(f.can_id, bytearray(f.data)) for f in made]
+        at = chooser.randrange(len(frames))
+        if fault == 2:
+            del frames[at]
+        elif fault == 3:
+            frames.insert(at, frames[at])
+        elif fault == 4:
+            frames[at][1][-1] ^= 0x20  # the toggle bit
+        for can_id, data in frames:
+            stamp += chooser.choice((1e-4, 1e-3, 0.3))
+            lines.append(f"({stamp:.6f}) can0 {can_id:08X}#{bytes(data).hex().upper()}")
+    return lines
+
+
+@pytest.mark.parametrize(
+    ("count", "transfers", "sizes"),
+    [(40, 600, [1, 3]), (400, 2_000, [5, 16]), (1_500, 4_000, [13, 64])],
+)
+def test_sessions_that_fall_silent_and_return_in_small_batches(
+    count: int, transfers: int, sizes: list[int]
+) -> None:
+    """Small batches cut inside transfers and between repeats of sessions silent for many
+    batches (their context kept aside), faults included: the rows of `capture.read`."""
+    lines = _returning_sessions(count, transfers, seed=count)
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "returning.log", lines)
+        expected = capture.tables_from_records(capture.read(path))
+        frames = read_frames(path)
+    for size in sizes:
+        assert_same_tables(batched(frames, [size] * len(frames)), expected)

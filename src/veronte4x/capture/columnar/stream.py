@@ -14,7 +14,9 @@ frame or column by column with no state between batches, except the DroneCAN rea
   Its last whole transfer is carried into the next batch as *context* (checked again with
   the new frames, never decoded twice), and so are the frames of a transfer still open at
   the end of a batch, provided they are a flawless beginning: then the reassembler would
-  report nothing on them either, whatever follows.
+  report nothing on them either, whatever follows. A batch is joined only the context of
+  the sessions with frames in it; the others' is kept aside until theirs come, so that a
+  batch costs the same whether the capture has ten sessions or a hundred thousand.
 - A session found irregular leaves the column path for good: its last whole transfer is fed
   to the reassembler again (the result dropped: it came out in the batch before), which
   leaves the session's state as that transfer left it in one piece (a session's state after
@@ -85,8 +87,14 @@ class StreamDecoder:
         self.per_frame_channels = frozenset(per_frame_channels)
         self.decoder = CaptureDecoder(self.bus_map)
         self._specs = all_specs(self.bus_map.codec(), self.bus_map.dronecan_types)
+        # Frames carried to the next batch (capture order), whether each is context (else
+        # a transfer still open), and each one's session key.
         self._pending: FrameColumns | None = None
         self._context = np.zeros(0, np.bool_)
+        self._pending_keys = np.zeros(0, np.int64)
+        # The carried frames of sessions without frames in the batch being decoded.
+        self._kept: FrameColumns | None = None
+        self._kept_keys = np.zeros(0, np.int64)
         self._channel_ids: dict[str, int] = {}
         self._irregular = np.zeros(0, np.int64)
         # Every session's key, first and last frame position so far (keys sorted).
@@ -108,17 +116,17 @@ class StreamDecoder:
         """`feed`, each table with the capture-order keys of its rows."""
         if self.channel is not None:
             frames = engine.only_channel(frames, self.channel)
-        pending = self._pending
+        pending, context = self._take_pending(frames)
         if pending is not None and len(pending):
             joined = concat([pending, frames])
-            context = np.concatenate([self._context, np.zeros(len(frames), np.bool_)])
+            context = np.concatenate([context, np.zeros(len(frames), np.bool_)])
         else:
             joined, context = frames, np.zeros(len(frames), np.bool_)
         tables = Tables(self._specs, list(joined.channels))
         done, candidates = engine.decode_veronte(joined, self.bus_map, tables)
-        self._pending, self._context = None, np.zeros(0, np.bool_)
         if self.bus_map.dronecan:
             done |= self._dronecan(joined, candidates, context, tables)
+        self._keep_pending()
         done |= context
         dbc.decode_frames(joined, self.bus_map, done, tables)
         tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
@@ -138,6 +146,8 @@ class StreamDecoder:
         if not len(rows):
             return taken
         keys = self._keys(frames, rows)
+        by_session = stable_order(keys)
+        rows, keys = rows[by_session], keys[by_session]
         self._add_spans(keys, frames.order[rows])
         column = ~np.isin(keys, self._irregular)
         if self.per_frame_channels:
@@ -146,8 +156,6 @@ class StreamDecoder:
         rows, keys = rows[column], keys[column]
         if not len(rows):
             return taken
-        by_session = np.argsort(keys, kind="stable")
-        rows, keys = rows[by_session], keys[by_session]
         length = frames.length[rows]
         tail = frames.data[rows, length - 1]
         opens = np.ones(len(rows), np.bool_)
@@ -182,16 +190,69 @@ class StreamDecoder:
         self._carry(frames, rows[regular], tail[regular], carried[regular])
         return taken
 
-    def _keys(self, frames: FrameColumns, rows: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
-        """Session keys that hold across batches: a channel number of this decoder's and the
-        CAN ID without its priority bits."""
+    def _take_pending(
+        self, frames: FrameColumns
+    ) -> tuple[FrameColumns | None, npt.NDArray[np.bool_]]:
+        """The carried frames the batch ``frames`` needs, and which are context: every
+        transfer still open, and the context of the sessions with frames in the batch.
+        The context of the others is kept aside until a batch has their frames: alone it
+        would only be checked and carried again."""
+        pending, context, keys = self._pending, self._context, self._pending_keys
+        self._pending, self._context = None, np.zeros(0, np.bool_)
+        self._pending_keys = np.zeros(0, np.int64)
+        if pending is None or not len(pending):
+            return None, context
+        batch = self._keys(frames)
+        needed = ~context
+        by_key = stable_order(keys)  # look-ups in order: fast
+        if len(keys) * 8 < len(batch):  # few carried: look the batch's keys up in theirs
+            carried = keys[by_key]
+            at = np.minimum(np.searchsorted(carried, batch), len(carried) - 1)
+            found = np.zeros(len(carried) + 1, np.bool_)
+            found[np.where(carried[at] == batch, at, len(carried))] = True
+            # Rows of one key are adjacent in key order: the first found marks them all.
+            same = np.searchsorted(carried, carried)
+            needed[by_key] |= found[same]
+        elif len(batch):
+            batch = batch[stable_order(batch)]
+            at = np.minimum(np.searchsorted(batch, keys[by_key]), len(batch) - 1)
+            needed[by_key] |= batch[at] == keys[by_key]
+        if needed.all():
+            return pending, context
+        aside = np.flatnonzero(~needed)
+        self._kept, self._kept_keys = pending.take(aside), keys[aside]
+        taken = np.flatnonzero(needed)
+        return pending.take(taken), context[taken]
+
+    def _keep_pending(self) -> None:
+        """Join the context kept aside to the frames carried from this batch."""
+        kept = self._kept
+        if kept is None:
+            return
+        self._kept = None
+        pending = self._pending
+        if pending is None or not len(pending):
+            self._pending, self._pending_keys = kept, self._kept_keys
+            self._context = np.ones(len(kept), np.bool_)
+            return
+        by_order = stable_order(np.concatenate([kept.order, pending.order]))
+        self._pending = concat([kept, pending])
+        self._context = np.concatenate([np.ones(len(kept), np.bool_), self._context])[by_order]
+        self._pending_keys = np.concatenate([self._kept_keys, self._pending_keys])[by_order]
+
+    def _keys(
+        self, frames: FrameColumns, rows: npt.NDArray[np.int64] | None = None
+    ) -> npt.NDArray[np.int64]:
+        """Session keys that hold across batches (of ``rows``, else of every frame): a
+        channel number of this decoder's and the CAN ID without its priority bits."""
         codes = np.array(
             [self._channel_ids.setdefault(c, len(self._channel_ids)) for c in frames.channels]
             or [0],
             np.int64,
         )
-        channel = codes[frames.channel[rows]]
-        keys: npt.NDArray[np.int64] = channel << 24 | (frames.can_id[rows] & 0xFFFFFF)
+        channel = codes[frames.channel if rows is None else frames.channel[rows]]
+        can_id = frames.can_id if rows is None else frames.can_id[rows]
+        keys: npt.NDArray[np.int64] = channel << 24 | (can_id & 0xFFFFFF)
         return keys
 
     def finish(self) -> None:
@@ -229,14 +290,24 @@ class StreamDecoder:
                 raise TooManySessions(name)
 
     def _add_spans(self, keys: npt.NDArray[np.int64], positions: npt.NDArray[np.int64]) -> None:
-        """Take the sessions' frames of a batch into their first and last positions."""
-        joined = np.concatenate([self._keys_seen, keys])
-        unique, where = np.unique(joined, return_inverse=True)
-        first = np.full(len(unique), np.iinfo(np.int64).max, np.int64)
-        last = np.full(len(unique), -1, np.int64)
-        np.minimum.at(first, where, np.concatenate([self._first, positions]))
-        np.maximum.at(last, where, np.concatenate([self._last, positions]))
-        self._keys_seen, self._first, self._last = unique, first, last
+        """Take the sessions' frames of a batch (``keys`` sorted) into their first and last
+        positions."""
+        if not len(keys):
+            return
+        opens = np.flatnonzero(np.append(True, keys[1:] != keys[:-1]))
+        unique = keys[opens]
+        first = np.minimum.reduceat(positions, opens)
+        last = np.maximum.reduceat(positions, opens)
+        at = np.searchsorted(self._keys_seen, unique)
+        known = at < len(self._keys_seen)
+        known[known] = self._keys_seen[at[known]] == unique[known]
+        old = at[known]
+        self._first[old] = np.minimum(self._first[old], first[known])
+        self._last[old] = np.maximum(self._last[old], last[known])
+        new, where = ~known, at[~known]
+        self._keys_seen = np.insert(self._keys_seen, where, unique[new])
+        self._first = np.insert(self._first, where, first[new])
+        self._last = np.insert(self._last, where, last[new])
 
     def _crowded(self) -> tuple[dronecan.Spans, npt.NDArray[np.bool_]]:
         """The sessions' spans, and per channel code whether it has more sessions than the
@@ -337,11 +408,23 @@ class StreamDecoder:
         last[:-1] = (channel[1:] != channel[:-1]) | (can_id[1:] != can_id[:-1])
         context = np.isin(transfer, transfer[whole[last]])
         keep = np.flatnonzero(context | carried)
-        by_order = np.argsort(rows[keep], kind="stable")
+        by_order = stable_order(rows[keep])
         pending = frames.take(rows[keep][by_order])
         pending.bad_lines = []
         self._pending = pending
         self._context = context[keep][by_order]
+        self._pending_keys = self._keys(pending)
+
+
+def stable_order(values: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
+    """`np.argsort` of ``values`` (>= 0), stable: two radix passes of 16 bits where they
+    fit in 32 (many distinct values cost no more than a few)."""
+    if not len(values) or int(values.max()) >= 1 << 32:
+        return np.argsort(values, kind="stable")
+    low = np.argsort((values & 0xFFFF).astype(np.uint16), kind="stable")
+    high = np.argsort((values[low] >> 16).astype(np.uint16), kind="stable")
+    order: npt.NDArray[np.int64] = low[high]
+    return order
 
 
 def split(frames: FrameColumns, sizes: Iterable[int]) -> Iterator[FrameColumns]:
