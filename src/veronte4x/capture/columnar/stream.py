@@ -85,6 +85,7 @@ class StreamDecoder:
         self.per_frame_channels = frozenset(per_frame_channels)
         self.decoder = CaptureDecoder(self.bus_map)
         self._specs = all_specs(self.bus_map.codec(), self.bus_map.dronecan_types)
+        self._known = dronecan.type_index_of(self.bus_map.dronecan_types)
         self._pending: FrameColumns | None = None
         self._context = np.zeros(0, np.bool_)
         self._channel_ids: dict[str, int] = {}
@@ -134,7 +135,7 @@ class StreamDecoder:
         """Decode the regular sessions, carry what the next batch needs; return the rows
         taken (decoded or carried)."""
         taken = np.zeros(len(frames), np.bool_)
-        rows, types, stamp = engine.dronecan_inputs(frames, candidates)
+        rows, types, stamp = engine.dronecan_inputs(frames, candidates, self._known)
         if not len(rows):
             return taken
         keys = self._keys(frames, rows)
@@ -170,6 +171,7 @@ class StreamDecoder:
             length,
             checked,
             types[rows],
+            self._known,
             table=False,
         )
         regular = np.empty(len(rows), np.bool_)
@@ -177,7 +179,9 @@ class StreamDecoder:
         self._leave_column_path(frames, rows, keys, stamp, context, ~regular & opens)
         self._check_table(frames, rows, keys, regular & ~carried, tail)
         decoded = regular & ~carried
-        engine.decode_transfers(frames, rows[decoded], types, stamp, tables, skip=context)
+        engine.decode_transfers(
+            frames, rows[decoded], types, stamp, self._known, tables, skip=context
+        )
         taken[rows[regular]] = True
         self._carry(frames, rows[regular], tail[regular], carried[regular])
         return taken
