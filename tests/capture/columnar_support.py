@@ -15,6 +15,7 @@ from veronte4x.dronecan.codec import BY_CLASS, CODECS, Codec, can_id_base
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.tail import SINGLE_FRAME_MAX, split_payload
+from veronte4x.dronecan.typeset import TypeSet
 
 DECLARED = codec.Layout(
     5,
@@ -30,6 +31,15 @@ DECLARED = codec.Layout(
 )
 """A declared layout with every field kind, for command 5."""
 
+VENDOR_DSDL = (
+    Path(__file__).resolve().parents[2] / "examples" / "dsdl" / "com",
+    Path(__file__).resolve().parent / "data" / "dsdl" / "acme",
+)
+"""Vendor namespaces: the docs' ``com.example``, and ``acme``, whose fields are named as
+head columns (``channel``, ``timestamp``, ``can_id``, ``node_id``, ``sender``,
+``destination_node_id``, ``error``, ``detail``, ``data``)."""
+VENDOR_TYPES = TypeSet.standard().with_dsdl(*VENDOR_DSDL)
+
 BUS_MAPS = st.sampled_from(
     [
         BusMap(),
@@ -38,6 +48,8 @@ BUS_MAPS = st.sampled_from(
         BusMap(arbiter_id=0x100, autopilot_ids=(0x101, 0x102, 0x103, 0x104), extended=True),
     ]
 )
+VENDOR_BUS_MAPS = BUS_MAPS.map(lambda bus_map: bus_map.with_types(VENDOR_TYPES))
+"""The bus maps with the vendor type set."""
 
 float32s = st.floats(width=32, allow_nan=True)
 int14 = st.integers(-8192, 8191)
@@ -115,12 +127,17 @@ def _named(name: str) -> Any:
 
 
 @st.composite
-def any_payload(draw: st.DrawFn) -> tuple[Codec, bytes]:
-    """A standard type and a payload for it: a value's encoding (saturated), that cut
-    short or lengthened, or any bytes."""
-    found = draw(st.sampled_from(CODECS))
+def any_payload(draw: st.DrawFn, types: TypeSet | None = None) -> tuple[Codec, bytes]:
+    """A type of ``types`` (None: the standard set; a vendor type one time in two where
+    the set has any) and a payload for it: a value's encoding (saturated), that cut short
+    or lengthened, or any bytes."""
+    codecs = CODECS if types is None else types.codecs
+    vendor = codecs[len(CODECS) :]
+    pick_vendor: bool = bool(vendor) and draw(st.booleans())
+    found = draw(st.sampled_from(vendor if pick_vendor else CODECS))
     data = draw(schema_values(found.data_type.schema))
-    payload = found.encode(dronecan.from_builtin(found.data_type.schema.cls, data), True)
+    message: Any = dronecan.from_builtin(found.data_type.schema.cls, data, types)
+    payload = found.encode(message, True)
     change = draw(st.integers(0, 5))
     if change == 0:
         payload = draw(st.binary(max_size=min(found.max_payload + 2, 300)))
@@ -191,7 +208,7 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
         elif what <= 6:
             source = draw(nodes)
             if draw(st.booleans()):  # any standard type, any payload
-                found, payload = draw(any_payload())
+                found, payload = draw(any_payload(bus_map.dronecan_types))
                 service = found.data_type.kind is not dronecan.TransferKind.MESSAGE
                 key = (source, found.data_type.kind.value << 16 | found.data_type.data_type_id)
             else:

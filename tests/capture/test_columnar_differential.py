@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import (
     BUS_MAPS,
     LINE_ENDINGS,
+    VENDOR_BUS_MAPS,
     assert_same_tables,
     captures,
     write,
@@ -31,6 +32,21 @@ def test_generated_captures_agree(
         path = write(Path(folder) / "capture.log", lines, ending)
         expected = capture.tables_from_records(capture.read(path, bus_map, channel), bus_map)
         got = capture.read_tables(path, bus_map, channel)
+    assert_same_tables(got, expected)
+
+
+@settings(max_examples=100, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data(), VENDOR_BUS_MAPS, st.sampled_from([None, "can0"]), st.integers(1, 400))
+def test_generated_captures_with_vendor_types_agree(
+    data: st.DataObject, bus_map: BusMap, channel: str | None, batch_bytes: int
+) -> None:
+    """Vendor types (any payload, faults included) beside standard ones, in batches."""
+    lines = data.draw(captures(bus_map))
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "capture.log", lines)
+        expected = capture.tables_from_records(capture.read(path, bus_map, channel), bus_map)
+        with mock.patch.object(batches, "BATCH_BYTES", batch_bytes):
+            got = capture.read_tables(path, bus_map, channel)
     assert_same_tables(got, expected)
 
 

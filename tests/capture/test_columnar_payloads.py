@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tests.capture.columnar_support import any_payload
+from tests.capture.columnar_support import VENDOR_TYPES, any_payload
 from veronte4x.capture.columnar import payloads
 from veronte4x.capture.columnar.schema import dronecan_specs, field_column
 from veronte4x.dronecan.codec import CODECS, Codec
@@ -18,6 +18,8 @@ from veronte4x.errors import DecodeError
 
 pa = pytest.importorskip("pyarrow")
 SPECS = dronecan_specs()
+VENDOR_SPECS = dronecan_specs(VENDOR_TYPES)
+VENDOR_CODECS = VENDOR_TYPES.codecs[len(CODECS) :]
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -30,11 +32,11 @@ def _same(a: Any, b: Any) -> bool:
     return bool(a == b)
 
 
-def check(found: Codec, items: list[bytes]) -> None:
+def check(found: Codec, items: list[bytes], specs: dict[str, Any] = SPECS) -> None:
     """Decode ``items`` of one type column-wise and one by one: the same values, and the
-    same payloads refused."""
+    same payloads refused (``specs``: the tables of the type's set)."""
     schema = found.data_type.schema
-    spec = SPECS[schema.cls.__name__]
+    spec = specs[schema.cls.__name__]
     sizes = np.array([len(p) for p in items], np.int64)
     starts = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
     blob = np.frombuffer(b"".join(items) + b"\0", np.uint8)[: int(sizes.sum())]
@@ -72,3 +74,21 @@ def test_any_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> None:
 def test_every_type_on_zeros_and_short_payloads(found: Codec) -> None:
     sizes = range(min(found.max_payload, 64) + 2)
     check(found, [bytes(n) for n in sizes] + [bytes([0xFF]) * n for n in sizes])
+
+
+@settings(max_examples=200)
+@given(st.lists(any_payload(VENDOR_TYPES), min_size=1, max_size=12))
+def test_vendor_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> None:
+    by_type: dict[int, list[bytes]] = {}
+    for found, payload in drawn:
+        by_type.setdefault(VENDOR_TYPES.codecs.index(found), []).append(payload)
+    for index, items in by_type.items():
+        check(VENDOR_TYPES.codecs[index], items, VENDOR_SPECS)
+
+
+@pytest.mark.parametrize(
+    "found", VENDOR_CODECS, ids=[c.data_type.schema.cls.__name__ for c in VENDOR_CODECS]
+)
+def test_every_vendor_type_on_zeros_and_short_payloads(found: Codec) -> None:
+    sizes = range(min(found.max_payload, 64) + 2)
+    check(found, [bytes(n) for n in sizes] + [bytes([0xFF]) * n for n in sizes], VENDOR_SPECS)

@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 from tests.capture.columnar_support import (
     BUS_MAPS,
+    VENDOR_BUS_MAPS,
     assert_same_tables,
     captures,
     many_sessions,
@@ -49,7 +50,7 @@ def batched(
 
 
 @settings(max_examples=60, suppress_health_check=[HealthCheck.too_slow])
-@given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]))
+@given(st.data(), BUS_MAPS | VENDOR_BUS_MAPS, st.sampled_from([None, "can0"]))
 def test_generated_captures_in_random_batches(
     data: st.DataObject, bus_map: BusMap, channel: str | None
 ) -> None:

@@ -21,6 +21,7 @@ reassembler whole.
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 from typing import Any
 
@@ -28,24 +29,65 @@ import numpy as np
 import numpy.typing as npt
 
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import CODECS, Codec
+from veronte4x.dronecan.codec import Codec
 from veronte4x.dronecan.compiled import bit_runs
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
 from veronte4x.dronecan.schema import Scalar, Struct
+from veronte4x.dronecan.typeset import TypeSet, resolve
 
 MAX_SESSIONS = 1024
 """The per-frame reassembler's session table (its default ``max_sessions``)."""
 
-_MESSAGE_TYPES = np.full(1 << 16, -1, np.int16)
-_SERVICE_TYPES = np.full(1 << 10, -1, np.int16)
-for _index, _codec in enumerate(CODECS):
-    _type = _codec.data_type
-    if _type.kind is TransferKind.MESSAGE:
-        _MESSAGE_TYPES[_type.data_type_id] = _index
-    else:
-        _SERVICE_TYPES[_type.data_type_id << 1 | (_type.kind is TransferKind.REQUEST)] = _index
-_LIMITS = np.array([c.max_payload + 2 for c in CODECS], np.int64)
-_SEEDS = np.array([c.crc_seed for c in CODECS], np.uint32)
+
+@dataclass(frozen=True, eq=False)
+class TypeIndex:
+    """The types of one type set, numbered for the columns: a type index is a position in
+    ``codecs``, the set's codecs (standard types first, vendor types after).
+
+    Attributes:
+        codecs: The codec of each type index.
+        message_types: Type index of each message data type id, -1 for none.
+        service_types: Type index of each service data type id shifted left by one, a
+            request's with the low bit set; -1 for none.
+        limits: Largest payload of each type index, with its CRC.
+        seeds: Transfer CRC seed of each type index.
+    """
+
+    codecs: tuple[Codec, ...]
+    message_types: npt.NDArray[np.int16]
+    service_types: npt.NDArray[np.int16]
+    limits: npt.NDArray[np.int64]
+    seeds: npt.NDArray[np.uint32]
+
+    def codec_of(self, index: int) -> Codec:
+        """The codec of a type index."""
+        return self.codecs[index]
+
+
+_INDEXES: weakref.WeakKeyDictionary[TypeSet, TypeIndex] = weakref.WeakKeyDictionary()
+
+
+def type_index_of(types: TypeSet | None = None) -> TypeIndex:
+    """The `TypeIndex` of a type set (None: the default set), built once per set."""
+    types = resolve(types, "type_index_of")
+    found = _INDEXES.get(types)
+    if found is None:
+        found = _INDEXES[types] = _build_index(types.codecs)
+    return found
+
+
+def _build_index(codecs: tuple[Codec, ...]) -> TypeIndex:
+    message_types = np.full(1 << 16, -1, np.int16)
+    service_types = np.full(1 << 10, -1, np.int16)
+    for index, codec in enumerate(codecs):
+        t = codec.data_type
+        if t.kind is TransferKind.MESSAGE:
+            message_types[t.data_type_id] = index
+        else:
+            service_types[t.data_type_id << 1 | (t.kind is TransferKind.REQUEST)] = index
+    limits = np.array([c.max_payload + 2 for c in codecs], np.int64)
+    seeds = np.array([c.crc_seed for c in codecs], np.uint32)
+    return TypeIndex(codecs, message_types, service_types, limits, seeds)
 
 
 def _crc_table() -> npt.NDArray[np.uint32]:
@@ -68,7 +110,7 @@ class Transfers:
     Attributes:
         last: Row (in the frames given) of each transfer's last frame.
         first: Row of its first frame.
-        type_index: Index of its type in `veronte4x.dronecan.codec.CODECS`.
+        type_index: Its type's index (see `TypeIndex`).
         payload: Payload bytes of every transfer, one after the other.
         offsets: Where each transfer's payload starts in `payload` (one more at the end).
         crc: The CRC a multi-frame transfer carries, or -1 for a single frame.
@@ -86,16 +128,21 @@ class Transfers:
         return self.payload[self.offsets[transfer] : self.offsets[transfer + 1]].tobytes()
 
 
-def type_index(can_id: npt.NDArray[np.uint32]) -> npt.NDArray[np.int16]:
-    """The type of each frame, as the reassembler finds it; -1 where it refuses the frame
-    whatever its session (anonymous, unknown type, node id 0, beyond 29 bits)."""
+def type_index(
+    can_id: npt.NDArray[np.uint32], known: TypeIndex | None = None
+) -> npt.NDArray[np.int16]:
+    """The type of each frame among ``known`` (None: the default set's), as the reassembler
+    finds it; -1 where it refuses the frame whatever its session (anonymous, unknown type,
+    node id 0, beyond 29 bits)."""
+    if known is None:
+        known = type_index_of()
     cid = can_id.astype(np.int64)
     service = (cid & 0x80) != 0
     source = cid & 0x7F
     found = np.where(
         service,
-        _SERVICE_TYPES[(cid >> 15) & 0x1FF],
-        _MESSAGE_TYPES[(cid >> 8) & 0xFFFF],
+        known.service_types[(cid >> 15) & 0x1FF],
+        known.message_types[(cid >> 8) & 0xFFFF],
     )
     refused = (source == 0) | (service & (((cid >> 8) & 0x7F) == 0)) | ((cid >> 29) != 0)
     return np.where(refused, -1, found).astype(np.int16)
@@ -108,6 +155,7 @@ def regular_sessions(
     length: npt.NDArray[np.int64],
     tail: npt.NDArray[np.uint8],
     types: npt.NDArray[np.int16],
+    known: TypeIndex,
     timeout: float = TRANSFER_ID_TIMEOUT,
     table: bool = True,
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
@@ -117,6 +165,7 @@ def regular_sessions(
         channel, can_id, stamp, length, tail, types: Per frame, in capture order: channel
             code, CAN ID, timestamp as the reassembler is fed it, data length, tail byte
             and type index (all >= 0).
+        known: The types the indexes number.
         timeout: The transfer-ID timeout.
         table: Make the sessions of a channel the session table could reach irregular
             (`table_safe`, the frames given in capture order); False where the caller
@@ -157,7 +206,7 @@ def regular_sessions(
         bad |= (position > 0) & (ts - ts[head] > timeout)
         sizes = np.add.reduceat(size - 1, first)
         multi = ~last[first]  # transfers of more than one frame
-        bad[first[multi & (sizes > _LIMITS[types[order][first]])]] = True
+        bad[first[multi & (sizes > known.limits[types[order][first]])]] = True
         # A new transfer repeats the previous one's id only after the timeout.
         follows = first[1:][~opens[first[1:]]]
         before = first[np.searchsorted(first, follows) - 1]
@@ -330,13 +379,16 @@ def transfers(
     return Transfers(rows[last], rows[first], types[rows[first]], payload, offsets, crc)
 
 
-def crc_ok(found: Transfers, which: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
-    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads,
-    a byte position at a time over the transfers that long (longest first: a prefix)."""
+def crc_ok(
+    found: Transfers, which: npt.NDArray[np.int64], known: TypeIndex
+) -> npt.NDArray[np.int64]:
+    """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads
+    (their types numbered by ``known``), a byte position at a time over the transfers that
+    long (longest first: a prefix)."""
     sizes = found.offsets[which + 1] - found.offsets[which]
     longest = np.argsort(-sizes, kind="stable")
     sizes, starts = sizes[longest], found.offsets[which][longest]
-    crc = _SEEDS[found.type_index[which][longest]].astype(np.uint32)
+    crc = known.seeds[found.type_index[which][longest]].astype(np.uint32)
     positions = np.arange(int(sizes.max(initial=0)))
     counts = np.searchsorted(-sizes, -positions, "left")  # transfers longer than each
     for position, active in enumerate(counts.tolist()):
@@ -416,8 +468,3 @@ def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
             out[f.name] = scalar(matrix, f.type, offset)
         offset += f.type.bits
     return out
-
-
-def codec_of(index: int) -> Codec:
-    """The codec of a type index."""
-    return CODECS[index]

@@ -59,14 +59,15 @@ def _decode(
     dronecan_rows = np.flatnonzero(plain & frames.extended & (sender_code < 0))
     if not bus_map.dronecan:
         dronecan_rows = dronecan_rows[:0]
+    known = dronecan.type_index_of(bus_map.dronecan_types)
     with ThreadPoolExecutor(1) as pool:  # DroneCAN beside Veronte: NumPy frees the GIL
-        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, tables, whole)
+        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, known, tables, whole)
         done = _decode_senders(frames, bus_map, sender_code, tables)
         done[taken.result()] = True
     dbc.decode_frames(frames, bus_map, done, tables)
     decoder = CaptureDecoder(bus_map)
     tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
-    return tables, decoder, dronecan_inputs(frames, dronecan_rows)[0]
+    return tables, decoder, dronecan_inputs(frames, dronecan_rows, known)[0]
 
 
 def _dropped_channels(
@@ -195,32 +196,33 @@ def _decode_veronte(
 def _decode_dronecan(
     frames: FrameColumns,
     rows: npt.NDArray[np.int64],
+    known: dronecan.TypeIndex,
     tables: Tables,
     whole: npt.NDArray[np.bool_],
 ) -> npt.NDArray[np.int64]:
-    """Reassemble and decode the regular sessions column-wise, but for the ``whole``
-    channels; return the rows taken."""
-    rows, types, stamp = dronecan_inputs(frames, rows)
+    """Reassemble and decode the regular sessions of the ``known`` types column-wise, but
+    for the ``whole`` channels; return the rows taken."""
+    rows, types, stamp = dronecan_inputs(frames, rows, known)
     rows = rows[~whole[frames.channel[rows]]]
     if not len(rows):
         return rows
     tail = frames.data[rows, frames.length[rows] - 1]
     order, regular = dronecan.regular_sessions(
         frames.channel[rows], frames.can_id[rows], stamp[rows], frames.length[rows], tail,
-        types[rows],
+        types[rows], known,
     )  # fmt: skip
     taken = rows[order[regular]]
-    decode_transfers(frames, taken, types, stamp, tables)
+    decode_transfers(frames, taken, types, stamp, known, tables)
     return taken
 
 
 def dronecan_inputs(
-    frames: FrameColumns, rows: npt.NDArray[np.int64]
+    frames: FrameColumns, rows: npt.NDArray[np.int64], known: dronecan.TypeIndex
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int16], npt.NDArray[np.float64]]:
-    """The candidate rows the reassembler may take (a known type, a tail byte), with each
-    frame's type index and the timestamp the reassembler is fed (0.0 for none)."""
+    """The candidate rows the reassembler may take (a type of ``known``, a tail byte), with
+    each frame's type index and the timestamp the reassembler is fed (0.0 for none)."""
     types = np.full(len(frames), -1, np.int16)
-    types[rows] = dronecan.type_index(frames.can_id[rows])
+    types[rows] = dronecan.type_index(frames.can_id[rows], known)
     rows = rows[(types[rows] >= 0) & (frames.length[rows] >= 1)]
     stamp = np.zeros(len(frames))
     stamp[rows] = np.where(frames.has_time[rows], frames.timestamp[rows], 0.0)
@@ -232,18 +234,20 @@ def decode_transfers(
     taken: npt.NDArray[np.int64],
     types: npt.NDArray[np.int16],
     stamp: npt.NDArray[np.float64],
+    known: dronecan.TypeIndex,
     tables: Tables,
     skip: npt.NDArray[np.bool_] | None = None,
 ) -> None:
     """Decode the transfers of ``taken`` (whole transfers of regular sessions, in session
-    order) into ``tables``, leaving out those whose last frame is a ``skip`` row."""
+    order, of the types ``known`` numbers) into ``tables``, leaving out those whose last
+    frame is a ``skip`` row."""
     found = dronecan.transfers(taken, frames.data, frames.length, types)
     keep = np.ones(len(found.last), np.bool_) if skip is None else ~skip[found.last]
     records: list[tuple[int, Record]] = []
     for index in np.unique(found.type_index[keep]).tolist():
         which = np.flatnonzero((found.type_index == index) & keep)
         multi = which[found.crc[which] >= 0]
-        computed = dronecan.crc_ok(found, multi)
+        computed = dronecan.crc_ok(found, multi, known)
         wrong = multi[computed != found.crc[multi]]
         records += _crc_mismatches(
             frames, found, wrong, computed[computed != found.crc[multi]], stamp
@@ -251,7 +255,8 @@ def decode_transfers(
         intact = np.ones(len(found.last), np.bool_)
         intact[wrong] = False
         good = which[intact[which]]
-        records += _decode_type(frames, found, index, good, stamp, tables)
+        codec = known.codec_of(index)
+        records += _decode_type(frames, found, codec, good, stamp, tables)
     tables.add_records(records)
 
 
@@ -280,14 +285,13 @@ def _crc_mismatches(
 def _decode_type(
     frames: FrameColumns,
     found: dronecan.Transfers,
-    index: int,
+    codec: DroneCanCodec,
     which: np.ndarray,
     stamp: np.ndarray,
     tables: Tables,
 ) -> list[tuple[int, Record]]:
     """Decode one type's transfers column-wise; those the serializer refuses one by one
     (to report its error)."""
-    codec = dronecan.codec_of(index)
     schema = codec.data_type.schema
     kind = schema.cls.__name__
     starts = found.offsets[which]

@@ -15,13 +15,17 @@ name, and one nullable column per member with a value: ``name.integer_value`` (i
 ``name.real_value`` (float32), ``name.boolean_value`` (uint8), ``name.string_value``
 (binary); ``empty`` has no column.
 
-Every DroneCAN type of the standard set has its table, by the same rules: nested structs
-flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists of Arrow
-structs (``commands`` of ``actuator.ArrayCommand``, enums there as their integers), other
-arrays as lists (``covariance``), ``uint8`` arrays as ``binary``: DSDL v0 has no text
-type, so names and paths (``model_name`` of ``power.BatteryInfo``, ``text`` of
-``debug.LogMessage``) keep their exact bytes. A field named as a head column of its table
-becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``).
+Every DroneCAN type of a type set (standard or vendor) has its table, by the same rules:
+nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists
+of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there as their
+integers), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``: DSDL v0
+has no text type, so names and paths (``model_name`` of ``power.BatteryInfo``, ``text`` of
+``debug.LogMessage``) keep their exact bytes. A field named as a head column (``HEAD_NAMES``:
+``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``, ``destination_node_id``)
+becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
+a vendor type's ``message.channel``); fields inside lists of structs, and those named
+``error``, ``detail`` or ``data`` (columns of the ``errors`` and ``unknown`` tables only),
+keep their names.
 """
 
 from __future__ import annotations

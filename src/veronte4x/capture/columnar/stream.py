@@ -87,6 +87,7 @@ class StreamDecoder:
         self.per_frame_channels = frozenset(per_frame_channels)
         self.decoder = CaptureDecoder(self.bus_map)
         self._specs = all_specs(self.bus_map.codec(), self.bus_map.dronecan_types)
+        self._known = dronecan.type_index_of(self.bus_map.dronecan_types)
         # Frames carried to the next batch (capture order), whether each is context (else
         # a transfer still open), and each one's session key.
         self._pending: FrameColumns | None = None
@@ -142,7 +143,7 @@ class StreamDecoder:
         """Decode the regular sessions, carry what the next batch needs; return the rows
         taken (decoded or carried)."""
         taken = np.zeros(len(frames), np.bool_)
-        rows, types, stamp = engine.dronecan_inputs(frames, candidates)
+        rows, types, stamp = engine.dronecan_inputs(frames, candidates, self._known)
         if not len(rows):
             return taken
         keys = self._keys(frames, rows)
@@ -178,6 +179,7 @@ class StreamDecoder:
             length,
             checked,
             types[rows],
+            self._known,
             table=False,
         )
         regular = np.empty(len(rows), np.bool_)
@@ -185,7 +187,9 @@ class StreamDecoder:
         self._leave_column_path(frames, rows, keys, stamp, context, ~regular & opens)
         self._check_table(frames, rows, keys, regular & ~carried, tail)
         decoded = regular & ~carried
-        engine.decode_transfers(frames, rows[decoded], types, stamp, tables, skip=context)
+        engine.decode_transfers(
+            frames, rows[decoded], types, stamp, self._known, tables, skip=context
+        )
         taken[rows[regular]] = True
         self._carry(frames, rows[regular], tail[regular], carried[regular])
         return taken
