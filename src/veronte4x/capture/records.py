@@ -33,7 +33,8 @@ class Record(NamedTuple):
             such as ``crc mismatch``), or None.
         detail: The error's full text; for undecoded traffic, what it was
             (``11-bit CAN ID 0x123``, ``DroneCAN data type 1234``); or "".
-        data: The raw bytes: the frame's data, or the transfer's payload.
+        data: The raw bytes of the frame (for a DroneCAN transfer, of its last frame, tail
+            byte included; the payload is in `message`).
         destination_node_id: DroneCAN destination node id of a service transfer.
     """
 
