@@ -138,3 +138,16 @@ def test_the_plain_table_shows_timing_only_with_rates() -> None:
     assert ap2[5:11] == ["1", "s", "-", "1", "s", "STOPPED"]  # silent 4 s at 15 s
     node = lines[4].split()
     assert node[6:11] == ["1", "s", "0", "µs", "1"] and "STOPPED" not in node  # "node 20"
+
+
+def test_a_stream_in_bursts_is_stopped_against_its_cycle() -> None:
+    # As the demo flight's ArbitrationVariables: three 0.1 ms apart, every 20 ms. The median
+    # period is the 0.1 ms; a silence of one cycle is not a stop, one of over 3 cycles is.
+    stream = Stream()
+    for cycle in range(50):
+        for number in range(3):
+            stream.add(cycle * 0.02 + number * 0.0001)
+    assert close(stream.usual() or 0.0, 0.0001)
+    assert stream.flags(stream.last + 0.0198) == ()
+    assert stream.flags(stream.last + STOP_PERIODS * 0.0198 * 0.99) == ()
+    assert stream.flags(stream.last + STOP_PERIODS * 0.0198 * 1.01) == ("stopped",)

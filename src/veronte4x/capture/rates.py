@@ -15,7 +15,8 @@ interframe space, which are not stuffed). A frame of 8 bytes with an 11-bit ID c
 bits; the same frame without stuffing 111 (`frame_bits`).
 
 A stream is flagged ``stopped`` when it has been silent for more than 3 of its periods (its
-usual one, or its recent one if longer; a
+usual one, or its cycle if longer: the longest of its last 16 periods that another of
+them matches within 10 %, which is the cycle of a stream that comes in bursts; a
 DroneCAN node whose NodeStatus is silent that long is offline: the DroneCAN data type
 ``uavcan.protocol.NodeStatus`` sets OFFLINE_TIMEOUT_MS = 3000 for MAX_BROADCASTING_PERIOD_MS
 = 1000), ``slow``
@@ -25,6 +26,7 @@ longer than 3 usual ones).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import deque
 from dataclasses import dataclass, field
@@ -138,17 +140,29 @@ class Stream:
         periods = self.count - 1
         return math.sqrt(self.m2 / (periods - 1)) if periods > 1 else math.nan
 
+    def cycle(self) -> float:
+        """The longest recent period that another recent one matches within 10 %: the
+        cycle of a stream that comes in bursts, the period of a regular one; a single long
+        gap is not a cycle (NaN before the first period)."""
+        periods = sorted(self.recent, reverse=True)
+        for longer, shorter in itertools.pairwise(periods):
+            if shorter >= 0.9 * longer:
+                return longer
+        return periods[-1] if periods else math.nan
+
     def flags(self, now: float) -> tuple[str, ...]:
         """``stopped`` if silent at ``now`` for more than `STOP_PERIODS` periods (its usual
-        one, or its recent one if longer); ``slow`` if its last `RECENT` periods run at
-        under 1/`SLOW_FACTOR` of its usual rate."""
+        one, or its `cycle` if longer); ``slow`` if its last `RECENT` periods run at under
+        1/`SLOW_FACTOR` of its usual rate."""
         usual = self.usual()
         if usual is None or not self.recent:
             return ()
         recent = sorted(self.recent)[len(self.recent) // 2]
         flags = []
-        # Stopped against the current cadence: a slow stream is not stopped yet.
-        if now - self.last > STOP_PERIODS * max(usual, recent):
+        # Stopped against the current cycle: a slow stream is not stopped yet, nor one that
+        # comes in bursts (three ArbitrationVariables 0.1 ms apart every 20 ms: its median
+        # period is the 0.1 ms, its cycle the 20 ms).
+        if now - self.last > STOP_PERIODS * max(usual, self.cycle()):
             flags.append("stopped")
         if len(self.recent) == RECENT and recent > SLOW_FACTOR * usual:
             flags.append("slow")
