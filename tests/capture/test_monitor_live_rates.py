@@ -8,11 +8,11 @@ import os
 import shutil
 import subprocess
 import sys
-import time
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+
+from tests.tmux_support import wait_for
 
 START = 1_763_737_000.0
 
@@ -31,23 +31,6 @@ def capture(path: Path) -> Path:
                 lines.append((stamp + 0.002, f"{0x10015514:08X}#00000000000000{tail:02X}"))
     path.write_text("".join(f"({stamp:.6f}) can0 {frame}\n" for stamp, frame in sorted(lines)))
     return path
-
-
-def _screen(tmux: list[str]) -> str:
-    return subprocess.run(
-        [*tmux, "capture-pane", "-p", "-t", "monitor"], capture_output=True, text=True, check=True
-    ).stdout
-
-
-def _wait_for(tmux: list[str], condition: Callable[[str], bool], timeout: float = 60.0) -> str:
-    end = time.monotonic() + timeout
-    screen = ""
-    while time.monotonic() < end:
-        screen = _screen(tmux)
-        if condition(screen):
-            return screen
-        time.sleep(0.1)
-    raise AssertionError(f"screen never matched:\n{screen}")
 
 
 def _row(screen: str, start: str) -> str:
@@ -72,14 +55,14 @@ def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
         check=True,
     )  # fmt: skip
     try:
-        screen = _wait_for(tmux, lambda s: "node 21" in s and "period" in s)
+        screen = wait_for(tmux, lambda s: "node 21" in s and "period" in s)
         head = _row(screen, "sender").split()
         assert head[:12] == [
             "sender", "┃", "type", "┃", "id", "┃", "count", "┃", "rate/s", "┃", "period", "┃",
         ]  # fmt: skip
         assert "jitter" in head and "gap" in head and "state" in head
         assert "bus load can0 " in screen and " kbit/s" in screen
-        screen = _wait_for(tmux, _node_20_stopped_alone)
+        screen = wait_for(tmux, _node_20_stopped_alone)
         node = [cell.strip() for cell in _row(screen, "node 20").split("│")]
         assert node[1:3] == ["NodeStatus", "10015514"]
         assert node[3] == "10"  # its count stays at its 10 records
@@ -87,7 +70,7 @@ def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
         assert node[8] == "STOPPED"
         assert "STOPPED" not in _row(screen, "AP2")
         subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
-        screen = _wait_for(tmux, lambda s: "exit=" in s)
+        screen = wait_for(tmux, lambda s: "exit=" in s)
         assert "exit=0" in screen
     finally:
         subprocess.run([*tmux, "kill-server"], check=False)

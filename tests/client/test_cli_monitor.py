@@ -6,10 +6,12 @@ import shutil
 import subprocess
 import sys
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+
+from tests.tmux_support import screen as shown_now
+from tests.tmux_support import wait_for
 
 from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 
@@ -44,23 +46,6 @@ def test_plain_filter_and_live_bus() -> None:
     assert rows == ["EscStatus", "NodeStatus", "Temperature"]
 
 
-def _screen(tmux: list[str]) -> str:
-    return subprocess.run(
-        [*tmux, "capture-pane", "-p", "-t", "monitor"], capture_output=True, text=True, check=True
-    ).stdout
-
-
-def _wait_for(tmux: list[str], condition: Callable[[str], bool], timeout: float = 10.0) -> str:
-    end = time.monotonic() + timeout
-    screen = ""
-    while time.monotonic() < end:
-        screen = _screen(tmux)
-        if condition(screen):
-            return screen
-        time.sleep(0.1)
-    raise AssertionError(f"screen never matched:\n{screen}")
-
-
 @pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
 def test_interactive_in_a_terminal() -> None:
     port = free_port()
@@ -73,12 +58,12 @@ def test_interactive_in_a_terminal() -> None:
             check=True,
         )  # fmt: skip
         try:
-            screen = _wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
+            screen = wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
             assert "p pause · f filter · c clear filter · q quit" in screen
             subprocess.run([*tmux, "send-keys", "-t", "monitor", "f"], check=True)
             subprocess.run([*tmux, "send-keys", "-t", "monitor", "-l", "nodestat"], check=True)
             subprocess.run([*tmux, "send-keys", "-t", "monitor", "Enter"], check=True)
-            _wait_for(
+            wait_for(
                 tmux,
                 lambda s: (
                     "filter: nodestat " in s
@@ -88,11 +73,11 @@ def test_interactive_in_a_terminal() -> None:
                 ),
             )
             subprocess.run([*tmux, "send-keys", "-t", "monitor", "p"], check=True)
-            paused = _wait_for(tmux, lambda s: "PAUSED" in s)
+            paused = wait_for(tmux, lambda s: "PAUSED" in s)
             time.sleep(1.2)
-            assert _screen(tmux) == paused  # frozen while paused
+            assert shown_now(tmux) == paused  # frozen while paused
             subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
-            screen = _wait_for(tmux, lambda s: "exit=0" in s)
+            screen = wait_for(tmux, lambda s: "exit=0" in s)
             assert "veronte4x: " in screen and " records, 0 bad" in screen
         finally:
             subprocess.run([*tmux, "kill-server"], check=False)

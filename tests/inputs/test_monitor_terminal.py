@@ -8,32 +8,15 @@ import signal
 import subprocess
 import sys
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
 from tests.client.cli_support import bus_args, free_port, simulator
 from tests.inputs.support import candump
+from tests.tmux_support import wait_for
 
 NODES = [str(node) for node in range(20, 28)]  # 8 ESCs: 24 rows, more than the screen holds
-
-
-def _screen(tmux: list[str]) -> str:
-    return subprocess.run(
-        [*tmux, "capture-pane", "-p", "-t", "monitor"], capture_output=True, text=True, check=True
-    ).stdout
-
-
-def _wait_for(tmux: list[str], condition: Callable[[str], bool], timeout: float = 20.0) -> str:
-    end = time.monotonic() + timeout
-    screen = ""
-    while time.monotonic() < end:
-        screen = _screen(tmux)
-        if condition(screen):
-            return screen
-        time.sleep(0.1)
-    raise AssertionError(f"screen never matched:\n{screen}")
 
 
 def _keys(tmux: list[str], *keys: str) -> None:
@@ -52,7 +35,7 @@ def test_an_80x24_terminal_shows_what_does_not_fit_and_scrolls() -> None:
             check=True,
         )  # fmt: skip
         try:
-            screen = _wait_for(tmux, lambda s: "more rows (↓)" in s and "20 │ Temperature" in s)
+            screen = wait_for(tmux, lambda s: "more rows (↓)" in s and "20 │ Temperature" in s)
             lines = screen.rstrip("\n").split("\n")
             assert len(lines) <= 24
             rows = [line for line in lines if "│" in line]
@@ -64,10 +47,10 @@ def test_an_80x24_terminal_shows_what_does_not_fit_and_scrolls() -> None:
             assert len(rows) + hidden == 24, screen
             assert "node 27" not in screen
             _keys(tmux, *["Down"] * 30)
-            screen = _wait_for(tmux, lambda s: "node 27 │ Temperature" in s and "above (↑)" in s)
+            screen = wait_for(tmux, lambda s: "node 27 │ Temperature" in s and "above (↑)" in s)
             assert "more rows" not in screen
             _keys(tmux, "C-c")
-            screen = _wait_for(tmux, lambda s: "exit=" in s)
+            screen = wait_for(tmux, lambda s: "exit=" in s)
             assert "exit=130" in screen
             assert "veronte4x: interrupted after " in screen
         finally:
