@@ -151,3 +151,26 @@ def test_a_stream_in_bursts_is_stopped_against_its_cycle() -> None:
     assert stream.flags(stream.last + 0.0198) == ()
     assert stream.flags(stream.last + STOP_PERIODS * 0.0198 * 0.99) == ()
     assert stream.flags(stream.last + STOP_PERIODS * 0.0198 * 1.01) == ("stopped",)
+
+
+@pytest.mark.parametrize("seconds", [0.5, 1.0, 1.9, 2.0, 5.0])
+def test_rate_in_the_first_window_counts_the_capture_so_far(seconds: float) -> None:
+    """While the capture is younger than the rate window (2 s), a stream's rate is its
+    records since the capture's first one over that time, not over the whole window (a
+    10 Hz stream read 2.5/s at 0.5 s)."""
+    state = MonitorState()
+    state.add(ready(999.95))
+    for i in range(round(seconds * 10) + 1):
+        state.add(node_status(1000.0 + i / 10, 20))
+    elapsed = min(seconds + 0.05, 2.0)
+    expected = sum(
+        1 for i in range(round(seconds * 10) + 1) if 1000.0 + i / 10 > 1000.0 + seconds - elapsed
+    )
+    assert row(state, "node 20").rate == pytest.approx(expected / elapsed)
+    assert row(state, "node 20").rate == pytest.approx(10.0, rel=0.25)
+
+
+def test_rate_of_records_at_one_instant_is_zero() -> None:
+    state = MonitorState()
+    state.add(node_status(1000.0, 20))
+    assert row(state, "node 20").rate == 0.0

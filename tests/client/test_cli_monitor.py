@@ -29,7 +29,7 @@ def test_plain_table_over_a_capture() -> None:
         "sender    type                        id    count   rate/s  errors  fields",
     ]
     assert (
-        "AP1       ArbitrationVariable        008        3      1.5       0  number=2, value=1.7"
+        "AP1       ArbitrationVariable        008        3      6.0       0  number=2, value=1.7"
         in lines
     )
     assert result.stderr == "veronte4x: 39 records, 1 bad, 0.501 s\n"

@@ -55,7 +55,8 @@ class Row:
         can_id: The CAN ID it came on last.
         count: Records of this type from this sender.
         errors: Bad frames on this sender's CAN ID since this type was first decoded there.
-        rate: Records per second over the last `RATE_WINDOW` seconds.
+        rate: Records per second over the last `RATE_WINDOW` seconds (over the capture
+            so far while it is younger than that).
         fields: The latest message's fields, as people read them (`fields_text`).
         last_seen: Timestamp of the latest one.
         period: Usual (median) period in seconds, to 1/64 octave (NaN below 2 records).
@@ -204,9 +205,7 @@ class MonitorState:
         for (sender, kind), e in sorted(self._rows.items()):
             if wanted and wanted not in sender.lower() and wanted not in kind.lower():
                 continue
-            recent = (
-                0 if latest is None else sum(1 for t in e.times if t > latest - self.rate_window)
-            )
+            rate = self._rate(e, latest)
             usual = e.timing.usual()
             rows.append(
                 Row(
@@ -215,7 +214,7 @@ class MonitorState:
                     e.can_id,
                     e.count,
                     e.errors,
-                    recent / self.rate_window,
+                    rate,
                     e.fields,
                     e.last_seen,
                     math.nan if usual is None else usual,
@@ -225,6 +224,16 @@ class MonitorState:
                 )
             )
         return rows
+
+    def _rate(self, entry: _Entry, latest: float | None) -> float:
+        """Records per second over the last `rate_window` seconds, or over the capture so
+        far while it is younger than that."""
+        if latest is None or self.first_timestamp is None:
+            return 0.0
+        window = min(self.rate_window, latest - self.first_timestamp)
+        if window <= 0:
+            return 0.0
+        return sum(1 for t in entry.times if t > latest - window) / window
 
     def summary(self) -> str:
         """One line: records, errors, time span."""
