@@ -4,7 +4,9 @@ and index per type set, and Parquet read back with DuckDB."""
 
 from __future__ import annotations
 
+import gc
 import math
+import weakref
 from pathlib import Path
 from typing import Any
 from unittest import mock
@@ -198,3 +200,18 @@ def test_to_parquet_read_back_with_duckdb_equals_read_tables(tmp_path: Path) -> 
     for kind, table in expected.items():
         got = _duckdb_rows(out / f"message={kind}")
         assert got == [{k: _plain(v) for k, v in row.items()} for row in table.to_pylist()], kind
+
+
+def test_a_type_set_no_one_holds_is_freed(tmp_path: Path) -> None:
+    """The engine's per-set caches (tables, indexes, session tables) do not keep a type set
+    alive: a notebook that loads its DSDL again and again does not grow."""
+    types = TypeSet.standard().with_dsdl(ACME)
+    path = write(tmp_path / "vendor.log", _lines(types))
+    bus_map = BusMap(dronecan_types=types)
+    tables = capture.read_tables(path, bus_map)
+    records = list(capture.read(path, bus_map))
+    assert "Sample" in tables and records
+    gone = weakref.ref(types)
+    del types, bus_map, tables, records
+    gc.collect()
+    assert gone() is None

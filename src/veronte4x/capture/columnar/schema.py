@@ -31,7 +31,7 @@ keep their names.
 from __future__ import annotations
 
 import dataclasses
-import functools
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 from operator import attrgetter
@@ -206,10 +206,17 @@ def veronte_type(f: Field) -> pa.DataType:
 
 def dronecan_specs(types: TypeSet | None = None) -> dict[str, TableSpec]:
     """The table of every DroneCAN type of a type set (None: the default), by class name."""
-    return dict(_dronecan_specs(resolve(types, "dronecan_specs")))
+    types = resolve(types, "dronecan_specs")
+    specs = _SPECS.get(types)
+    if specs is None:
+        specs = _SPECS[types] = _dronecan_specs(types)
+    return dict(specs)
 
 
-@functools.cache
+_SPECS: weakref.WeakKeyDictionary[TypeSet, dict[str, TableSpec]] = weakref.WeakKeyDictionary()
+"""The tables of each type set, kept as long as the set lives."""
+
+
 def _dronecan_specs(types: TypeSet) -> dict[str, TableSpec]:
     specs = {}
     for data_type in types.data_types:
