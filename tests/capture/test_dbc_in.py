@@ -78,6 +78,13 @@ def test_records_and_tables_as_cantools_decodes(
         assert record.kind == type(record.message).DBC_NAME
         got = {name: getattr(record.message, name) for name in expected}
         assert all(same(got[k], v) for k, v in expected.items()), (got, expected)
+        # the rest of the record is the unknown one's, its detail gone; the message is an
+        # ordinary instance of its class (built by generated code, not its __init__)
+        assert record._replace(message=None) == before._replace(detail="")
+        rebuilt = type(record.message)(**got)
+        if all(same(v, v) for v in got.values()):  # NaN is never equal to itself
+            assert record.message == rebuilt and hash(record.message) == hash(rebuilt)
+        assert repr(record.message) == repr(rebuilt)
         rows.setdefault(record.kind, []).append(got)
     assert records[-1].kind == "Status"  # the bus map's frames stay veronte4x's
     tables = capture.read_tables(path, BUS_MAP, dbc=[DBC])

@@ -24,11 +24,12 @@ import functools
 import keyword
 import os
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 from veronte4x.capture.busmap import RECORD_COLUMNS, Role, reserved_names
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, dbc_record
+from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.errors import SourceError
 from veronte4x.extras import require
 
@@ -64,6 +65,7 @@ class DbcDecoder:
     def __init__(self, paths: Iterable[str | os.PathLike[str]]) -> None:
         cantools = require("cantools", "dbc", "decoding frames with a DBC")
         self._messages: dict[tuple[int, bool], tuple[Any, type[Any]]] = {}
+        self._builders: dict[tuple[int, bool], tuple[Callable[..., Any], Build]] = {}
         for path in paths:
             try:
                 database = cantools.database.load_file(os.fspath(path), database_format="dbc")
@@ -76,7 +78,9 @@ class DbcDecoder:
             for message in database.messages:
                 key = (message.frame_id, bool(message.is_extended_frame))
                 if key not in self._messages:
-                    self._messages[key] = (message, _message_class(message))
+                    cls = _message_class(message)
+                    self._messages[key] = (message, cls)
+                    self._builders[key] = (message.decode, _builder(cls))
 
     def knows(self, can_id: int, extended: bool) -> bool:
         """Whether a DBC describes this CAN ID."""
@@ -90,17 +94,12 @@ class DbcDecoder:
             ValueError: cantools cannot decode the frame (wrong length, bad multiplexer
                 value); the message says why.
         """
-        message, cls = self._messages[(can_id, extended)]
+        decode, build = self._builders[(can_id, extended)]
         try:
-            values = message.decode(data, decode_choices=True, scaling=True)
+            values = decode(data, True, True)  # decode_choices, scaling
         except Exception as error:  # cantools' DecodeError and the struct errors it lets out
-            raise ValueError(failure(message, error)) from None
-        get = values.get
-        arguments = [get(name) for name in cls.SIGNALS]
-        for position in cls.CHOICES:
-            if arguments[position] is not None:
-                arguments[position] = str(arguments[position])
-        return cls(*arguments)
+            raise ValueError(failure(self._messages[(can_id, extended)][0], error)) from None
+        return build(values)
 
     def entries(self) -> dict[tuple[int, bool], tuple[Any, type[Any]]]:
         """(CAN ID, extended) to the cantools message and its class, for every ID known."""
@@ -108,27 +107,58 @@ class DbcDecoder:
 
     def record(self, record: Record) -> Record:
         """``record`` decoded if it is unknown traffic on a CAN ID a DBC knows, else as is."""
-        if record.role is not Role.UNKNOWN or record.error is not None or record.message:
+        if record.role is not _UNKNOWN or record.error is not None or record.message is not None:
             return record
-        detail = record.detail
-        if detail.startswith("11-bit CAN ID "):
-            extended = False
-        elif detail.startswith("29-bit CAN ID "):
-            extended = True
-        else:
-            return record
-        if (record.can_id, extended) not in self._messages:
+        extended = _EXTENDED.get(record.detail[:_PREFIX])
+        if extended is None or (record.can_id, extended) not in self._builders:
             return record
         try:
             message = self.decode(record.can_id, extended, record.data)
         except ValueError as error:
             return record._replace(error="decode error", detail=str(error))
-        return record._replace(message=message, detail="")
+        return dbc_record(record.timestamp, record.channel, record.can_id, message, record.data)
 
     def records(self, records: Iterable[Record]) -> Iterator[Record]:
         """`record` applied to each record."""
+        decode = self.record
         for record in records:
-            yield self.record(record)
+            yield decode(record)
+
+
+_UNKNOWN = Role.UNKNOWN
+_EXTENDED = {"11-bit CAN ID ": False, "29-bit CAN ID ": True}
+"""Whether an unknown record's frame is extended, by the start of its detail."""
+_PREFIX = len("11-bit CAN ID ")
+
+Build = Callable[[dict[str, Any]], Any]
+"""Builds a DBC message from the values cantools decoded, by signal name."""
+
+
+def _builder(cls: type[Any]) -> Build:
+    """The generated builder of ``cls``: a field per signal (None where the frame has no
+    value for it, as for a multiplexed signal it does not carry), a value table's name as
+    text."""
+    namespace: dict[str, Any] = {"_new": object.__new__, "_cls": cls, "_str": str}
+    made = slot_builder(cls)
+    target = "_B" if made is not None else "_cls"
+    namespace["_B"] = made
+    lines = [f"def build_{cls.__name__}(values):", "    get = values.get"]
+    names = [f.name for f in dataclasses.fields(cls)]
+    for position, signal in enumerate(cls.SIGNALS):
+        lines.append(f"    v{position} = get({signal!r})")
+        if position in cls.CHOICES:
+            lines.append(f"    if v{position} is not None:")
+            lines.append(f"        v{position} = _str(v{position})")
+    if made is None:  # pragma: no cover - a DbcMessage subclass always has a builder
+        arguments = ", ".join(f"v{i}" for i in range(len(names)))
+        lines.append(f"    return {target}({arguments})")
+    else:
+        lines.append("    made = _new(_B)")
+        lines += [f"    made.{attr} = v{i}" for i, attr in enumerate(names)]
+        lines += ["    made.__class__ = _cls", "    return made"]
+    title = f"DBC build {cls.DBC_NAME}"
+    build: Build = compile_source("\n".join(lines), namespace, title)[f"build_{cls.__name__}"]
+    return build
 
 
 def failure(message: Any, error: Exception) -> str:

@@ -139,3 +139,9 @@ error_record = factory(
 )
 """An error, or undecoded traffic (``error`` None): ``(timestamp, channel, can_id, role,
 autopilot, node_id, error, detail, data)``."""
+
+dbc_record = factory(
+    "dbc_record", ("timestamp", "channel", "can_id", "message", "data"), role=Role.UNKNOWN
+)
+"""A frame outside the bus map that a DBC decoded: ``(timestamp, channel, can_id, message,
+data)``; its role stays ``unknown``."""
