@@ -135,27 +135,20 @@ Build = Callable[[dict[str, Any]], Any]
 
 
 def _builder(cls: type[Any]) -> Build:
-    """The generated builder of ``cls``: a field per signal (None where the frame has no
-    value for it, as for a multiplexed signal it does not carry), a value table's name as
-    text."""
-    namespace: dict[str, Any] = {"_new": object.__new__, "_cls": cls, "_str": str}
-    made = slot_builder(cls)
-    target = "_B" if made is not None else "_cls"
-    namespace["_B"] = made
-    lines = [f"def build_{cls.__name__}(values):", "    get = values.get"]
+    """The generated builder of ``cls`` (a `_message_class`): a field per signal (None
+    where the frame has no value for it, as for a multiplexed signal it does not carry), a
+    value table's name as text; filled by slot stores (`veronte4x.codegen.slot_builder`)."""
     names = [f.name for f in dataclasses.fields(cls)]
+    lines = [f"def build_{cls.__name__}(values):", "    get = values.get"]
     for position, signal in enumerate(cls.SIGNALS):
         lines.append(f"    v{position} = get({signal!r})")
         if position in cls.CHOICES:
             lines.append(f"    if v{position} is not None:")
             lines.append(f"        v{position} = _str(v{position})")
-    if made is None:  # pragma: no cover - a DbcMessage subclass always has a builder
-        arguments = ", ".join(f"v{i}" for i in range(len(names)))
-        lines.append(f"    return {target}({arguments})")
-    else:
-        lines.append("    made = _new(_B)")
-        lines += [f"    made.{attr} = v{i}" for i, attr in enumerate(names)]
-        lines += ["    made.__class__ = _cls", "    return made"]
+    lines.append("    made = _new(_B)")
+    lines += [f"    made.{attr} = v{i}" for i, attr in enumerate(names)]
+    lines += ["    made.__class__ = _cls", "    return made"]
+    namespace = {"_new": object.__new__, "_B": slot_builder(cls), "_cls": cls, "_str": str}
     title = f"DBC build {cls.DBC_NAME}"
     build: Build = compile_source("\n".join(lines), namespace, title)[f"build_{cls.__name__}"]
     return build
