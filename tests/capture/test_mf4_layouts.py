@@ -109,3 +109,19 @@ def test_read_tables_in_small_batches_equals_the_per_frame_path(
     expected = capture.tables_from_records(capture.read(path))
     monkeypatch.setattr(batching, "BATCH_BYTES", 33 * RECORD)
     assert_same_tables(capture.read_tables(path), expected)
+
+
+@pytest.mark.parametrize("flags", [1, 4, 16])
+def test_an_unfinalised_file_reads_as_the_per_frame_path_quietly(
+    flight: list[Any], tmp_path: Path, capfd: pytest.CaptureFixture[str], flags: int
+) -> None:
+    """A file whose identification block says it is unfinalised (ASAM MDF 4.1,
+    ``id_unfin_flags``, a 16-bit field at byte 60), which asammdf finalises in a copy."""
+    path = _write(tmp_path / "bus.mf4", flight, 2, 0)
+    data = bytearray(path.read_bytes())
+    data[60:62] = flags.to_bytes(2, "little")
+    path.write_bytes(bytes(data))
+    expected = capture.tables_from_records(capture.read(path))
+    capfd.readouterr()
+    assert_same_tables(capture.read_tables(path), expected)
+    assert capfd.readouterr() == ("", "")

@@ -62,14 +62,14 @@ def batches(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Bat
 def _open(source: Source, files: contextlib.ExitStack) -> Any:
     """asammdf's reader of the file, on a file object that ``files`` closes."""
     from asammdf import MDF
+    from asammdf.blocks.v4_blocks import FileIdentificationBlock
 
     stream = files.enter_context(open(source.path, "rb"))  # noqa: SIM115 (closed by files)
-    try:
-        # Without asammdf's bus-logging pass, which reads every group whole on opening
-        # (an option of its MDF4 class that MDF passes on, missing from MDF's types).
-        return MDF(stream, process_bus_logging=False)  # type: ignore[call-arg]
-    except Exception:  # unfinalised (asammdf finalises it writing to its stream) or damaged
-        return MDF(source.path, process_bus_logging=False)  # type: ignore[call-arg]
+    unfinalised = FileIdentificationBlock(stream=stream).unfinalized_standard_flags
+    stream.seek(0)
+    # Without asammdf's bus-logging pass, which reads every group whole on opening (an
+    # option of its MDF4 class that MDF passes on, missing from MDF's types).
+    return MDF(source.path if unfinalised else stream, process_bus_logging=False)  # type: ignore[call-arg]
 
 
 def _read(mdf: Any, source: Source, batch_bytes: int, size: int) -> Iterator[Batch]:
