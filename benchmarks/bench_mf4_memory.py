@@ -11,7 +11,8 @@ file of ``--mf4-mb`` megabytes holds as many frames as that size uncompressed. L
 - ``plain``: one ``CAN_DataFrame`` group for the bus, uncompressed data blocks (DT);
 - ``deflate``: the same, compressed as python-can's MF4Writer compresses by default
   (asammdf's level 2: transposed, deflated data blocks, DZ);
-- ``buses``: two buses, one ``CAN_DataFrame`` group each (frames alternate), uncompressed.
+- ``buses``: two buses, one ``CAN_DataFrame`` group each (the Veronte frames on bus 1, the
+  DroneCAN ones on bus 2), uncompressed.
 
 candump files (``--candump-mb``) are the same flight as text. ``--frames N`` writes one
 plain MF4 file of N frames instead of the sizes (a quick run). Each file is written once
@@ -44,7 +45,7 @@ MB = 2**20
 LAYOUTS = {
     "plain": "one bus group, uncompressed (DT)",
     "deflate": "one bus group, transposed deflate (DZ)",
-    "buses": "two bus groups, uncompressed (DT)",
+    "buses": "two bus groups (Veronte, DroneCAN), uncompressed (DT)",
 }
 
 READ = """
@@ -101,7 +102,7 @@ def write_mf4(path: Path, frames: int, layout: str, flight: FrameColumns | None 
     for first in range(0, frames, BLOCK):
         rows = np.arange(first, min(first + BLOCK, frames))
         for bus in range(buses):
-            mine = rows[rows % buses == bus]
+            mine = rows[source.extended[rows % n] == bool(bus)] if buses > 1 else rows
             which, lap = mine % n, mine // n
             records = np.zeros(len(mine), dtype=STD_DTYPE)
             records["CAN_DataFrame.BusChannel"] = bus + 1
