@@ -53,7 +53,7 @@ RUNS = [
             "MB candump file",
         ],
     ),
-    ("bench_mf4_memory.py", ["--frames", "20000"], ["MF4 file: 20000 frames", "peak RSS"]),
+    ("bench_mf4_memory.py", ["--frames", "20000"], ["MF4 file: 20000 frames", "peak RSS", "bound"]),
     (
         "bench_fleet.py",
         ["--escs", "2", "--updates", "2", "--image-kb", "2"],

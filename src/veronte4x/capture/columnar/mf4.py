@@ -1,20 +1,25 @@
 """MF4 bus logging (ASAM MDF 4) read column-wise through asammdf, chunk by chunk.
 
 Frames come out as python-can's MF4 reader gives them, in memory that does not grow with
-the file: every CAN frame group (data, error and remote frames) is read in chunks of
-records, timestamps are the file's start time plus each record's time, channels the bus
+the file: every CAN frame group (data, error and remote frames) is read in chunks of about
+``batch_bytes`` of records, through a file object rather than asammdf's memory map of the
+whole file (whose pages stay resident once read, so that the map grows to the file's
+size). Timestamps are the file's start time plus each record's time, channels the bus
 channel number as text, and the groups are merged as python-can merges them
 (``heapq.merge`` on the timestamps, group order breaking ties). That merge equals a stable
 sort of all rows by (the largest timestamp of its group so far, group, row), which is what
 `merge` computes, chunk by chunk, releasing the rows no later chunk can precede.
 
-A file asammdf cannot open goes to python-can's reader, which says what is wrong with it
-(or which extra is missing); a chunk asammdf cannot read hands the rest of the file to
+An unfinalised file (a logger stopped before closing it), which asammdf finalises by
+writing to what it reads, is opened by its path (asammdf then maps a finalised copy). A
+file asammdf cannot open goes to python-can's reader, which says what is wrong with it (or
+which extra is missing); a chunk asammdf cannot read hands the rest of the file to
 python-can's reader from the frame where the chunks stopped.
 """
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import itertools
 from collections.abc import Iterator
@@ -38,28 +43,45 @@ def columns(source: Source) -> FrameColumns:
 
 
 def batches(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Batch]:
-    """The file's frames in batches of about ``batch_frames`` per frame group (the bytes
-    do not count: asammdf reads records)."""
-    del batch_bytes
+    """The file's frames in batches of at most ``batch_frames`` and about ``batch_bytes``
+    of records per frame group (``batch_bytes`` 0: ``batch_frames`` alone)."""
     size = max(batch_frames, 1)
-    try:
-        with quiet_parsers():
-            from asammdf import MDF
+    with contextlib.ExitStack() as files:
+        try:
+            with quiet_parsers():
+                mdf = _open(source, files)
+        except Exception:  # python-can's reader says how the file is damaged, or what it
+            mdf = None  # can read, or which extra is missing (an ImportError)
+        if mdf is None:
+            collect_quietly()  # out here the parser's error and its traceback's frames are gone
+            yield from _python_can(source, size, 0)
+            return
+        yield from _read(mdf, source, batch_bytes, size)
 
-            # Without asammdf's bus-logging pass, which reads every group whole on opening
-            # (an option of its MDF4 class that MDF passes on, missing from MDF's types).
-            mdf = MDF(source.path, process_bus_logging=False)  # type: ignore[call-arg]
-    except Exception:  # python-can's reader says how the file is damaged, or what it can
-        mdf = None  # read, or which extra is missing (an ImportError)
-    if mdf is None:
-        collect_quietly()  # out here the parser's error, and what its traceback held, are gone
-        yield from _python_can(source, size, 0)
-        return
+
+def _open(source: Source, files: contextlib.ExitStack) -> Any:
+    """asammdf's reader of the file, on a file object that ``files`` closes."""
+    from asammdf import MDF
+    from asammdf.blocks.v4_blocks import FileIdentificationBlock
+
+    stream = files.enter_context(open(source.path, "rb"))  # noqa: SIM115 (closed by files)
+    unfinalised = FileIdentificationBlock(stream=stream).unfinalized_standard_flags
+    stream.seek(0)
+    # Without asammdf's bus-logging pass, which reads every group whole on opening (an
+    # option of its MDF4 class that MDF passes on, missing from MDF's types).
+    return MDF(source.path if unfinalised else stream, process_bus_logging=False)  # type: ignore[call-arg]
+
+
+def _read(mdf: Any, source: Source, batch_bytes: int, size: int) -> Iterator[Batch]:
+    """The frames of the opened file, then python-can's from where a chunk failed."""
     position = 0
     try:
         with quiet_parsers():
             start = mdf.header.start_time.timestamp()
-            groups = [_chunks(mdf, *group, start, size) for group in _groups(mdf)]
+            groups = [
+                _chunks(mdf, index, kind, names, start, _records(mdf, index, batch_bytes, size))
+                for index, kind, names in _groups(mdf)
+            ]
         merged = merge(groups)
         while True:
             with quiet_parsers():
@@ -87,6 +109,16 @@ def _groups(mdf: Any) -> Iterator[tuple[int, str, set[str]]]:
         kind = next((g for g in _GROUPS if g in names), None)
         if kind is not None and group.channel_group.cycles_nr:
             yield index, kind, names
+
+
+def _records(mdf: Any, index: int, batch_bytes: int, batch_frames: int) -> int:
+    """Records of group ``index`` read at once: about ``batch_bytes``, at most
+    ``batch_frames``."""
+    group = mdf.groups[index].channel_group
+    record = int(group.samples_byte_nr) + int(group.invalidation_bytes_nr)
+    if batch_bytes <= 0 or record <= 0:
+        return batch_frames
+    return max(1, min(batch_frames, batch_bytes // record))
 
 
 def _chunks(
