@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
 from tests.capture.test_stream import _interleaved_flight
 from veronte4x import capture
-from veronte4x.capture import BusMap
+from veronte4x.capture import BusMap, datasets
 from veronte4x.capture.columnar import dataset
 from veronte4x.capture.columnar.batches import read_batches
 from veronte4x.capture.columnar.frames import concat
@@ -151,7 +151,7 @@ def test_captures_named_as_readers_skip_are_still_read(tmp_path: Path, name: str
     path = tmp_path / name
     path.write_bytes(FLIGHT.read_bytes())
     capture.to_parquet(path, tmp_path / "data", progress=False)
-    names = [p.name for p in (tmp_path / "data").rglob("*") if p.is_file()]
+    names = [p.name for p in (tmp_path / "data").rglob("*")]  # directories and files
     assert names and not [n for n in names if n.startswith((".", "_"))]
     assert_same_tables(read_back(tmp_path / "data"), capture.read_tables(path))
 
@@ -241,3 +241,26 @@ def test_a_full_uint8_enum_dictionary_joins_across_batches_and_files(tmp_path: P
     assert_same_tables(read_back(tmp_path / "data"), expected)
     both = capture.read_tables([path, path])
     assert both["ExecuteOpcodeRequest"].num_rows == 80
+
+
+def test_a_table_named_as_readers_skip_is_written_under_another_name(tmp_path: Path) -> None:
+    """A DBC message ``_Private``: its file is ``table-_Private.parquet``, found again by
+    its table's name."""
+    dbc = (Path(__file__).with_name("data") / "payload.dbc").read_text()
+    path = tmp_path / "private.dbc"
+    path.write_text(dbc.replace("BO_ 291 BmsStatus:", "BO_ 291 _Private:"))
+    log = write(tmp_path / "bms.log", ["(1.0) can0 123#E803F6FF01190000"])
+    out = tmp_path / "data"
+    capture.to_parquet(log, out, BusMap(dronecan=False), progress=False, dbc=[path])
+    (directory,) = out.iterdir()
+    assert "table-_Private.parquet" in {p.name for p in directory.iterdir()}
+    assert capture.dataset_tables(out) == ["_Private"]
+    assert capture.open_dataset(out, "_Private").to_table()["voltage"].to_pylist() == [10.0]
+
+
+@given(st.from_regex(r"[A-Za-z_][A-Za-z0-9_]{0,20}", fullmatch=True))
+def test_table_files_name_their_table_and_never_start_as_readers_skip(table: str) -> None:
+    """Tables are named as identifiers (messages, DroneCAN types, DBC messages)."""
+    name = datasets.table_file(table)
+    assert not name.startswith((".", "_"))
+    assert datasets._table_of(name) == table
