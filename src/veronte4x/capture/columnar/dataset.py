@@ -15,8 +15,9 @@ reader takes: the globs name ``capture=*``, pyarrow skips names starting with ``
 once the whole capture is decoded, puts that directory in place by one rename: readers see
 all of the capture's tables or none. A capture converted before is replaced in one step
 where the system can (Linux's ``renameat2`` exchange: readers see the old tables or the new
-ones), else its directory is first moved into the run's (readers see none of it until the
-new one is in place). A run that fails puts back what it moved aside and removes its
+ones; one that lists the files and opens them later may take tables of both, each whole),
+else its directory is first moved into the run's (readers see none of it until the new one
+is in place). A run that fails puts back what it moved aside and removes its
 directory; the next run into ``out_dir`` does the same for runs of this machine killed
 outright. Two runs on the same capture at once both succeed: the last one's tables stay.
 """
