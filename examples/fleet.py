@@ -57,7 +57,7 @@ SWITCHES_SQL = """
 WITH status AS (
     SELECT source, timestamp, selected,
            lag(selected) OVER (PARTITION BY source ORDER BY timestamp) AS previous
-    FROM read_parquet('{data}/message=Status/*.parquet')
+    FROM read_parquet('{data}/capture=*/Status.parquet')
 ), switches AS (
     SELECT source, timestamp, previous, selected FROM status WHERE selected <> previous
 ), scores AS (
@@ -65,7 +65,7 @@ WITH status AS (
            max(score) FILTER (WHERE autopilot = 0) AS ap1,
            max(score) FILTER (WHERE autopilot = 1) AS ap2,
            max(score) FILTER (WHERE autopilot = 2) AS ap3
-    FROM read_parquet('{data}/message=Score/*.parquet')
+    FROM read_parquet('{data}/capture=*/Score.parquet')
     GROUP BY source, timestamp
 )
 SELECT w.source, w.timestamp, w.previous, w.selected,
@@ -84,8 +84,9 @@ def switches_duckdb(data: Path) -> pl.DataFrame:
 
 
 def _scan(data: Path, kind: str) -> pl.LazyFrame:
-    """One table of the dataset, scanned lazily (``source`` as plain text)."""
-    frame = pl.scan_parquet(data / f"message={kind}" / "*.parquet", hive_partitioning=False)
+    """One table over every capture of the dataset, scanned lazily (``source`` as plain
+    text)."""
+    frame = pl.scan_parquet(f"{data.as_posix()}/capture=*/{kind}.parquet")
     return frame.with_columns(pl.col("source").cast(pl.String))
 
 
@@ -126,8 +127,8 @@ HEAT_SQL = """
 SELECT round(c.cmd[e.esc_index + 1] / {full}, 1) AS throttle,
        avg(e.temperature - 273.15) AS temperature_c,
        count(*) AS samples
-FROM read_parquet('{data}/message=EscStatus/*.parquet') e
-ASOF JOIN read_parquet('{data}/message=RawCommand/*.parquet') c
+FROM read_parquet('{data}/capture=*/EscStatus.parquet') e
+ASOF JOIN read_parquet('{data}/capture=*/RawCommand.parquet') c
     ON e.source = c.source AND e.timestamp >= c.timestamp
 GROUP BY ALL
 ORDER BY throttle

@@ -172,9 +172,9 @@ def test_type_index_numbers_the_set_standard_types_first() -> None:
     assert dronecan_columns.type_index(np.array([frame.can_id], np.uint32), standard)[0] == -1
 
 
-def _duckdb_rows(folder: Path) -> list[dict[str, Any]]:
+def _duckdb_rows(out: Path, kind: str) -> list[dict[str, Any]]:
     duckdb = pytest.importorskip("duckdb")
-    files = f"'{folder}/*.parquet'"
+    files = f"'{out}/capture=*/{kind}.parquet'"
     query = f"SELECT * EXCLUDE (source) FROM read_parquet({files}, hive_partitioning = false)"
     table = duckdb.sql(query).to_arrow_table()
     return [{k: _plain(v) for k, v in row.items()} for row in table.to_pylist()]
@@ -198,7 +198,7 @@ def test_to_parquet_read_back_with_duckdb_equals_read_tables(tmp_path: Path) -> 
     expected = capture.read_tables(path, bus_map)
     assert summary.records == {kind: len(table) for kind, table in expected.items()}
     for kind, table in expected.items():
-        got = _duckdb_rows(out / f"message={kind}")
+        got = _duckdb_rows(out, kind)
         assert got == [{k: _plain(v) for k, v in row.items()} for row in table.to_pylist()], kind
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import gzip
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -14,7 +15,6 @@ from typing import Any
 
 import numpy as np
 import pyarrow as pa
-import pyarrow.dataset as ds
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -22,25 +22,26 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import BUS_MAPS, assert_same_tables, captures, write
 from tests.capture.test_stream import _interleaved_flight
 from veronte4x import capture
-from veronte4x.capture import BusMap
+from veronte4x.capture import BusMap, datasets
 from veronte4x.capture.columnar import dataset
 from veronte4x.capture.columnar.batches import read_batches
 from veronte4x.capture.columnar.frames import concat
 from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.capture.datasets import capture_directory
 
 FLIGHT = Path(__file__).parents[2] / "examples" / "capture.log"
 
 
 def read_back(out: Path, source: str | None = None) -> dict[str, pa.Table]:
-    """Every table of a dataset (one capture's rows if ``source``), ``source`` dropped."""
+    """Every table of a dataset (one capture's rows if ``source``), read with
+    `capture.open_dataset`; ``source`` and ``capture`` dropped."""
     tables = {}
-    for folder in sorted(out.glob("message=*")):
-        table = ds.dataset(folder, format="parquet").to_table()
+    for kind in capture.dataset_tables(out):
+        table = capture.open_dataset(out, kind).to_table()
         if source is not None:
             table = table.filter(pa.compute.equal(table["source"].cast(pa.string()), source))
         if len(table):
-            kind = folder.name.removeprefix("message=")
-            tables[kind] = table.drop_columns(["source"]).unify_dictionaries()
+            tables[kind] = table.drop_columns(["source", "capture"]).unify_dictionaries()
     return tables
 
 
@@ -92,11 +93,10 @@ def test_several_captures_and_a_second_run(tmp_path: Path) -> None:
     assert first.files == second.files == 2
     for path in paths:
         assert_same_tables(read_back(out, str(path)), capture.read_tables(path))
-    names = {p.name for p in out.glob("message=*/*")}
-    assert names == {dataset.file_name(str(p)) for p in paths}
+    assert {p.name for p in out.iterdir()} == {capture_directory(str(p)) for p in paths}
 
 
-def test_an_interrupted_run_leaves_no_file_a_reader_takes(tmp_path: Path) -> None:
+def test_an_interrupted_run_leaves_nothing(tmp_path: Path) -> None:
     out = tmp_path / "data"
     stop = KeyboardInterrupt()
 
@@ -105,29 +105,45 @@ def test_an_interrupted_run_leaves_no_file_a_reader_takes(tmp_path: Path) -> Non
 
     with pytest.raises(KeyboardInterrupt):
         dataset.convert_file(FLIGHT, out, batch_bytes=200, progress=interrupt)
-    assert not [p for p in out.rglob("*") if p.is_file()]
-    # A run killed outright leaves its temporary files: readers skip them.
-    folder = out / "message=Status"
-    folder.mkdir(parents=True)
-    (folder / f".{dataset.file_name(str(FLIGHT))}.tmp").write_bytes(b"PAR1 half")
-    capture.to_parquet(FLIGHT, out, progress=False)
-    assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+    assert list(out.iterdir()) == []
 
 
-def test_temporary_files_of_killed_runs_are_removed_by_the_next(tmp_path: Path) -> None:
+def test_what_runs_killed_outright_left_is_removed_by_the_next(tmp_path: Path) -> None:
+    """Their hidden directories: those of runs of this machine no longer running are
+    removed; a live run's and another machine's stay; a capture a killed run moved aside
+    (and did not replace) is put back."""
     out = tmp_path / "data"
     dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
-                          capture_output=True, text=True, check=True)  # fmt: skip
-    folder = out / "message=Status"
-    folder.mkdir(parents=True)
-    name = dataset.file_name("other.log")
-    stale = [folder / f".{name}.tmp", folder / f".{name}.{dead.stdout.strip()}-0a1b2c3d.tmp"]
-    alive = folder / f".{name}.{os.getpid()}-0a1b2c3d.tmp"  # a run still going
-    for path in [*stale, alive]:
-        path.write_bytes(b"PAR1 half")
+                          capture_output=True, text=True, check=True).stdout.strip()  # fmt: skip
+    name = capture_directory("other.log")
+    stale = [
+        out / f".{name}.{dataset.HOST}-{dead}-0a1b2c3d",
+        out / f".{capture_directory('third.log')}.{dataset.HOST}-{dead}-0a1b2c3d",
+    ]
+    alive = [
+        out / f".{name}.{dataset.HOST}-{os.getpid()}-0a1b2c3d",  # a run still going
+        out / f".{name}.0badcafe-{dead}-0a1b2c3d",  # another machine's
+        out / f".{name}",  # not named as a run's: not the conversion's to remove
+    ]
+    for path in [*stale, *alive]:
+        (path / "new").mkdir(parents=True)
+        (path / "new" / "Status.parquet").write_bytes(b"PAR1 half")
+    shutil.copytree(dataset_of(FLIGHT, tmp_path / "before"), stale[1] / "old")
     capture.to_parquet(FLIGHT, out, progress=False)
-    assert [p for p in [*stale, alive] if p.exists()] == [alive]
-    assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+    assert [p for p in [*stale, *alive] if p.exists()] == alive
+    put_back = out / capture_directory("third.log")
+    published = out / capture_directory(str(FLIGHT))
+    assert sorted(p.name for p in put_back.iterdir()) == sorted(p.name for p in published.iterdir())
+    for path in [*alive, put_back]:
+        shutil.rmtree(path)
+    assert_same_tables(read_back(out, str(FLIGHT)), capture.read_tables(FLIGHT))
+
+
+def dataset_of(path: Path, out: Path) -> Path:
+    """A capture converted alone: its directory."""
+    capture.to_parquet(path, out, progress=False)
+    (directory,) = out.iterdir()
+    return directory
 
 
 @pytest.mark.parametrize("name", [".hidden.log", "_under.log", "..log", "_"])
@@ -135,7 +151,7 @@ def test_captures_named_as_readers_skip_are_still_read(tmp_path: Path, name: str
     path = tmp_path / name
     path.write_bytes(FLIGHT.read_bytes())
     capture.to_parquet(path, tmp_path / "data", progress=False)
-    names = [p.name for p in (tmp_path / "data").rglob("*") if p.is_file()]
+    names = [p.name for p in (tmp_path / "data").rglob("*")]  # directories and files
     assert names and not [n for n in names if n.startswith((".", "_"))]
     assert_same_tables(read_back(tmp_path / "data"), capture.read_tables(path))
 
@@ -143,18 +159,27 @@ def test_captures_named_as_readers_skip_are_still_read(tmp_path: Path, name: str
 def test_two_conversions_of_one_capture_at_once_both_succeed(tmp_path: Path) -> None:
     out = tmp_path / "data"
     with ThreadPoolExecutor(2) as pool:
-        runs = [pool.submit(dataset.convert_file, FLIGHT, out, None, None, 200) for _ in range(2)]
+        runs = [pool.submit(dataset.convert_file, FLIGHT, out, None, None, 200) for _ in range(4)]
         summaries = [run.result() for run in runs]
-    assert summaries[0].records == summaries[1].records
-    assert not list(out.rglob("*.tmp"))
+    assert all(s.records == summaries[0].records for s in summaries)
+    assert [p.name for p in out.iterdir()] == [capture_directory(str(FLIGHT))]
     assert_same_tables(read_back(out), capture.read_tables(FLIGHT))
+
+
+def test_two_conversions_at_once_without_an_exchanging_rename(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Where the system cannot exchange two directories, each run moves the capture's
+    directory aside before it puts its own in place: runs at once take turns."""
+    monkeypatch.setattr(dataset, "_renameat2_call", None)
+    test_two_conversions_of_one_capture_at_once_both_succeed(tmp_path)
 
 
 def test_a_second_run_removes_tables_the_capture_no_longer_has(tmp_path: Path) -> None:
     out = tmp_path / "data"
     capture.to_parquet(FLIGHT, out, progress=False)
     capture.to_parquet(FLIGHT, out, progress=False, channel="no-such-bus")
-    assert not list(out.glob("message=*/*.parquet"))
+    assert [list(p.iterdir()) for p in out.iterdir()] == [[]]  # the capture, with no table
 
 
 def test_progress_bar_on_request(tmp_path: Path, capsys: Any) -> None:
@@ -216,3 +241,26 @@ def test_a_full_uint8_enum_dictionary_joins_across_batches_and_files(tmp_path: P
     assert_same_tables(read_back(tmp_path / "data"), expected)
     both = capture.read_tables([path, path])
     assert both["ExecuteOpcodeRequest"].num_rows == 80
+
+
+def test_a_table_named_as_readers_skip_is_written_under_another_name(tmp_path: Path) -> None:
+    """A DBC message ``_Private``: its file is ``table-_Private.parquet``, found again by
+    its table's name."""
+    dbc = (Path(__file__).with_name("data") / "payload.dbc").read_text()
+    path = tmp_path / "private.dbc"
+    path.write_text(dbc.replace("BO_ 291 BmsStatus:", "BO_ 291 _Private:"))
+    log = write(tmp_path / "bms.log", ["(1.0) can0 123#E803F6FF01190000"])
+    out = tmp_path / "data"
+    capture.to_parquet(log, out, BusMap(dronecan=False), progress=False, dbc=[path])
+    (directory,) = out.iterdir()
+    assert "table-_Private.parquet" in {p.name for p in directory.iterdir()}
+    assert capture.dataset_tables(out) == ["_Private"]
+    assert capture.open_dataset(out, "_Private").to_table()["voltage"].to_pylist() == [10.0]
+
+
+@given(st.from_regex(r"[A-Za-z_][A-Za-z0-9_]{0,20}", fullmatch=True))
+def test_table_files_name_their_table_and_never_start_as_readers_skip(table: str) -> None:
+    """Tables are named as identifiers (messages, DroneCAN types, DBC messages)."""
+    name = datasets.table_file(table)
+    assert not name.startswith((".", "_"))
+    assert datasets._table_of(name) == table

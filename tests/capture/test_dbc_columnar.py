@@ -231,24 +231,25 @@ def test_parquet_read_back_with_duckdb(tmp_path: Path) -> None:
         capture_output=True, text=True, check=False,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
-    assert sorted(p.name for p in out.iterdir()) == [
-        "message=BmsStatus", "message=Gimbal", "message=Status", "message=errors",
-        "message=unknown",
+    (directory,) = out.iterdir()
+    assert sorted(p.name for p in directory.iterdir()) == [
+        "BmsStatus.parquet", "Gimbal.parquet", "Status.parquet", "errors.parquet",
+        "unknown.parquet",
     ]  # fmt: skip
-    bms = f"{out}/message=BmsStatus/*.parquet"
+    bms = f"{out}/capture=*/BmsStatus.parquet"
     assert duckdb.execute(
         f"SELECT voltage, current, state, temperature FROM read_parquet('{bms}')"
     ).fetchall() == [(10.0, -6.0, "charging", 25)]
-    gimbal = f"{out}/message=Gimbal/*.parquet"
+    gimbal = f"{out}/capture=*/Gimbal.parquet"
     assert duckdb.execute(
         f"SELECT can_id, mode, pitch, yaw FROM read_parquet('{gimbal}')"
     ).fetchall() == [(0x18FF1234, 2, None, -0.2)]
-    errors = f"{out}/message=errors/*.parquet"
+    errors = f"{out}/capture=*/errors.parquet"
     assert duckdb.execute(f"SELECT error, detail FROM read_parquet('{errors}')").fetchall() == [
         ("decode error", capture.read_tables(path, BUS_MAP, dbc=[PAYLOAD_DBC])["errors"]
          .column("detail")[0].as_py())
     ]  # fmt: skip
-    (file,) = (out / "message=BmsStatus").glob("*.parquet")
+    file = directory / "BmsStatus.parquet"
     schema = pq.read_schema(file)
     units = {n: (schema.field(n).metadata or {}).get(b"unit") for n in schema.names}
     assert units["voltage"] == b"V" and units["current"] == b"A" and units["state"] is None

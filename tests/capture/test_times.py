@@ -241,7 +241,7 @@ def test_datasets_read_back_as_utc_timestamps(tmp_path: Path) -> None:
     polars = pytest.importorskip("polars")
     out = tmp_path / "dataset"
     capture.to_parquet(EXAMPLE, out)
-    files = str(out / "message=Score" / "*.parquet")
+    files = str(out / "capture=*" / "Score.parquet")
     kind = duckdb.sql(f"DESCRIBE SELECT timestamp FROM read_parquet('{files}')").fetchall()
     assert kind[0][1] == "TIMESTAMP WITH TIME ZONE"
     first = duckdb.sql(
@@ -258,11 +258,10 @@ def test_datasets_read_back_as_utc_timestamps(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize("time", ["seconds", "relative"])
 def test_datasets_of_seconds(tmp_path: Path, time: str) -> None:
-    import pyarrow.dataset as ds
 
     out = tmp_path / time
     capture.to_parquet(EXAMPLE, out, time=time)  # type: ignore[arg-type]
-    read = ds.dataset(out / "message=Score", format="parquet").to_table()
+    read = capture.open_dataset(out, "Score").to_table()
     expected = capture.read_tables(EXAMPLE, time=time)["Score"]  # type: ignore[arg-type]
     assert read.schema.field("timestamp").type == pa.float64()
     assert read.column("timestamp").to_pylist() == expected.column("timestamp").to_pylist()
@@ -278,7 +277,7 @@ def test_convert_cli_time_option(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     import pyarrow.parquet as pq
 
-    table = pq.read_table(next((out / "message=Score").glob("*.parquet")))
+    table = pq.read_table(capture.dataset_files(out, "Score"))
     assert table.schema.field("timestamp").type == pa.float64()
     wrong = subprocess.run(
         [sys.executable, "-m", "veronte4x", "convert", str(EXAMPLE), "--to", "parquet", str(out),

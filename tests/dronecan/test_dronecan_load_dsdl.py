@@ -373,7 +373,7 @@ def test_to_parquet_writes_the_vendor_tables(tmp_path: Path) -> None:
     path = _capture(tmp_path)
     summary = capture.to_parquet(path, tmp_path / "out", progress=False, types=TYPES)
     assert summary.records["Telemetry"] == 3
-    table = pq.read_table(tmp_path / "out" / "message=Telemetry")
+    table = pq.read_table(capture.dataset_files(tmp_path / "out", "Telemetry"))
     assert table.column("timestamp.usec").to_pylist() == [1234567] * 3
 
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pyarrow.parquet as pq
 import pytest
 
-from veronte4x import dronecan
+from veronte4x import capture, dronecan
 
 ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "dronecan" / "vendor.md"
@@ -52,5 +52,5 @@ def test_every_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
     first, second = shown.splitlines()
     assert outputs[0].startswith(first.removesuffix("..."))
     assert outputs[0].splitlines()[1] == second
-    table = pq.read_table(tmp_path / "vendor-dataset" / "message=Telemetry")
+    table = pq.read_table(capture.dataset_files(tmp_path / "vendor-dataset", "Telemetry"))
     assert table.column("name").to_pylist() == [b"front left"]

@@ -22,6 +22,7 @@ from veronte4x.capture.aio import stream
 from veronte4x.capture.align import AlignError, align
 from veronte4x.capture.busmap import BusMap, BusMapError, Role
 from veronte4x.capture.dataframe import fields, to_dataframe
+from veronte4x.capture.datasets import dataset_files, dataset_tables, open_dataset
 from veronte4x.capture.dbc import export_dbc, write_dbc
 from veronte4x.capture.dbc_in import DbcDecoder, decoder_of
 from veronte4x.capture.decoder import CaptureDecoder
@@ -50,8 +51,11 @@ __all__ = [
     "Role",
     "Stats",
     "align",
+    "dataset_files",
+    "dataset_tables",
     "export_dbc",
     "fields",
+    "open_dataset",
     "open_frames",
     "read",
     "read_tables",
@@ -213,17 +217,18 @@ def to_parquet(
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
-    The dataset holds the tables of `read_tables`, partitioned by table in Hive style: the
-    rows of capture ``flight1.log`` for table ``EscStatus`` go to
-    ``out_dir/message=EscStatus/flight1.log-<digest>.parquet`` (``message=errors`` and
-    ``message=unknown`` for those tables), with the table's schema and a last column
-    ``source``, the capture's path as given. Each capture is decoded in batches of
-    frames, DroneCAN transfers reassembled across the batch boundaries exactly as in one
-    piece, so that the rows read back equal those of `read_tables`, in capture order.
-    Files are written under hidden temporary names and renamed once whole, so an
-    interrupted run never leaves a file a reader would take; running again over the same
-    directory replaces each capture's files. Needs the ``parquet`` extra (the ``dask``
-    extra with ``client``).
+    The dataset holds the tables of `read_tables`, one directory per capture and one file
+    per table in it: the rows of capture ``flight1.log`` for table ``EscStatus`` go to
+    ``out_dir/capture=flight1.log-<digest>/EscStatus.parquet``, with the table's schema
+    and a last column ``source``, the capture's path as given. One table over every
+    capture is the glob ``out_dir/capture=*/EscStatus.parquet`` (DuckDB, Polars, Dask), or
+    `dataset_files` and `open_dataset` (pyarrow, pandas). Each capture is decoded in
+    batches of frames, DroneCAN transfers reassembled across the batch boundaries exactly
+    as in one piece, so that the rows read back equal those of `read_tables`, in capture
+    order. A capture's directory is written under a hidden name and put in place by one
+    rename once whole: a reader sees all of its tables or none, never a part; converting
+    it again replaces the directory, in one step on Linux. Needs the ``parquet`` extra
+    (the ``dask`` extra with ``client``).
 
     Args:
         source: A capture file or a list of them (not standard input; a path given twice
@@ -236,7 +241,7 @@ def to_parquet(
             it when standard error is a terminal or in a notebook.
         channel: Keep only this interface's frames.
         dbc: DBC files, as `read_tables` takes them: each DBC message a table
-            (``message=BmsStatus``); with ``client``, every worker must see them too.
+            (``BmsStatus.parquet``); with ``client``, every worker must see them too.
         types: The DroneCAN types to decode (a `veronte4x.dronecan.TypeSet`, for example
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
@@ -252,6 +257,8 @@ def to_parquet(
 
     Raises:
         FileNotFoundError: A capture does not exist.
+        FileExistsError: ``out_dir`` holds a dataset of the older layout (``message=TABLE``
+            directories).
         SourceError: A path is a directory or a file in no format veronte4x knows.
         MissingExtraError: An extra it needs is not installed; the message names it.
     """

@@ -23,7 +23,8 @@ def add_parser(commands: Any) -> None:
     """Register the command."""
     parser = commands.add_parser(
         "convert",
-        help="convert captures into a Parquet dataset, one directory per message type",
+        help="convert captures into a Parquet dataset: one directory per capture, a file per "
+        "message type in it",
     )
     parser.add_argument("files", nargs="+", metavar="IN", help="capture files")
     parser.add_argument(

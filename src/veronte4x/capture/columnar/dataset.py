@@ -1,34 +1,39 @@
-"""Captures into a Parquet dataset, one file per capture and message type.
+"""Captures into a Parquet dataset: one directory per capture, one file per table.
 
-The layout (Hive partitioning, one directory per table of `read_tables`)::
+The layout (`veronte4x.capture.datasets`)::
 
-    out_dir/message=Status/flight1-3f2a9c01d2e4.parquet
-    out_dir/message=EscStatus/flight1-3f2a9c01d2e4.parquet
-    out_dir/message=errors/flight1-3f2a9c01d2e4.parquet
+    out_dir/capture=flight1.log-3f2a9c01d2e4/Status.parquet
+    out_dir/capture=flight1.log-3f2a9c01d2e4/EscStatus.parquet
+    out_dir/capture=flight1.log-3f2a9c01d2e4/errors.parquet
 
 Each file holds the rows one capture gives for one table, in capture order, with the
-table's fixed schema and a last column ``source``: the capture's path as given. A file is
-written under a hidden temporary name of its run (``.name.PID-TOKEN.tmp``, which Parquet
-readers skip); when the whole capture is decoded, the run writes a hidden commit journal
-(``out_dir/.commit-name.PID-TOKEN.json``: the renames to make), renames its files into
-place one table after the other, and removes the journal. The renames of several
-directories cannot be one atomic step for readers that list each directory: a run killed
-during them leaves its journal, and the next run into the same directory finishes them
-before anything else, so the dataset then holds all of that capture's tables or, when the
-kill came before the journal, none of the new ones. Converting a capture again replaces its
-files (and removes those of tables it no longer has). Two runs on the same capture at once
-both succeed (the last to finish puts its files in place); the temporary files of a run
-killed outright are removed by the next run into the same directory.
+table's fixed schema and a last column ``source``: the capture's path as given.
+
+A run writes a capture's files into a hidden directory of its own
+(``out_dir/.capture=flight1.log-3f2a9c01d2e4.HOST-PID-TOKEN/new``, which no documented
+reader takes: the globs name ``capture=*``, pyarrow skips names starting with ``.``) and,
+once the whole capture is decoded, puts that directory in place by one rename: readers see
+all of the capture's tables or none. A capture converted before is replaced in one step
+where the system can (Linux's ``renameat2`` exchange: readers see the old tables or the new
+ones; one that lists the files and opens them later may take tables of both, each whole),
+else its directory is first moved into the run's (readers see none of it until the new one
+is in place). A run that fails puts back what it moved aside and removes its
+directory; the next run into ``out_dir`` does the same for runs of this machine killed
+outright. Two runs on the same capture at once both succeed: the last one's tables stay.
 """
 
 from __future__ import annotations
 
 import contextlib
+import ctypes
+import errno
 import hashlib
-import json
 import os
 import re
 import secrets
+import shutil
+import socket
+import sys
 import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import Future, ThreadPoolExecutor
@@ -45,6 +50,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import Clock
+from veronte4x.capture.datasets import CAPTURE, capture_directory, table_file
 from veronte4x.capture.source import STDIN
 from veronte4x.errors import SourceError
 from veronte4x.progress import Bar
@@ -61,9 +67,10 @@ Progress = Callable[[int], None]
 
 
 def _reached(stage: str) -> None:
-    """Told each stage of a commit as it is passed (``written``, ``journal``,
-    ``renamed KIND``, ``committed``): the tests replace it to kill the process or raise a
-    file system error at every stage."""
+    """Told each stage of a commit as it is passed (``written``: every file closed;
+    ``aside``: the capture's directory moved aside, where it cannot be exchanged;
+    ``published``: the run's in place; ``committed``: the run's directory removed): the
+    tests replace it to kill the process or raise a file system error at every stage."""
 
 
 @dataclass
@@ -166,47 +173,44 @@ def _truncations(errors: pa.Table) -> list[str]:
     return [detail or "the input ends early" for detail in ends["detail"].to_pylist()]
 
 
-def file_name(source: str) -> str:
-    """The name of a capture's files in the dataset: its base name (characters other than
-    letters, digits, ``.``, ``_`` and ``-`` replaced, leading ``.`` and ``_`` dropped) and a
-    digest of its path as given."""
-    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")
-    stem = stem or "capture"  # a name starting "." or "_" is one dataset readers skip
-    digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
-    return f"{stem}-{digest}.parquet"
-
-
 def remove_stale(out_dir: Path) -> None:
-    """Finish the commits and remove the temporary files that runs no longer alive left in
-    ``out_dir`` (killed outright): those named by a process id that is not running on this
-    machine, or by none."""
-    for journal in sorted(out_dir.glob(".commit-*.json")):
-        if not _dead(journal.name.removesuffix(".json")):
+    """Put back what runs of this machine no longer alive (killed outright) moved aside,
+    and remove their hidden directories (``.capture=NAME.HOST-PID-TOKEN``).
+
+    Raises:
+        FileExistsError: ``out_dir`` holds a dataset of the layout before captures had
+            directories (``message=TABLE``): a reader would see two layouts.
+    """
+    with os.scandir(out_dir) as entries:
+        names = [entry.name for entry in entries]
+    if any(name.startswith("message=") for name in names):
+        raise FileExistsError(
+            errno.EEXIST,
+            "holds a dataset of the older layout (message=TABLE directories); convert into a "
+            "new directory, or convert its captures again there",
+            str(out_dir),
+        )
+    for name in names:
+        if not name.startswith(f".{CAPTURE}"):
             continue
-        with contextlib.suppress(OSError, ValueError):  # another run may finish it first
-            listed = json.loads(journal.read_text(encoding="utf-8"))
-            _finish(out_dir, listed["remove"], listed["rename"])
-            journal.unlink()
-    for temporary in [*out_dir.glob("message=*/.*.tmp"), *out_dir.glob(".commit-*.tmp")]:
-        if _dead(temporary.name.removesuffix(".tmp")):
-            with contextlib.suppress(OSError):  # another run may remove it first
-                temporary.unlink()
+        run = _RUN.fullmatch(name)
+        if run is None:  # no run's: left by something else
+            continue
+        final, host, pid = run.groups()
+        if host != HOST or _alive(int(pid)):
+            continue
+        home = out_dir / name
+        if (home / "old").is_dir() and not (out_dir / final).exists():  # killed with it aside
+            with contextlib.suppress(OSError):  # another run may put it back first
+                _rename_new(home / "old", out_dir / final)
+        shutil.rmtree(home, ignore_errors=True)
 
 
-def _dead(name: str) -> bool:
-    """Whether the run a temporary name ends with (``.PID-TOKEN``) is not alive."""
-    pid = name.rsplit(".", 1)[-1].partition("-")[0]
-    return not (pid.isdigit() and _alive(int(pid)))
-
-
-def _finish(out_dir: Path, remove: list[str], rename: list[list[str]]) -> None:
-    """Make the removals and renames a commit journal lists (paths relative to ``out_dir``);
-    those already made are skipped."""
-    for stale in remove:
-        (out_dir / stale).unlink(missing_ok=True)
-    for temporary, final in rename:
-        if (out_dir / temporary).exists():
-            os.replace(out_dir / temporary, out_dir / final)
+HOST = hashlib.sha256(socket.gethostname().encode()).hexdigest()[:8]
+"""This machine, in the names of its runs' directories: a run judges only its own
+machine's runs dead or alive (several may write into a shared file system)."""
+_RUN = re.compile(r"\.(capture=.+)\.([0-9a-f]{8})-([0-9]+)-[0-9a-f]{8}")
+"""The name of a run's hidden directory: its capture's directory, machine, process, token."""
 
 
 def _alive(pid: int) -> bool:
@@ -219,30 +223,119 @@ def _alive(pid: int) -> bool:
     return True
 
 
+_RENAME_NOREPLACE, _RENAME_EXCHANGE = 1, 2
+_UNSUPPORTED = {errno.EINVAL, errno.ENOSYS, errno.EOPNOTSUPP}
+
+
+def _renameat2() -> Any:
+    """Linux's renameat2 (glibc 2.28 and later), or None."""
+    try:
+        function = ctypes.CDLL(None, use_errno=True).renameat2
+    except (AttributeError, OSError):
+        return None
+    function.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p]
+    function.argtypes += [ctypes.c_uint]
+    function.restype = ctypes.c_int
+    return function
+
+
+_renameat2_call = _renameat2() if sys.platform == "linux" else None
+
+
+def _rename2(source: Path, target: Path, flags: int) -> bool | None:
+    """renameat2 with ``flags``: True when done, None when the system or the file system
+    does not have it.
+
+    Raises:
+        OSError: Any other failure (``FileExistsError`` when ``target`` exists and
+            ``flags`` says not to replace it, ``FileNotFoundError`` when it is missing and
+            ``flags`` says to exchange).
+    """
+    if _renameat2_call is None:
+        return None
+    at_cwd = -100
+    if _renameat2_call(at_cwd, os.fsencode(source), at_cwd, os.fsencode(target), flags) == 0:
+        return True
+    code = ctypes.get_errno()
+    if code in _UNSUPPORTED:
+        return None
+    raise OSError(code, os.strerror(code), os.fspath(source), None, os.fspath(target))
+
+
+def _rename_new(source: Path, target: Path) -> bool:
+    """Rename directory ``source`` to ``target`` unless a capture's directory is there
+    already: False then."""
+    try:
+        if _rename2(source, target, _RENAME_NOREPLACE) is None:
+            os.rename(source, target)  # onto an empty directory only, if one is there
+    except OSError as error:
+        if error.errno in (errno.EEXIST, errno.ENOTEMPTY):
+            return False
+        raise
+    return True
+
+
+TRIES = 100
+"""Times a run tries to put its capture's directory in place while other runs of the same
+capture replace it at the same moment."""
+
+
+def _publish(new: Path, final: Path, old: Path) -> None:
+    """Put directory ``new`` in place at ``final`` by one rename, whatever was there.
+
+    A directory already at ``final`` is exchanged with ``new`` in one step where the system
+    can (Linux's renameat2), else moved to ``old`` first (readers then see none of that
+    capture for a moment). Either way the replaced directory ends in the run's own.
+
+    Raises:
+        OSError: (``EBUSY``) other runs of the same capture replaced it every time.
+    """
+    for _ in range(TRIES):
+        if _rename_new(new, final):
+            return
+        try:
+            if _rename2(new, final, _RENAME_EXCHANGE):
+                return
+        except FileNotFoundError:  # another run moved it aside meanwhile
+            continue
+        if old.exists():
+            shutil.rmtree(old)
+        try:
+            os.rename(final, old)
+        except FileNotFoundError:
+            continue
+        _reached("aside")
+    raise OSError(
+        errno.EBUSY,
+        "other conversions of this capture keep replacing it; convert it again when they end",
+        str(final),
+    )
+
+
 class _Writer:
-    """The files of one capture: written under temporary names, renamed on `commit`.
+    """The files of one capture: written into a hidden directory of the run, which
+    `commit` renames into place.
 
     Row groups are compressed and written on a thread of their own, one at a time, while
     the next batch is decoded.
     """
 
     def __init__(self, out_dir: Path, source: str) -> None:
-        self.out_dir = out_dir
         self.source = source
-        self.name = file_name(source)
-        # Each run its own temporary names: two runs on one capture never share a file.
-        self._run = f"{os.getpid()}-{secrets.token_hex(4)}"
+        out_dir.mkdir(parents=True, exist_ok=True)
         remove_stale(out_dir)
+        name = capture_directory(source)
+        # Each run its own directory: two runs on one capture never share a file.
+        run = f"{HOST}-{os.getpid()}-{secrets.token_hex(4)}"
+        self.final = out_dir / name
+        self.home = out_dir / f".{name}.{run}"
+        self.new, self.old = self.home / "new", self.home / "old"
         self._writers: dict[str, pq.ParquetWriter] = {}
         self._buffers: dict[str, list[pa.Table]] = {}
         self._bytes: dict[str, int] = {}
         self.counts: dict[str, int] = {}
         self._thread = ThreadPoolExecutor(1)
         self._writing: Future[None] | None = None
-
-    def _paths(self, kind: str) -> tuple[Path, Path]:
-        folder = self.out_dir / f"message={kind}"
-        return folder / f".{self.name}.{self._run}.tmp", folder / self.name
 
     def write(self, kind: str, table: pa.Table) -> None:
         buffer = self._buffers.setdefault(kind, [])
@@ -276,20 +369,18 @@ class _Writer:
         table = table.append_column(SOURCE, source)
         writer = self._writers.get(kind)
         if writer is None:
-            temporary, _ = self._paths(kind)
-            temporary.parent.mkdir(parents=True, exist_ok=True)
-            writer = self._writers[kind] = pq.ParquetWriter(temporary, table.schema)
+            self.new.mkdir(parents=True, exist_ok=True)
+            writer = pq.ParquetWriter(self.new / table_file(kind), table.schema)
+            self._writers[kind] = writer
         writer.write_table(table, row_group_size=max(len(table), 1))
 
     def commit(self) -> dict[str, int]:
-        """Finish every file and put them all in place; return the rows written per table.
+        """Finish every file and put the capture's directory in place by one rename
+        (replacing the one a run before wrote); return the rows written per table.
 
-        On an error before the journal is in place none of the files is put in place, after
-        it the rest are; then the temporary files and the journal are removed.
+        On an error the capture is left as it was before the run, or as the run left it
+        once in place, and the run's hidden directory is removed.
         """
-        journal = self.out_dir / f".commit-{self.name}.{self._run}.json"
-        stale: list[str] = []
-        renames: list[list[str]] = []
         try:
             for kind in list(self._buffers):
                 self._flush(kind)
@@ -297,51 +388,31 @@ class _Writer:
             self._thread.shutdown()
             for writer in self._writers.values():
                 writer.close()
+            self.new.mkdir(parents=True, exist_ok=True)  # a capture with no table: empty
             _reached("written")
-            stale = [
-                p.relative_to(self.out_dir).as_posix()
-                for p in self.out_dir.glob(f"message=*/{self.name}")
-                if p.parent.name.removeprefix("message=") not in self._writers
-            ]
-            renames = [
-                [p.relative_to(self.out_dir).as_posix() for p in self._paths(kind)]
-                for kind in self._writers
-            ]
-            written = journal.with_name(journal.name + ".tmp")
-            self.out_dir.mkdir(parents=True, exist_ok=True)
-            written.write_text(json.dumps({"remove": stale, "rename": renames}), "utf-8")
-            os.replace(written, journal)  # from here on, a later run finishes the commit
-            _reached("journal")
-            for name in stale:
-                (self.out_dir / name).unlink(missing_ok=True)
-            for kind in self._writers:
-                temporary, final = self._paths(kind)
-                os.replace(temporary, final)
-                _reached(f"renamed {kind}")
-            journal.unlink()
+            _publish(self.new, self.final, self.old)
+            _reached("published")
+            shutil.rmtree(self.home)
             _reached("committed")
         except BaseException:
-            if journal.exists():  # past the point of no return: put the rest in place
-                with contextlib.suppress(OSError):
-                    _finish(self.out_dir, stale, renames)
             self.abort()
-            for path in (journal, journal.with_name(journal.name + ".tmp")):
-                with contextlib.suppress(OSError):
-                    path.unlink()
             raise
         return {kind: self.counts[kind] for kind in self._writers}
 
     def abort(self) -> None:
-        """Drop the files being written."""
+        """Drop the files being written; put back the capture's directory if the run
+        moved it aside and did not put its own in place."""
         with contextlib.suppress(Exception):
             self._wait()
         self._thread.shutdown()
-        for kind, writer in self._writers.items():
+        for writer in self._writers.values():
             _discard(writer)
-            with contextlib.suppress(OSError):
-                self._paths(kind)[0].unlink(missing_ok=True)
         self._writers.clear()
         self._buffers.clear()
+        if self.old.is_dir() and not self.final.exists():
+            with contextlib.suppress(OSError):
+                _rename_new(self.old, self.final)
+        shutil.rmtree(self.home, ignore_errors=True)
 
 
 def _discard(writer: pq.ParquetWriter) -> None:

@@ -1,10 +1,13 @@
 """Captures converted on a Dask cluster: each file on a worker, into one dataset.
 
 Needs the ``dask`` extra (``pip install 'veronte4x[dask]'``). Every worker runs
-`dataset.convert_file` on whole files and writes its files into the same dataset
-directory, which must be one every worker and the client see (a shared file system). A
-file is never split: the DroneCAN sessions and the line numbers of a capture run from its
-start, so each file is decoded by one worker from its first line to its last.
+`dataset.convert_file` on whole files and puts each capture's directory into the same
+dataset directory, which must be one every worker and the client see (a shared file
+system); a capture's directory appears there by one rename, whichever worker wrote it, and
+the hidden directories of its runs name the machine, so that a worker cleans up only after
+runs of its own machine. A file is never split: the DroneCAN sessions and the line numbers
+of a capture run from its start, so each file is decoded by one worker from its first line
+to its last.
 """
 
 from __future__ import annotations
