@@ -28,7 +28,7 @@ from veronte4x.cli.exit_codes import (
 )
 from veronte4x.cli.fleet import each, exit_code, node_list, resolve, total
 from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
-from veronte4x.client import operations, paramfile
+from veronte4x.client import operations, paramfile, parmfile
 from veronte4x.client.errors import (
     ClientError,
     InvalidRequestError,
@@ -94,7 +94,11 @@ def add_parser(commands: Any) -> None:
         "restore parameters saved by params --save: diff, check, set, read back, save",
         _apply,
     )
-    apply.add_argument("file", help="a file written by: veronte4x esc params NODES --save FILE")
+    apply.add_argument(
+        "file",
+        help="a file written by: veronte4x esc params NODES --save FILE; or a .parm file of "
+        "one node, saved by the DroneCAN GUI tool",
+    )
     apply.add_argument("nodes", type=node_list, metavar="NODES", help=_NODES_HELP)
     apply.add_argument("--dry-run", action="store_true", help="show what would change; send no set")
     apply.add_argument(
@@ -610,7 +614,17 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
 
 
 def _apply(client: BusClient, args: argparse.Namespace) -> int:
-    saved = paramfile.loads(_read_text(args.file))
+    text = _read_text(args.file)
+    saved: list[paramfile.NodeParameters] | tuple[parmfile.ParmLine, ...]
+    if parmfile.is_parm(args.file, text):
+        saved = parmfile.loads(text)
+        if args.nodes.every or len(args.nodes.ids) != 1 or args.source is not None:
+            raise InvalidRequestError(
+                f"{args.file} is a .parm file (the DroneCAN GUI tool's): it names no node, "
+                "so it is applied to one node named alone, without --from"
+            )
+    else:
+        saved = paramfile.loads(text)
     nodes = resolve(client, args.nodes)
     reads = client.run_all([operations.read_node(node) for node in nodes])
     failed = [(node, t.error) for node, t in zip(nodes, reads, strict=True) if t.error]
@@ -622,7 +636,11 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
     plans: dict[int, list[paramfile.Change]] = {}
     for node, task in zip(nodes, reads, strict=True):
         current = task.result()
-        entry = _entry_for(saved, current, args.source)
+        entry = (
+            parmfile.typed(saved, node, current.parameters)
+            if isinstance(saved, tuple)
+            else _entry_for(saved, current, args.source)
+        )
         plans[node] = paramfile.plan(node, entry, list(current.parameters))
         if not args.json:
             for change in plans[node]:
