@@ -24,7 +24,9 @@ from veronte4x.client import (
     UpdateProgress,
 )
 from veronte4x.client.files import FileRead
+from veronte4x.client.firmware import image_crc
 from veronte4x.client.protocol import Received
+from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.errors import EncodeError
 
 K = dronecan.TransferKind
@@ -402,3 +404,10 @@ def test_any_frames_give_events_or_nothing(frames: list[tuple[int, bytes]]) -> N
     assert (client.requests.pending(handle) is None) is not waiting
     client.poll(10.0)
     client.take_frames()
+
+
+@given(st.lists(st.binary(max_size=600), min_size=1, max_size=4))
+def test_an_images_crc_is_crc64we_whichever_image_came_before(images: list[bytes]) -> None:
+    """`image_crc` remembers the latest image's CRC: it never answers for another image."""
+    for image in images + images[::-1]:
+        assert image_crc(image) == crc64we(image)

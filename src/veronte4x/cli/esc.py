@@ -34,14 +34,19 @@ from veronte4x.client.errors import (
     InvalidRequestError,
     NoResponseError,
 )
-from veronte4x.client.firmware import MAX_IMAGE_SIZE, Phase, UpdateProgress, check_image
+from veronte4x.client.firmware import (
+    MAX_IMAGE_SIZE,
+    Phase,
+    UpdateProgress,
+    check_image,
+    image_crc,
+)
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
 from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.dronecan import vertiq
-from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     EscStatus,
     GetNodeInfoResponse,
@@ -572,7 +577,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
             )
         shown[p.node_id] = (p.phase, tenth)
 
-    crc = crc64we(image)
+    crc = image_crc(image)
 
     def make(node: int) -> Operation[tuple[bool, GetNodeInfoResponse]]:
         return operations.update_unless_current(

@@ -46,13 +46,13 @@ from veronte4x.client.firmware import (
     Phase,
     UpdateProgress,
     check_image,
+    image_crc,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.paramfile import Change, NodeParameters
 from veronte4x.client.params import ParameterInfo, parameter_request, plain
 from veronte4x.client.protocol import ClientProtocol, Event, FileServed, StatusSeen
 from veronte4x.dronecan import vertiq
-from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
     BooleanValue,
@@ -526,7 +526,7 @@ def update_firmware(
         )
     info = yield from node_info(node_id)
     version = info.software_version
-    expected = crc64we(image)
+    expected = image_crc(image)
     if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC and (
         version.image_crc != expected
     ):
@@ -608,7 +608,7 @@ def update_unless_current(
     if (
         not force
         and version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC
-        and version.image_crc == crc64we(image)
+        and version.image_crc == image_crc(image)
     ):
         return False, info
     info = yield from update_firmware(
