@@ -36,6 +36,7 @@ from veronte4x.client.errors import (
 )
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
+    FirmwareOptions,
     Phase,
     UpdateProgress,
     check_image,
@@ -578,6 +579,9 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
         shown[p.node_id] = (p.phase, tenth)
 
     crc = image_crc(image)
+    options = FirmwareOptions(
+        args.start_timeout, args.read_timeout, args.restart_timeout, args.max_image_size
+    )
 
     def make(node: int) -> Operation[tuple[bool, GetNodeInfoResponse]]:
         return operations.update_unless_current(
@@ -587,10 +591,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
             path,
             force=args.force,
             progress=None if args.json else progress,
-            start_timeout=args.start_timeout,
-            read_timeout=args.read_timeout,
-            restart_timeout=args.restart_timeout,
-            max_image_size=args.max_image_size,
+            options=options,
         )
 
     def data(node: int, outcome: tuple[bool, GetNodeInfoResponse]) -> dict[str, Any]:

@@ -36,6 +36,29 @@ ESC microcontrollers in use (an assumption, not a DroneCAN or Vertiq figure), so
 wrong file (a log, a disk image) is refused before a node erases its flash."""
 
 
+@dataclass(frozen=True, slots=True)
+class FirmwareOptions:
+    """The limits of a firmware update, passed as one value from a client's keywords to
+    the operation that runs the update.
+
+    Attributes:
+        start_timeout: Seconds from accepting to the first read (`START_TIMEOUT`).
+        read_timeout: Seconds without a read that count as a stall (`READ_TIMEOUT`).
+        restart_timeout: Seconds after the last read for the node to run again
+            (`RESTART_TIMEOUT`).
+        max_image_size: Bytes above which an image is refused (`MAX_IMAGE_SIZE`).
+    """
+
+    start_timeout: float = START_TIMEOUT
+    read_timeout: float = READ_TIMEOUT
+    restart_timeout: float = RESTART_TIMEOUT
+    max_image_size: int = MAX_IMAGE_SIZE
+
+
+DEFAULT_OPTIONS = FirmwareOptions()
+"""The limits of an update unless told otherwise."""
+
+
 def check_image(image: bytes, max_size: int = MAX_IMAGE_SIZE) -> None:
     """Refuse an image that cannot be a firmware: empty, or larger than ``max_size`` bytes.
 
