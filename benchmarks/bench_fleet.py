@@ -71,7 +71,7 @@ def bench_bus(escs: int, delay: float) -> Iterator[BusClient]:
 
 
 @contextmanager
-def process_bus(escs: int) -> Iterator[BusClient]:
+def process_bus(escs: int, delay: float) -> Iterator[BusClient]:
     """``escs`` simulated ESCs in another process (``veronte4x simulate esc``) on a
     udp_multicast bus, and a client for them: no interpreter shared between the two sides."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
@@ -80,7 +80,8 @@ def process_bus(escs: int) -> Iterator[BusClient]:
     options = ["--interface", "udp_multicast", "--channel", "239.74.163.2"]
     simulator = subprocess.Popen(
         [sys.executable, "-m", "veronte4x", "simulate", "esc", "--nodes", f"21-{20 + escs}",
-         "--telem-frequency", "0", *options, "--bus-option", f"port={port}"],
+         "--telem-frequency", "0", "--response-delay", str(delay), *options,
+         "--bus-option", f"port={port}"],
         stderr=subprocess.PIPE,
         text=True,
     )  # fmt: skip
@@ -157,7 +158,8 @@ def main() -> int:
     parser.add_argument(
         "--processes",
         action="store_true",
-        help="also with the ESCs in another process on udp_multicast (needs msgpack)",
+        help="also with the ESCs in another process on udp_multicast (needs msgpack), as "
+        "separate modules are: no interpreter shared with the client",
     )
     parser.add_argument(
         "--node-delay",
@@ -197,7 +199,13 @@ def main() -> int:
         for delay in args.node_delay
     ]
     if args.processes:
-        setups.append(("ESCs in another process", process_bus))
+        setups += [
+            (
+                f"ESCs in a process, {delay * 1000:g} ms per request",
+                functools.partial(process_bus, delay=delay),
+            )
+            for delay in args.node_delay
+        ]
     for setup, make_bus in setups:
         for job, (escs, *ways) in jobs.items():
             measures = []
