@@ -281,6 +281,30 @@ def test_protocol_serves_file_reads_to_any_node() -> None:
     assert (answer.transfer_id, answer.destination_node_id) == (7, 21)
 
 
+def test_its_own_frames_echoed_back_are_dropped() -> None:
+    """udp_multicast loops every frame back to its sender: a client that served a read sees
+    its own response come back, and its own requests; neither is read (no event)."""
+    client = ClientProtocol(node_id=100)
+    client.files.add(b"fw", b"\x01" * 300)
+    request = dronecan.FileReadRequest(0, dronecan.Path(b"fw"))
+    for frame in dronecan.encode(request, source_node_id=21, destination_node_id=100,
+                                 transfer_id=7):  # fmt: skip
+        client.receive(frame.can_id, frame.data, 1.0)
+    client.requests.request(dronecan.GetNodeInfoRequest(), 21, 1.0)
+    echoed = client.take_frames()
+    assert len(echoed) == 38 + 1  # the 256-byte response, then the request
+    assert [e for f in echoed for e in client.receive(f.can_id, f.data, 1.1)] == []
+    status = dronecan.encode(
+        dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0),
+        source_node_id=101,
+        transfer_id=0,
+    )
+    assert [type(e).__name__ for f in status for e in client.receive(f.can_id, f.data, 1.2)] == [
+        "Received",
+        "StatusSeen",
+    ]
+
+
 _CLIENT, _ASKED = 100, 21
 
 
