@@ -23,7 +23,7 @@ after: on a loaded machine a process waits for a CPU, and the wall times show it
 runs ``--repeat`` times, the two ways in turn, and its fastest run is shown.
 
 Run: ``nice -n 10 .venv/bin/python benchmarks/bench_fleet.py [--escs 8] [--updates 4 8]
-[--image-kb 200] [--node-delay 0 0.002 0.005] [--repeat 3] [--processes]``
+[--image-kb 200] [--node-delay 0 0.002 0.005] [--repeat 1] [--processes]``
 """
 
 from __future__ import annotations
@@ -173,9 +173,9 @@ def main() -> int:
     parser.add_argument(
         "--repeat",
         type=int,
-        default=3,
+        default=1,
         metavar="N",
-        help="runs of each way, taken in turn; the fastest is shown (3)",
+        help="runs of each way, taken in turn; the fastest is shown (1)",
     )
     args = parser.parse_args()
     nodes = [21 + i for i in range(args.escs)]
