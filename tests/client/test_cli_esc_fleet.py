@@ -145,6 +145,12 @@ def test_a_saved_node_applied_to_a_replacement(bus: list[str], tmp_path: Path) -
         "node 28: the file's parameters of node 27",
         "dry run: 0 parameters would change; none set",
     ]
+    many = veronte4x("esc", "apply", str(saved), "28,21", *bus, "--dry-run")
+    assert (many.returncode, many.stderr) == (
+        2,
+        "veronte4x: the file has no parameters of node 28 (it has nodes 27); choose one with "
+        "--from\n",
+    )  # one node's parameters onto several would give them all its esc_index
     bad = veronte4x("esc", "apply", str(saved), "28", "--from", "21", *bus)
     assert (bad.returncode, bad.stderr) == (
         2,

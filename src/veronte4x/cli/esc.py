@@ -645,7 +645,7 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
         entry = (
             parmfile.typed(saved, node, current.parameters)
             if isinstance(saved, tuple)
-            else _entry_for(saved, current, args.source)
+            else _entry_for(saved, current, args.source, alone=len(nodes) == 1)
         )
         plans[node] = paramfile.plan(node, entry, list(current.parameters))
         if not args.json:
@@ -706,10 +706,15 @@ def _change(change: paramfile.Change) -> dict[str, Any]:
 
 
 def _entry_for(
-    saved: list[paramfile.NodeParameters], node: paramfile.NodeParameters, source: int | None
+    saved: list[paramfile.NodeParameters],
+    node: paramfile.NodeParameters,
+    source: int | None,
+    alone: bool,
 ) -> paramfile.NodeParameters:
     """The file's parameters for ``node``: of ``source`` if given, else of the same unique id,
-    else of the same node id, else the file's only node (a replacement).
+    else of the same node id, else the file's only node when ``node`` is the only one
+    targeted (a replacement: one node's parameters onto several would give them all its
+    ``esc_index``).
 
     Raises:
         ParameterFileError: None fits, or the file's node has another name.
@@ -723,7 +728,7 @@ def _entry_for(
         entry = next((e for e in saved if e.unique_id == node.unique_id), None)
         if entry is None:
             entry = next((e for e in saved if e.node_id == node.node_id), None)
-        if entry is None and len(saved) == 1:
+        if entry is None and len(saved) == 1 and alone:
             entry = saved[0]
     if entry is None:
         raise paramfile.ParameterFileError(
