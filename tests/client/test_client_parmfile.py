@@ -180,6 +180,12 @@ def test_what_the_gui_tool_would_guess_is_refused(text: str, message: str) -> No
     assert str(error.value) == message
 
 
+def test_an_am32_melody_in_the_gui_tools_own_form_is_refused() -> None:
+    current = [_info("STARTUP_TUNE", StringValue(b"\x01\x02"))]
+    with pytest.raises(ParameterFileError, match=r"^line 1: STARTUP_TUNE is saved by the GUI"):
+        typed(loads("STARTUP_TUNE Melody:b=100,o=4,d=1:c\n"), 23, current)
+
+
 def test_a_parameter_without_a_value_is_refused() -> None:
     with pytest.raises(ParameterFileError, match=r"^line 1: odd has no value on the node"):
         typed(loads("odd 1\n"), 23, [_info("odd", Empty())])

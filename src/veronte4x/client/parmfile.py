@@ -49,6 +49,11 @@ from veronte4x.dronecan.messages import (
 SUFFIXES = frozenset({".parm", ".param", ".params"})
 """File name suffixes taken for this format without looking at the content."""
 
+ENCODED = frozenset({"STARTUP_TUNE"})
+"""Parameters the GUI tool writes in a form of its own rather than the node's value: AM32's
+startup melody as RTTTL text (``dronecan_gui_tool/am32_rtttl.py``, ``is_am32_melody_param``);
+refused rather than set as that text."""
+
 _BOOLEANS = {
     "true": 1, "t": 1, "yes": 1, "y": 1, "1": 1,
     "false": 0, "f": 0, "no": 0, "n": 0, "0": 0,
@@ -143,6 +148,11 @@ def typed(
         if now is None:
             raise ParameterFileError(
                 f"line {line.line}: node {node_id} has no parameter {line.name!r}"
+            )
+        if line.name in ENCODED and isinstance(now.value, StringValue):
+            raise ParameterFileError(
+                f"line {line.line}: {line.name} is saved by the GUI tool as an RTTTL melody, "
+                "not as the node's value; set it with the GUI tool"
             )
         value = _value(now.value, line)
         parameters.append(ParameterInfo(line.name, value, Empty(), Empty(), Empty()))
