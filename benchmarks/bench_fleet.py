@@ -7,8 +7,8 @@ both ways in the same run with the same client:
 - read every parameter of N ESCs (a GetSet walk per node): ``list_params`` node after
   node, as one ``veronte4x esc params NODE`` per node does, against ``run_all`` of the
   walks (what ``veronte4x esc params 21-28`` does);
-- update M ESCs with one image (``update_firmware`` node after node against ``run_all``,
-  what ``veronte4x esc update 21-24 FILE`` does).
+- update 4 and 8 ESCs with one image (``update_firmware`` node after node against
+  ``run_all``, what ``veronte4x esc update 21-28 FILE`` does).
 
 The virtual bus has no bit rate: the gain measured is that of overlapping the nodes'
 round trips, the part a real bus also has; a real 1 Mbit/s bus adds transmission time to
@@ -16,10 +16,14 @@ both ways alike. Timings only, never a test.
 
 Each job runs with nodes that answer at once and with nodes that take ``--node-delay``
 seconds to answer a request or to write a received chunk (`SimulatedEsc`'s
-``response_delay``), as real modules take time to act.
+``response_delay``), as real modules take time to write flash. Each way reports its wall
+time, the CPU time of the client's thread (the ground tool's work) and of the whole
+process (in-process, the simulated ESCs' work too), and the load (``uptime``) before and
+after: on a loaded machine a process waits for a CPU, and the wall times show it. Each way
+runs ``--repeat`` times, the two ways in turn, and its fastest run is shown.
 
-Run: ``.venv/bin/python benchmarks/bench_fleet.py [--escs 8] [--updates 4] [--image-kb 200]
-[--node-delay 0 0.002]``
+Run: ``nice -n 10 .venv/bin/python benchmarks/bench_fleet.py [--escs 8] [--updates 4 8]
+[--image-kb 200] [--node-delay 0 0.002 0.005] [--repeat 1] [--processes]``
 """
 
 from __future__ import annotations
@@ -35,6 +39,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from typing import Any
 
 import can
@@ -67,7 +72,7 @@ def bench_bus(escs: int, delay: float) -> Iterator[BusClient]:
 
 
 @contextmanager
-def process_bus(escs: int) -> Iterator[BusClient]:
+def process_bus(escs: int, delay: float) -> Iterator[BusClient]:
     """``escs`` simulated ESCs in another process (``veronte4x simulate esc``) on a
     udp_multicast bus, and a client for them: no interpreter shared between the two sides."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
@@ -76,7 +81,8 @@ def process_bus(escs: int) -> Iterator[BusClient]:
     options = ["--interface", "udp_multicast", "--channel", "239.74.163.2"]
     simulator = subprocess.Popen(
         [sys.executable, "-m", "veronte4x", "simulate", "esc", "--nodes", f"21-{20 + escs}",
-         "--telem-frequency", "0", *options, "--bus-option", f"port={port}"],
+         "--telem-frequency", "0", "--response-delay", str(delay), *options,
+         "--bus-option", f"port={port}"],
         stderr=subprocess.PIPE,
         text=True,
     )  # fmt: skip
@@ -95,74 +101,136 @@ def max_wait() -> float:
     return time.monotonic()
 
 
-def timed(job: Callable[[], object]) -> float:
-    """Seconds ``job`` takes."""
-    start = time.perf_counter()
+@dataclass(frozen=True)
+class Measure:
+    """What one way of doing a job took."""
+
+    wall: float
+    """Seconds of wall-clock time."""
+    client_cpu: float
+    """CPU seconds of the client's thread (the ground tool's own work)."""
+    process_cpu: float
+    """CPU seconds of the whole benchmark process: in-process, the simulated ESCs' too."""
+
+
+def measured(job: Callable[[], object]) -> Measure:
+    """Run ``job``; its wall time and CPU times."""
+    wall, thread, process = time.perf_counter(), time.thread_time(), time.process_time()
     job()
-    return time.perf_counter() - start
+    return Measure(
+        time.perf_counter() - wall, time.thread_time() - thread, time.process_time() - process
+    )
+
+
+def uptime() -> str:
+    """The load averages (``uptime``), to print beside the figures."""
+    try:
+        return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+    except OSError:
+        return f"load average {os.getloadavg()}"
+
+
+def update_one_by_one(client: BusClient, nodes: list[int], image: bytes) -> None:
+    """What one ``veronte4x esc update NODE FILE`` per node does."""
+    for node in nodes:
+        client.update_firmware(node, image, progress=False)
+
+
+def update_at_once(client: BusClient, nodes: list[int], image: bytes) -> None:
+    """What ``veronte4x esc update NODES FILE`` does: every node at once."""
+    for task in client.run_all(
+        [operations.update_firmware(client.protocol, n, image) for n in nodes]
+    ):
+        task.result()
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--escs", type=int, default=8, help="ESCs whose parameters are read")
-    parser.add_argument("--updates", type=int, default=4, help="ESCs updated")
+    parser.add_argument(
+        "--updates",
+        type=int,
+        default=(4, 8),
+        nargs="+",
+        metavar="N",
+        help="numbers of ESCs updated (4 and 8)",
+    )
     parser.add_argument("--image-kb", type=int, default=200, help="image size, kB")
     parser.add_argument(
         "--processes",
         action="store_true",
-        help="also with the ESCs in another process on udp_multicast (needs msgpack)",
+        help="also with the ESCs in another process on udp_multicast (needs msgpack), as "
+        "separate modules are: no interpreter shared with the client",
     )
     parser.add_argument(
         "--node-delay",
         type=float,
-        default=(0.0, 0.002),
+        default=(0.0, 0.002, 0.005),
         nargs="+",
         metavar="S",
-        help="seconds each simulated node takes to answer or write a chunk (0 and 0.002)",
+        help="seconds each simulated node takes to answer or write a chunk (0, 0.002, 0.005)",
+    )
+    parser.add_argument(
+        "--repeat",
+        type=int,
+        default=1,
+        metavar="N",
+        help="runs of each way, taken in turn; the fastest is shown (1)",
     )
     args = parser.parse_args()
     nodes = [21 + i for i in range(args.escs)]
-    updated = nodes[: args.updates]
     image = bytes((i * 7 + i // 256) & 0xFF for i in range(args.image_kb * 1000))
     print(f"Python {sys.version.split()[0]} on {platform.machine()}, {os.cpu_count()} CPUs")
-    print(f"{'job':<62}  {'node by node':>12}  {'all at once':>11}  {'ratio':>6}")
+    print(f"before: {uptime()}")
+    print(
+        f"{'job':<64}  {'node by node':>22}  {'all at once':>22}  {'ratio':>6}\n"
+        f"{'':<64}  {'wall':>7} {'client':>6} {'CPU':>7}  {'wall':>7} {'client':>6} "
+        f"{'CPU':>7}  {'wall':>6}"
+    )
+    jobs: dict[str, tuple[int, Callable[[BusClient], object], Callable[[BusClient], object]]]
     jobs = {
         f"read every parameter of {len(nodes)} ESCs": (
+            len(nodes),
             lambda client: [client.list_params(n) for n in nodes],
             lambda client: client.run_all([operations.list_params(n) for n in nodes]),
         ),
-        f"update {len(updated)} ESCs with a {args.image_kb} kB image": (
-            lambda client: [client.update_firmware(n, image) for n in updated],
-            lambda client: [
-                t.result()
-                for t in client.run_all(
-                    [operations.update_firmware(client.protocol, n, image) for n in updated]
-                )
-            ],
-        ),
     }
-    setups: list[tuple[str, Callable[[], Any]]] = [
-        (
-            f"in-process, nodes answer in {delay * 1000:g} ms",
-            functools.partial(bench_bus, len(nodes), delay),
+    for count in args.updates:
+        updated = [21 + i for i in range(count)]
+        jobs[f"update {count} ESCs with a {args.image_kb} kB image"] = (
+            count,
+            functools.partial(update_one_by_one, nodes=updated, image=image),
+            functools.partial(update_at_once, nodes=updated, image=image),
         )
+    setups: list[tuple[str, Callable[[int], Any]]] = [
+        (f"in-process, {delay * 1000:g} ms per request", functools.partial(bench_bus, delay=delay))
         for delay in args.node_delay
     ]
     if args.processes:
-        setups.append(("ESCs in another process", functools.partial(process_bus, len(nodes))))
+        setups += [
+            (
+                f"ESCs in a process, {delay * 1000:g} ms per request",
+                functools.partial(process_bus, delay=delay),
+            )
+            for delay in args.node_delay
+        ]
     for setup, make_bus in setups:
-        for job, ways in jobs.items():
-            seconds = []
-            for way in ways:
-                with make_bus() as client:  # fresh ESCs for each way
-                    client.discover(1.1)  # every node heard once
-                    seconds.append(timed(functools.partial(way, client)))
-            one_by_one, at_once = seconds
+        for job, (escs, *ways) in jobs.items():
+            runs: list[list[Measure]] = [[], []]
+            for _ in range(args.repeat):  # the ways in turn, so that both see the same load
+                for way, measures in zip(ways, runs, strict=True):
+                    with make_bus(escs) as client:  # fresh ESCs for each run
+                        client.discover(1.1)  # every node heard once
+                        measures.append(measured(functools.partial(way, client)))
+            one, all_ = (min(measures, key=lambda m: m.wall) for measures in runs)
             row = f"{job}, {setup}"
             print(
-                f"{row:<62}  {one_by_one:>10.3f} s  {at_once:>9.3f} s  "
-                f"{one_by_one / at_once:>5.2f}x"
+                f"{row:<64}  {one.wall:>6.2f}s {one.client_cpu:>5.2f}s {one.process_cpu:>6.2f}s  "
+                f"{all_.wall:>6.2f}s {all_.client_cpu:>5.2f}s {all_.process_cpu:>6.2f}s  "
+                f"{one.wall / all_.wall:>5.2f}x",
+                flush=True,
             )
+    print(f"after: {uptime()}")
     return 0
 
 

@@ -145,10 +145,64 @@ def test_a_saved_node_applied_to_a_replacement(bus: list[str], tmp_path: Path) -
         "node 28: the file's parameters of node 27",
         "dry run: 0 parameters would change; none set",
     ]
+    many = veronte4x("esc", "apply", str(saved), "28,21", *bus, "--dry-run")
+    assert (many.returncode, many.stderr) == (
+        2,
+        "veronte4x: the file has no parameters of node 28 (it has nodes 27); choose one with "
+        "--from\n",
+    )  # one node's parameters onto several would give them all its esc_index
     bad = veronte4x("esc", "apply", str(saved), "28", "--from", "21", *bus)
     assert (bad.returncode, bad.stderr) == (
         2,
         "veronte4x: the file has no parameters of node 21\n",
+    )
+
+
+def test_the_dronecan_gui_tools_parm_file_applied_to_one_node(
+    bus: list[str], tmp_path: Path
+) -> None:
+    """A file as the GUI tool's "Save To File" writes it (``NAME VALUE`` lines, see
+    tests/client/test_client_parmfile.py), then a Mission Planner style one restoring node 23."""
+    parm = tmp_path / "esc23.parm"
+    parm.write_text(
+        "uavcan_node_id 23\nbit_rate 500000\nesc_index 2\nzero_behavior 1\ntelem_frequency 50\n"
+    )
+    dry = veronte4x("esc", "apply", str(parm), "23", "--dry-run", *bus)
+    assert (dry.returncode, dry.stdout) == (
+        0,
+        "node 23: zero_behavior 0 -> 1\nnode 23: telem_frequency 10 -> 50\n"
+        "dry run: 2 parameters would change; none set\n",
+    )
+    many = veronte4x("esc", "apply", str(parm), "21-24", *bus)
+    assert (many.returncode, many.stderr) == (
+        2,
+        f"veronte4x: {parm} is a .parm file (the DroneCAN GUI tool's): it names no node, so it "
+        "is applied to one node named alone, without --from\n",
+    )
+    applied = veronte4x("esc", "apply", str(parm), "23", *bus)
+    assert applied.returncode == 0, applied.stderr
+    assert applied.stdout.splitlines() == [
+        "node 23: zero_behavior 0 -> 1",
+        "node 23: telem_frequency 10 -> 50",
+        "node 23: 2 set, read back and saved",
+        "1 nodes: all succeeded",
+    ]
+    assert veronte4x("esc", "get", "23", "telem_frequency", *bus).stdout.startswith(
+        "telem_frequency = 50 "
+    )
+    bad = tmp_path / "esc23-bad.parm"
+    bad.write_text("zero_behavior 0\nesc_index 20\n")
+    refused = veronte4x("esc", "apply", str(bad), "23", *bus)
+    assert (refused.returncode, refused.stderr) == (
+        2,
+        "veronte4x: node 23: 20 is out of range for esc_index: 0..19\n",
+    )
+    restore = tmp_path / "esc23-defaults.parm"
+    restore.write_text("# Mission Planner style\nzero_behavior,0\ntelem_frequency,10\n")
+    back = veronte4x("esc", "apply", str(restore), "23", *bus)
+    assert back.returncode == 0, back.stderr
+    assert veronte4x("esc", "get", "23", "zero_behavior", *bus).stdout == (
+        "zero_behavior = 0 (default 0, range 0..2)\n"
     )
 
 

@@ -202,3 +202,8 @@ def test_simulate_errors_in_plain_words() -> None:
         2,
         "veronte4x: --telem-frequency 5000 is refused: a whole number in 0..1000\n",
     )
+    result = veronte4x("simulate", "esc", "--response-delay", "-0.5", "--interface", "virtual")
+    assert result.returncode == 2
+    assert result.stderr.splitlines()[-1].endswith(
+        "argument --response-delay: -0.5 must be a finite number, 0 or above"
+    ), result.stderr

@@ -24,7 +24,9 @@ from veronte4x.client import (
     UpdateProgress,
 )
 from veronte4x.client.files import FileRead
+from veronte4x.client.firmware import image_crc
 from veronte4x.client.protocol import Received
+from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.errors import EncodeError
 
 K = dronecan.TransferKind
@@ -279,6 +281,30 @@ def test_protocol_serves_file_reads_to_any_node() -> None:
     assert (answer.transfer_id, answer.destination_node_id) == (7, 21)
 
 
+def test_its_own_frames_echoed_back_are_dropped() -> None:
+    """udp_multicast loops every frame back to its sender: a client that served a read sees
+    its own response come back, and its own requests; neither is read (no event)."""
+    client = ClientProtocol(node_id=100)
+    client.files.add(b"fw", b"\x01" * 300)
+    request = dronecan.FileReadRequest(0, dronecan.Path(b"fw"))
+    for frame in dronecan.encode(request, source_node_id=21, destination_node_id=100,
+                                 transfer_id=7):  # fmt: skip
+        client.receive(frame.can_id, frame.data, 1.0)
+    client.requests.request(dronecan.GetNodeInfoRequest(), 21, 1.0)
+    echoed = client.take_frames()
+    assert len(echoed) == 38 + 1  # the 256-byte response, then the request
+    assert [e for f in echoed for e in client.receive(f.can_id, f.data, 1.1)] == []
+    status = dronecan.encode(
+        dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0),
+        source_node_id=101,
+        transfer_id=0,
+    )
+    assert [type(e).__name__ for f in status for e in client.receive(f.can_id, f.data, 1.2)] == [
+        "Received",
+        "StatusSeen",
+    ]
+
+
 _CLIENT, _ASKED = 100, 21
 
 
@@ -402,3 +428,10 @@ def test_any_frames_give_events_or_nothing(frames: list[tuple[int, bytes]]) -> N
     assert (client.requests.pending(handle) is None) is not waiting
     client.poll(10.0)
     client.take_frames()
+
+
+@given(st.lists(st.binary(max_size=600), min_size=1, max_size=4))
+def test_an_images_crc_is_crc64we_whichever_image_came_before(images: list[bytes]) -> None:
+    """`image_crc` remembers the latest image's CRC: it never answers for another image."""
+    for image in images + images[::-1]:
+        assert image_crc(image) == crc64we(image)

@@ -25,6 +25,7 @@ from veronte4x.client import (
 from veronte4x.client import operations as ops
 from veronte4x.client.aio import AsyncBusClient
 from veronte4x.client.bus import BusClient
+from veronte4x.client.firmware import FirmwareOptions
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.simulator import SimulatedEsc
 from veronte4x.simulator.can_node import EscBus
@@ -186,7 +187,9 @@ def test_one_node_that_stops_mid_update_leaves_the_others_updated(
     image = bytes((i * 11) & 0xFF for i in range(6000))
     tasks = client.run_all(
         [
-            ops.update_firmware(client.client.protocol, n, image, read_timeout=0.5)
+            ops.update_firmware(
+                client.client.protocol, n, image, options=FirmwareOptions(read_timeout=0.5)
+            )
             for n in (21, 22, 23)
         ]
     )

@@ -28,20 +28,26 @@ from veronte4x.cli.exit_codes import (
 )
 from veronte4x.cli.fleet import each, exit_code, node_list, resolve, total
 from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
-from veronte4x.client import operations, paramfile
+from veronte4x.client import operations, paramfile, parmfile
 from veronte4x.client.errors import (
     ClientError,
     InvalidRequestError,
     NoResponseError,
 )
-from veronte4x.client.firmware import MAX_IMAGE_SIZE, Phase, UpdateProgress, check_image
+from veronte4x.client.firmware import (
+    MAX_IMAGE_SIZE,
+    FirmwareOptions,
+    Phase,
+    UpdateProgress,
+    check_image,
+    image_crc,
+)
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
 from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.dronecan import vertiq
-from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     EscStatus,
     GetNodeInfoResponse,
@@ -94,7 +100,11 @@ def add_parser(commands: Any) -> None:
         "restore parameters saved by params --save: diff, check, set, read back, save",
         _apply,
     )
-    apply.add_argument("file", help="a file written by: veronte4x esc params NODES --save FILE")
+    apply.add_argument(
+        "file",
+        help="a file written by: veronte4x esc params NODES --save FILE; or a .parm file of "
+        "one node, saved by the DroneCAN GUI tool",
+    )
     apply.add_argument("nodes", type=node_list, metavar="NODES", help=_NODES_HELP)
     apply.add_argument("--dry-run", action="store_true", help="show what would change; send no set")
     apply.add_argument(
@@ -568,7 +578,10 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
             )
         shown[p.node_id] = (p.phase, tenth)
 
-    crc = crc64we(image)
+    crc = image_crc(image)
+    options = FirmwareOptions(
+        args.start_timeout, args.read_timeout, args.restart_timeout, args.max_image_size
+    )
 
     def make(node: int) -> Operation[tuple[bool, GetNodeInfoResponse]]:
         return operations.update_unless_current(
@@ -578,10 +591,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
             path,
             force=args.force,
             progress=None if args.json else progress,
-            start_timeout=args.start_timeout,
-            read_timeout=args.read_timeout,
-            restart_timeout=args.restart_timeout,
-            max_image_size=args.max_image_size,
+            options=options,
         )
 
     def data(node: int, outcome: tuple[bool, GetNodeInfoResponse]) -> dict[str, Any]:
@@ -610,7 +620,17 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
 
 
 def _apply(client: BusClient, args: argparse.Namespace) -> int:
-    saved = paramfile.loads(_read_text(args.file))
+    text = _read_text(args.file)
+    saved: list[paramfile.NodeParameters] | tuple[parmfile.ParmLine, ...]
+    if parmfile.is_parm(args.file, text):
+        saved = parmfile.loads(text)
+        if args.nodes.every or len(args.nodes.ids) != 1 or args.source is not None:
+            raise InvalidRequestError(
+                f"{args.file} is a .parm file (the DroneCAN GUI tool's): it names no node, "
+                "so it is applied to one node named alone, without --from"
+            )
+    else:
+        saved = paramfile.loads(text)
     nodes = resolve(client, args.nodes)
     reads = client.run_all([operations.read_node(node) for node in nodes])
     failed = [(node, t.error) for node, t in zip(nodes, reads, strict=True) if t.error]
@@ -622,7 +642,11 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
     plans: dict[int, list[paramfile.Change]] = {}
     for node, task in zip(nodes, reads, strict=True):
         current = task.result()
-        entry = _entry_for(saved, current, args.source)
+        entry = (
+            parmfile.typed(saved, node, current.parameters)
+            if isinstance(saved, tuple)
+            else _entry_for(saved, current, args.source, alone=len(nodes) == 1)
+        )
         plans[node] = paramfile.plan(node, entry, list(current.parameters))
         if not args.json:
             for change in plans[node]:
@@ -682,10 +706,15 @@ def _change(change: paramfile.Change) -> dict[str, Any]:
 
 
 def _entry_for(
-    saved: list[paramfile.NodeParameters], node: paramfile.NodeParameters, source: int | None
+    saved: list[paramfile.NodeParameters],
+    node: paramfile.NodeParameters,
+    source: int | None,
+    alone: bool,
 ) -> paramfile.NodeParameters:
     """The file's parameters for ``node``: of ``source`` if given, else of the same unique id,
-    else of the same node id, else the file's only node (a replacement).
+    else of the same node id, else the file's only node when ``node`` is the only one
+    targeted (a replacement: one node's parameters onto several would give them all its
+    ``esc_index``).
 
     Raises:
         ParameterFileError: None fits, or the file's node has another name.
@@ -699,7 +728,7 @@ def _entry_for(
         entry = next((e for e in saved if e.unique_id == node.unique_id), None)
         if entry is None:
             entry = next((e for e in saved if e.node_id == node.node_id), None)
-        if entry is None and len(saved) == 1:
+        if entry is None and len(saved) == 1 and alone:
             entry = saved[0]
     if entry is None:
         raise paramfile.ParameterFileError(

@@ -79,6 +79,14 @@ def add_parser(commands: Any) -> None:
         help="a RawCommand setpoint holds S seconds without a new one, then zero throttle "
         f"({COMMAND_TIMEOUT:g}; 0: never, to test a tool against an ESC without one)",
     )
+    esc.add_argument(
+        "--response-delay",
+        type=_not_negative,
+        default=0.0,
+        metavar="S",
+        help="seconds a module takes to answer a request and, during a firmware update, to "
+        "write each chunk before reading the next (0), as real modules take to write flash",
+    )
     esc.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
     add_bus_options(esc)
     esc.set_defaults(run=run, bus_map=None)
@@ -101,6 +109,7 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
                 supports_firmware_update=not args.no_firmware_update,
                 update_stall_offset=args.stall_update_at,
                 command_timeout=args.command_timeout or None,
+                response_delay=args.response_delay,
             )
             for index, node in enumerate(args.nodes)
         ]

@@ -22,6 +22,7 @@ from veronte4x.client.errors import (
 from veronte4x.client.files import FileRead, FileServer
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
+    FirmwareOptions,
     FirmwareUpdate,
     Phase,
     UpdateProgress,
@@ -54,6 +55,7 @@ __all__ = [
     "FileRead",
     "FileServed",
     "FileServer",
+    "FirmwareOptions",
     "FirmwareUpdate",
     "FirmwareUpdateError",
     "InvalidRequestError",

@@ -118,12 +118,13 @@ class BusAdapter:
 
     def send_frame(self, can_id: int, data: bytes) -> None:
         """Send one extended frame."""
-        self.bus.send(frame_to_message(Frame(can_id, data)))
+        self.send_frames((Frame(can_id, data),))
 
     def send_frames(self, frames: Iterable[Frame]) -> None:
-        """Send frames in order."""
+        """Send frames in order (a 256-byte file read answers with 37: one call for all)."""
+        send = self.bus.send
         for frame in frames:
-            self.send_frame(frame.can_id, frame.data)
+            send(frame_to_message(frame))
 
     def flush(self) -> None:
         """Send every frame the node has to send now."""

@@ -49,6 +49,7 @@ from veronte4x.client.firmware import (
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
+    FirmwareOptions,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
@@ -202,10 +203,9 @@ class AsyncBusClient(BusAdapter):
                     image,
                     path,
                     progress=report,
-                    start_timeout=start_timeout,
-                    read_timeout=read_timeout,
-                    restart_timeout=restart_timeout,
-                    max_image_size=max_image_size,
+                    options=FirmwareOptions(
+                        start_timeout, read_timeout, restart_timeout, max_image_size
+                    ),
                 )
             )
 

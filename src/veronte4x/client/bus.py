@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
@@ -29,11 +29,13 @@ from veronte4x.client.firmware import (
     READ_TIMEOUT,
     RESTART_TIMEOUT,
     START_TIMEOUT,
+    FirmwareOptions,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
+from veronte4x.dronecan.frame import Frame
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
@@ -100,10 +102,10 @@ class BusClient(BusAdapter):
 
     # -- I/O ----------------------------------------------------------------------------
 
-    def send_frame(self, can_id: int, data: bytes) -> None:
-        """Send one extended frame (thread-safe with `CommandStream`)."""
+    def send_frames(self, frames: Iterable[Frame]) -> None:
+        """Send frames in order (thread-safe with `CommandStream`)."""
         with self._lock:
-            super().send_frame(can_id, data)
+            super().send_frames(frames)
 
     def _messages(self, wait: float) -> Iterator[can.Message]:
         message = self.bus.recv(timeout=wait)
@@ -296,10 +298,9 @@ class BusClient(BusAdapter):
                     image,
                     path,
                     progress=report,
-                    start_timeout=start_timeout,
-                    read_timeout=read_timeout,
-                    restart_timeout=restart_timeout,
-                    max_image_size=max_image_size,
+                    options=FirmwareOptions(
+                        start_timeout, read_timeout, restart_timeout, max_image_size
+                    ),
                 )
             )
 

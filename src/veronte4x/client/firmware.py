@@ -11,11 +11,13 @@ it failed, with the times as arguments.
 from __future__ import annotations
 
 import enum
+import functools
 from dataclasses import dataclass
 
 from veronte4x.client.errors import InvalidRequestError
 from veronte4x.client.files import FileRead
 from veronte4x.client.nodes import NodeEntry
+from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import BeginFirmwareUpdateResponse, FirmwareUpdateError, Mode
 
 START_TIMEOUT = 10.0
@@ -34,6 +36,29 @@ ESC microcontrollers in use (an assumption, not a DroneCAN or Vertiq figure), so
 wrong file (a log, a disk image) is refused before a node erases its flash."""
 
 
+@dataclass(frozen=True, slots=True)
+class FirmwareOptions:
+    """The limits of a firmware update, passed as one value from a client's keywords to
+    the operation that runs the update.
+
+    Attributes:
+        start_timeout: Seconds from accepting to the first read (`START_TIMEOUT`).
+        read_timeout: Seconds without a read that count as a stall (`READ_TIMEOUT`).
+        restart_timeout: Seconds after the last read for the node to run again
+            (`RESTART_TIMEOUT`).
+        max_image_size: Bytes above which an image is refused (`MAX_IMAGE_SIZE`).
+    """
+
+    start_timeout: float = START_TIMEOUT
+    read_timeout: float = READ_TIMEOUT
+    restart_timeout: float = RESTART_TIMEOUT
+    max_image_size: int = MAX_IMAGE_SIZE
+
+
+DEFAULT_OPTIONS = FirmwareOptions()
+"""The limits of an update unless told otherwise."""
+
+
 def check_image(image: bytes, max_size: int = MAX_IMAGE_SIZE) -> None:
     """Refuse an image that cannot be a firmware: empty, or larger than ``max_size`` bytes.
 
@@ -47,6 +72,21 @@ def check_image(image: bytes, max_size: int = MAX_IMAGE_SIZE) -> None:
             f"the firmware image has {len(image)} bytes, more than the limit of {max_size}; "
             "nothing was sent (raise the limit if the image is right)"
         )
+
+
+def image_crc(image: bytes) -> int:
+    """CRC-64-WE of a firmware image, as a node reports it (``SoftwareVersion.image_crc``).
+
+    Computed once for the latest image and remembered: a fleet update compares one image
+    with every node's CRC before and after, and the CRC in pure Python takes about a
+    second per megabyte, as much CPU as serving the image to a node.
+    """
+    return _remembered_crc(bytes(image))
+
+
+@functools.lru_cache(maxsize=1)
+def _remembered_crc(image: bytes) -> int:
+    return crc64we(image)
 
 
 class Phase(enum.Enum):

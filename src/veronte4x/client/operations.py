@@ -38,21 +38,19 @@ from veronte4x.client.errors import (
     RejectedError,
 )
 from veronte4x.client.firmware import (
-    MAX_IMAGE_SIZE,
-    READ_TIMEOUT,
-    RESTART_TIMEOUT,
-    START_TIMEOUT,
+    DEFAULT_OPTIONS,
+    FirmwareOptions,
     FirmwareUpdate,
     Phase,
     UpdateProgress,
     check_image,
+    image_crc,
 )
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.paramfile import Change, NodeParameters
 from veronte4x.client.params import ParameterInfo, parameter_request, plain
 from veronte4x.client.protocol import ClientProtocol, Event, FileServed, StatusSeen
 from veronte4x.dronecan import vertiq
-from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
     BooleanValue,
@@ -469,10 +467,7 @@ def update_firmware(
     path: str = "firmware.bin",
     *,
     progress: Callable[[UpdateProgress], object] | None = None,
-    start_timeout: float = START_TIMEOUT,
-    read_timeout: float = READ_TIMEOUT,
-    restart_timeout: float = RESTART_TIMEOUT,
-    max_image_size: int = MAX_IMAGE_SIZE,
+    options: FirmwareOptions = DEFAULT_OPTIONS,
 ) -> Operation[GetNodeInfoResponse]:
     """Update a node's firmware: BeginFirmwareUpdate, serve its reads, wait for it to run
     again, then check the image CRC it reports (`FirmwareUpdate` follows the phases).
@@ -480,11 +475,11 @@ def update_firmware(
     Several updates of one image may run at once: the file is served until the last ends.
 
     Raises:
-        InvalidRequestError: An empty image or one above ``max_image_size``.
+        InvalidRequestError: An empty image or one above ``options.max_image_size``.
         FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
         NoResponseError: GetNodeInfo after the update got no answer.
     """
-    check_image(image, max_image_size)
+    check_image(image, options.max_image_size)
     name = path.encode("utf-8")
     now: float = yield NOW
     update = FirmwareUpdate(
@@ -492,9 +487,9 @@ def update_firmware(
         name,
         len(image),
         now,
-        start_timeout=start_timeout,
-        read_timeout=read_timeout,
-        restart_timeout=restart_timeout,
+        start_timeout=options.start_timeout,
+        read_timeout=options.read_timeout,
+        restart_timeout=options.restart_timeout,
     )
     protocol.files.add(name, image)
     last = update.progress
@@ -526,7 +521,7 @@ def update_firmware(
         )
     info = yield from node_info(node_id)
     version = info.software_version
-    expected = crc64we(image)
+    expected = image_crc(image)
     if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC and (
         version.image_crc != expected
     ):
@@ -595,31 +590,20 @@ def update_unless_current(
     *,
     force: bool = False,
     progress: Callable[[UpdateProgress], object] | None = None,
-    start_timeout: float = START_TIMEOUT,
-    read_timeout: float = READ_TIMEOUT,
-    restart_timeout: float = RESTART_TIMEOUT,
-    max_image_size: int = MAX_IMAGE_SIZE,
+    options: FirmwareOptions = DEFAULT_OPTIONS,
 ) -> Operation[tuple[bool, GetNodeInfoResponse]]:
     """`update_firmware`, unless the node reports the image's CRC already (``force`` updates
     anyway); returns whether it updated, and the node's GetNodeInfo."""
-    check_image(image, max_image_size)
+    check_image(image, options.max_image_size)
     info = yield from node_info(node_id)
     version = info.software_version
     if (
         not force
         and version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC
-        and version.image_crc == crc64we(image)
+        and version.image_crc == image_crc(image)
     ):
         return False, info
     info = yield from update_firmware(
-        protocol,
-        node_id,
-        image,
-        path,
-        progress=progress,
-        start_timeout=start_timeout,
-        read_timeout=read_timeout,
-        restart_timeout=restart_timeout,
-        max_image_size=max_image_size,
+        protocol, node_id, image, path, progress=progress, options=options
     )
     return True, info

@@ -100,8 +100,16 @@ class ClientProtocol:
         self._outbox: list[Frame] = []
 
     def receive(self, can_id: int, data: bytes, timestamp: float) -> list[Event]:
-        """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``."""
+        """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``.
+
+        A frame whose source node id (CAN ID bits 0-6, DroneCAN specification, "CAN bus
+        transport layer") is this node's own is its own frame echoed back, as buses that
+        loop frames back to the sender do (python-can's ``udp_multicast``): it is dropped
+        unread, as a CAN controller does not receive what it sends.
+        """
         timestamp = check_seconds("receive", "timestamp", timestamp)
+        if can_id & 0x7F == self.node_id:
+            return []
         transfer = self.reassembler.feed(can_id, data, timestamp)
         if transfer is None:
             return []
