@@ -185,7 +185,7 @@ def test_the_dronecan_gui_tools_parm_file_applied_to_one_node(
         "node 23: zero_behavior 0 -> 1",
         "node 23: telem_frequency 10 -> 50",
         "node 23: 2 set, read back and saved",
-        "1 nodes: all succeeded",
+        "1 node: succeeded",
     ]
     assert veronte4x("esc", "get", "23", "telem_frequency", *bus).stdout.startswith(
         "telem_frequency = 50 "
@@ -227,3 +227,12 @@ def test_a_fleet_firmware_update_skips_nodes_that_run_the_image(
     ]
     forced = veronte4x("esc", "update", "21", str(firmware), "--force", *bus)
     assert forced.stdout.startswith("node 21: updated with esc-v2.bin")
+
+
+def test_total_line_in_singular_and_plural() -> None:
+    from veronte4x.cli.fleet import total
+
+    assert total(1, []) == "1 node: succeeded"
+    assert total(1, [21]) == "1 node: failed (21)"
+    assert total(2, []) == "2 nodes: all succeeded"
+    assert total(3, [21, 23]) == "3 nodes: 1 succeeded, 2 failed (21, 23)"

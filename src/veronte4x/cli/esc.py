@@ -97,7 +97,8 @@ def add_parser(commands: Any) -> None:
 
     apply = action(
         "apply",
-        "restore parameters saved by params --save: diff, check, set, read back, save",
+        "restore parameters saved by params --save or the DroneCAN GUI tool: diff, check, set, "
+        "read back, save",
         _apply,
     )
     apply.add_argument(

@@ -159,9 +159,12 @@ def each(
 
 def total(count: int, failed: list[int]) -> str:
     """The total line: how many nodes, how many failed and which."""
+    nodes = "1 node" if count == 1 else f"{count} nodes"
     if not failed:
-        return f"{count} nodes: all succeeded"
+        return f"{nodes}: succeeded" if count == 1 else f"{nodes}: all succeeded"
+    if count == 1:
+        return f"{nodes}: failed ({failed[0]})"
     return (
-        f"{count} nodes: {count - len(failed)} succeeded, {len(failed)} failed "
+        f"{nodes}: {count - len(failed)} succeeded, {len(failed)} failed "
         f"({', '.join(map(str, failed))})"
     )
