@@ -86,3 +86,56 @@ def test_the_notebook_runs_and_shows_its_results(executed: Any) -> None:
     assert len(_outputs(executed, "image/png")) == 2  # the two plots, inline
     if not os.environ.get("TQDM_DISABLE"):  # read_tables' and to_parquet's progress bars
         assert len(_outputs(executed, "application/vnd.jupyter.widget-view+json")) == 2
+
+
+VEHICLE_BUS = EXAMPLES / "vehicle_bus.ipynb"
+
+
+def test_the_vehicle_bus_notebook_is_kept_without_outputs_and_shown() -> None:
+    notebook = nbformat.read(VEHICLE_BUS, as_version=4)
+    nbformat.validate(notebook)
+    code = [cell for cell in notebook.cells if cell.cell_type == "code"]
+    assert [cell.outputs for cell in code if cell.outputs] == []
+    assert [cell.execution_count for cell in code if cell.execution_count] == []
+    assert (EXAMPLES.parent / "docs" / "vehicle_bus.ipynb").resolve() == VEHICLE_BUS
+    assert "vehicle_bus.ipynb" in (EXAMPLES.parent / "mkdocs.yml").read_text()
+
+
+def test_the_vehicle_bus_notebook_decodes_every_type(tmp_path: Path) -> None:
+    """The notebook run top to bottom next to the bus `make demo` writes."""
+    runpy.run_path(str(EXAMPLES / "make_vehicle_bus.py"))["write"](tmp_path / "vehicle.log")
+    notebook = nbformat.read(VEHICLE_BUS, as_version=4)
+    saved = os.environ.pop("VERONTE4X_VEHICLE_BUS", None)
+    try:
+        nbclient.NotebookClient(
+            notebook,
+            timeout=None,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(tmp_path)}},
+        ).execute()
+    finally:
+        if saved is not None:
+            os.environ["VERONTE4X_VEHICLE_BUS"] = saved
+    errors = [
+        output
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+        if output.get("output_type") == "error"
+    ]
+    assert errors == []
+    text = "\n".join(
+        output.get("text", "")
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+    )
+    assert "in 15 tables: 0 unknown, 0 errors" in text
+    html = "\n".join(_outputs(notebook, "text/html"))
+    for shown in ("BatteryInfo", "Fix2", "STATUS_3D_FIX", "FULLY_ARMED", "OPERATIONAL"):
+        assert shown in html
+    assert "2023-11-14 22:13:20" in html  # time as time
+    assert "Tattu 6S 10000mAh" in html and "b'Tattu" not in html  # text as text
+    assert "max_temp_c" in html  # the DuckDB query
+    assert "shape: (6, 3)" in "\n".join(_outputs(notebook, "text/plain"))  # the Polars one
+    assert len(_outputs(notebook, "image/png")) == 1  # the plot, inline
