@@ -121,7 +121,7 @@ def test_the_vehicle_bus_notebook_decodes_every_type(tmp_path: Path) -> None:
         for cell in notebook.cells
         if cell.cell_type == "code"
         for output in cell.outputs
-        if output.get("output_type") == "error"
+        if output.get("output_type") == "error" or output.get("name") == "stderr"
     ]
     assert errors == []
     text = "\n".join(
