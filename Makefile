@@ -24,7 +24,9 @@ demo: $(VENV)/.installed-run
 	$(BIN)/veronte4x decode examples/flight.log | head -n 25
 	$(BIN)/veronte4x stats examples/flight.log
 	$(BIN)/veronte4x replay examples/flight.log --config examples/arbiter.toml
+	$(BIN)/python examples/make_vehicle_bus.py examples/vehicle.log
 	@echo "next: open examples/flight.ipynb in Jupyter with the kernel .venv/bin/python (README)"
+	@echo "      and examples/vehicle_bus.ipynb, a whole DroneCAN vehicle bus"
 
 lint: $(VENV)/.installed-dev
 	$(BIN)/ruff check src tests examples benchmarks docs

@@ -20,8 +20,9 @@ one run it times, best of ``--repeat`` runs each:
 
 Then DroneCAN buses: ``--session-frames`` frames of 10 to 100,000 distinct sessions (time
 per frame), and an ArduPilot-style vehicle bus of ``--vehicle-frames`` frames
-(`vehicle_lines`: 8 ESCs, two servos, GNSS, compass, barometer, airspeed, battery, arming,
-lights, log messages and every node's NodeStatus) against python-can's reader.
+(``examples/make_vehicle_bus.py``: 8 ESCs, two servos, GNSS, compass, barometer, airspeed,
+battery, arming, lights, log messages and every node's NodeStatus) against python-can's
+reader.
 
 Then `capture.to_parquet` (a Parquet dataset, decoded in batches): time and peak memory
 (each in a fresh process) on the same two files, to show the memory flat and the time
@@ -34,6 +35,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import runpy
 import shutil
 import subprocess
 import sys
@@ -42,12 +44,11 @@ import time
 from collections.abc import Callable
 from itertools import islice
 from pathlib import Path
-from typing import Any
 
 import can
 import numpy as np
 from asammdf import MDF
-from bench_capture import flight_lines, make_file
+from bench_capture import ROOT, flight_lines, make_file
 
 from veronte4x import capture
 from veronte4x.capture.columnar.sources import read_frames
@@ -302,210 +303,12 @@ def session_rows(root: Path, frames: int, repeat: int) -> list[tuple[int, int, f
     return rows
 
 
-def _plain_defaults(t: Any) -> Any:
-    """Plain data of a DSDL type with every number 0 and every dynamic array empty."""
-    from veronte4x.dronecan.schema import Array, Struct, Union
-
-    if isinstance(t, Struct):
-        return {f.name: _plain_defaults(f.type) for f in t.fields if f.name}
-    if isinstance(t, Union):
-        return {t.members[0].name: _plain_defaults(t.members[0].type)}
-    if isinstance(t, Array):
-        return [] if t.dynamic else [_plain_defaults(t.item)] * t.max_size
-    return False if t.kind == "bool" else 0
-
-
-AUTOPILOT, ESCS, SERVOS = 10, range(60, 68), (80, 81)
-GPS, COMPASS, BARO, AIRSPEED, BATTERY = 70, 71, 72, 73, 74
-
-
-def _vehicle_traffic() -> list[tuple[float, int, str, Callable[[int], dict[str, Any]]]]:
-    """(period s, node, type, fields of the k-th transfer) of an ArduPilot-style bus."""
-    cov = [0.01 * i for i in range(9)]
-    traffic: list[tuple[float, int, str, Callable[[int], dict[str, Any]]]] = [
-        (
-            1 / 400,
-            AUTOPILOT,
-            "uavcan.equipment.esc.RawCommand",
-            lambda k: {"cmd": [(k * 7 + i * 300) % 8191 for i in range(8)]},
-        ),
-        (
-            1 / 100,
-            AUTOPILOT,
-            "uavcan.equipment.actuator.ArrayCommand",
-            lambda k: {
-                "commands": [
-                    {"actuator_id": i, "command_type": 0, "command_value": (k % 200) / 100 - 1}
-                    for i in range(2)
-                ]
-            },
-        ),
-        (1 / 10, AUTOPILOT, "uavcan.equipment.safety.ArmingStatus", lambda k: {"status": 255}),
-        (
-            1 / 10,
-            AUTOPILOT,
-            "uavcan.equipment.indication.LightsCommand",
-            lambda k: {
-                "commands": [
-                    {"light_id": i, "color": {"red": k % 32, "green": 0, "blue": 31 - k % 32}}
-                    for i in range(2)
-                ]
-            },
-        ),
-        (
-            1 / 10,
-            GPS,
-            "uavcan.equipment.gnss.Fix2",
-            lambda k: {
-                "timestamp": {"usec": 1000 * k},
-                "gnss_time_standard": 2,
-                "longitude_deg_1e8": -12_245_000_000 + k,
-                "latitude_deg_1e8": 4_750_000_000,
-                "height_ellipsoid_mm": 120_000,
-                "height_msl_mm": 75_000,
-                "ned_velocity": [1.0, 0.5, -0.1],
-                "sats_used": 14,
-                "status": 3,
-                "covariance": [0.5, 0.5, 1.0, 0.1, 0.1, 0.2],
-                "pdop": 1.2,
-            },
-        ),
-        (
-            1 / 5,
-            GPS,
-            "uavcan.equipment.gnss.Auxiliary",
-            lambda k: {"hdop": 0.8, "vdop": 1.1, "sats_visible": 20, "sats_used": 14},
-        ),
-        (
-            1 / 25,
-            COMPASS,
-            "uavcan.equipment.ahrs.MagneticFieldStrength2",
-            lambda k: {"sensor_id": 0, "magnetic_field_ga": [0.2, -0.1, 0.45 + k % 10 / 1000]},
-        ),
-        (
-            1 / 10,
-            BARO,
-            "uavcan.equipment.air_data.StaticPressure",
-            lambda k: {"static_pressure": 101_325.0 - k % 50, "static_pressure_variance": 2.0},
-        ),
-        (
-            1 / 10,
-            BARO,
-            "uavcan.equipment.air_data.StaticTemperature",
-            lambda k: {"static_temperature": 288.0, "static_temperature_variance": 0.5},
-        ),
-        (
-            1 / 20,
-            AIRSPEED,
-            "uavcan.equipment.air_data.RawAirData",
-            lambda k: {
-                "differential_pressure": 150.0 + k % 20,
-                "static_air_temperature": 290.0,
-                "covariance": cov[:2],
-            },
-        ),
-        (
-            1 / 5,
-            BATTERY,
-            "uavcan.equipment.power.BatteryInfo",
-            lambda k: {
-                "voltage": 22.2,
-                "current": 18.5,
-                "remaining_capacity_wh": 80.0,
-                "state_of_charge_pct": 80,
-                "battery_id": 0,
-                "model_instance_id": 7,
-                "model_name": b"Tattu 6S 10000mAh",
-            },
-        ),
-        (
-            1.0,
-            GPS,
-            "uavcan.protocol.debug.LogMessage",
-            lambda k: {"level": {"value": 1}, "source": b"GPS", "text": b"fix 3D, 14 sats"},
-        ),
-    ]
-    for index, node in enumerate(ESCS):
-        traffic.append(
-            (
-                1 / 50,
-                node,
-                "uavcan.equipment.esc.Status",
-                lambda k, i=index: {
-                    "error_count": 0,
-                    "voltage": 22.1,
-                    "current": 2.5,
-                    "temperature": 310.0,
-                    "rpm": 6000 + k % 100,
-                    "power_rating_pct": 40,
-                    "esc_index": i,
-                },
-            )
-        )
-    for index, node in enumerate(SERVOS):
-        traffic.append(
-            (
-                1 / 20,
-                node,
-                "uavcan.equipment.actuator.Status",
-                lambda k, i=index: {"actuator_id": i, "position": 0.1, "power_rating_pct": 5},
-            )
-        )
-    nodes = (AUTOPILOT, *ESCS, *SERVOS, GPS, COMPASS, BARO, AIRSPEED, BATTERY)
-    for node in nodes:
-        traffic.append(
-            (
-                1.0,
-                node,
-                "uavcan.protocol.NodeStatus",
-                lambda k: {"uptime_sec": k, "health": 0, "mode": 0},
-            )
-        )
-    return traffic
-
-
 def vehicle_lines(frames: int) -> list[str]:
-    """candump lines of an ArduPilot-style DroneCAN bus, ``frames`` of them: an autopilot
-    commanding 8 ESCs (RawCommand at 400 Hz, esc.Status at 50 Hz each) and two servos
-    (actuator.ArrayCommand, actuator.Status), GNSS (Fix2, Auxiliary, LogMessage), compass,
-    barometer, airspeed, battery monitor (BatteryInfo with its model name), arming status,
-    lights, and the NodeStatus of every node; each type at its usual rate, encoded by
-    `veronte4x.dronecan.encode`."""
-    from veronte4x import dronecan
-    from veronte4x.dronecan.definitions import DATA_TYPES
-
-    by_name = {t.full_name: t for t in DATA_TYPES if t.kind is dronecan.TransferKind.MESSAGE}
-    events: list[tuple[float, int, list[str]]] = []
-    traffic = _vehicle_traffic()
-    per_second = 0.0
-    for period, node, name, fields in traffic:
-        count = len(
-            dronecan.encode(_message(by_name[name], fields(0)), source_node_id=node, transfer_id=0)
-        )
-        per_second += count / period
-    seconds = frames / per_second + 1.0
-    for order, (period, node, name, fields) in enumerate(traffic):
-        data_type = by_name[name]
-        phase = order * 1e-4
-        for k in range(int(seconds / period)):
-            made = dronecan.encode(
-                _message(data_type, fields(k)), source_node_id=node, transfer_id=k % 32
-            )
-            texts = [f"{f.can_id:08X}#{f.data.hex().upper()}" for f in made]
-            events.append((1_700_000_000.0 + phase + k * period, order, texts))
-    events.sort(key=lambda event: event[:2])
-    lines = []
-    for stamp, _, texts in events:
-        lines += [f"({stamp + 1e-5 * i:.6f}) can0 {text}" for i, text in enumerate(texts)]
-    return lines[:frames]
-
-
-def _message(data_type: Any, fields: dict[str, Any]) -> Any:
-    from veronte4x import dronecan
-
-    data = _plain_defaults(data_type.schema)
-    data.update(fields)
-    return dronecan.from_builtin(data_type.schema.cls, data)
+    """The first ``frames`` candump lines of the vehicle bus of
+    ``examples/make_vehicle_bus.py``."""
+    make = runpy.run_path(str(ROOT / "examples" / "make_vehicle_bus.py"))
+    lines: list[str] = make["vehicle_lines"](frames)
+    return lines
 
 
 def _timed(function: Callable[[], int], repeat: int) -> float:

@@ -16,10 +16,12 @@ nbclient = pytest.importorskip("nbclient")
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 NOTEBOOK = EXAMPLES / "flight.ipynb"
+VEHICLE_BUS = EXAMPLES / "vehicle_bus.ipynb"
 
 
-def test_the_notebook_is_kept_without_outputs() -> None:
-    notebook = nbformat.read(NOTEBOOK, as_version=4)
+@pytest.mark.parametrize("path", [NOTEBOOK, VEHICLE_BUS], ids=lambda path: path.name)
+def test_the_notebook_is_kept_without_outputs(path: Path) -> None:
+    notebook = nbformat.read(path, as_version=4)
     nbformat.validate(notebook)
     code = [cell for cell in notebook.cells if cell.cell_type == "code"]
     assert code
@@ -27,10 +29,29 @@ def test_the_notebook_is_kept_without_outputs() -> None:
     assert [cell.execution_count for cell in code if cell.execution_count] == []
 
 
-def test_the_docs_show_the_notebook() -> None:
-    link = EXAMPLES.parent / "docs" / "flight.ipynb"
-    assert link.resolve() == NOTEBOOK
-    assert "flight.ipynb" in (EXAMPLES.parent / "mkdocs.yml").read_text()
+@pytest.mark.parametrize("path", [NOTEBOOK, VEHICLE_BUS], ids=lambda path: path.name)
+def test_the_docs_show_the_notebook(path: Path) -> None:
+    link = EXAMPLES.parent / "docs" / path.name
+    assert link.resolve() == path
+    assert path.name in (EXAMPLES.parent / "mkdocs.yml").read_text()
+
+
+def _execute(path: Path, folder: Path, variable: str) -> Any:
+    """Run a notebook top to bottom in ``folder`` (the capture named by the environment
+    ``variable`` unset); any error in a cell fails the run."""
+    notebook = nbformat.read(path, as_version=4)
+    saved = os.environ.pop(variable, None)
+    try:
+        nbclient.NotebookClient(
+            notebook,
+            timeout=None,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(folder)}},
+        ).execute()
+    finally:
+        if saved is not None:
+            os.environ[variable] = saved
+    return notebook
 
 
 @pytest.fixture(scope="module")
@@ -41,19 +62,7 @@ def executed(tmp_path_factory: pytest.TempPathFactory) -> Any:
     generate = runpy.run_path(str(EXAMPLES / "make_capture.py"))["generate"]
     generate(2.0, 60.0, 4).write(folder / "flight.log")
     shutil.copy(EXAMPLES / "arbiter.toml", folder)
-    notebook = nbformat.read(NOTEBOOK, as_version=4)
-    saved = os.environ.pop("VERONTE4X_FLIGHT", None)
-    try:
-        nbclient.NotebookClient(
-            notebook,
-            timeout=None,
-            kernel_name="python3",
-            resources={"metadata": {"path": str(folder)}},
-        ).execute()
-    finally:
-        if saved is not None:
-            os.environ["VERONTE4X_FLIGHT"] = saved
-    return notebook
+    return _execute(NOTEBOOK, folder, "VERONTE4X_FLIGHT")
 
 
 def _outputs(notebook: Any, mime: str) -> list[str]:
@@ -86,3 +95,32 @@ def test_the_notebook_runs_and_shows_its_results(executed: Any) -> None:
     assert len(_outputs(executed, "image/png")) == 2  # the two plots, inline
     if not os.environ.get("TQDM_DISABLE"):  # read_tables' and to_parquet's progress bars
         assert len(_outputs(executed, "application/vnd.jupyter.widget-view+json")) == 2
+
+
+def test_the_vehicle_bus_notebook_decodes_every_type(tmp_path: Path) -> None:
+    """The notebook run next to the bus `make demo` writes."""
+    runpy.run_path(str(EXAMPLES / "make_vehicle_bus.py"))["write"](tmp_path / "vehicle.log")
+    notebook = _execute(VEHICLE_BUS, tmp_path, "VERONTE4X_VEHICLE_BUS")
+    errors = [
+        output
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+        if output.get("output_type") == "error" or output.get("name") == "stderr"
+    ]
+    assert errors == []
+    text = "\n".join(
+        output.get("text", "")
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.outputs
+    )
+    assert "in 15 tables: 0 unknown, 0 errors" in text
+    html = "\n".join(_outputs(notebook, "text/html"))
+    for shown in ("BatteryInfo", "Fix2", "STATUS_3D_FIX", "FULLY_ARMED", "OPERATIONAL"):
+        assert shown in html
+    assert "2023-11-14 22:13:20" in html  # time as time
+    assert "Tattu 6S 10000mAh" in html and "b'Tattu" not in html  # text as text
+    assert "max_temp_c" in html  # the DuckDB query
+    assert "shape: (6, 3)" in "\n".join(_outputs(notebook, "text/plain"))  # the Polars one
+    assert len(_outputs(notebook, "image/png")) == 1  # the plot, inline

@@ -1,9 +1,10 @@
-"""MkDocs hook: the demo flight for the notebook page, which mkdocs-jupyter executes.
+"""MkDocs hook: the demo captures for the notebook pages, which mkdocs-jupyter executes.
 
 ``examples/flight.ipynb`` (shown as ``docs/flight.ipynb``, a link to it) opens the capture
 named by ``VERONTE4X_FLIGHT``: this hook writes the flight of ``make demo`` with its arbiter
-configuration into a temporary folder and names it there, unless it is set already. Progress
-bars are off (``TQDM_DISABLE``): a page shows no widget.
+configuration into a temporary folder and names it there, unless it is set already; and
+likewise the vehicle bus of ``examples/vehicle_bus.ipynb`` (``VERONTE4X_VEHICLE_BUS``).
+Progress bars are off (``TQDM_DISABLE``): a page shows no widget.
 """
 
 from __future__ import annotations
@@ -27,8 +28,15 @@ def demo_flight(folder: Path) -> Path:
     return path
 
 
+def vehicle_bus(folder: Path) -> Path:
+    """Write the vehicle bus of ``make demo`` into ``folder``."""
+    path = folder / "vehicle.log"
+    runpy.run_path(str(_EXAMPLES / "make_vehicle_bus.py"))["write"](path)
+    return path
+
+
 _made: list[Path] = []
-"""The temporary folder this hook made, removed when MkDocs shuts down."""
+"""The temporary folders this hook made, removed when MkDocs shuts down."""
 
 
 def on_config(config: Any, **_: Any) -> Any:
@@ -37,10 +45,13 @@ def on_config(config: Any, **_: Any) -> Any:
     if "VERONTE4X_FLIGHT" not in os.environ:
         _made.append(Path(tempfile.mkdtemp(prefix="veronte4x-docs-")))
         os.environ["VERONTE4X_FLIGHT"] = str(demo_flight(_made[-1]))
+    if "VERONTE4X_VEHICLE_BUS" not in os.environ:
+        _made.append(Path(tempfile.mkdtemp(prefix="veronte4x-docs-")))
+        os.environ["VERONTE4X_VEHICLE_BUS"] = str(vehicle_bus(_made[-1]))
     return config
 
 
 def on_shutdown(**_: Any) -> None:
-    """Remove the flight this hook wrote."""
+    """Remove the captures this hook wrote."""
     while _made:
         shutil.rmtree(_made.pop(), ignore_errors=True)

@@ -12,6 +12,7 @@ serializer refuses or saturates. Valid values and payloads never leave the gener
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -276,3 +277,20 @@ def test_any_bytes_decode_as_the_generic_serializer(codec: Codec, data: st.DataO
         assert _same(codec.decode(payload), expected)
     except DecodeError as error:
         assert str(error) == str(expected)
+
+
+def test_float16_fields_in_array_items_keep_the_array(tmp_path: Path) -> None:
+    # The float16 temporaries of an item once took the names of the encoder's array
+    # variables (a1, ...): the array became an int before its last item, the generated
+    # encoder raised TypeError and every such message took the generic serializer.
+    root = tmp_path / "acme"
+    root.mkdir()
+    (root / "Item.uavcan").write_text("uint8 x\nfloat16 f\nuint8[<=3] tail\n")
+    (root / "20000.Pack.uavcan").write_text("Item[2] items\n")
+    types = dronecan.TypeSet.standard().with_dsdl(root)
+    (codec,) = (c for c in types.codecs if c.data_type.full_name == "acme.Pack")
+    items = [{"x": 1, "f": 1.5, "tail": [1, 2]}, {"x": 2, "f": -2.0, "tail": [3]}]
+    message: Any = dronecan.from_builtin(types["acme.Pack"], {"items": items}, types=types)
+    payload = codec.fast.payload(message)  # valid values never leave the generated code
+    assert payload == codec.generic.encode(message)
+    assert codec.fast.decode(payload) == message

@@ -9,9 +9,9 @@ import pytest
 
 from veronte4x import dronecan
 from veronte4x.dronecan.codec import BY_CLASS
-from veronte4x.dronecan.compiled import bit_runs
 from veronte4x.dronecan.crc import crc16, signature_seed
 from veronte4x.dronecan.definitions import DATA_TYPES
+from veronte4x.dronecan.scalar_code import bit_runs
 from veronte4x.dronecan.tail import split_payload, tail_byte
 
 K = dronecan.TransferKind

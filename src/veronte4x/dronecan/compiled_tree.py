@@ -33,18 +33,24 @@ from contextlib import contextmanager
 from typing import NamedTuple
 
 from veronte4x.dronecan.compiled import (
-    HALF_EXPR,
     FastPaths,
     Transport,
-    _direct,
-    _floats,
-    _groups,
-    _layout,
     _slot_builder,
     _Source,
     _transport_checks,
-    _unpack_expr,
-    stream_position,
+)
+from veronte4x.dronecan.scalar_code import (
+    HALF_EXPR,
+    Namer,
+    be_runs,
+    gather,
+    is_whole,
+    pack_scalars,
+    read_code,
+    scalar_checks,
+    scalar_terms,
+    scalar_value,
+    unpack_scalars,
 )
 from veronte4x.dronecan.schema import (
     Array,
@@ -57,72 +63,18 @@ from veronte4x.dronecan.schema import (
     tao_min_bits,
     uses_tao,
 )
-from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
 
-_WHOLE = {(k, b) for k in ("uint", "int") for b in (8, 16, 32, 64)} | {
-    ("float", 16),
-    ("float", 32),
-    ("float", 64),
-}
-"""Scalars that `struct` reads and writes as they are, little-endian."""
 
-_CODES = {8: "b", 16: "h", 32: "i", 64: "q"}
-
-
-def _code(t: Scalar) -> str:
-    """The `struct` code of a whole-byte scalar (see `_WHOLE`), as read."""
-    if t.kind == "float":
-        return {16: "e", 32: "f", 64: "d"}[t.bits]
-    code = _CODES[t.bits]
-    return code if t.kind == "int" else code.upper()
-
-
-def be_runs(offset: int, bits: int, width: int) -> list[tuple[int, int, int]]:
-    """Runs ``(source bit, width, int bit)`` of a scalar at ``offset`` of a ``width``-bit
-    piece of the stream, the piece read as a big-endian int (stream bit 0 its top bit)."""
-    runs: list[tuple[int, int, int]] = []
-    for bit in range(bits):
-        dest = width - 1 - stream_position(offset, bits, bit)
-        if runs and runs[-1][0] + runs[-1][1] == bit and runs[-1][2] + runs[-1][1] == dest:
-            source, run, start = runs[-1]
-            runs[-1] = (source, run + 1, start)
-        else:
-            runs.append((bit, 1, dest))
-    return runs
-
-
-def _from_piece(t: Scalar, var: str, enum: type | None, src: _Source) -> str:
+def _from_piece(t: Scalar, var: str, name: Namer) -> str:
     """The value of scalar ``t`` from ``var``, the ``t.bits``-bit piece of the stream it
     fills, as a big-endian int."""
-    parts = []
-    for source, width, dest in be_runs(0, t.bits, t.bits):
-        value = f"({var} >> {dest})" if dest else var
-        if dest + width != t.bits:
-            value = f"({value} & {(1 << width) - 1:#x})"
-        parts.append(f"{value} << {source}" if source else value)
-    raw = " | ".join(parts)
-    if t.kind == "int":
-        sign = 1 << (t.bits - 1)
-        return f"(({raw}) ^ {sign:#x}) - {sign:#x}"
-    if t.kind == "bool":
-        return f"{var} != 0"
-    if t.kind == "float":
-        return f"F16[{raw}]" if t.bits == 16 else f"f{t.bits}v({raw})"
-    if enum is not None:
-        return f"{src.name('E', enum_table(enum, t.bits))}[{raw}]"
-    return raw
+    return scalar_value(t, gather(var, be_runs(0, t.bits, t.bits), t.bits), None, name)
 
 
 def _to_piece(t: Scalar, var: str) -> str:
-    """The ``t.bits``-bit piece of the stream (a big-endian int) of raw bits ``var``."""
-    terms = []
-    for source, width, dest in be_runs(0, t.bits, t.bits):
-        value = f"({var} >> {source})" if source else var
-        if source + width != t.bits:
-            value = f"({value} & {(1 << width) - 1:#x})"
-        terms.append(f"{value} << {dest}" if dest else value)
-    return " | ".join(terms)
+    """The ``t.bits``-bit piece of the stream (a big-endian int) of checked value ``var``."""
+    return " | ".join(scalar_terms(t, var, be_runs(0, t.bits, t.bits)))
 
 
 def _mod8(t: Scalar | Array | Struct | Union) -> int | None:
@@ -328,50 +280,19 @@ class _Decoder(_Writer):
     ) -> None:
         """Decode consecutive scalars into the variables ``names``."""
         width = sum(t.bits for t in scalars)
-        size = (width + 7) // 8
-        laid = [*scalars, Scalar("void", 8 * size - width)] if width % 8 else scalars
-        groups = _groups(laid)
-        codes = ["<"]
-        for group in groups:
-            if _direct(group, laid) and (laid[group.members[0]].kind, group.bits) in _WHOLE:
-                codes.append(_code(laid[group.members[0]]))
-            elif group.bits in (8, 16, 32, 64):
-                codes.append(_CODES[group.bits].upper())
-            else:
-                codes.append(f"{group.bits // 8}s")
         if self.mod() != 0 and all(t.kind != "float" for t in scalars):
             self.piece(scalars, names, enums)
             return
-        unpacker = self.src.name("S", struct.Struct("".join(codes)))
-        targets = "".join(f"g{k}, " for k in range(len(groups)))
+        size = (width + 7) // 8
+        unpacking = unpack_scalars(scalars, names, enums, self.src.name)
+        unpacker = self.src.name("S", struct.Struct(unpacking.format))
         if self.mod() == 0:
             source = f"{unpacker}.unpack_from(buf, {self.byte_at()})"
         else:
             source = f"{unpacker}.unpack(({self.bits(8 * size)}).to_bytes({size}, 'big'))"
-        self.emit(f"{targets}= {source}")
-        for k, group in enumerate(groups):
-            direct = _direct(group, laid) and (laid[group.members[0]].kind, group.bits) in _WHOLE
-            if not direct and group.bits not in (8, 16, 32, 64):
-                self.emit(f"g{k} = from_bytes(g{k}, 'little')")
-            for i in group.members:
-                if i >= len(scalars) or names[i] is None:
-                    continue
-                t = scalars[i]
-                if direct:
-                    raw = f"g{k}"
-                else:
-                    offset = sum(laid[j].bits for j in range(group.members[0], i))
-                    raw = _unpack_expr(t, offset, f"g{k}")
-                    if t.kind == "int":
-                        sign = 1 << (t.bits - 1)
-                        raw = f"(({raw}) ^ {sign:#x}) - {sign:#x}"
-                    elif t.kind == "float":
-                        raw = f"F16[{raw}]" if t.bits == 16 else f"f{t.bits}v({raw})"
-                    elif t.kind == "bool":
-                        raw = f"({raw}) != 0"
-                if t.kind == "uint" and enums[i] is not None:
-                    raw = f"{self.src.name('E', enum_table(enums[i], t.bits))}[{raw}]"
-                self.emit(f"{names[i]} = {raw}")
+        self.emit(f"{unpacking.targets}= {source}")
+        for line in unpacking.lines:
+            self.emit(line)
         self.off += width
 
     def piece(
@@ -384,19 +305,8 @@ class _Decoder(_Writer):
         offset = 0
         for t, name, enum in zip(scalars, names, enums, strict=True):
             if name is not None:
-                parts = []
-                for source, run, dest in be_runs(offset, t.bits, width):
-                    value = f"({r} >> {dest})" if dest else r
-                    parts.append(f"(({value}) & {(1 << run) - 1:#x}) << {source}")
-                raw = " | ".join(parts)
-                if t.kind == "int":
-                    sign = 1 << (t.bits - 1)
-                    raw = f"(({raw}) ^ {sign:#x}) - {sign:#x}"
-                elif t.kind == "bool":
-                    raw = f"({raw}) != 0"
-                elif enum is not None:
-                    raw = f"{self.src.name('E', enum_table(enum, t.bits))}[{raw}]"
-                self.emit(f"{name} = {raw}")
+                raw = gather(r, be_runs(offset, t.bits, width), width)
+                self.emit(f"{name} = {scalar_value(t, raw, enum, self.src.name)}")
             offset += t.bits
         self.off += width
 
@@ -433,7 +343,7 @@ class _Decoder(_Writer):
         v = self.fresh("a")
         static = not t.dynamic
         total = item.bits * t.max_size if static else f"{k} * {item.bits}"
-        if t.is_bytes or (item.kind, item.bits) in _WHOLE:
+        if t.is_bytes or is_whole(item):
             nbytes = t.max_size * item.bits // 8 if static else f"{k} * {item.bits // 8}"
             if self.mod() == 0:
                 start = self.fresh("s")
@@ -448,7 +358,7 @@ class _Decoder(_Writer):
             if t.is_bytes:
                 self.emit(f"{v} = {data}")
             else:
-                code = _code(item)
+                code = read_code(item)
                 if static:
                     unpacker = self.src.name("S", struct.Struct(f"<{t.max_size}{code}"))
                     self.emit(f"{v} = {unpacker}.unpack({data})")
@@ -463,7 +373,7 @@ class _Decoder(_Writer):
             self.emit(f"{z} = q - {self.at()} - {item.bits}")
             # One comprehension (Python compiles ``for r in [value]`` to an assignment).
             self.emit(
-                f"{v} = tuple([{_from_piece(item, r, None, self.src)}"
+                f"{v} = tuple([{_from_piece(item, r, self.src.name)}"
                 f" for {i} in range({z}, {z} - {total}, -{item.bits})"
                 f" for {r} in [(x >> {i}) & {(1 << item.bits) - 1:#x}]])"
             )
@@ -580,31 +490,22 @@ class _Encoder(_Writer):
 
     def chunk(self, scalars: list[Scalar], exprs: list[str | None]) -> None:
         width = sum(t.bits for t in scalars)
-        size = (width + 7) // 8
-        laid = [*scalars, Scalar("void", 8 * size - width)] if width % 8 else scalars
         names = "; ".join(f"v{i} = {e}" for i, e in enumerate(exprs) if e is not None)
         if names:
             self.emit(names)
         if all(t.kind != "float" for t in scalars):
             self.integers(scalars)
             return
-        layout, values, checks = _layout(self.src, laid)
-        # Floats: Python floats and ints only (the generic serializer decides the others).
-        checks += [
-            f"(v{i}.__class__ is not float and v{i}.__class__ is not int)"
-            for i, t in enumerate(scalars)
-            if t.kind == "float"
-        ]
-        if checks:
-            self.emit(f"if {' or '.join(checks)}:")
+        packing = pack_scalars(scalars, self.src.name)
+        if packing.checks:
+            self.emit(f"if {' or '.join(packing.checks)}:")
             self.emit("    raise SlowPath")
-        start = len(self.src.lines)
-        _floats(self.src, laid, "    " * self.depth)
-        self.lines += self.src.lines[start:]
-        del self.src.lines[start:]
-        packer = self.src.name("S", struct.Struct(layout))
-        packed = f"from_bytes({packer}.pack({', '.join(values)}), 'big')"
-        self.put(width, f"{packed} >> {8 * size - width}" if width % 8 else packed)
+        for line in packing.floats:
+            self.emit(line)
+        packer = self.src.name("S", struct.Struct(packing.format))
+        packed = f"from_bytes({packer}.pack({', '.join(packing.values)}), 'big')"
+        pad = -width % 8
+        self.put(width, f"{packed} >> {pad}" if pad else packed)
 
     def counted(self, emit: Callable[[], None]) -> None:
         """Emit code run a variable number of times, adding its static bits to ``n``."""
@@ -619,21 +520,8 @@ class _Encoder(_Writer):
         width = sum(t.bits for t in scalars)
         checks, terms, offset = [], [], 0
         for i, t in enumerate(scalars):
-            if t.kind == "bool":
-                checks.append(f"v{i} is not True and v{i} is not False")
-            elif t.kind != "void":
-                checks.append(f"v{i}.__class__ is bool or not isinstance(v{i}, int)")
-                if t.kind == "uint":
-                    checks.append(f"v{i} >> {t.bits}")
-                else:
-                    checks.append(f"(v{i} + {1 << (t.bits - 1)}) >> {t.bits}")
-            if t.kind != "void":
-                var = f"(v{i} & {(1 << t.bits) - 1:#x})" if t.kind == "int" else f"v{i}"
-                for source, run, dest in be_runs(offset, t.bits, width):
-                    value = f"({var} >> {source})" if source else var
-                    if source + run != t.bits or t.kind == "int":
-                        value = f"({value} & {(1 << run) - 1:#x})"
-                    terms.append(f"{value} << {dest}" if dest else value)
+            checks += scalar_checks(t, f"v{i}")
+            terms += scalar_terms(t, f"v{i}", be_runs(offset, t.bits, width))
             offset += t.bits
         if checks:
             self.emit(f"if {' or '.join(checks)}:")
@@ -665,7 +553,7 @@ class _Encoder(_Writer):
                     self.counted(lambda: self.struct(item, f"{v}[-1]", True))
             return
         bits = f"len({v}) * {item.bits}"
-        if (item.kind, item.bits) in _WHOLE:
+        if is_whole(item):
             allowed = "FLOATS" if item.kind == "float" else "INTS"
             self.emit(f"if not {allowed}.issuperset(map(type, {v})):")
             self.emit("    raise SlowPath")
@@ -692,7 +580,7 @@ class _Encoder(_Writer):
                 with self.block("else:"):
                     self.emit(f"{v} = [{fixed}]")
             else:
-                code = _code(item)
+                code = read_code(item)
             packer = self.src.name(
                 "A", tuple(struct.Struct(f"<{n}{code}") for n in range(t.max_size + 1))
             )
@@ -700,17 +588,9 @@ class _Encoder(_Writer):
         else:
             e = self.fresh("e")
             with self.block(f"for {e} in {v}:"):
-                if item.kind == "bool":
-                    self.emit(f"if {e} is not True and {e} is not False:")
-                    self.emit("    raise SlowPath")
-                    self.emit(f"a = a << 1 | {e}")
-                else:
-                    shift = f"({e} + {1 << (item.bits - 1)})" if item.kind == "int" else e
-                    self.emit(f"if {e}.__class__ is not int or {shift} >> {item.bits}:")
-                    self.emit("    raise SlowPath")
-                    if item.kind == "int":
-                        self.emit(f"{e} &= {(1 << item.bits) - 1:#x}")
-                    self.emit(f"a = a << {item.bits} | {_to_piece(item, e)}")
+                self.emit(f"if {' or '.join(scalar_checks(item, e))}:")
+                self.emit("    raise SlowPath")
+                self.emit(f"a = a << {item.bits} | {_to_piece(item, e)}")
         self.emit(f"n += {bits}")
 
     def union(self, u: Union, expr: str, tao: bool) -> None:

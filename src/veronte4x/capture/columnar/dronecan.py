@@ -30,8 +30,8 @@ import numpy.typing as npt
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import Codec
-from veronte4x.dronecan.compiled import bit_runs
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
+from veronte4x.dronecan.scalar_code import bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
 from veronte4x.dronecan.typeset import TypeSet, resolve
 
