@@ -331,15 +331,16 @@ def decode_frames(
 
 
 _new_tuple = tuple.__new__
+_MAX_FRAMES = len(MULTI_FRAME_TAILS[0])  # the most frames of a transfer, plus one
 
 
 def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
     """The message of a multi-frame transfer, or None to let the checked path decide."""
-    if count >= len(MULTI_FRAME_TAILS[0]):
+    if count >= _MAX_FRAMES:
         return None
     chunks = []
-    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]
-    for frame, tail in zip(frames, tails, strict=True):
+    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]  # one per frame
+    for frame, tail in zip(frames, tails, strict=False):  # as many tails as frames
         if frame.__class__ is not tuple or len(frame) != 2:
             return None
         frame_id, data = frame
