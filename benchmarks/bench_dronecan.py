@@ -25,6 +25,7 @@ import os
 import platform
 import statistics
 import sys
+import time
 import timeit
 from collections.abc import Callable
 from typing import Any
@@ -70,20 +71,22 @@ CASES: dict[str, tuple[Callable[[], Any], Callable[[], Any]]] = {
 def _rates(
     mine: Callable[[], Any], theirs: Callable[[], Any], items: int, seconds: float
 ) -> tuple[float, float]:
-    """Items per second of both functions, timed in turns (best of 5 turns each).
+    """Items per CPU second of both functions, timed in turns (best of 5 turns each).
 
-    Taking turns exposes both to the same load on a shared machine.
+    Taking turns exposes both to the same load on a shared machine, and CPU time (of this
+    process) leaves out the time other processes take the core.
     """
     numbers = []
     for function in (mine, theirs):
         number = 1
-        while timeit.timeit(function, number=number) < seconds / 10:
+        while timeit.timeit(function, number=number, timer=time.process_time) < seconds / 10:
             number *= 2
         numbers.append(number)
     best = [float("inf"), float("inf")]
     for _ in range(5):
         for i, function in enumerate((mine, theirs)):
-            best[i] = min(best[i], timeit.timeit(function, number=numbers[i]) / numbers[i])
+            timer = timeit.Timer(function, timer=time.process_time)
+            best[i] = min(best[i], timer.timeit(number=numbers[i]) / numbers[i])
     return items / best[0], items / best[1]
 
 

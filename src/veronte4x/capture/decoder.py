@@ -24,7 +24,7 @@ from veronte4x.capture.source import Truncated
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
 from veronte4x.codec.compiler import FrameDecoder as Decoder
 from veronte4x.dronecan import ProblemReport, Reassembler
-from veronte4x.dronecan.reassembler import Problem
+from veronte4x.dronecan.reassembler import Problem, Problems
 from veronte4x.errors import BytesLike, argument_type_error
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
@@ -77,11 +77,11 @@ class CaptureDecoder:
                         # _dronecan, inlined: no generator per frame.
                         if channel != last_channel or reassembler is None:
                             reassembler = self._reassembler(channel)
-                            last_channel, feed = channel, reassembler.feed
-                        before = reassembler.reported
-                        transfer = feed(can_id, data, 0.0 if timestamp is None else timestamp)
-                        if reassembler.reported != before:
-                            yield from self._problems(reassembler, before, channel)
+                            last_channel, push = channel, reassembler.push
+                        transfer = push(can_id, data, 0.0 if timestamp is None else timestamp)
+                        if isinstance(transfer, Problems):
+                            yield from _problems(transfer, channel)
+                            transfer = transfer.transfer
                         if transfer is not None:
                             yield delivered(timestamp, channel, can_id, transfer.source_node_id,
                                             transfer.message, data,
@@ -187,11 +187,11 @@ class CaptureDecoder:
                                 # _dronecan, inlined: no Frame, no generator per frame.
                                 if reassembler is None:
                                     reassembler = self._reassembler(interface)
-                                    feed = reassembler.feed
-                                before = reassembler.reported
-                                transfer = feed(can_id, data, seconds)
-                                if reassembler.reported != before:
-                                    yield from self._problems(reassembler, before, interface)
+                                    push = reassembler.push
+                                transfer = push(can_id, data, seconds)
+                                if isinstance(transfer, Problems):
+                                    yield from _problems(transfer, interface)
+                                    transfer = transfer.transfer
                                 if transfer is not None:
                                     yield delivered(seconds, interface, can_id,
                                                     transfer.source_node_id, transfer.message,
@@ -232,19 +232,18 @@ class CaptureDecoder:
         return reassembler
 
     @staticmethod
-    def _problems(reassembler: Reassembler, before: int, channel: str) -> Iterator[Record]:
-        """The records of the problems a reassembler reported since its count was ``before``."""
-        new = reassembler.reported - before
-        for report in list(reassembler.problems)[-new:]:
-            yield problem_record(report, channel)
-
-    @staticmethod
     def _bad_line(item: BadLine) -> Record:
         if isinstance(item, Truncation):
             return error_record(None, "", 0, Role.UNKNOWN, None, None, "truncated", item.reason,
                                 b"")  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
         return error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", detail, b"")
+
+
+def _problems(problems: Problems, channel: str) -> Iterator[Record]:
+    """The records of the problems one frame caused on ``channel``."""
+    for report in problems.reports:
+        yield problem_record(report, channel)
 
 
 def _routes_by_text(

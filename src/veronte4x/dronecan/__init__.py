@@ -62,6 +62,7 @@ from veronte4x.dronecan.reassembler import (
     TRANSFER_PROBLEMS,
     Problem,
     ProblemReport,
+    Problems,
     Reassembler,
 )
 from veronte4x.dronecan.standard import *  # noqa: F403  (every standard type, generated)
@@ -109,6 +110,7 @@ __all__ = [
     "Path",
     "Problem",
     "ProblemReport",
+    "Problems",
     "RawCommand",
     "RealValue",
     "Reassembler",

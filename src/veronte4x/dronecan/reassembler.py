@@ -12,11 +12,14 @@ the single frame (docs/dronecan/reassembly.md, "What cannot be recovered"). So a
 frame never makes the next intact transfer look like a repeat. Time comes only from the
 ``timestamp`` argument; nothing reads a clock.
 
-Bus data never raises. Each problem is counted in `counts` and recorded as a
-`ProblemReport` in the bounded `problems`. A transfer that started or was seen but never
-came out is counted exactly once, under the first problem that broke it; the rest of its
-frames are dropped silently. Arguments of the wrong type are caller mistakes, not bus
-data: they raise `TypeError` (see `Reassembler.feed`).
+Bus data never raises: what happened to a frame is a value. `Reassembler.push` returns
+the transfer the frame completes, or the `Problems` it caused (with the transfer it
+completed all the same, if any), or None; `Reassembler.feed` returns just the transfer.
+Each problem is also counted in `counts` and recorded as a `ProblemReport` in the bounded
+`problems`. A transfer that started or was seen but never came out is counted exactly
+once, under the first problem that broke it; the rest of its frames are dropped silently.
+Arguments of the wrong type are caller mistakes, not bus data: they raise `TypeError`
+(see `Reassembler.push`).
 
 The sessions are kept in the order their latest transfer began, so expiring idle sessions
 and evicting the oldest one cost O(1) amortised, whatever the size of the table.
@@ -30,7 +33,7 @@ import weakref
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
 from collections import OrderedDict, deque
 from collections.abc import Mapping
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, cast
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, Codec
@@ -98,6 +101,36 @@ class ProblemReport(NamedTuple):
     data: bytes
     timestamp: float
     detail: str
+
+
+class Problems(NamedTuple):
+    """What went wrong when one frame came: its problem reports, in the order they
+    happened, and the transfer the frame completed all the same (None if it completed none).
+
+    One frame causes at most two reports: it makes room in a full session table, losing
+    another session's transfer, or it ends its own session's transfer in progress
+    (`Problem.TIMEOUT`, `Problem.INTERRUPTED`); then it is itself a problem, or it
+    completes a single-frame transfer (which comes after the reports).
+    """
+
+    reports: tuple[ProblemReport, ...]
+    transfer: Transfer | None
+
+
+Outcome = Transfer | Problems | None
+"""What `Reassembler.push` returns for a frame: the transfer it completes, the problems it
+caused, or None (a frame taken, nothing to tell)."""
+
+
+def _join(report: ProblemReport | None, outcome: Outcome) -> Outcome:
+    """``outcome`` preceded by ``report`` (None: no report)."""
+    if report is None:
+        return outcome
+    if outcome is None:
+        return Problems((report,), None)
+    if isinstance(outcome, Problems):
+        return Problems((report, *outcome.reports), outcome.transfer)
+    return Problems((report,), outcome)
 
 
 _NEVER = -math.inf
@@ -214,15 +247,25 @@ _BYTES_LIKE = (bytes, bytearray, memoryview)
 _FRAME_ERRORS = DECODE_FALLBACK  # what a generated single-frame decoder raises
 
 
+def _argument_error(
+    function: str, can_id: object, data: object, timestamp: object
+) -> TypeError | None:
+    """The `TypeError` for arguments of the wrong type, naming ``function``; None if right."""
+    if not isinstance(can_id, int) or isinstance(can_id, bool):
+        return argument_type_error(function, "can_id", "an int", can_id)
+    if not isinstance(data, _BYTES_LIKE):
+        return argument_type_error(function, "data", "bytes-like", data)
+    if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
+        return argument_type_error(function, "timestamp", "a float", timestamp)
+    return None
+
+
 def _check_arguments(can_id: object, data: object, timestamp: object) -> bytes:
     """Refuse arguments of the wrong type (`TypeError`); return the data as bytes."""
-    if not isinstance(can_id, int) or isinstance(can_id, bool):
-        raise argument_type_error("Reassembler.feed", "can_id", "an int", can_id)
-    if not isinstance(data, _BYTES_LIKE):
-        raise argument_type_error("Reassembler.feed", "data", "bytes-like", data)
-    if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
-        raise argument_type_error("Reassembler.feed", "timestamp", "a float", timestamp)
-    return bytes(data)
+    error = _argument_error("Reassembler.push", can_id, data, timestamp)
+    if error is not None:
+        raise error
+    return bytes(cast(BytesLike, data))
 
 
 class Reassembler:
@@ -241,8 +284,7 @@ class Reassembler:
     Attributes:
         counts: Number of each `Problem` so far.
         problems: The most recent problem reports, oldest first.
-        reported: Number of problem reports so far; the reports of one `feed` are the
-            last ``reported - before`` entries of `problems` (up to its length).
+        reported: Number of problem reports so far.
         transfers: Number of transfers delivered.
         types: The `TypeSet` it decodes with.
     """
@@ -292,21 +334,37 @@ class Reassembler:
 
     def _report(
         self, problem: Problem, can_id: int, data: Any, timestamp: float, detail: str
-    ) -> None:
+    ) -> ProblemReport:
+        """Count and record a problem; return its report."""
         self.counts[problem] += 1
         self.reported += 1
-        self.problems.append(ProblemReport(problem, can_id, bytes(data), timestamp, detail))
+        report = ProblemReport(problem, can_id, bytes(data), timestamp, detail)
+        self.problems.append(report)
+        return report
 
-    def feed(self, can_id: int, data: BytesLike, timestamp: float) -> Transfer | None:
-        """Take one frame; return the transfer it completes, else None.
+    def _problem(
+        self, problem: Problem, can_id: int, data: Any, timestamp: float, detail: str
+    ) -> Problems:
+        """`_report` a problem that is all a frame caused."""
+        return Problems((self._report(problem, can_id, data, timestamp, detail),), None)
 
-        Whatever the frame holds, bad bus data never raises: it is counted in `counts`
-        and reported in `problems`.
+    def push(self, can_id: int, data: BytesLike, timestamp: float) -> Outcome:
+        """Take one frame; return what happened: the transfer it completes, the problems
+        it caused, or None.
+
+        Bad bus data never raises: each problem is returned in `Problems`, and also
+        counted in `counts` and recorded in `problems`.
 
         Args:
             can_id: The 29-bit extended CAN ID.
             data: The frame's data bytes, tail byte last (bytes, bytearray or memoryview).
             timestamp: Reception time in seconds, from any monotonic source.
+
+        Returns:
+            The `Transfer` the frame completes; or `Problems`, the reports of what went
+            wrong (in order) and the transfer completed all the same, if any; or None when
+            the frame was taken and there is nothing to tell (a frame of a transfer in
+            progress).
 
         Raises:
             TypeError: An argument of the wrong type (a caller mistake, not bus data):
@@ -377,7 +435,30 @@ class Reassembler:
             return self._complete(session, can_id, data, tid)
         return self._feed(can_id, data, timestamp)
 
-    def _feed(self, can_id: int, data: Any, timestamp: float) -> Transfer | None:
+    def feed(self, can_id: int, data: BytesLike, timestamp: float) -> Transfer | None:
+        """Take one frame; return the transfer it completes, else None.
+
+        `push` with the problems left out of the result: bad bus data never raises, and
+        each problem is counted in `counts` and recorded in `problems`.
+
+        Args:
+            can_id: The 29-bit extended CAN ID.
+            data: The frame's data bytes, tail byte last (bytes, bytearray or memoryview).
+            timestamp: Reception time in seconds, from any monotonic source.
+
+        Raises:
+            TypeError: An argument of the wrong type (a caller mistake, not bus data):
+                ``can_id`` not an int, ``data`` not bytes-like, ``timestamp`` not a number.
+        """
+        try:
+            outcome = self.push(can_id, data, timestamp)
+        except TypeError as error:
+            raise _argument_error("Reassembler.feed", can_id, data, timestamp) or error from None
+        if type(outcome) is Problems:
+            return outcome.transfer
+        return outcome  # type: ignore[return-value]
+
+    def _feed(self, can_id: int, data: Any, timestamp: float) -> Outcome:
         """The full state update of spec 4.1 with every check."""
         if data.__class__ is not bytes or can_id.__class__ is not int:
             data = _check_arguments(can_id, data, timestamp)
@@ -385,43 +466,39 @@ class Reassembler:
             _check_arguments(can_id, data, timestamp)
         size = len(data)
         if not 0 < size <= 8 or not 0 <= can_id <= 0x1FFFFFFF:
-            self._report(
+            return self._problem(
                 Problem.MALFORMED_FRAME,
                 can_id,
                 data[:64],
                 timestamp,
                 f"{size} data bytes, CAN ID {can_id:#x}",
             )
-            return None
         tail = data[-1]
         if can_id & 0x80:
             key = (can_id >> 15) & 0x1FF
             shared = self._services.get(key) or self._session_types.service(key)
             if not can_id & 0x7F or not can_id & 0x7F00:
-                self._report(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
-                return None
+                return self._problem(Problem.MALFORMED_FRAME, can_id, data, timestamp, "node id 0")
         elif can_id & 0x7F:
             dtid = (can_id >> 8) & 0xFFFF
             shared = self._messages.get(dtid) or self._session_types.message(dtid)
+        elif tail & 0xC0 != 0xC0:
+            return self._problem(
+                Problem.MALFORMED_FRAME, can_id, data, timestamp, "multi-frame anonymous"
+            )
         else:
-            if tail & 0xC0 != 0xC0:
-                self._report(
-                    Problem.MALFORMED_FRAME, can_id, data, timestamp, "multi-frame anonymous"
-                )
-            else:
-                self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "anonymous message")
-            return None
+            return self._problem(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "anonymous message")
         if shared is None:
-            self._report(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "unknown data type")
-            return None
+            return self._problem(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "unknown data type")
         session = self._sessions.get(can_id & 0xFFFFFF)
+        evicted = None
         if session is None:
-            session = self._new_session(shared, can_id, timestamp)
+            session, evicted = self._new_session(shared, can_id, timestamp)
         if tail & 0x80:
-            return self._start(session, can_id, data, tail, timestamp)
-        return self._continue(session, can_id, data, tail, timestamp)
+            return _join(evicted, self._start(session, can_id, data, tail, timestamp))
+        return _join(evicted, self._continue(session, can_id, data, tail, timestamp))
 
-    def _open(self, can_id: int, data: Any, timestamp: float) -> Transfer | None:
+    def _open(self, can_id: int, data: Any, timestamp: float) -> Outcome:
         """The first frame of a session not in the table: a lean path for a valid single
         frame of a type with a generated decoder; anything else goes through `_feed`."""
         if (
@@ -450,14 +527,14 @@ class Reassembler:
             message = shared[3](data)
         except _FRAME_ERRORS:  # wrong length: the checked path reports it
             return self._feed(can_id, data, timestamp)
-        session = self._new_session(shared, can_id, timestamp)
+        session, evicted = self._new_session(shared, can_id, timestamp)
         tid = tail & 0x1F
         session.tid = (tid + 1) & 0x1F
         session.closed = tid
         session.start = timestamp
         session.last = data
         self.transfers += 1
-        return _new_tuple(
+        transfer = _new_tuple(
             Transfer,
             (
                 message,
@@ -470,15 +547,20 @@ class Reassembler:
                 shared[2],
             ),
         )
+        return transfer if evicted is None else Problems((evicted,), transfer)
 
-    def _new_session(self, shared: tuple[Any, ...], can_id: int, timestamp: float) -> _Session:
-        """Add a session, first making room if the table is full.
+    def _new_session(
+        self, shared: tuple[Any, ...], can_id: int, timestamp: float
+    ) -> tuple[_Session, ProblemReport | None]:
+        """Add a session, first making room if the table is full; return it, and the
+        report of the transfer lost in making room (None if none was).
 
         The front of the age order is the session whose latest transfer began first; if
         any session is idle past the timeout, that one is. It is dropped (its incomplete
         transfer counted as TIMEOUT if it timed out, else as EVICTED).
         """
         sessions = self._sessions
+        evicted = None
         if len(sessions) < self.max_sessions:
             session = _Session(shared, can_id)
         else:
@@ -489,11 +571,11 @@ class Reassembler:
                     problem, detail = Problem.TIMEOUT, f"transfer id {session.tid}"
                 else:
                     problem, detail = Problem.EVICTED, "session table full"
-                self._report(problem, key, b"", timestamp, detail)
+                evicted = self._report(problem, key, b"", timestamp, detail)
             session.reset(shared, can_id)  # the dropped state, reused
         key = can_id & 0xFFFFFF
         sessions[key] = self._age[key] = session
-        return session
+        return session, evicted
 
     def _lost(self, session: _Session, can_id: int, tid: int, timestamp: float) -> None:
         """Remember transfer ``tid`` as lost: its other frames are now silent."""
@@ -511,15 +593,18 @@ class Reassembler:
         data: Any,
         timestamp: float,
         silent_from: float | None = None,
-    ) -> None:
-        """Drop the transfer in progress, counting it unless it was counted already.
+    ) -> ProblemReport | None:
+        """Drop the transfer in progress, counting it unless it was counted already;
+        return its report (None if it was counted before).
 
         Its remaining frames are silent for a timeout from ``silent_from`` (default: now).
         """
+        report = None
         if not session.counted:
-            self._report(problem, can_id, data, timestamp, f"transfer id {session.tid}")
+            report = self._report(problem, can_id, data, timestamp, f"transfer id {session.tid}")
         at = timestamp if silent_from is None else silent_from
         self._lost(session, can_id, session.tid, at)
+        return report
 
     def _recent(self, session: _Session, tid: int, timestamp: float) -> bool:
         """Whether transfer ``tid`` ended (delivered or lost) within the timeout."""
@@ -529,25 +614,26 @@ class Reassembler:
             return timestamp - session.closed_at <= self.timeout
         return False
 
-    def _start(
-        self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
-    ) -> Transfer | None:
+    def _start(self, session: _Session, can_id: int, data: bytes, tail: int, ts: float) -> Outcome:
         """A first frame: close what is in progress, then begin a transfer unless the
         frame repeats the transfer delivered last."""
-        tid = tail & 0x1F
         if session.buffer is not None and ts - session.start > self.timeout:
             # Dated from its own first frame: a new transfer with its id is not counted.
-            self._abandon(session, Problem.TIMEOUT, can_id, data, ts, session.start)
+            ended = self._abandon(session, Problem.TIMEOUT, can_id, data, ts, session.start)
+            return _join(ended, self._begin(session, can_id, data, tail, ts))
+        return self._begin(session, can_id, data, tail, ts)
+
+    def _begin(self, session: _Session, can_id: int, data: bytes, tail: int, ts: float) -> Outcome:
+        """A first frame, no transfer of its session in progress past the timeout."""
+        tid = tail & 0x1F
         again = session.closed == tid and ts - session.start <= self.timeout
         if again:
             if data == session.last:
-                self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-                return None
+                return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
             if tail & 0x40 or session.buffer is not None or session.last[-1] & 0xC0 != 0xC0:
-                self._report(
+                return self._problem(
                     Problem.UNEXPECTED_TRANSFER_ID, can_id, data, ts, f"transfer id {tid} again"
                 )
-                return None
             # A multi-frame transfer with the id of the single frame delivered last: no
             # sender reuses an id within the timeout, so one of the two is not what was
             # sent. A single frame has no CRC (a flipped bit in its tail byte gives it
@@ -558,23 +644,32 @@ class Reassembler:
         # it fails, it is not counted again; if it completes (the frame counted was not
         # its own), it is delivered.
         counted = not again and self._recent(session, tid, ts)
-        if session.buffer is not None:
-            if data == session.last:  # the same first frame: its buffer is unchanged
-                self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "first frame again")
-                session.start = ts  # a transfer is dated by the last copy of its first frame
-                self._touch(can_id & 0xFFFFFF)
-                return None
-            self._abandon(session, Problem.INTERRUPTED, can_id, data, ts)
+        if session.buffer is None:
+            return self._take_first(session, can_id, data, tail, ts, counted)
+        if data == session.last:  # the same first frame: its buffer is unchanged
+            session.start = ts  # a transfer is dated by the last copy of its first frame
+            self._touch(can_id & 0xFFFFFF)
+            return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "first frame again")
+        ended = self._abandon(session, Problem.INTERRUPTED, can_id, data, ts)
+        return _join(ended, self._take_first(session, can_id, data, tail, ts, counted))
+
+    def _take_first(
+        self, session: _Session, can_id: int, data: bytes, tail: int, ts: float, counted: bool
+    ) -> Outcome:
+        """A first frame, its session idle: deliver it, begin a transfer or drop it."""
+        tid = tail & 0x1F
         if tail & 0x20:
-            if not counted:
-                self._report(Problem.TOGGLE_ERROR, can_id, data, ts, "toggle set on first frame")
             self._lost(session, can_id, tid, ts)
-            return None
+            if counted:
+                return None
+            return self._problem(
+                Problem.TOGGLE_ERROR, can_id, data, ts, "toggle set on first frame"
+            )
         if not tail & 0x40 and len(data) != 8:
-            if not counted:
-                self._report(Problem.MALFORMED_FRAME, can_id, data, ts, "short first frame")
             self._lost(session, can_id, tid, ts)
-            return None
+            if counted:
+                return None
+            return self._problem(Problem.MALFORMED_FRAME, can_id, data, ts, "short first frame")
         session.start = ts
         session.last = data
         self._touch(can_id & 0xFFFFFF)
@@ -588,26 +683,25 @@ class Reassembler:
 
     def _continue(
         self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
-    ) -> Transfer | None:
+    ) -> Outcome:
         """A frame other than the first: the next of the transfer in progress, or a stray."""
         tid = tail & 0x1F
         buffer = session.buffer
         if buffer is not None and tid == session.tid:
             if ts - session.start > self.timeout:
-                self._abandon(session, Problem.TIMEOUT, can_id, data, ts)
-                return None
+                return _join(self._abandon(session, Problem.TIMEOUT, can_id, data, ts), None)
             if tail & 0x20 != session.toggle:
                 if data == session.last:
-                    self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-                else:
-                    self._abandon(session, Problem.TOGGLE_ERROR, can_id, data, ts)
-                return None
+                    return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
+                return _join(self._abandon(session, Problem.TOGGLE_ERROR, can_id, data, ts), None)
             if not tail & 0x40 and len(data) != 8:
-                self._abandon(session, Problem.MALFORMED_FRAME, can_id, data, ts)
-                return None
+                return _join(
+                    self._abandon(session, Problem.MALFORMED_FRAME, can_id, data, ts), None
+                )
             if len(buffer) + len(data) > session.limit:
-                self._abandon(session, Problem.PAYLOAD_TOO_LONG, can_id, data, ts)
-                return None
+                return _join(
+                    self._abandon(session, Problem.PAYLOAD_TOO_LONG, can_id, data, ts), None
+                )
             buffer += data[:-1]
             session.last = data
             if not tail & 0x40:
@@ -615,27 +709,28 @@ class Reassembler:
                 return None
             return self._complete(session, can_id, data, tid)
         if data == session.last:
-            self._report(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-        elif not self._recent(session, tid, ts):
-            # A frame of a transfer whose first frame was not seen. Only this transfer id
-            # is remembered; it does not change which transfer ids are accepted next.
-            self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
-            session.closed = tid + _LOST
-            session.closed_at = ts
-            if buffer is None:
-                session.tid = -1
-            self._touch(can_id & 0xFFFFFF)
-        return None
+            return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
+        if self._recent(session, tid, ts):
+            return None
+        # A frame of a transfer whose first frame was not seen. Only this transfer id is
+        # remembered; it does not change which transfer ids are accepted next.
+        session.closed = tid + _LOST
+        session.closed_at = ts
+        if buffer is None:
+            session.tid = -1
+        self._touch(can_id & 0xFFFFFF)
+        return self._problem(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
 
-    def _complete(self, session: _Session, can_id: int, data: Any, tid: int) -> Transfer | None:
+    def _complete(self, session: _Session, can_id: int, data: Any, tid: int) -> Outcome:
         """The last frame of a multi-frame transfer arrived: check the CRC and decode."""
         buffer = session.buffer
         assert buffer is not None
         payload = bytes(buffer[2:])
         crc = crc_hqx(payload, session.crc_seed)
         if crc != buffer[0] | buffer[1] << 8:
+            report = None
             if not session.counted:
-                self._report(
+                report = self._report(
                     Problem.CRC_MISMATCH,
                     can_id,
                     data,
@@ -643,7 +738,7 @@ class Reassembler:
                     f"CRC {buffer[0] | buffer[1] << 8:#06x}, computed {crc:#06x}",
                 )
             self._lost(session, can_id, tid, session.start)
-            return None
+            return _join(report, None)
         session.buffer = None
         try:
             message = session.decode_payload(payload)
@@ -669,15 +764,16 @@ class Reassembler:
 
     def _deliver(
         self, session: _Session, can_id: int, payload: Any, tid: int, ts: float, counted: bool
-    ) -> Transfer | None:
+    ) -> Outcome:
         """Decode a complete payload through the checked path and deliver it."""
         try:
             message = session.codec.decode(payload)
         except DecodeError as error:
+            report = None
             if not counted:
-                self._report(Problem.BAD_PAYLOAD, can_id, payload, ts, str(error))
+                report = self._report(Problem.BAD_PAYLOAD, can_id, payload, ts, str(error))
             self._lost(session, can_id, tid, ts)
-            return None
+            return _join(report, None)
         session.buffer = None
         session.counted = False
         session.closed = tid
@@ -712,11 +808,22 @@ class Reassembler:
         Raises:
             TypeError: ``timestamp`` is not a number.
         """
-        if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
-            raise argument_type_error("Reassembler.expire", "timestamp", "a float", timestamp)
-        return self._expire(timestamp)
+        return self._expire("Reassembler.expire", timestamp, [])
 
-    def _expire(self, timestamp: float) -> int:
+    def expire_reports(self, timestamp: float) -> list[ProblemReport]:
+        """`expire`, returning the reports of the transfers lost (`TIMEOUT`), in order.
+
+        Raises:
+            TypeError: ``timestamp`` is not a number.
+        """
+        reports: list[ProblemReport] = []
+        self._expire("Reassembler.expire_reports", timestamp, reports)
+        return reports
+
+    def _expire(self, function: str, timestamp: float, reports: list[ProblemReport]) -> int:
+        """`expire`: the number of sessions dropped; the reports appended to ``reports``."""
+        if not isinstance(timestamp, (int, float)) or isinstance(timestamp, bool):
+            raise argument_type_error(function, "timestamp", "a float", timestamp)
         age, timeout, dropped = self._age, self.timeout, 0
         while age:
             key = next(iter(age))
@@ -726,5 +833,7 @@ class Reassembler:
             del age[key], self._sessions[key]
             dropped += 1
             if session.buffer is not None and not session.counted:
-                self._report(Problem.TIMEOUT, key, b"", timestamp, f"transfer id {session.tid}")
+                reports.append(
+                    self._report(Problem.TIMEOUT, key, b"", timestamp, f"transfer id {session.tid}")
+                )
         return dropped

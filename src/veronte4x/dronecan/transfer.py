@@ -212,6 +212,34 @@ def _fast_type(key: int) -> _Single | None:
     return found
 
 
+_Route = tuple[Any, int, "int | None", int, TransferKind, int]
+"""What the single-frame fast path of `decode_frames` needs of a CAN ID: the generated frame
+decoder of its type, and the source node, destination node, priority, kind and data type id
+of its transfers."""
+
+_ROUTES: dict[int, _Route] = {}
+"""The `_Route` of each valid CAN ID of a type with a frame decoder, once a single frame
+of it went through the fast path (at most `_MAX_ROUTES`)."""
+
+_MAX_ROUTES = 4096
+
+
+def _add_route(can_id: int, fast: _Single) -> None:
+    """Remember the route of a valid CAN ID of the type ``fast``; forget every route first
+    when there are `_MAX_ROUTES` (a bus of that many CAN IDs is not the common case)."""
+    if len(_ROUTES) >= _MAX_ROUTES:
+        _ROUTES.clear()
+    service = can_id & 0x80
+    _ROUTES[can_id] = (
+        fast[3],
+        can_id & 0x7F,
+        (can_id >> 8) & 0x7F if service else None,
+        can_id >> 24,
+        fast[1],
+        fast[2],
+    )
+
+
 _FAST_ERRORS = DECODE_FALLBACK  # what the generated decoders raise
 _BYTES_LIKE = (bytes, bytearray, memoryview)
 
@@ -237,10 +265,27 @@ def decode_frames(
         TypeError: ``frames`` is not an iterable of ``(int, bytes-like)`` pairs, or
             ``timestamp`` is not a number.
     """
-    # Fast path: frames of a type with generated decoders, everything as expected. On
+    # Fast paths: frames of a type with generated decoders, everything as expected. On
     # anything else the checked path below decides, and raises the precise error.
     if frames.__class__ is list and timestamp.__class__ is float:
         count = len(frames)
+        if count == 1:  # a single frame, of a CAN ID seen before: one lookup
+            first = frames[0]
+            if first.__class__ is tuple and len(first) == 2:
+                can_id, data = first
+                route = _ROUTES.get(can_id) if can_id.__class__ is int else None
+                if route is not None and data.__class__ is bytes and data:
+                    tail = data[-1]
+                    if tail & 0xE0 == 0xC0:
+                        decode, source, destination, priority, kind, data_type_id = route
+                        try:  # the frame decoder checks the frame's length
+                            message = decode(data)
+                        except _FAST_ERRORS:
+                            pass
+                        else:
+                            return _new_tuple(Transfer, (message, source, destination, priority,
+                                                         tail & 0x1F, timestamp, kind,
+                                                         data_type_id))  # fmt: skip
         first = frames[0] if count else None
         if first.__class__ is tuple and len(first) == 2:
             can_id, data = first
@@ -254,6 +299,8 @@ def decode_frames(
                 key = 0x10000 | (can_id >> 15) & 0x1FF if service else (can_id >> 8) & 0xFFFF
                 fast = _FAST_TYPES.get(key) or _fast_type(key)
                 if fast is not None and can_id & 0x7F and (not service or can_id & 0x7F00):
+                    if count == 1 and fast[3] is not None:
+                        _add_route(can_id, fast)
                     try:
                         if count == 1:  # a single frame (the frame decoder checks its length)
                             decode = fast[3]
@@ -284,15 +331,16 @@ def decode_frames(
 
 
 _new_tuple = tuple.__new__
+_MAX_FRAMES = len(MULTI_FRAME_TAILS[0])  # the most frames of a transfer, plus one
 
 
 def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
     """The message of a multi-frame transfer, or None to let the checked path decide."""
-    if count >= len(MULTI_FRAME_TAILS[0]):
+    if count >= _MAX_FRAMES:
         return None
     chunks = []
-    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]
-    for frame, tail in zip(frames, tails, strict=True):
+    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]  # one per frame
+    for frame, tail in zip(frames, tails, strict=False):  # as many tails as frames
         if frame.__class__ is not tuple or len(frame) != 2:
             return None
         frame_id, data = frame

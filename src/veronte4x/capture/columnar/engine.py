@@ -85,16 +85,8 @@ def _dropped_channels(
         code = frames.channels.index(name)
         if whole[code] or reassembler.session_count == 0:
             continue
-        before = reassembler.reported
-        reassembler.expire(math.inf)
-        new = reassembler.reported - before
-        keys = [
-            report.can_id
-            for report in list(reassembler.problems)[len(reassembler.problems) - new :]
-        ]
-        if new > len(reassembler.problems) or (
-            keys and dronecan.dropped_after(frames.channel[rows], frames.can_id[rows], code, keys)
-        ):
+        keys = [report.can_id for report in reassembler.expire_reports(math.inf)]
+        if keys and dronecan.dropped_after(frames.channel[rows], frames.can_id[rows], code, keys):
             found.append(code)
     return found
 

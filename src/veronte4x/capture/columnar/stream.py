@@ -281,12 +281,7 @@ class StreamDecoder:
             code = self._channel_ids.get(name)
             if code is None or not crowded[code] or name in self.per_frame_channels:
                 continue
-            before = reassembler.reported
-            reassembler.expire(math.inf)
-            new = reassembler.reported - before
-            if new > len(reassembler.problems):
-                raise TooManySessions(name)
-            reports = list(reassembler.problems)[len(reassembler.problems) - new :]
+            reports = reassembler.expire_reports(math.inf)
             keys = np.array([code << 24 | report.can_id for report in reports], np.int64)
             last = self._last[np.searchsorted(self._keys_seen, keys)]
             channel = np.full(len(keys), code, np.int32)
@@ -392,7 +387,7 @@ class StreamDecoder:
             while at < len(rows) and context[rows[at]]:  # the last whole transfer, again
                 row = int(rows[at])
                 data = frames.data[row, : frames.length[row]].tobytes()
-                reassembler.feed(int(frames.can_id[row]), data, float(stamp[row]))
+                reassembler.push(int(frames.can_id[row]), data, float(stamp[row]))
                 at += 1
 
     def _carry(

@@ -1,0 +1,110 @@
+"""The single-frame fast path of `decode_frames` (a route per CAN ID seen before) against
+the checked path, on every type with a frame decoder.
+
+Each case is decoded twice, so that the second call takes the route the first one left
+(the route of a valid CAN ID is kept whatever its frame held), and both results must be
+the checked path's: the same transfer, or the same error. Frames are drawn from valid
+payloads and faults: payloads cut, extended or changed, arbitrary tail bytes, CAN IDs with
+a bit flipped or node id 0, data as bytearray, timestamps that are not floats.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from test_dronecan_compiled import _payloads
+
+from veronte4x import dronecan
+from veronte4x.dronecan import transfer as transfer_module
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.codec import CODECS, Codec, can_id_base
+
+SINGLE = [c for c in CODECS if c.fast.decode_frame is not None]
+_IDS = [f"{c.data_type.full_name}-{c.data_type.kind.name}" for c in SINGLE]
+
+
+def _outcome(function: Any, *args: Any) -> Any:
+    try:
+        return function(*args)
+    except (dronecan.DecodeError, TypeError) as error:
+        return type(error), str(error)
+
+
+def _checked(frames: Any, timestamp: Any) -> Any:
+    return _outcome(
+        lambda: transfer_module._decode_frames_checked(
+            transfer_module._frame_list(frames), transfer_module._check_timestamp(timestamp)
+        )
+    )
+
+
+@st.composite
+def _frame(draw: st.DrawFn, codec: Codec) -> tuple[int, Any, Any]:
+    payload = draw(_payloads(codec))[:8]
+    tail = draw(st.one_of(st.integers(0, 31).map(lambda t: 0xC0 | t), st.integers(0, 255)))
+    data: Any = payload[:7] + bytes([tail]) if draw(st.integers(0, 9)) else payload
+    can_id = draw(st.integers(0, 31)) << 24 | can_id_base(codec.data_type)
+    can_id |= draw(st.integers(0, 127) if draw(st.integers(0, 9)) else st.just(0))
+    if codec.data_type.kind is not TransferKind.MESSAGE:
+        can_id |= draw(st.integers(0, 127)) << 8
+    if not draw(st.integers(0, 9)):
+        can_id ^= 1 << draw(st.integers(0, 31))
+    if not draw(st.integers(0, 9)):
+        data = bytearray(data)
+    timestamp = draw(st.sampled_from([0.0, 1.5, 1.7e9, 2, None]))
+    return can_id, data, timestamp
+
+
+@pytest.mark.parametrize("codec", SINGLE, ids=_IDS)
+@settings(max_examples=40)
+@given(data=st.data())
+def test_the_route_of_a_can_id_decodes_as_the_checked_path(
+    codec: Codec, data: st.DataObject
+) -> None:
+    can_id, payload, timestamp = data.draw(_frame(codec), label="frame")
+    frames = [(can_id, payload)]
+    expected = _checked(frames, timestamp)
+    for _ in range(2):  # the first call may leave a route that the second one takes
+        assert _outcome(dronecan.decode_frames, frames, timestamp) == expected
+
+
+def test_the_routes_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Past the bound every route is forgotten; decoding goes on the same."""
+    monkeypatch.setattr(transfer_module, "_MAX_ROUTES", 3)
+    monkeypatch.setattr(transfer_module, "_ROUTES", {})
+    for source in range(1, 40):
+        ((can_id, data),) = [
+            (f.can_id, f.data)
+            for f in dronecan.encode(
+                dronecan.NodeStatus(source, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0),
+                source_node_id=source,
+                transfer_id=source % 32,
+            )
+        ]
+        for _ in range(2):
+            transfer = dronecan.decode_frames([(can_id, data)], 1.0)
+            assert transfer == transfer_module._decode_frames_checked([(can_id, data)], 1.0)
+        assert 1 <= len(transfer_module._ROUTES) <= 3
+
+
+def test_a_known_can_id_takes_the_route(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Once a CAN ID was seen, its single frames decode without the type lookup."""
+    ((can_id, data),) = [
+        (f.can_id, f.data)
+        for f in dronecan.encode(
+            dronecan.GetNodeInfoRequest(), source_node_id=9, destination_node_id=3, transfer_id=4
+        )
+    ]
+    first = dronecan.decode_frames([(can_id, data)], 2.0)
+    assert can_id in transfer_module._ROUTES
+
+    def refuse(key: int) -> None:
+        raise AssertionError("looked the type up again")
+
+    monkeypatch.setattr(transfer_module, "_fast_type", refuse)
+    monkeypatch.setattr(transfer_module, "_FAST_TYPES", {})
+    assert dronecan.decode_frames([(can_id, data)], 2.0) == first
+    assert first == (dronecan.GetNodeInfoRequest(), 9, 3, 16, 4, 2.0, TransferKind.REQUEST, 1)
