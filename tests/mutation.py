@@ -12,12 +12,13 @@ subprocesses inherit it). A test failure, an import error or a timeout kills a m
 
 The sample is stratified: the same number of mutants from each package (``codec``,
 ``dronecan``, ``arbiter``, ``capture`` with ``columnar`` and ``readers``, ``client``,
-``simulator``, ``cli``, ``variables`` and the top-level modules as ``core``), drawn with a
+``node``, ``simulator``, ``cli``, ``variables`` and the top-level modules as ``core``), drawn with a
 seed, so a run is reproducible (hypothesis runs derandomized). Run from the repository
 root::
 
     .venv/bin/python tests/mutation.py                    # 300 mutants, --random 4792
     .venv/bin/python tests/mutation.py --size 30 --jobs 2 # a quick look on two cores
+    .venv/bin/python tests/mutation.py --first 5          # 5 of each package's 30
     .venv/bin/python tests/mutation.py --list             # the sample, not run
     .venv/bin/python tests/mutation.py codec/core.py:41   # some mutants by name
 
@@ -48,8 +49,8 @@ ROOT = Path(__file__).resolve().parent.parent
 PACKAGE = ROOT / "src" / "veronte4x"
 SEED = 4792
 SIZE = 300
-PACKAGES: tuple[str, ...] = ("codec", "dronecan", "arbiter", "capture", "client", "simulator")
-PACKAGES += ("cli", "variables", "core")
+PACKAGES: tuple[str, ...] = ("codec", "dronecan", "arbiter", "capture", "client", "node")
+PACKAGES += ("simulator", "cli", "variables", "core")
 COMMON_TESTS = ("tests/test_argument_types.py", "tests/test_errors.py")
 _SLOW = ("differential", "oracle", "faults", "dataset", "fleet", "notebook", "examples")
 """Test files that compare against a reference or start a cluster: run last."""
@@ -268,6 +269,17 @@ def sample(
     return chosen
 
 
+def first_of_each(mutants: list[Mutant], count: int) -> list[Mutant]:
+    """The first ``count`` mutants of each package's share of a sample, taken in turns (the
+    first of each package, then the second, ...): a smaller stratified sample, part of the
+    larger one (a share is a random draw, so its start is one too), and a run stopped early
+    has tried every package about as often."""
+    shares: dict[str, list[Mutant]] = {}
+    for mutant in mutants:
+        shares.setdefault(package_of(mutant.module), []).append(mutant)
+    return [share[turn] for turn in range(count) for share in shares.values() if turn < len(share)]
+
+
 def _files(patterns: tuple[str, ...]) -> list[str]:
     names: list[str] = []
     for pattern in patterns:
@@ -284,6 +296,8 @@ def package_tests(package: str) -> list[str]:
         names = _files(("tests",))
     elif package == "cli":
         names = _files(_CLI_TESTS)
+    elif package == "node":  # the DroneCAN node's parts, shared by the client and the ESCs
+        names = _files(("tests/client", "tests/simulator"))
     else:
         names = _files((f"tests/{package}",))
     quick = [name for name in names if not any(word in name for word in _SLOW)]
@@ -377,6 +391,9 @@ def main() -> None:
     )
     parser.add_argument("--size", type=int, default=SIZE)
     parser.add_argument("--packages", default=",".join(PACKAGES), help="comma-separated")
+    parser.add_argument(
+        "--first", type=int, help="run only the first N of each package's share of the sample"
+    )
     parser.add_argument("--jobs", type=int, default=1, help="mutants run at once")
     parser.add_argument("--timeout", type=float, help="seconds per mutant (no baseline run)")
     parser.add_argument("--report", type=Path, help="write the scores and survivors here")
@@ -389,6 +406,8 @@ def main() -> None:
     else:
         packages = tuple(arguments.packages.split(","))
         mutants = sample(arguments.seed, arguments.size, packages)
+        if arguments.first is not None:
+            mutants = first_of_each(mutants, arguments.first)
     print(f"{len(mutants)} of {len(every)} mutants, seed {arguments.seed}", flush=True)
     if arguments.list:
         for mutant in mutants:
@@ -423,12 +442,15 @@ def main() -> None:
             print(f"{outcome:8}  {mutant.name}  line {mutant.line}  {mutant.change}", flush=True)
             return outcome
 
+        outcomes: list[str] = []
         with ThreadPoolExecutor(arguments.jobs) as pool:
-            outcomes = list(pool.map(run, mutants))
+            for outcome in pool.map(run, mutants):
+                outcomes.append(outcome)
+                if arguments.report is not None:  # so far: a run stopped early has one
+                    done = list(zip(mutants, outcomes, strict=False))
+                    arguments.report.write_text(report(done, arguments.seed))
     text = report(list(zip(mutants, outcomes, strict=True)), arguments.seed)
     print(text)
-    if arguments.report is not None:
-        arguments.report.write_text(text)
 
 
 if __name__ == "__main__":

@@ -40,14 +40,43 @@ head columns (``channel``, ``timestamp``, ``can_id``, ``node_id``, ``sender``,
 ``destination_node_id``, ``error``, ``detail``, ``data``)."""
 VENDOR_TYPES = TypeSet.standard().with_dsdl(*VENDOR_DSDL)
 
-BUS_MAPS = st.sampled_from(
-    [
-        BusMap(),
-        BusMap(pwm_packing=codec.PwmPacking.MSB_FIRST),
-        BusMap(layouts=(DECLARED,), allow_excess=True),
-        BusMap(arbiter_id=0x100, autopilot_ids=(0x101, 0x102, 0x103, 0x104), extended=True),
-    ]
+_NODE_STATUS_OF_20 = 16 << 24 | 341 << 8 | 20
+"""The 29-bit id of a NodeStatus from node 20: a Veronte id may take a DroneCAN one."""
+
+
+@st.composite
+def drawn_bus_maps(draw: st.DrawFn) -> BusMap:
+    """A bus map with any five Veronte ids of either width (29-bit ones among the DroneCAN
+    ids too, where the bus map wins), with or without DroneCAN and declared layouts."""
+    extended = draw(st.booleans())
+    top = 2**29 - 1 if extended else 0x7FF
+    some = st.integers(0, top) | st.sampled_from([0, top])
+    if extended:
+        some |= st.just(_NODE_STATUS_OF_20)
+    ids = draw(st.lists(some, min_size=5, max_size=5, unique=True))
+    return BusMap(
+        arbiter_id=ids[0],
+        autopilot_ids=(ids[1], ids[2], ids[3], ids[4]),
+        extended=extended,
+        pwm_packing=draw(st.sampled_from(codec.PwmPacking)),
+        allow_excess=draw(st.booleans()),
+        layouts=draw(st.sampled_from([(), (DECLARED,)])),
+        dronecan=draw(st.booleans()),
+    )
+
+
+BUS_MAPS = (
+    st.sampled_from(
+        [
+            BusMap(),
+            BusMap(pwm_packing=codec.PwmPacking.MSB_FIRST),
+            BusMap(layouts=(DECLARED,), allow_excess=True),
+            BusMap(arbiter_id=0x100, autopilot_ids=(0x101, 0x102, 0x103, 0x104), extended=True),
+        ]
+    )
+    | drawn_bus_maps()
 )
+"""Four fixed bus maps, and drawn ones."""
 VENDOR_BUS_MAPS = BUS_MAPS.map(lambda bus_map: bus_map.with_types(VENDOR_TYPES))
 """The bus maps with the vendor type set."""
 

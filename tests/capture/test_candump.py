@@ -7,10 +7,12 @@ from hypothesis import strategies as st
 
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers import parse_candump
+from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
 from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
 T = 1436509052.0
+T1 = T + 0.249713
 
 
 def test_every_line_of_the_odd_capture() -> None:
@@ -116,3 +118,85 @@ def test_uavcan_file_read_transfer_with_hash_in_ascii_column() -> None:
         Frame(1600000000.0001, "can0", 0x1030427F, bytes.fromhex("0000000000232f88"), True),
         Frame(1600000000.0002, "can0", 0x1030427F, bytes.fromhex("232348"), True),
     ]
+
+
+_FORMS: tuple[str, ...] = (
+    "plain",
+    "direction",
+    "remote",
+    "remote_dlc",
+    "fd",
+    "raw_dlc",
+    "error",
+    "human",
+)
+_FORMS += ("human_remote", "human_error", "human_fd")
+
+
+@settings(max_examples=200)
+@given(
+    st.binary(min_size=0, max_size=8),
+    _IDS,
+    st.sampled_from(_FORMS),
+    st.sampled_from(["can0", "vcan1"]),
+)
+def test_every_candump_form_with_11_and_29_bit_ids(
+    data: bytes, ident: tuple[int, bool], form: str, channel: str
+) -> None:
+    """Each form of the module docstring, for any id of either width: the frame's id, width
+    and kind; parse_candump (with its fast path) and parse_line agree."""
+    can_id, extended = ident
+    text = f"{can_id:08X}" if extended else f"{can_id:03X}"
+    error_text = f"{can_id | CAN_ERR_FLAG:08X}"
+    hexbytes = data.hex().upper()
+    spaced = " ".join(f"{b:02X}" for b in data)
+    stamp = "(1436509052.249713)"
+    line, expected = {
+        "plain": (
+            f"{stamp} {channel} {text}#{hexbytes}",
+            Frame(T1, channel, can_id, data, extended),
+        ),
+        "direction": (
+            f"{stamp} {channel} {text}#{hexbytes} T",
+            Frame(T1, channel, can_id, data, extended),
+        ),
+        "remote": (
+            f"{stamp} {channel} {text}#R",
+            Frame(T1, channel, can_id, b"", extended, remote=True),
+        ),
+        "remote_dlc": (
+            f"{stamp} {channel} {text}#R{len(data)}",
+            Frame(T1, channel, can_id, b"", extended, remote=True),
+        ),
+        "fd": (
+            f"{stamp} {channel} {text}##1{hexbytes}",
+            Frame(T1, channel, can_id, data, extended, fd=True),
+        ),
+        "raw_dlc": (
+            f"{stamp} {channel} {text}#{hexbytes}_{len(data) or 9:X}",
+            Frame(T1, channel, can_id, data, extended),
+        ),
+        "error": (
+            f"{stamp} {channel} {error_text}#{hexbytes}",
+            Frame(T1, channel, can_id, data, True, error=True),
+        ),
+        "human": (
+            f"{stamp}  {channel}  {text}   [{len(data)}]  {spaced}",
+            Frame(T1, channel, can_id, data, extended),
+        ),
+        "human_remote": (
+            f"  {channel}  {text}   [{len(data)}]  remote request",
+            Frame(None, channel, can_id, b"", extended, remote=True),
+        ),
+        "human_error": (
+            f"  {channel}  {error_text}   [{len(data)}]  {spaced}   ERRORFRAME",
+            Frame(None, channel, can_id, data, True, error=True),
+        ),
+        "human_fd": (
+            f"{stamp}  {channel}  {text}  [{len(data) + 12:02d}]  {spaced} {'00 ' * 12}",
+            Frame(T1, channel, can_id, data + bytes(12), extended, fd=True),
+        ),
+    }[form]
+    assert list(parse_candump([line + "\n"])) == [expected]
+    assert parse_line(line, 1) == expected
+    assert list(parse_candump([line], "other")) == []

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from veronte4x import dronecan
-from veronte4x.capture.columnar.dronecan import type_index
+from veronte4x.capture.columnar.dronecan import type_index, type_index_of
 from veronte4x.dronecan import Problem
+from veronte4x.dronecan.codec import can_id_base
 
 _STATUS = dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
 
@@ -62,3 +64,17 @@ def test_type_index_refuses_what_the_reassembler_refuses(can_id: int) -> None:
         assert refused
     else:
         assert refused == _refused_by_the_reassembler(can_id)
+
+
+@pytest.mark.parametrize(("source", "destination"), [(21, 22), (127, 1), (1, 127)])
+def test_every_type_is_found_by_its_can_id(source: int, destination: int) -> None:
+    """Each type of the default set, a message from ``source`` or a request or response from
+    ``source`` to ``destination``, at its own index (a request and its response apart)."""
+    known = type_index_of()
+    ids = []
+    for codec in known.codecs:
+        service = codec.data_type.kind is not dronecan.TransferKind.MESSAGE
+        to = destination << 8 if service else 0
+        ids.append(16 << 24 | can_id_base(codec.data_type) | source | to)
+    found = type_index(np.array(ids, dtype=np.uint32), known).tolist()
+    assert found == list(range(len(known.codecs)))
