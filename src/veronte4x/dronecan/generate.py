@@ -305,7 +305,7 @@ def _python_type(t: FieldType, p: Plan, enum: str | None) -> tuple[str, str]:
     if isinstance(t, ArrayType):
         item = t.item
         if isinstance(item, PrimitiveType) and item.kind == "uint" and item.bits == 8:
-            return "bytes", 'b""'
+            return "bytes", 'b""' if t.dynamic else f"bytes({t.max_size})"
         inner = _python_type(item, p, None)[0]
         if t.dynamic:
             return f"tuple[{inner}, ...]", "()"

@@ -1429,7 +1429,7 @@ class HardwareVersion(HtmlDisplay):
 
     major: int = 0
     minor: int = 0
-    unique_id: bytes = b""
+    unique_id: bytes = bytes(16)
     certificate_of_authenticity: bytes = b""
 
 
@@ -1781,7 +1781,7 @@ class Entry(HtmlDisplay):
 
     term: int = 0
     """Refer to the Raft paper for explanation."""
-    unique_id: bytes = b""
+    unique_id: bytes = bytes(16)
     """Unique ID of this allocation."""
     node_id: int = 0
     """Node ID of this allocation."""
