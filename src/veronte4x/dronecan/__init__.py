@@ -14,7 +14,7 @@ from veronte4x.dronecan.can_id import (
     service_can_id,
 )
 from veronte4x.dronecan.codec import decode_payload
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
     BeginFirmwareUpdateResponse,
@@ -36,10 +36,10 @@ from veronte4x.dronecan.messages import (
     GetNodeInfoResponse,
     GetSetRequest,
     GetSetResponse,
+    HandNamedMessage,
     HardwareVersion,
     Health,
     IntegerValue,
-    Message,
     Mode,
     NodeStatus,
     NumericValue,
@@ -93,15 +93,14 @@ __all__ = [
     "FileReadRequest",
     "FileReadResponse",
     "FirmwareUpdateError",
-    "Frame",
     "GetNodeInfoRequest",
     "GetNodeInfoResponse",
     "GetSetRequest",
     "GetSetResponse",
+    "HandNamedMessage",
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",
     "Mode",
     "NodeStatus",
     "NumericValue",
@@ -120,6 +119,7 @@ __all__ = [
     "Temperature",
     "TemperatureErrorFlag",
     "Transfer",
+    "TransferFrame",
     "TransferKind",
     "TypeSet",
     "Value",

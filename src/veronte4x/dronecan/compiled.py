@@ -1,4 +1,4 @@
-"""Fast paths generated from the type definitions, on a type's first use (`codec.Codec.fast`).
+"""Fast paths generated from the type definitions, on a type's first use (`codec.TypeCodec.fast`).
 
 For a struct of scalars at fixed bit offsets (NodeStatus, esc.Status, Temperature,
 RestartNode, the empty GetNodeInfo request) this module writes Python functions that go
@@ -54,7 +54,7 @@ from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
 
 FramesFunction = Callable[[Any, int, int, int, Any], list[Any]]
 PayloadEncoder = Callable[[Any], bytes]
-Decoder = Callable[[bytes], Any]
+PayloadDecoder = Callable[[bytes], Any]
 
 
 class SlowPath(Exception):
@@ -86,8 +86,8 @@ class FastPaths(NamedTuple):
 
     frames: FramesFunction
     payload: PayloadEncoder
-    decode: Decoder
-    decode_frame: Decoder | None
+    decode: PayloadDecoder
+    decode_frame: PayloadDecoder | None
 
 
 def stream_position(offset: int, bits: int, bit: int) -> int:

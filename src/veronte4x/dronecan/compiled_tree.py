@@ -48,9 +48,9 @@ from veronte4x.dronecan.compiled import (
 )
 from veronte4x.dronecan.schema import (
     Array,
-    Field,
     Scalar,
     Struct,
+    StructField,
     Union,
     max_bits,
     min_bits,
@@ -200,7 +200,7 @@ class _Chunk(NamedTuple):
     enums: list[type | None]
 
 
-def _chunks(fields: tuple[Field, ...]) -> Iterator[_Chunk | tuple[int, Field]]:
+def _chunks(fields: tuple[StructField, ...]) -> Iterator[_Chunk | tuple[int, StructField]]:
     """The fields of a struct, runs of scalars as one `_Chunk`, others with their index."""
     run = _Chunk([], [], [])
     for i, f in enumerate(fields):

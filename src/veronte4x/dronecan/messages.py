@@ -80,10 +80,10 @@ __all__ = [
     "GetNodeInfoResponse",
     "GetSetRequest",
     "GetSetResponse",
+    "HandNamedMessage",
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",
     "Mode",
     "NodeStatus",
     "NumericValue",
@@ -101,7 +101,7 @@ __all__ = [
     "Value",
 ]
 
-Message: TypeAlias = (
+HandNamedMessage: TypeAlias = (
     NodeStatus
     | EscStatus
     | Temperature

@@ -29,11 +29,11 @@ from veronte4x.progress import Bar
 
 __all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
 
-Source = str | os.PathLike[str]
+CapturePath = str | os.PathLike[str]
 
 
 def read_tables(
-    source: Source | Iterable[Source],
+    source: CapturePath | Iterable[CapturePath],
     bus_map: BusMap | None = None,
     channel: str | None = None,
     time: str = "timestamp",
@@ -77,7 +77,7 @@ class _Advance:
             self._reached += step
 
 
-def _size(path: Source) -> int:
+def _size(path: CapturePath) -> int:
     """Bytes of a capture file, for the progress bar (0 for standard input or a bad path,
     which the reader reports)."""
     try:
@@ -87,7 +87,7 @@ def _size(path: Source) -> int:
 
 
 def keyed_tables(
-    path: Source,
+    path: CapturePath,
     bus_map: BusMap | None,
     channel: str | None,
     time: str = "timestamp",
@@ -112,7 +112,7 @@ def keyed_tables(
 
 
 def _batched(
-    path: Source,
+    path: CapturePath,
     bus_map: BusMap | None,
     channel: str | None,
     reached: Callable[[int], None] | None,
