@@ -45,6 +45,8 @@ from veronte4x.errors import (
 )
 
 SentFrame = tuple[int, bytes]
+"""A frame the model sends: its CAN ID and data (`Arbiter.poll`)."""
+
 _AUTOPILOTS = range(4)
 _FLOAT32 = struct.Struct("<f")
 _DEATH_CAUSES = {

@@ -30,6 +30,7 @@ from veronte4x.errors import BytesLike, argument_type_error
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 
 IdRoute = tuple[Role, int | None, FrameDecoder]
+"""Where the bus map sends a Veronte CAN ID: its role, autopilot index and decoder."""
 
 
 class CaptureDecoder:

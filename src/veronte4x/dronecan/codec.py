@@ -28,7 +28,8 @@ from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 
 class TypeCodec:
-    """The payload functions of one top-level type.
+    """The payload functions of one top-level DroneCAN type (the Veronte messages' codec is
+    `veronte4x.codec.Codec`).
 
     Attributes:
         data_type: The type definition.
@@ -89,16 +90,20 @@ def can_id_base(data_type: DataType) -> int:
     return data_type.data_type_id << 16 | request | 0x80
 
 
+Codec = TypeCodec  # old name, kept as an alias
+"""`TypeCodec` under its earlier name, kept for code that imports it from here."""
+
+
 CODECS: tuple[TypeCodec, ...] = tuple(TypeCodec(t) for t in DATA_TYPES)
-"""One codec per top-level type, in the order of `DATA_TYPES`."""
+"""One `TypeCodec` per top-level type, in the order of `DATA_TYPES`."""
 
 BY_CLASS: dict[type, TypeCodec] = {c.data_type.schema.cls: c for c in CODECS}
-"""TypeCodec of each message, request and response class."""
+"""The `TypeCodec` of each message, request and response class."""
 
 BY_ID: dict[tuple[TransferKind, int], TypeCodec] = {
     (c.data_type.kind, c.data_type.data_type_id): c for c in CODECS
 }
-"""TypeCodec of each (kind, data type id)."""
+"""The `TypeCodec` of each (kind, data type id)."""
 
 
 def decode_payload(kind: TransferKind, data_type_id: int, payload: BytesLike) -> Any:

@@ -1,4 +1,5 @@
-"""The CAN frame type that `encode` returns."""
+"""The CAN frame of a DroneCAN transfer, as `encode` returns it (a captured frame, with its
+time and channel, is `veronte4x.capture.Frame`)."""
 
 from __future__ import annotations
 
@@ -13,3 +14,7 @@ class TransferFrame(NamedTuple):
 
     can_id: int
     data: bytes
+
+
+Frame = TransferFrame  # old name, kept as an alias
+"""`TransferFrame` under its earlier name, kept for code that imports it."""

@@ -49,8 +49,8 @@ class TypeSet:
 
     Attributes:
         codecs: The payload codec of every top-level type.
-        by_id: TypeCodec of each (kind, data type id).
-        by_class: TypeCodec of each message, request and response class.
+        by_id: The `TypeCodec` of each (kind, data type id).
+        by_class: The `TypeCodec` of each message, request and response class.
         classes: Class of each key (full name, ``.Request``/``.Response`` for a service).
         roots: The vendor root namespace directories loaded, in order.
         definitions: Every parsed definition, by full name.

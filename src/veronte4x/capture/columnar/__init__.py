@@ -30,6 +30,7 @@ from veronte4x.progress import Bar
 __all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
 
 CapturePath = str | os.PathLike[str]
+"""The path of a capture file (``-`` for standard input)."""
 
 
 def read_tables(
