@@ -18,7 +18,7 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import batches, frame
+from veronte4x.capture.columnar import batches
 from veronte4x.capture.columnar.batches import ahead, read_batches
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
 from veronte4x.capture.columnar.sources import read_frames
@@ -27,7 +27,7 @@ from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.source import STDIN
 from veronte4x.progress import Bar
 
-__all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
+__all__ = ["keyed_tables", "read_tables", "tables_from_records"]
 
 CapturePath = str | os.PathLike[str]
 """The path of a capture file (``-`` for standard input)."""
