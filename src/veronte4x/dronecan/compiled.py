@@ -193,7 +193,7 @@ class Transport(NamedTuple):
 
 def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transport) -> None:
     """Emit the end of a frames function: from a big-endian payload int to the frames."""
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if size <= 7:
         data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
@@ -333,7 +333,7 @@ def _emit_struct_frames(
     src: _Source, size: int, layout: str, values: list[str], transport: Transport
 ) -> None:
     """Emit the end of a frames function packing the groups with ``struct``."""
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"

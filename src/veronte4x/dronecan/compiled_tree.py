@@ -744,7 +744,7 @@ def compile_tree(schema: Struct, transport: Transport) -> FastPaths:
         MFT=MULTI_FRAME_TAILS,
     )
     src.lines += _Encoder(src, schema).function()
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"
