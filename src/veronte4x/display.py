@@ -34,6 +34,7 @@ class HtmlDisplay:
 
 
 Cells = tuple[Any, ...]
+"""The cells of one table row, left to right."""
 
 
 def to_html(value: Any) -> str:

@@ -29,6 +29,7 @@ from veronte4x.numbers import shortest
 #: One captured frame: (timestamp in s, CAN ID, data bytes).
 CapturedFrame = tuple[float, int, bytes]
 FieldValue = bool | int | float | str | None
+"""The value of a compared field, as recorded or as modelled."""
 
 _FLAG_FIELDS = ("alive", "ready")
 
