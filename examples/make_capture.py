@@ -80,7 +80,9 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
     end = minutes * 60.0
     ticks = int(end / TICK)
 
-    def deliver(time: float, frames: Iterator[dronecan.Frame] | list[dronecan.Frame]) -> None:
+    def deliver(
+        time: float, frames: Iterator[dronecan.TransferFrame] | list[dronecan.TransferFrame]
+    ) -> None:
         for offset, frame in enumerate(frames):
             stamp = time + offset * 0.0002
             bus.send(stamp, frame.can_id, frame.data, extended=True)

@@ -142,45 +142,49 @@ CASES: list[tuple[str, Callable[[], Any], str]] = [
         "Linear(): decoded_max must be a number, not str",
     ),
     ("Field kind", _call(codec.Field, "unsigned", 8), "Field(): kind must be a FieldKind, not str"),
-    ("Field bits", _call(codec.Field, codec.Kind.UNSIGNED, 8.0), "Field(): bits must be an int"),
+    (
+        "Field bits",
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8.0),
+        "Field(): bits must be an int",
+    ),
     (
         "Field attr",
-        _call(codec.Field, codec.Kind.UNSIGNED, 8, 1),
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8, 1),
         "Field(): attr must be a str or None, not int",
     ),
     (
         "Field index",
-        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", "0"),
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8, "a", "0"),
         "Field(): index must be an int or None, not str",
     ),
     (
         "Field value",
-        _call(codec.Field, codec.Kind.CONSTANT, 8, value=True),
+        _call(codec.Field, codec.FieldKind.CONSTANT, 8, value=True),
         "Field(): value must be an int, not bool",
     ),
     (
         "Field maximum",
-        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", maximum=9.0),
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8, "a", maximum=9.0),
         "Field(): maximum must be an int or None, not float",
     ),
     (
         "Field scale",
-        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", scale=1),
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8, "a", scale=1),
         "Field(): scale must be a Linear or None, not int",
     ),
     (
         "Field description",
-        _call(codec.Field, codec.Kind.UNSIGNED, 8, "a", description=None),
+        _call(codec.Field, codec.FieldKind.UNSIGNED, 8, "a", description=None),
         "Field(): description must be a str, not NoneType",
     ),
     (
         "Field name",
-        _call(codec.Field, codec.Kind.PADDING, 8, name=None),
+        _call(codec.Field, codec.FieldKind.PADDING, 8, name=None),
         "Field(): name must be a str, not NoneType",
     ),
     (
         "Field mapping",
-        _call(codec.Field, codec.Kind.MAPPED, 8, "a", mapping=[(0, "x")]),
+        _call(codec.Field, codec.FieldKind.MAPPED, 8, "a", mapping=[(0, "x")]),
         "Field(): mapping must be a tuple of (wire value, value) pairs, not list",
     ),
     # veronte4x.dronecan

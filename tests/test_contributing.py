@@ -27,7 +27,8 @@ def _blocks(section: str) -> list[tuple[str, str, str]]:
     end = text.find("\n## ", start + 1)
     found = []
     for indent, code in _BLOCK.findall(text[start : end if end > 0 else None]):
-        code = textwrap.dedent("".join(line[len(indent) :] for line in code.splitlines(True)))
+        lines = code.splitlines(True)
+        code = textwrap.dedent("".join(line[len(indent) :] or line for line in lines))
         where = _WHERE.match(code)
         assert where is not None, f"a block of {section!r} does not say where it goes"
         found.append((where.group(1), where.group(2), code[where.end() :]))
@@ -176,7 +177,131 @@ def test_adding_a_command(scratch: Path) -> None:
     assert "count" in helped.stdout
 
 
+_LOG_FORMAT_CHECK = """
+import gzip, shutil
+from veronte4x import capture
+from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.errors import SourceError
+
+# The frames of the frame text file are those of the same capture in candump text, and its
+# comment, blank and bad lines are what the page says.
+read = [f for f in capture.open_frames("capture.frames")]
+same = [f for f in capture.open_frames("capture.log")]
+assert [f for f in read if type(f) is Frame] == same, (len(read), len(same))
+assert [f for f in read if type(f) is not Frame] == [
+    BadLine(5, "1763737200.0 can0 08 00", "not TIME CHANNEL ID DATA"),
+    BadLine(6, "1763737200.0 can0", "not TIME CHANNEL ID DATA"),
+]
+nodestatus = Frame(1763737299.25, "vcan1", 0x1001552A, bytes.fromhex("05000000000000c3"), True)
+assert read[-1] == nodestatus
+
+# Its records: those of the candump copy, and a record per bad line.
+records = list(capture.read("capture.frames"))
+expected = list(capture.read("capture.log"))
+assert [r for r in records if r.error != "bad line"] == expected
+bad = [r.detail for r in records if r.error == "bad line"]
+assert bad == ["line 5: not TIME CHANNEL ID DATA: '1763737200.0 can0 08 00'",
+               "line 6: not TIME CHANNEL ID DATA: '1763737200.0 can0'"], bad
+
+# Column-wise: the tables of its records, the same tables as candump's but for the errors
+# (the same schemas and rows; a dictionary column's dictionary may differ).
+def same(table, other):
+    return table.schema == other.schema and repr(table.to_pylist()) == repr(other.to_pylist())
+
+tables = capture.read_tables("capture.frames")
+by_records = capture.tables_from_records(records)
+assert set(tables) == set(by_records), (sorted(tables), sorted(by_records))
+for name, table in tables.items():
+    assert same(table, by_records[name]), name
+candump = capture.read_tables("capture.log")
+assert set(tables) - set(candump) <= {"errors"}
+for name, table in candump.items():
+    if name != "errors":
+        assert same(table, tables[name]), name
+assert tables["errors"].column("error").to_pylist().count("bad line") == 2
+frame = capture.to_dataframe("capture.frames")
+assert len(frame) == len(records)
+
+# Recognised by its content under another name, gzipped or not; cut gzip data ends in a
+# Truncation; its suffix is in the error for a file in no known format.
+shutil.copy("capture.frames", "capture.bin")
+assert capture.resolve("capture.bin").format == "frametext"
+assert list(capture.read("capture.bin")) == records
+with open("capture.frames", "rb") as plain, gzip.open("capture.frames.gz", "wb") as packed:
+    shutil.copyfileobj(plain, packed)
+assert list(capture.read("capture.frames.gz")) == records
+data = open("capture.frames.gz", "rb").read()
+open("cut.frames", "wb").write(data[: len(data) // 2])
+cut = list(capture.open_frames("cut.frames"))
+assert type(cut[-1]) is Truncation and 0 < len(cut) < len(read), cut[-1]
+open("notes.md", "w").write("# notes\\n")
+try:
+    capture.read("notes.md")
+except SourceError as error:
+    assert ".frames" in str(error), error
+else:
+    raise AssertionError("notes.md was read")
+print("ok")
+"""
+
+
+def _frame_text(frame: object) -> str:
+    """One frame of examples/capture.log as a line of the page's frame text."""
+    from veronte4x.capture.frames import Frame
+
+    assert type(frame) is Frame and frame.timestamp is not None
+    can_id = f"{frame.can_id:08X}" if frame.extended else f"{frame.can_id:03X}"
+    data = " ".join(f"{byte:02X}" for byte in frame.data)
+    return f"{frame.timestamp:.6f} {frame.channel} {can_id} {data}".rstrip() + "\n"
+
+
+def test_adding_a_log_format(scratch: Path) -> None:
+    import duckdb
+
+    from veronte4x import capture
+
+    for path, where, code in _blocks("Adding a log format"):
+        _apply(scratch, path, where, code)
+    example = ROOT / "examples" / "capture.log"
+    last = "(1763737299.250000) vcan1 1001552A#05000000000000C3\n"
+    (scratch / "capture.log").write_text(example.read_text() + last)
+    lines = [_frame_text(f) for f in capture.open_frames(scratch / "capture.log")]
+    lines[2:2] = [
+        "# the arbiter's and the autopilots' first frames\n",
+        "\n",
+        "1763737200.0 can0 08 00  # a CAN ID of 2 digits\n",
+        "1763737200.0 can0\n",
+    ]
+    (scratch / "capture.frames").write_text("".join(lines))
+    (scratch / "check.py").write_text(_LOG_FORMAT_CHECK)
+    done = _run(scratch, "check.py")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().endswith("ok")
+
+    # The command line: converted into a Parquet dataset, read back with DuckDB.
+    out = scratch / "out"
+    converted = _run(scratch, "-m", "veronte4x", "convert", "capture.frames", "--to", "parquet",
+                     str(out))  # fmt: skip
+    assert converted.returncode == 0, converted.stderr
+    tables = capture.read_tables(scratch / "capture.log")
+    assert {"Ready", "Score", "NodeStatus", "errors"} <= set(tables)
+    for name, table in tables.items():
+        rows = duckdb.execute(
+            f"SELECT count(*) FROM read_parquet('{out}/message={name}/*.parquet')"
+        ).fetchone()
+        assert rows == (table.num_rows + 2 * (name == "errors"),), name
+    bad = duckdb.execute(
+        f"SELECT count(*) FROM read_parquet('{out}/message=errors/*.parquet') "
+        "WHERE error = 'bad line'"
+    ).fetchone()
+    assert bad == (2,)
+    decoded = _run(scratch, "-m", "veronte4x", "decode", "capture.frames")
+    assert decoded.returncode == 0, decoded.stderr
+    same = _run(scratch, "-m", "veronte4x", "decode", "capture.log")
+    assert decoded.stdout == same.stdout  # bad lines are counted, not shown
+    assert "NodeStatus" in decoded.stdout and "3 bad" in decoded.stderr
+
+
 def test_every_block_says_where_it_goes() -> None:
-    sections = ["Adding a frame type", "Adding a command"]
+    sections = ["Adding a frame type", "Adding a command", "Adding a log format"]
     assert all(_blocks(section) for section in sections)
-    assert "## Adding a log format" in PAGE.read_text()

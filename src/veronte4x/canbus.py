@@ -154,7 +154,7 @@ def is_dronecan_frame(message: can.Message) -> bool:
 
 
 def frame_to_message(
-    frame: dronecan.Frame, timestamp: float = 0.0, channel: str | None = None
+    frame: dronecan.TransferFrame, timestamp: float = 0.0, channel: str | None = None
 ) -> can.Message:
     """One DroneCAN frame as an extended ``can.Message``."""
     return can.Message(

@@ -33,7 +33,8 @@ class HtmlDisplay:
         return to_html(self)
 
 
-Row = tuple[Any, ...]
+Cells = tuple[Any, ...]
+"""The cells of one table row, left to right."""
 
 
 def to_html(value: Any) -> str:
@@ -65,13 +66,13 @@ def message_html(message: Any, caption: str | None = None) -> str:
     return table(caption or type(message).__name__, ("field", "value", "unit"), rows)
 
 
-def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Row]:
+def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cells]:
     from veronte4x.capture.readable import readable
     from veronte4x.units import unit
 
     owner = type(message)
     top = top or owner.__name__
-    rows: list[Row] = []
+    rows: list[Cells] = []
     for field in dataclasses.fields(message):
         value = getattr(message, field.name)
         name = prefix + field.name
@@ -88,7 +89,7 @@ def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Row]
 def _record(record: Any) -> str:
     from veronte4x.times import format_time
 
-    head: list[Row] = [
+    head: list[Cells] = [
         ("time", format_time(record.timestamp)),
         ("channel", record.channel),
         ("CAN ID", f"0x{record.can_id:X}"),
@@ -110,7 +111,7 @@ def _record(record: Any) -> str:
 def _transfer(transfer: Any) -> str:
     from veronte4x.times import format_time
 
-    head: list[Row] = [
+    head: list[Cells] = [
         ("kind", transfer.kind.name.lower()),
         ("data type id", transfer.data_type_id),
         ("from node", transfer.source_node_id),
@@ -132,7 +133,7 @@ def _stats(stats: Any) -> str:
     from veronte4x.times import format_time
 
     undecoded, errors = sum(stats.unknown.values()), sum(stats.errors.values())
-    head: list[Row] = [("records", stats.records), ("undecoded", undecoded), ("errors", errors)]
+    head: list[Cells] = [("records", stats.records), ("undecoded", undecoded), ("errors", errors)]
     if stats.first_timestamp is not None and stats.last_timestamp is not None:
         span = round(stats.last_timestamp - stats.first_timestamp, 6)
         head += [
@@ -196,7 +197,7 @@ def side_by_side(tables: Iterable[str]) -> str:
     return _SIDE_BY_SIDE + "".join(tables) + "</div>"
 
 
-def table(caption: str, columns: Sequence[str], rows: Iterable[Row], header: bool = True) -> str:
+def table(caption: str, columns: Sequence[str], rows: Iterable[Cells], header: bool = True) -> str:
     """An HTML table with a caption, column names (unless ``header`` is False) and rows;
     every cell is escaped."""
     out = [f'<table class="dataframe veronte4x"><caption {_CAPTION}>{escape(caption)}</caption>']

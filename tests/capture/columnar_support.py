@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from veronte4x import codec, dronecan
 from veronte4x.capture import BusMap
 from veronte4x.codec import Linear
-from veronte4x.dronecan.codec import BY_CLASS, CODECS, Codec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.tail import SINGLE_FRAME_MAX, split_payload
@@ -156,7 +156,7 @@ def _named(name: str) -> Any:
 
 
 @st.composite
-def any_payload(draw: st.DrawFn, types: TypeSet | None = None) -> tuple[Codec, bytes]:
+def any_payload(draw: st.DrawFn, types: TypeSet | None = None) -> tuple[TypeCodec, bytes]:
     """A type of ``types`` (None: the standard set; a vendor type one time in two where
     the set has any) and a payload for it: a value's encoding (saturated), that cut short
     or lengthened, or any bytes."""
@@ -178,7 +178,7 @@ def any_payload(draw: st.DrawFn, types: TypeSet | None = None) -> tuple[Codec, b
 
 
 def transfer_frames(
-    found: Codec, payload: bytes, source: int, destination: int | None, transfer_id: int
+    found: TypeCodec, payload: bytes, source: int, destination: int | None, transfer_id: int
 ) -> list[tuple[int, bytes, bool]]:
     """The frames of one transfer of any payload, cut as the encoder cuts them."""
     can_id = 16 << 24 | can_id_base(found.data_type) | source

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import VENDOR_TYPES, any_payload
 from veronte4x.capture.columnar import payloads
 from veronte4x.capture.columnar.schema import dronecan_specs, field_column
-from veronte4x.dronecan.codec import CODECS, Codec
+from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.errors import DecodeError
 
 pa = pytest.importorskip("pyarrow")
@@ -32,7 +32,7 @@ def _same(a: Any, b: Any) -> bool:
     return bool(a == b)
 
 
-def check(found: Codec, items: list[bytes], specs: dict[str, Any] = SPECS) -> None:
+def check(found: TypeCodec, items: list[bytes], specs: dict[str, Any] = SPECS) -> None:
     """Decode ``items`` of one type column-wise and one by one: the same values, and the
     same payloads refused (``specs``: the tables of the type's set)."""
     schema = found.data_type.schema
@@ -62,7 +62,7 @@ def check(found: Codec, items: list[bytes], specs: dict[str, Any] = SPECS) -> No
 
 @settings(max_examples=300)
 @given(st.lists(any_payload(), min_size=1, max_size=12))
-def test_any_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> None:
+def test_any_types_and_payloads_agree(drawn: list[tuple[TypeCodec, bytes]]) -> None:
     by_type: dict[int, list[bytes]] = {}
     for found, payload in drawn:
         by_type.setdefault(CODECS.index(found), []).append(payload)
@@ -71,14 +71,14 @@ def test_any_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> None:
 
 
 @pytest.mark.parametrize("found", CODECS, ids=[c.data_type.schema.cls.__name__ for c in CODECS])
-def test_every_type_on_zeros_and_short_payloads(found: Codec) -> None:
+def test_every_type_on_zeros_and_short_payloads(found: TypeCodec) -> None:
     sizes = range(min(found.max_payload, 64) + 2)
     check(found, [bytes(n) for n in sizes] + [bytes([0xFF]) * n for n in sizes])
 
 
 @settings(max_examples=200)
 @given(st.lists(any_payload(VENDOR_TYPES), min_size=1, max_size=12))
-def test_vendor_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> None:
+def test_vendor_types_and_payloads_agree(drawn: list[tuple[TypeCodec, bytes]]) -> None:
     by_type: dict[int, list[bytes]] = {}
     for found, payload in drawn:
         by_type.setdefault(VENDOR_TYPES.codecs.index(found), []).append(payload)
@@ -89,6 +89,6 @@ def test_vendor_types_and_payloads_agree(drawn: list[tuple[Codec, bytes]]) -> No
 @pytest.mark.parametrize(
     "found", VENDOR_CODECS, ids=[c.data_type.schema.cls.__name__ for c in VENDOR_CODECS]
 )
-def test_every_vendor_type_on_zeros_and_short_payloads(found: Codec) -> None:
+def test_every_vendor_type_on_zeros_and_short_payloads(found: TypeCodec) -> None:
     sizes = range(min(found.max_payload, 64) + 2)
     check(found, [bytes(n) for n in sizes] + [bytes([0xFF]) * n for n in sizes], VENDOR_SPECS)

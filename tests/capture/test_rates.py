@@ -29,7 +29,7 @@ def test_frame_bits_follow_davis_et_al() -> None:
     assert frame_bits(0, extended=False) == 55
 
 
-def node_status(node: int, tid: int) -> list[dronecan.Frame]:
+def node_status(node: int, tid: int) -> list[dronecan.TransferFrame]:
     message = dronecan.NodeStatus(
         uptime_sec=tid, health=dronecan.Health.OK, mode=0, sub_mode=0,
         vendor_specific_status_code=0,
@@ -37,7 +37,7 @@ def node_status(node: int, tid: int) -> list[dronecan.Frame]:
     return dronecan.encode(message, source_node_id=node, transfer_id=tid % 32)
 
 
-def esc_status(node: int, tid: int) -> list[dronecan.Frame]:
+def esc_status(node: int, tid: int) -> list[dronecan.TransferFrame]:
     message = dronecan.EscStatus(
         error_count=0, voltage=24.0, current=1.0, temperature=300.0, rpm=1000,
         power_rating_pct=10, esc_index=0,

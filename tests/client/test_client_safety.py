@@ -131,7 +131,7 @@ def test_answers_checks_what_a_reply_says_of_its_request() -> None:
     assert requester.next_deadline() is not None  # still waiting for its own answer
 
 
-def _transfer(frames: list[dronecan.Frame]) -> dronecan.Transfer:
+def _transfer(frames: list[dronecan.TransferFrame]) -> dronecan.Transfer:
     reassembler = dronecan.Reassembler()
     transfers = [reassembler.feed(f.can_id, f.data, 0.0) for f in frames]
     assert transfers[-1] is not None

@@ -126,8 +126,8 @@ def test_bad_layouts(fields: list[codec.Field], message: str) -> None:
     ("args", "message"),
     [
         ((5, "Bad", [codec.unsigned("a", 8, scale=codec.Linear(3, 3, 0.0, 1.0))]), "empty compr"),
-        ((5, "Bad", [codec.Field(codec.Kind.BOOL, 1, "a")]), "field a cannot be declared"),
-        ((5, "Bad", [codec.Field(codec.Kind.UNSIGNED, 8, "a", 0)]), "cannot be declared"),
+        ((5, "Bad", [codec.Field(codec.FieldKind.BOOL, 1, "a")]), "field a cannot be declared"),
+        ((5, "Bad", [codec.Field(codec.FieldKind.UNSIGNED, 8, "a", 0)]), "cannot be declared"),
         ((5, "_x y", []), "'_x y' is not a valid class name"),
         ((5, "class", []), "'class' is not a valid class name"),
         ((256, "Bad", []), "command 256 is not a byte"),
@@ -143,13 +143,13 @@ def test_layout_validation_errors(args: tuple[Any, ...], message: str) -> None:
 
 def test_frame_layout_checks() -> None:
     """The checks of the layout compiler itself, on layouts only the built-ins can make."""
-    Kind, Field = codec.Kind, codec.Field
+    FieldKind, Field = codec.FieldKind, codec.Field
     for fields, message in (
-        ((Field(Kind.FLOAT32, 16, "score"),), "float32 field score must have 32 bits"),
-        ((Field(Kind.MAPPED, 2, "ready", mapping=((4, True),)),), "does not fit"),
-        ((Field(Kind.BYTES, 8, "ready"), Field(Kind.BOOL, 1, "ready")), "must come last"),
-        ((Field(Kind.BOOL, 1, "ready"), Field(Kind.BYTES, 8, "ready")), "byte-aligned"),
-        ((Field(Kind.UNSIGNED, 8, "ready"), Field(Kind.BYTES, 64, "ready")), "overflow"),
+        ((Field(FieldKind.FLOAT32, 16, "score"),), "float32 field score must have 32 bits"),
+        ((Field(FieldKind.MAPPED, 2, "ready", mapping=((4, True),)),), "does not fit"),
+        ((Field(FieldKind.BYTES, 8, "ready"), Field(FieldKind.BOOL, 1, "ready")), "must come last"),
+        ((Field(FieldKind.BOOL, 1, "ready"), Field(FieldKind.BYTES, 8, "ready")), "byte-aligned"),
+        ((Field(FieldKind.UNSIGNED, 8, "ready"), Field(FieldKind.BYTES, 64, "ready")), "overflow"),
     ):
         with pytest.raises(codec.LayoutError, match=message):
             FrameLayout(codec.Ready, fields).check()

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from veronte4x import codec
-from veronte4x.codec import ByteOrder, Kind
+from veronte4x.codec import ByteOrder, FieldKind
 
 
 @dataclass
@@ -57,9 +57,9 @@ def valid_frames(draw: st.DrawFn, layout: codec.Layout) -> bytes:
     start = 8
     for f in layout.fields:
         raw = 0
-        if f.kind is Kind.CONSTANT:
+        if f.kind is FieldKind.CONSTANT:
             raw = f.value
-        elif f.kind is not Kind.PADDING:
+        elif f.kind is not FieldKind.PADDING:
             raw = draw(st.integers(0, (1 << f.bits) - 1))
         if layout.byte_order is ByteOrder.LITTLE:
             word |= raw << start

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
-from veronte4x.dronecan.codec import CODECS, Codec
+from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK
 from veronte4x.dronecan.schema import Scalar, Struct, Union, tao_min_bits
 from veronte4x.errors import DecodeError, EncodeError
@@ -159,7 +159,7 @@ def _same(a: Any, b: Any) -> bool:
     return repr(a) == repr(b)
 
 
-def _generic_payload(codec: Codec, message: Any) -> bytes | Exception:
+def _generic_payload(codec: TypeCodec, message: Any) -> bytes | Exception:
     try:
         return codec.generic.encode(message)
     except EncodeError as error:
@@ -167,7 +167,7 @@ def _generic_payload(codec: Codec, message: Any) -> bytes | Exception:
 
 
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
-def test_every_type_has_generated_code(codec: Codec) -> None:
+def test_every_type_has_generated_code(codec: TypeCodec) -> None:
     fast = codec.fast
     assert fast.payload.__code__.co_filename.startswith("<veronte4x generated fast paths")
     assert fast.decode.__code__.co_filename.startswith("<veronte4x generated fast paths")
@@ -175,7 +175,7 @@ def test_every_type_has_generated_code(codec: Codec) -> None:
     assert (fast.decode_frame is not None) == (tao_min_bits(codec.data_type.schema) <= 56)
 
 
-def _transport(codec: Codec) -> tuple[int, int, int, int | None]:
+def _transport(codec: TypeCodec) -> tuple[int, int, int, int | None]:
     service = codec.data_type.kind is not dronecan.TransferKind.MESSAGE
     return 42, 17, 9, 7 if service else None
 
@@ -183,7 +183,9 @@ def _transport(codec: Codec) -> tuple[int, int, int, int | None]:
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
 @settings(max_examples=30)
 @given(data=st.data())
-def test_valid_values_take_the_generated_code_both_ways(codec: Codec, data: st.DataObject) -> None:
+def test_valid_values_take_the_generated_code_both_ways(
+    codec: TypeCodec, data: st.DataObject
+) -> None:
     message = data.draw(messages(codec.data_type.schema, faults=False), label="message")
     payload = codec.fast.payload(message)  # never hands over: the values are valid
     assert payload == codec.generic.encode(message)
@@ -204,7 +206,7 @@ def test_valid_values_take_the_generated_code_both_ways(codec: Codec, data: st.D
 @pytest.mark.filterwarnings("ignore:overflow encountered:RuntimeWarning")  # NumPy float16
 @settings(max_examples=30)
 @given(data=st.data())
-def test_any_values_encode_as_the_generic_serializer(codec: Codec, data: st.DataObject) -> None:
+def test_any_values_encode_as_the_generic_serializer(codec: TypeCodec, data: st.DataObject) -> None:
     message = data.draw(messages(codec.data_type.schema, faults=True), label="message")
     expected = _generic_payload(codec, message)
     try:
@@ -230,7 +232,7 @@ def test_any_values_encode_as_the_generic_serializer(codec: Codec, data: st.Data
         assert codec.encode(message) == expected
 
 
-def _payloads(codec: Codec) -> st.SearchStrategy[bytes]:
+def _payloads(codec: TypeCodec) -> st.SearchStrategy[bytes]:
     """Arbitrary bytes, and valid payloads cut short, extended or with one byte changed."""
     valid = st.builds(codec.generic.encode, messages(codec.data_type.schema, faults=False))
     changed = st.tuples(valid, st.integers(0, 400), st.integers(1, 255)).map(
@@ -253,7 +255,7 @@ def _flip(payload: bytes, index: int, mask: int) -> bytes:
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
 @settings(max_examples=50)
 @given(data=st.data())
-def test_any_bytes_decode_as_the_generic_serializer(codec: Codec, data: st.DataObject) -> None:
+def test_any_bytes_decode_as_the_generic_serializer(codec: TypeCodec, data: st.DataObject) -> None:
     payload = data.draw(_payloads(codec), label="payload")
     try:
         expected: Any = codec.generic.decode(payload)

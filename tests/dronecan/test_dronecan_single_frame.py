@@ -20,7 +20,7 @@ from test_dronecan_compiled import _payloads
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import CODECS, Codec, can_id_base
+from veronte4x.dronecan.codec import CODECS, TypeCodec, can_id_base
 
 SINGLE = [c for c in CODECS if c.fast.decode_frame is not None]
 _IDS = [f"{c.data_type.full_name}-{c.data_type.kind.name}" for c in SINGLE]
@@ -42,7 +42,7 @@ def _checked(frames: Any, timestamp: Any) -> Any:
 
 
 @st.composite
-def _frame(draw: st.DrawFn, codec: Codec) -> tuple[int, Any, Any]:
+def _frame(draw: st.DrawFn, codec: TypeCodec) -> tuple[int, Any, Any]:
     payload = draw(_payloads(codec))[:8]
     tail = draw(st.one_of(st.integers(0, 31).map(lambda t: 0xC0 | t), st.integers(0, 255)))
     data: Any = payload[:7] + bytes([tail]) if draw(st.integers(0, 9)) else payload
@@ -62,7 +62,7 @@ def _frame(draw: st.DrawFn, codec: Codec) -> tuple[int, Any, Any]:
 @settings(max_examples=40)
 @given(data=st.data())
 def test_the_route_of_a_can_id_decodes_as_the_checked_path(
-    codec: Codec, data: st.DataObject
+    codec: TypeCodec, data: st.DataObject
 ) -> None:
     can_id, payload, timestamp = data.draw(_frame(codec), label="frame")
     frames = [(can_id, payload)]

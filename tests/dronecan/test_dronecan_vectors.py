@@ -41,7 +41,7 @@ def _frames(vector: dict[str, Any]) -> list[tuple[int, bytes]]:
     return [(vector["can_id"], bytes.fromhex(h)) for h in vector["frames"]]
 
 
-def _encode(vector: dict[str, Any], message: Any, **options: Any) -> list[dronecan.Frame]:
+def _encode(vector: dict[str, Any], message: Any, **options: Any) -> list[dronecan.TransferFrame]:
     return dronecan.encode(
         message,
         source_node_id=vector["source_node_id"],

@@ -45,7 +45,7 @@ def feed(
         esc.receive(frame.can_id, frame.data, timestamp)
 
 
-def decode(frames: list[dronecan.Frame], timestamp: float = 0.0) -> list[dronecan.Transfer]:
+def decode(frames: list[dronecan.TransferFrame], timestamp: float = 0.0) -> list[dronecan.Transfer]:
     """Reassemble the frames of one poll into transfers (all must complete)."""
     reassembler = dronecan.Reassembler()
     transfers = [reassembler.feed(f.can_id, f.data, timestamp) for f in frames]
@@ -53,7 +53,7 @@ def decode(frames: list[dronecan.Frame], timestamp: float = 0.0) -> list[droneca
     return [t for t in transfers if t is not None]
 
 
-def names(frames: list[dronecan.Frame]) -> list[str]:
+def names(frames: list[dronecan.TransferFrame]) -> list[str]:
     """Class names of the transfers in ``frames``."""
     return [type(t.message).__name__ for t in decode(frames)]
 

@@ -68,7 +68,7 @@ def test_only_dronecan_shaped_messages_reach_the_core(
         other.send(message)
     node.step()
     assert sum(esc._reassembler.counts.values()) == 0
-    frame = dronecan.Frame(0x10015501, bytes(7) + b"\xc0")
+    frame = dronecan.TransferFrame(0x10015501, bytes(7) + b"\xc0")
     assert wanted(to_message(frame))
     assert to_message(frame, 1.5).timestamp == 1.5
 

@@ -23,7 +23,7 @@ def test_first_poll_bytes_and_ids() -> None:
     esc = SimulatedEsc(20)
     frames = esc.poll(0.0)
     # NodeStatus: priority 16, type 341, node 20; uptime 0, OK, OPERATIONAL; tail 0xC0.
-    assert frames[0] == dronecan.Frame(0x10015514, bytes.fromhex("00000000000000c0"))
+    assert frames[0] == dronecan.TransferFrame(0x10015514, bytes.fromhex("00000000000000c0"))
     assert [f.can_id for f in frames] == [0x10015514] + [0x10040A14] * 3 + [0x10045614]
     # esc.Status in three frames (CRC first), device.Temperature in one; transfer id 0.
     assert [f.data[-1] for f in frames[1:]] == [0x80, 0x20, 0x40, 0xC0]

@@ -81,7 +81,7 @@ def test_discovery_by_index_ends_with_the_empty_reply() -> None:
     }
     # The empty reply: void padding and empty union tags (4 bytes), no name, the tail.
     feed(esc, vertiq.get_parameter_by_index(5), 0.5, transfer_id=3)
-    assert esc.poll(0.5)[0] == dronecan.Frame(0x100B0194, bytes.fromhex("00000000c3"))
+    assert esc.poll(0.5)[0] == dronecan.TransferFrame(0x100B0194, bytes.fromhex("00000000c3"))
 
 
 def test_unknown_name_gets_the_empty_reply() -> None:
@@ -190,7 +190,7 @@ def test_restart_frames_are_byte_exact() -> None:
     esc = SimulatedEsc(ESC)
     feed(esc, vertiq.restart(), 1.0, transfer_id=3)
     # RestartNode response (service 5), priority 16, to node 1 from 20: ok bit set.
-    assert esc.poll(1.0)[0] == dronecan.Frame(0x10050194, bytes.fromhex("80c3"))
+    assert esc.poll(1.0)[0] == dronecan.TransferFrame(0x10050194, bytes.fromhex("80c3"))
 
 
 def test_bootloader_restart_goes_silent_until_power_cycle() -> None:
@@ -255,7 +255,7 @@ def test_begin_firmware_update_unsupported_is_invalid_mode() -> None:
     assert esc.state.mode is dronecan.Mode.OPERATIONAL
     # error 1, empty message: one payload byte and the tail.
     feed(esc, _firmware(5), 0.0, transfer_id=2)
-    assert esc.poll(0.0)[0] == dronecan.Frame(0x10280194, bytes.fromhex("01c2"))
+    assert esc.poll(0.0)[0] == dronecan.TransferFrame(0x10280194, bytes.fromhex("01c2"))
 
 
 def test_requests_to_other_nodes_and_responses_are_ignored() -> None:

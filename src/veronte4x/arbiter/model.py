@@ -44,7 +44,9 @@ from veronte4x.errors import (
     int_argument,
 )
 
-Frame = tuple[int, bytes]
+SentFrame = tuple[int, bytes]
+"""A frame the model sends: its CAN ID and data (`Arbiter.poll`)."""
+
 _AUTOPILOTS = range(4)
 _FLOAT32 = struct.Struct("<f")
 _DEATH_CAUSES = {
@@ -194,7 +196,7 @@ class Arbiter:
 
     # ----------------------------------------------------------------- outputs
 
-    def poll(self, timestamp: float) -> list[Frame]:
+    def poll(self, timestamp: float) -> list[SentFrame]:
         """The frames the arbiter sends at ``timestamp``: (CAN ID, bytes).
 
         Status every ``status_period`` in Normal mode when ``send_status`` is set, and
@@ -204,7 +206,7 @@ class Arbiter:
         """
         timestamp = check_seconds("poll", "timestamp", timestamp)
         self.advance(timestamp)
-        frames: list[Frame] = []
+        frames: list[SentFrame] = []
         arbiter_id = self.config.arbiter_id
         status_due = self._status is not None and self._status.take(timestamp)
         if status_due and (self._phase is Phase.MAINTENANCE or self.config.send_status):

@@ -28,7 +28,8 @@ from veronte4x.numbers import shortest
 
 #: One captured frame: (timestamp in s, CAN ID, data bytes).
 CapturedFrame = tuple[float, int, bytes]
-Value = bool | int | float | str | None
+FieldValue = bool | int | float | str | None
+"""The value of a compared field, as recorded or as modelled."""
 
 _FLAG_FIELDS = ("alive", "ready")
 
@@ -50,8 +51,8 @@ class Disagreement:
     start: float
     end: float
     field: str
-    recorded: Value
-    modelled: Value
+    recorded: FieldValue
+    modelled: FieldValue
     frames: int
 
     def __str__(self) -> str:
@@ -197,7 +198,7 @@ class ReplayResult:
         return "\n".join(entries[i][2] for i in order)
 
 
-def _show(field: str, value: Value) -> str:
+def _show(field: str, value: FieldValue) -> str:
     if field == "selected" and isinstance(value, int):
         return autopilot_name(value)
     if isinstance(value, float):
@@ -217,8 +218,8 @@ def _same_score(recorded: float, modelled: float, tolerance: float) -> bool:
 class _Run:
     start: float
     end: float
-    recorded: Value
-    modelled: Value
+    recorded: FieldValue
+    modelled: FieldValue
     frames: int = 1
 
 
@@ -230,7 +231,7 @@ class _Comparer:
         self._open: dict[str, _Run] = {}
         self._closed: list[Disagreement] = []
 
-    def check(self, time: float, field: str, recorded: Value, modelled: Value) -> None:
+    def check(self, time: float, field: str, recorded: FieldValue, modelled: FieldValue) -> None:
         """Compare one field of one recorded frame with the model."""
         if isinstance(recorded, float) and isinstance(modelled, float):
             same = _same_score(recorded, modelled, self.tolerance)

@@ -7,8 +7,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, fields
 
 from veronte4x.arbiter.machine import Phase
-
-Flags4 = tuple[bool, bool, bool, bool]
+from veronte4x.codec.messages import Flags4
 
 
 class Mode(enum.Enum):

@@ -101,11 +101,42 @@ def to_dataframe(
 
     check_time_form(time)
     if isinstance(source, (str, os.PathLike)):
-        from veronte4x.capture import _columnar
-
-        frame: pandas.DataFrame = _columnar().frame.dataframe(source, bus_map, channel, time)
-        return frame
+        return _tables_frame(source, bus_map, channel, time)
     return _records_frame(source, time)
+
+
+def _tables_frame(
+    path: str | os.PathLike[str], bus_map: BusMap | None, channel: str | None, time: TimeForm
+) -> pandas.DataFrame:
+    """`to_dataframe` of a capture file: every table of `read_tables` in one frame, its rows
+    in capture order."""
+    import numpy as np
+    import pandas
+
+    from veronte4x.capture import _columnar
+
+    parts = []
+    keys = []
+    units: dict[str, str] = {}
+    for kind, (table, key) in _columnar().keyed_tables(path, bus_map, channel, time).items():
+        for field in table.schema:
+            if field.metadata and b"unit" in field.metadata:
+                units[field.name] = field.metadata[b"unit"].decode()
+        part = table.to_pandas(types_mapper=pandas.ArrowDtype)
+        if kind in ("errors", "unknown"):
+            part.insert(4, "message", None)
+            part["data"] = [value.hex() for value in table.column("data").to_pylist()]
+        else:
+            part.insert(4, "message", kind)
+        parts.append(part)
+        keys.append(key)
+    if not parts:
+        return pandas.DataFrame(columns=["timestamp", "channel", "can_id", "sender", "message"])
+    joined = pandas.concat(parts, ignore_index=True, sort=False)
+    order = np.argsort(np.concatenate(keys), kind="stable")
+    frame = joined.iloc[order].reset_index(drop=True)
+    frame.attrs["units"] = units
+    return frame
 
 
 _Classes = dict[type, tuple[list[int], list[Any]]]

@@ -33,7 +33,7 @@ from veronte4x.capture.busmap import AUTOPILOT_NAMES, BusMap
 from veronte4x.codec import layouts
 from veronte4x.codec.compiler import FrameLayout, Placed
 from veronte4x.codec.declared import Layout
-from veronte4x.codec.fields import ByteOrder, Kind
+from veronte4x.codec.fields import ByteOrder, FieldKind
 from veronte4x.codec.pwm import PWM_COMMANDS
 
 DBC_FRAME_BYTES = 8
@@ -253,7 +253,7 @@ def _layout_signals(
     """The signals of a layout's fields, multiplexed by one value of ``multiplexer``."""
     for placed in layout.placed:
         field = placed.field
-        if field.attr is None or field.kind is Kind.MAPPED:
+        if field.attr is None or field.kind is FieldKind.MAPPED:
             continue  # constants, padding, and the PWM command already in `command`
         if (multiplexer, field.attr) in (("header", "autopilot"), ("header", "number")):
             continue  # the header itself, named by the signal's suffix
@@ -289,7 +289,7 @@ def _signal(
     else:
         msb = placed.shift + field.bits - 1  # bit number in the big-endian frame integer
         start = (layout.fixed_size - 1 - msb // 8) * 8 + msb % 8
-    if field.kind is Kind.FLOAT32:
+    if field.kind is FieldKind.FLOAT32:
         return Signal(
             name,
             start,
@@ -301,7 +301,7 @@ def _signal(
             mux_value=mux_value,
             comment=comment,
         )
-    signed = field.kind is Kind.SIGNED
+    signed = field.kind is FieldKind.SIGNED
     low = -(1 << (field.bits - 1)) if signed else 0
     high = (1 << (field.bits - 1)) - 1 if signed else (1 << field.bits) - 1
     if field.maximum is not None:

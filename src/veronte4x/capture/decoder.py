@@ -22,14 +22,15 @@ from veronte4x.capture.readers.candump import (
 from veronte4x.capture.records import Record, error_record, transfer_record, veronte_record
 from veronte4x.capture.source import Truncated
 from veronte4x.codec import DecodeError, Sender, UnknownCommandError
-from veronte4x.codec.compiler import FrameDecoder as Decoder
+from veronte4x.codec.compiler import FrameDecoder
 from veronte4x.dronecan import ProblemReport, Reassembler
 from veronte4x.dronecan.reassembler import Problem, Problems
 from veronte4x.errors import BytesLike, argument_type_error
 
 _SENDERS = {Role.ARBITER: Sender.ARBITER, Role.AUTOPILOT: Sender.AUTOPILOT}
 
-Route = tuple[Role, int | None, Decoder]
+IdRoute = tuple[Role, int | None, FrameDecoder]
+"""Where the bus map sends a Veronte CAN ID: its role, autopilot index and decoder."""
 
 
 class CaptureDecoder:
@@ -45,7 +46,7 @@ class CaptureDecoder:
         self.codec = self.bus_map.codec()
         self.reassemblers: dict[str, Reassembler] = {}
         """One DroneCAN reassembler per channel (bus), created on its first frame."""
-        self._routes: dict[int, Route] = {
+        self._routes: dict[int, IdRoute] = {
             can_id: (role, index, self.codec.decoder(_SENDERS[role]))
             for can_id, (role, index) in self.bus_map.veronte_roles.items()
         }
@@ -247,8 +248,8 @@ def _problems(problems: Problems, channel: str) -> Iterator[Record]:
 
 
 def _routes_by_text(
-    routes: dict[int, Route],
-) -> dict[bytes, tuple[int, Role, int | None, Decoder]]:
+    routes: dict[int, IdRoute],
+) -> dict[bytes, tuple[int, Role, int | None, FrameDecoder]]:
     """The 11-bit Veronte routes keyed by identifier text, each in every case spelling."""
     by_text = {}
     for can_id, (role, index, decode) in routes.items():

@@ -21,7 +21,7 @@ from veronte4x.client.commander import STOP_REPEATS, Commander
 from veronte4x.client.firmware import UpdateProgress
 from veronte4x.client.operations import Runner
 from veronte4x.client.protocol import DEFAULT_NODE_ID, ClientProtocol, Event
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import RawCommand
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
@@ -118,9 +118,9 @@ class BusAdapter:
 
     def send_frame(self, can_id: int, data: bytes) -> None:
         """Send one extended frame."""
-        self.send_frames((Frame(can_id, data),))
+        self.send_frames((TransferFrame(can_id, data),))
 
-    def send_frames(self, frames: Iterable[Frame]) -> None:
+    def send_frames(self, frames: Iterable[TransferFrame]) -> None:
         """Send frames in order (a 256-byte file read answers with 37: one call for all)."""
         send = self.bus.send
         for frame in frames:

@@ -35,7 +35,7 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Batch, Operation, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
@@ -102,7 +102,7 @@ class BusClient(BusAdapter):
 
     # -- I/O ----------------------------------------------------------------------------
 
-    def send_frames(self, frames: Iterable[Frame]) -> None:
+    def send_frames(self, frames: Iterable[TransferFrame]) -> None:
         """Send frames in order (thread-safe with `CommandStream`)."""
         with self._lock:
             super().send_frames(frames)

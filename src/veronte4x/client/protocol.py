@@ -16,7 +16,7 @@ from veronte4x.client.files import FileRead, FileServer
 from veronte4x.client.nodes import NodeEntry, NodeTable
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest
 from veronte4x.dronecan.reassembler import Reassembler
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
@@ -97,7 +97,7 @@ class ClientProtocol:
         self.nodes = NodeTable()
         self.files = FileServer()
         self.reassembler = Reassembler()
-        self._outbox: list[Frame] = []
+        self._outbox: list[TransferFrame] = []
 
     def receive(self, can_id: int, data: bytes, timestamp: float) -> list[Event]:
         """Take one frame (29-bit ``can_id``, data with its tail byte) seen at ``timestamp``.
@@ -165,7 +165,7 @@ class ClientProtocol:
         """
         self._outbox += self.message_frames(message)
 
-    def message_frames(self, message: Any) -> list[Frame]:
+    def message_frames(self, message: Any) -> list[TransferFrame]:
         """The frames of a message with its next transfer id, for the caller to send at once
         (a command stream sends them from its own loop, past the outbox).
 
@@ -186,7 +186,7 @@ class ClientProtocol:
         """Retry or time out pending requests at ``now``."""
         return self.requests.poll(now)
 
-    def take_frames(self) -> list[Frame]:
+    def take_frames(self) -> list[TransferFrame]:
         """Every frame to send now, in order: responses, messages, then requests."""
         frames = self._outbox + self.requests.take_frames()
         self._outbox = []

@@ -16,6 +16,7 @@ from typing import ClassVar
 from veronte4x.display import HtmlDisplay
 
 Flags4 = tuple[bool, bool, bool, bool]
+"""Four flags, one per autopilot (AP1, AP2, AP3, external)."""
 
 
 class Sender(enum.Enum):

@@ -14,7 +14,7 @@ from veronte4x.dronecan.can_id import (
     service_can_id,
 )
 from veronte4x.dronecan.codec import decode_payload
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
     BeginFirmwareUpdateResponse,
@@ -36,10 +36,10 @@ from veronte4x.dronecan.messages import (
     GetNodeInfoResponse,
     GetSetRequest,
     GetSetResponse,
+    HandNamedMessage,
     HardwareVersion,
     Health,
     IntegerValue,
-    Message,
     Mode,
     NodeStatus,
     NumericValue,
@@ -70,6 +70,9 @@ from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, decode_frame
 from veronte4x.dronecan.typeset import TypeSet, default_types, load_dsdl, set_default_types
 from veronte4x.errors import DecodeError, EncodeError, Veronte4xError
 
+Frame = TransferFrame  # old name, kept as an alias
+Message = HandNamedMessage  # old name, kept as an alias
+
 __all__ = [
     "DEFAULT_PRIORITY",
     "TRANSFER_ID_TIMEOUT",
@@ -94,15 +97,16 @@ __all__ = [
     "FileReadRequest",
     "FileReadResponse",
     "FirmwareUpdateError",
-    "Frame",
+    "Frame",  # old name, kept as an alias
     "GetNodeInfoRequest",
     "GetNodeInfoResponse",
     "GetSetRequest",
     "GetSetResponse",
+    "HandNamedMessage",
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",
+    "Message",  # old name, kept as an alias
     "Mode",
     "NodeStatus",
     "NumericValue",
@@ -122,6 +126,7 @@ __all__ = [
     "Temperature",
     "TemperatureErrorFlag",
     "Transfer",
+    "TransferFrame",
     "TransferKind",
     "TypeSet",
     "Value",

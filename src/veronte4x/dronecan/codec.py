@@ -22,13 +22,14 @@ from veronte4x.dronecan.compiled import (
 )
 from veronte4x.dronecan.compiled_tree import compile_tree
 from veronte4x.dronecan.definitions import DATA_TYPES, DataType
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.serializer import Serializer
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 
-class Codec:
-    """The payload functions of one top-level type.
+class TypeCodec:
+    """The payload functions of one top-level DroneCAN type (the Veronte messages' codec is
+    `veronte4x.codec.Codec`).
 
     Attributes:
         data_type: The type definition.
@@ -44,7 +45,7 @@ class Codec:
         self.generic = Serializer(data_type.schema)
 
     def __repr__(self) -> str:
-        return f"Codec({self.data_type.full_name} {self.data_type.kind.name.lower()})"
+        return f"TypeCodec({self.data_type.full_name} {self.data_type.kind.name.lower()})"
 
     @functools.cached_property
     def fast(self) -> FastPaths:
@@ -52,7 +53,7 @@ class Codec:
         the package compiles nothing)."""
         data_type = self.data_type
         transport = Transport(
-            Frame,
+            TransferFrame,
             can_id_base(data_type),
             data_type.kind is not TransferKind.MESSAGE,
             data_type.crc_seed,
@@ -89,16 +90,20 @@ def can_id_base(data_type: DataType) -> int:
     return data_type.data_type_id << 16 | request | 0x80
 
 
-CODECS: tuple[Codec, ...] = tuple(Codec(t) for t in DATA_TYPES)
-"""One codec per top-level type, in the order of `DATA_TYPES`."""
+Codec = TypeCodec  # old name, kept as an alias
+"""`TypeCodec` under its earlier name, kept for code that imports it from here."""
 
-BY_CLASS: dict[type, Codec] = {c.data_type.schema.cls: c for c in CODECS}
-"""Codec of each message, request and response class."""
 
-BY_ID: dict[tuple[TransferKind, int], Codec] = {
+CODECS: tuple[TypeCodec, ...] = tuple(TypeCodec(t) for t in DATA_TYPES)
+"""One `TypeCodec` per top-level type, in the order of `DATA_TYPES`."""
+
+BY_CLASS: dict[type, TypeCodec] = {c.data_type.schema.cls: c for c in CODECS}
+"""The `TypeCodec` of each message, request and response class."""
+
+BY_ID: dict[tuple[TransferKind, int], TypeCodec] = {
     (c.data_type.kind, c.data_type.data_type_id): c for c in CODECS
 }
-"""Codec of each (kind, data type id)."""
+"""The `TypeCodec` of each (kind, data type id)."""
 
 
 def decode_payload(kind: TransferKind, data_type_id: int, payload: BytesLike) -> Any:

@@ -1,4 +1,4 @@
-"""Fast paths generated from the type definitions, on a type's first use (`codec.Codec.fast`).
+"""Fast paths generated from the type definitions, on a type's first use (`codec.TypeCodec.fast`).
 
 For a struct of scalars at fixed bit offsets (NodeStatus, esc.Status, Temperature,
 RestartNode, the empty GetNodeInfo request) this module writes Python functions that go
@@ -43,7 +43,7 @@ from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
 
 FramesFunction = Callable[[Any, int, int, int, Any], list[Any]]
 PayloadEncoder = Callable[[Any], bytes]
-Decoder = Callable[[bytes], Any]
+PayloadDecoder = Callable[[bytes], Any]
 
 
 class SlowPath(Exception):
@@ -75,8 +75,8 @@ class FastPaths(NamedTuple):
 
     frames: FramesFunction
     payload: PayloadEncoder
-    decode: Decoder
-    decode_frame: Decoder | None
+    decode: PayloadDecoder
+    decode_frame: PayloadDecoder | None
 
 
 def _tail_table(count: int) -> tuple[tuple[bytes, ...], ...]:
@@ -129,7 +129,7 @@ class Transport(NamedTuple):
 
 def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transport) -> None:
     """Emit the end of a frames function: from a big-endian payload int to the frames."""
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if size <= 7:
         data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
@@ -150,7 +150,7 @@ def _emit_struct_frames(
     src: _Source, size: int, layout: str, values: list[str], transport: Transport
 ) -> None:
     """Emit the end of a frames function packing the groups with ``struct``."""
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"

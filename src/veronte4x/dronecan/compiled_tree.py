@@ -54,9 +54,9 @@ from veronte4x.dronecan.scalar_code import (
 )
 from veronte4x.dronecan.schema import (
     Array,
-    Field,
     Scalar,
     Struct,
+    StructField,
     Union,
     max_bits,
     min_bits,
@@ -152,7 +152,7 @@ class _Chunk(NamedTuple):
     enums: list[type | None]
 
 
-def _chunks(fields: tuple[Field, ...]) -> Iterator[_Chunk | tuple[int, Field]]:
+def _chunks(fields: tuple[StructField, ...]) -> Iterator[_Chunk | tuple[int, StructField]]:
     """The fields of a struct, runs of scalars as one `_Chunk`, others with their index."""
     run = _Chunk([], [], [])
     for i, f in enumerate(fields):
@@ -624,7 +624,7 @@ def compile_tree(schema: Struct, transport: Transport) -> FastPaths:
         MFT=MULTI_FRAME_TAILS,
     )
     src.lines += _Encoder(src, schema).function()
-    frame = src.name("Frame", transport.frame_class)
+    frame = src.name("TransferFrame", transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"

@@ -1,11 +1,12 @@
-"""The CAN frame type that `encode` returns."""
+"""The CAN frame of a DroneCAN transfer, as `encode` returns it (a captured frame, with its
+time and channel, is `veronte4x.capture.Frame`)."""
 
 from __future__ import annotations
 
 from typing import NamedTuple
 
 
-class Frame(NamedTuple):
+class TransferFrame(NamedTuple):
     """One classic CAN frame: a 29-bit extended ``can_id`` and up to 8 data bytes.
 
     ``data`` ends with the tail byte (spec 4.1 "Payload").
@@ -13,3 +14,7 @@ class Frame(NamedTuple):
 
     can_id: int
     data: bytes
+
+
+Frame = TransferFrame  # old name, kept as an alias
+"""`TransferFrame` under its earlier name, kept for code that imports it."""

@@ -127,7 +127,9 @@ _RESERVED = {
     "BooleanValue",
     "StringValue",
     "Message",
+    "HandNamedMessage",
     "Frame",
+    "TransferFrame",
     "Transfer",
     "CanId",
 }

@@ -80,10 +80,11 @@ __all__ = [
     "GetNodeInfoResponse",
     "GetSetRequest",
     "GetSetResponse",
+    "HandNamedMessage",
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",
+    "Message",  # old name, kept as an alias
     "Mode",
     "NodeStatus",
     "NumericValue",
@@ -101,7 +102,7 @@ __all__ = [
     "Value",
 ]
 
-Message: TypeAlias = (
+HandNamedMessage: TypeAlias = (
     NodeStatus
     | EscStatus
     | Temperature
@@ -121,4 +122,9 @@ Message: TypeAlias = (
     | FileReadRequest
     | FileReadResponse
 )
-"""Any top-level message, request or response class veronte4x had before the DSDL compiler."""
+"""Any top-level message, request or response class of this module: the types veronte4x
+named by hand before the DSDL compiler (every other type is in `veronte4x.dronecan.standard`;
+a Veronte message is a `veronte4x.codec.Message`)."""
+
+Message: TypeAlias = HandNamedMessage  # old name, kept as an alias
+"""`HandNamedMessage` under its earlier name, kept for code that imports it."""

@@ -36,7 +36,7 @@ from collections.abc import Mapping
 from typing import Any, NamedTuple, cast
 
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import BY_ID, Codec
+from veronte4x.dronecan.codec import BY_ID, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.dronecan.typeset import TypeSet, resolve
@@ -196,7 +196,7 @@ class _Session:
         self.counted = False  # the transfer in progress was already counted as lost
 
 
-def _shared(codec: Codec) -> tuple[Any, ...]:
+def _shared(codec: TypeCodec) -> tuple[Any, ...]:
     """What every session of a type holds, in the order `_Session` takes it."""
     return (
         codec,
@@ -216,7 +216,7 @@ class _SessionTypes:
     """What the sessions of each type of a type set share (`_shared`), filled in per type
     on first use so that a type's decoders are compiled only when its first frame comes."""
 
-    def __init__(self, by_id: Mapping[tuple[TransferKind, int], Codec]) -> None:
+    def __init__(self, by_id: Mapping[tuple[TransferKind, int], TypeCodec]) -> None:
         self.by_id = by_id
         self.messages: dict[int, tuple[Any, ...]] = {}
         """By message type id."""

@@ -69,7 +69,7 @@ class Array:
 
 
 @dataclass(frozen=True)
-class Field:
+class StructField:
     """One field of a struct: its DSDL name (empty for void), type and optional enum."""
 
     name: str
@@ -83,7 +83,7 @@ class Struct:
 
     name: str
     cls: type
-    fields: tuple[Field, ...]
+    fields: tuple[StructField, ...]
 
     @property
     def dsdl(self) -> str:

@@ -26,7 +26,7 @@ from veronte4x.dronecan.float16 import (
     float64_bits,
     float64_value,
 )
-from veronte4x.dronecan.schema import Array, Field, Member, Scalar, Struct, Union, uses_tao
+from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union, uses_tao
 from veronte4x.errors import DecodeError, EncodeError, boolean, integer, real
 
 
@@ -168,7 +168,13 @@ class Serializer:
             self._put(w, f, getattr(obj, f.name), path + f.name, tao and i == last, saturate)
 
     def _put(
-        self, w: _Writer, f: Field | Member, value: object, path: str, tao: bool, saturate: bool
+        self,
+        w: _Writer,
+        f: StructField | Member,
+        value: object,
+        path: str,
+        tao: bool,
+        saturate: bool,
     ) -> None:
         t = f.type
         if isinstance(t, Scalar):

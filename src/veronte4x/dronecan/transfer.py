@@ -13,10 +13,10 @@ from collections.abc import Iterable
 from typing import Any, NamedTuple
 
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
-from veronte4x.dronecan.codec import BY_CLASS, BY_ID, Codec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, BY_ID, TypeCodec, can_id_base
 from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, FramesFunction
 from veronte4x.dronecan.crc import crc16
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
 from veronte4x.dronecan.typeset import TypeSet, resolve
 from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
@@ -79,7 +79,7 @@ def encode(
     destination_node_id: int | None = None,
     saturate: bool = False,
     types: TypeSet | None = None,
-) -> list[Frame]:
+) -> list[TransferFrame]:
     """Encode a message, request or response into the frames of one transfer.
 
     Args:
@@ -127,7 +127,7 @@ def _encode_checked(
     destination_node_id: int | None,
     saturate: bool,
     types: TypeSet | None = None,
-) -> list[Frame]:
+) -> list[TransferFrame]:
     """`encode` through the generic serializer, checking every argument."""
     codec = resolve(types, "encode").by_class.get(type(message))
     if codec is None:
@@ -162,12 +162,12 @@ def _encode_checked(
         )
     payload = codec.encode(message, saturate)
     if len(payload) <= SINGLE_FRAME_MAX:
-        return [Frame(can_id, payload + bytes((0xC0 | transfer_id,)))]
+        return [TransferFrame(can_id, payload + bytes((0xC0 | transfer_id,)))]
     crc = crc16(payload, codec.crc_seed)
-    return [Frame(can_id, data) for data in split_payload(payload, crc, transfer_id)]
+    return [TransferFrame(can_id, data) for data in split_payload(payload, crc, transfer_id)]
 
 
-def _check_transport(codec: Codec, source: object, tid: object, priority: object) -> None:
+def _check_transport(codec: TypeCodec, source: object, tid: object, priority: object) -> None:
     name = codec.data_type.full_name
     for field, value, low, high in (
         ("source_node_id", source, 1, 127),

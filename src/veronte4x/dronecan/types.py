@@ -29,7 +29,7 @@ from veronte4x.dronecan.parser import (
     parse_namespaces,
     signature,
 )
-from veronte4x.dronecan.schema import Array, Field, Member, Scalar, Struct, Union, max_bits
+from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union, max_bits
 
 DSDL_ROOT = Path(__file__).with_name("dsdl")
 """The standard DSDL shipped with the package: ``uavcan/`` and its ``LICENSE``."""
@@ -115,7 +115,7 @@ class _Builder:
                 key,
                 self.classes[key],
                 tuple(
-                    Field(
+                    StructField(
                         attribute_name(a.name),
                         self._type(d, a.type, a.line),
                         self.enums.get((key, a.name)),

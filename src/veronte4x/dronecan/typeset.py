@@ -24,7 +24,7 @@ from typing import Any
 
 from veronte4x.dronecan import messages, standard
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import CODECS, Codec
+from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
 from veronte4x.dronecan.generate import keys, module_source, plan
 from veronte4x.dronecan.parser import Definition, DsdlError, check_references, parse_namespaces
@@ -49,8 +49,8 @@ class TypeSet:
 
     Attributes:
         codecs: The payload codec of every top-level type.
-        by_id: Codec of each (kind, data type id).
-        by_class: Codec of each message, request and response class.
+        by_id: The `TypeCodec` of each (kind, data type id).
+        by_class: The `TypeCodec` of each message, request and response class.
         classes: Class of each key (full name, ``.Request``/``.Response`` for a service).
         roots: The vendor root namespace directories loaded, in order.
         definitions: Every parsed definition, by full name.
@@ -60,7 +60,7 @@ class TypeSet:
 
     def __init__(
         self,
-        codecs: tuple[Codec, ...],
+        codecs: tuple[TypeCodec, ...],
         classes: Mapping[str, type],
         enums: Mapping[tuple[str, str], type],
         members: Mapping[str, tuple[type, ...]],
@@ -75,10 +75,10 @@ class TypeSet:
         self._members = dict(members)
         self.definitions: Mapping[str, Definition] = _types.MappingProxyType(dict(definitions))
         self.roots = roots
-        self.by_class: Mapping[type, Codec] = _types.MappingProxyType(
+        self.by_class: Mapping[type, TypeCodec] = _types.MappingProxyType(
             {c.data_type.schema.cls: c for c in codecs}
         )
-        self.by_id: Mapping[tuple[TransferKind, int], Codec] = _types.MappingProxyType(
+        self.by_id: Mapping[tuple[TransferKind, int], TypeCodec] = _types.MappingProxyType(
             {(c.data_type.kind, c.data_type.data_type_id): c for c in codecs}
         )
         self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(
@@ -140,7 +140,7 @@ class TypeSet:
         classes, enums, members, names = _compile(definitions, new, self, new_roots)
         found = data_types(definitions, new, classes, enums, members)
         _check_ids(self.data_types, found)
-        codecs = self.codecs + tuple(Codec(t) for t in found)
+        codecs = self.codecs + tuple(TypeCodec(t) for t in found)
         all_roots = (*self.roots, *new_roots)
         return TypeSet(codecs, classes, enums, members, definitions, all_roots, names)
 

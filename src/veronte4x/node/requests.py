@@ -13,7 +13,7 @@ from typing import Any
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_CLASS
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import GetSetRequest, GetSetResponse
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.errors import EncodeError, check_seconds
@@ -131,7 +131,7 @@ class Requester:
         self.priority = priority
         self.transfer_ids = transfer_ids or TransferIds()
         self._pending: dict[int, Pending] = {}
-        self._outbox: list[Frame] = []
+        self._outbox: list[TransferFrame] = []
         self._handles = 0
         self.mismatched = 0
         """Responses that matched a request's node, type and transfer id but answered
@@ -188,7 +188,7 @@ class Requester:
             deadline=now + pending.timeout,
         )
 
-    def take_frames(self) -> list[Frame]:
+    def take_frames(self) -> list[TransferFrame]:
         """The frames to send now, in order; the outbox is emptied."""
         frames, self._outbox = self._outbox, []
         return frames

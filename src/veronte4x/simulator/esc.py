@@ -29,7 +29,7 @@ from types import MappingProxyType
 from typing import Any
 
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.frame import Frame
+from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
@@ -245,7 +245,7 @@ class SimulatedEsc:
                 "SimulatedEsc", "response_delay", response_delay, "seconds, 0 or above"
             )
         self._delay = float(response_delay)
-        self._later: list[tuple[float, list[Frame]]] = []
+        self._later: list[tuple[float, list[TransferFrame]]] = []
         self._read_at: float | None = None
         self._values = list(self._defaults)
         self._supports_firmware_update = supports_firmware_update
@@ -254,7 +254,7 @@ class SimulatedEsc:
         self._start_time = start_time
         self._now = start_time
         self._motor = motor.at_rest(model)
-        self._outbox: list[Frame] = []
+        self._outbox: list[TransferFrame] = []
         self._in_bootloader = False
         self._software_version = SOFTWARE_VERSION
         self._update_stall_offset = update_stall_offset
@@ -544,7 +544,7 @@ class SimulatedEsc:
             vendor_specific_status_code=0,
         )
 
-    def _publish(self, message: Any) -> list[Frame]:
+    def _publish(self, message: Any) -> list[TransferFrame]:
         kind = type(message)
         transfer_id = self._transfer_ids[kind]
         self._transfer_ids[kind] = (transfer_id + 1) & 0x1F
@@ -552,7 +552,7 @@ class SimulatedEsc:
             message, source_node_id=self._node_id, transfer_id=transfer_id, priority=self._priority
         )
 
-    def poll(self, timestamp: float) -> list[Frame]:
+    def poll(self, timestamp: float) -> list[TransferFrame]:
         """The frames to send at ``timestamp``, in order.
 
         Queued service responses first, then NodeStatus if due (1 Hz), then esc.Status and

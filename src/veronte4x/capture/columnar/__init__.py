@@ -18,7 +18,7 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import batches, frame
+from veronte4x.capture.columnar import batches
 from veronte4x.capture.columnar.batches import ahead, read_batches
 from veronte4x.capture.columnar.engine import decode_into, tables_from_records
 from veronte4x.capture.columnar.sources import read_frames
@@ -27,13 +27,14 @@ from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.source import STDIN
 from veronte4x.progress import Bar
 
-__all__ = ["frame", "keyed_tables", "read_tables", "tables_from_records"]
+__all__ = ["keyed_tables", "read_tables", "tables_from_records"]
 
-Source = str | os.PathLike[str]
+CapturePath = str | os.PathLike[str]
+"""The path of a capture file (``-`` for standard input)."""
 
 
 def read_tables(
-    source: Source | Iterable[Source],
+    source: CapturePath | Iterable[CapturePath],
     bus_map: BusMap | None = None,
     channel: str | None = None,
     time: str = "timestamp",
@@ -77,7 +78,7 @@ class _Advance:
             self._reached += step
 
 
-def _size(path: Source) -> int:
+def _size(path: CapturePath) -> int:
     """Bytes of a capture file, for the progress bar (0 for standard input or a bad path,
     which the reader reports)."""
     try:
@@ -87,7 +88,7 @@ def _size(path: Source) -> int:
 
 
 def keyed_tables(
-    path: Source,
+    path: CapturePath,
     bus_map: BusMap | None,
     channel: str | None,
     time: str = "timestamp",
@@ -112,7 +113,7 @@ def keyed_tables(
 
 
 def _batched(
-    path: Source,
+    path: CapturePath,
     bus_map: BusMap | None,
     channel: str | None,
     reached: Callable[[int], None] | None,

@@ -29,7 +29,7 @@ import numpy as np
 import numpy.typing as npt
 
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import Codec
+from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
 from veronte4x.dronecan.scalar_code import bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
@@ -53,13 +53,13 @@ class TypeIndex:
         seeds: Transfer CRC seed of each type index.
     """
 
-    codecs: tuple[Codec, ...]
+    codecs: tuple[TypeCodec, ...]
     message_types: npt.NDArray[np.int16]
     service_types: npt.NDArray[np.int16]
     limits: npt.NDArray[np.int64]
     seeds: npt.NDArray[np.uint32]
 
-    def codec_of(self, index: int) -> Codec:
+    def codec_of(self, index: int) -> TypeCodec:
         """The codec of a type index."""
         return self.codecs[index]
 
@@ -76,7 +76,7 @@ def type_index_of(types: TypeSet | None = None) -> TypeIndex:
     return found
 
 
-def _build_index(codecs: tuple[Codec, ...]) -> TypeIndex:
+def _build_index(codecs: tuple[TypeCodec, ...]) -> TypeIndex:
     message_types = np.full(1 << 16, -1, np.int16)
     service_types = np.full(1 << 10, -1, np.int16)
     for index, codec in enumerate(codecs):

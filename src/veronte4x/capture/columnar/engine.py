@@ -28,7 +28,7 @@ from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record, transfer_record
 from veronte4x.codec import Codec
 from veronte4x.codec.messages import Sender
-from veronte4x.dronecan.codec import Codec as DroneCanCodec
+from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import Problem, ProblemReport
 from veronte4x.errors import DecodeError
 
@@ -277,7 +277,7 @@ def _crc_mismatches(
 def _decode_type(
     frames: FrameColumns,
     found: dronecan.Transfers,
-    codec: DroneCanCodec,
+    codec: TypeCodec,
     which: np.ndarray,
     stamp: np.ndarray,
     tables: Tables,
@@ -331,7 +331,7 @@ def _one_transfer(
     frames: FrameColumns,
     found: dronecan.Transfers,
     transfer: int,
-    codec: DroneCanCodec,
+    codec: TypeCodec,
     stamp: np.ndarray,
 ) -> list[tuple[int, Record]]:
     """A transfer the column decoders do not take, decoded as the reassembler does."""

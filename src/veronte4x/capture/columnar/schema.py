@@ -43,7 +43,7 @@ from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.columnar.veronte import layout_list
 from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
-from veronte4x.codec.fields import Field, Kind
+from veronte4x.codec.fields import Field, FieldKind
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
@@ -183,19 +183,19 @@ def _item(attr: str, index: int) -> Callable[[Any], Any]:
 
 def veronte_type(f: Field) -> pa.DataType:
     """The Arrow type of a Veronte field's decoded values."""
-    if f.kind in (Kind.UNSIGNED, Kind.SIGNED):
+    if f.kind in (FieldKind.UNSIGNED, FieldKind.SIGNED):
         if f.scale is not None:
             return pa.float64()
-        if f.kind is Kind.SIGNED:
+        if f.kind is FieldKind.SIGNED:
             return integer_type(-(1 << (f.bits - 1)), (1 << (f.bits - 1)) - 1)
         return integer_type(0, f.maximum if f.maximum is not None else (1 << f.bits) - 1)
-    if f.kind is Kind.BOOL:
+    if f.kind is FieldKind.BOOL:
         return pa.bool_()
-    if f.kind is Kind.FLOAT32:
+    if f.kind is FieldKind.FLOAT32:
         return pa.float32()
-    if f.kind is Kind.BYTES:
+    if f.kind is FieldKind.BYTES:
         return pa.binary()
-    if f.kind is Kind.MAPPED:
+    if f.kind is FieldKind.MAPPED:
         values = [value for _, value in f.mapping]
         return integer_type(min(values), max(values))
     raise ValueError(f"field {f.label} of kind {f.kind.value} holds no value")
