@@ -24,7 +24,7 @@ from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from typing import BinaryIO
 
-from veronte4x.capture.columnar.candump import parse_text
+from veronte4x.capture.columnar.candump import parse_block, read_blocks
 from veronte4x.capture.columnar.frames import FrameColumns, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
@@ -81,12 +81,10 @@ def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iter
     with _open_raw(source) as raw:
         stream: BinaryIO = gzip.GzipFile(fileobj=raw) if source.gzipped else raw  # type: ignore[assignment]
         try:
-            for block in _blocks(stream, batch_bytes):
-                frames = parse_text(block, line)
+            for block, size in read_blocks(stream, batch_bytes):
+                frames, count = parse_block(block, size, line)
                 if frames is None:  # lone carriage returns: the per-frame reader's lines
-                    frames, count = _universal_lines(block, line)
-                else:
-                    count = block.count(b"\n") + (not block.endswith(b"\n"))
+                    frames, count = _universal_lines(block[:size].tobytes(), line)
                 line += count
                 yield Batch(frames, _position(raw))
             return
@@ -106,24 +104,6 @@ def _position(raw: BinaryIO) -> int | None:
         return raw.tell()
     except OSError:  # a pipe
         return None
-
-
-def _blocks(stream: BinaryIO, size: int) -> Iterator[bytes]:
-    """Blocks of about ``size`` bytes that end at a line break (the last one may not)."""
-    rest = b""
-    while True:
-        chunk = stream.read(size)
-        if not chunk:
-            if rest:
-                yield rest
-            return
-        block = rest + chunk
-        cut = block.rfind(b"\n")
-        if cut < 0:
-            rest = block
-            continue
-        rest = block[cut + 1 :]
-        yield block[: cut + 1]
 
 
 def _universal_lines(block: bytes, first_line: int) -> tuple[FrameColumns, int]:
