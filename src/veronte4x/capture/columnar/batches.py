@@ -19,10 +19,10 @@ import itertools
 import os
 import sys
 import zlib
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
-from typing import BinaryIO
+from typing import Any, BinaryIO
 
 from veronte4x.capture.columnar.candump import parse_block, read_blocks
 from veronte4x.capture.columnar.frames import FrameColumns, from_frames
@@ -45,10 +45,12 @@ class Batch:
         frames: The frames and bad lines of the batch.
         position: Bytes of the file read so far (compressed bytes for gzip), or None where
             the reader does not tell.
+        prepared: What `ahead`'s ``prepare`` made of the frames, if given one.
     """
 
     frames: FrameColumns
     position: int | None
+    prepared: Any = None
 
 
 def read_batches(
@@ -140,13 +142,24 @@ def _items(items: Iterable[tuple[int, Frame | BadLine]], batch_frames: int) -> I
         yield Batch(from_frames(chunk), None)
 
 
-def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
-    """The batches, each read on a thread while the one before it is decoded."""
+def ahead(
+    batches: Iterator[Batch], prepare: Callable[[FrameColumns], Any] | None = None
+) -> Iterator[Batch]:
+    """The batches, each read on a thread while the one before it is decoded (and, with
+    ``prepare``, its ``prepared`` made there too: the second processor's share of the
+    decoding, such as `StreamDecoder.prepare`)."""
+
+    def read() -> Batch | None:
+        batch = next(batches, None)
+        if batch is not None and prepare is not None:
+            batch.prepared = prepare(batch.frames)
+        return batch
+
     with ThreadPoolExecutor(1) as thread:
         try:
-            coming = thread.submit(next, batches, None)
+            coming = thread.submit(read)
             while (batch := coming.result()) is not None:
-                coming = thread.submit(next, batches, None)
+                coming = thread.submit(read)
                 yield batch
         finally:
             coming.cancel()

@@ -258,6 +258,12 @@ def _fixed_lines(
         ok[taken[~named[interface]]] = False
         keep = np.flatnonzero(named[interface])
         taken, interface = taken[keep], interface[keep]
+    data_bytes = data.view(np.uint8).reshape(-1, MAX_DATA)
+    if len(taken) == len(starts):  # every line (as most often): no copies
+        lines = _LogLines(
+            taken, stamp, interface, names, can_id, extended, data_size // 2, data_bytes, micros
+        )
+        return lines, np.zeros(0, np.int64)
     lines = _LogLines(
         taken,
         stamp[taken],
@@ -266,7 +272,7 @@ def _fixed_lines(
         can_id[taken],
         extended[taken],
         data_size[taken] // 2,
-        data.view(np.uint8).reshape(-1, MAX_DATA)[taken],
+        data_bytes[taken],
         micros[taken],
     )
     return lines, np.flatnonzero(~ok)
