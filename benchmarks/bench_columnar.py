@@ -608,7 +608,7 @@ def stage_times(path: Path, repeat: int) -> tuple[float, dict[str, float]]:
         timer(columnar, "_batched", "other"),
         timer(columnar, "ahead", "other"),
     ]
-    columnar.ahead = lambda batches: batches  # type: ignore[assignment]  # one thread
+    columnar.ahead = lambda batches, prepare=None: batches  # type: ignore[assignment]
     best: tuple[float, dict[str, float]] = (float("inf"), {})
     try:
         for _ in range(repeat):
