@@ -44,6 +44,7 @@ import time
 from collections.abc import Callable
 from itertools import islice
 from pathlib import Path
+from typing import Any
 
 import can
 import numpy as np
@@ -292,6 +293,49 @@ def write_sessions(path: Path, sessions: int, frames: int) -> int:
     return written
 
 
+def many_session_lines(flight: list[str], frames: int, sessions: int = 1_500) -> list[str]:
+    """A two-bus flight: the example flight on ``can0`` (``flight``: its lines, repeated
+    with shifted timestamps) and, on ``can1``, a DroneCAN bus of ``sessions`` distinct
+    sessions (services between node pairs and messages of many nodes, single-frame, as a
+    bench with many devices has them), all open through the capture, taking turns in a
+    random order; half of the ``frames`` lines each, in time order."""
+    import random
+
+    from veronte4x import dronecan
+
+    kinds = session_kinds()
+    keys = [
+        (kind, source, target)
+        for kind, (_, service) in enumerate(kinds)
+        for source in range(1, 128)
+        for target in (range(1, 128) if service else (None,))
+    ]
+    chooser = random.Random(sessions)
+    picked = chooser.sample(keys, sessions)
+    made = []
+    for kind, source, target in picked:
+        frame = dronecan.encode(
+            kinds[kind][0], source_node_id=source, transfer_id=0, destination_node_id=target
+        )[0]
+        made.append((f"{frame.can_id:08X}#{frame.data[:-1].hex().upper()}", frame.data[-1]))
+    half = frames // 2
+    stamps = [float(line[1 : line.index(")")]) for line in flight]
+    span = stamps[-1] - stamps[0] + 0.02
+    can0 = []
+    for copy in range(half // len(flight) + 1):
+        for stamp, line in zip(stamps, flight, strict=True):
+            can0.append((stamp + copy * span, line[line.index(")") + 1 :]))
+    can0 = can0[:half]
+    start, step = can0[0][0], (can0[-1][0] - can0[0][0]) / (frames - half)
+    can1 = []
+    for k in range(frames - half):
+        head, tail = made[k % sessions]
+        tid = (k // sessions) % 32
+        can1.append((start + k * step, f" can1 {head}{tail | tid:02X}"))
+    merged = sorted(can0 + can1, key=lambda item: item[0])
+    return [f"({stamp:.6f}){rest}" for stamp, rest in merged]
+
+
 def session_rows(root: Path, frames: int, repeat: int) -> list[tuple[int, int, float]]:
     """read_tables on buses of 10 to 100,000 distinct sessions: (sessions, frames, s)."""
     rows = []
@@ -309,6 +353,152 @@ def vehicle_lines(frames: int) -> list[str]:
     make = runpy.run_path(str(ROOT / "examples" / "make_vehicle_bus.py"))
     lines: list[str] = make["vehicle_lines"](frames)
     return lines
+
+
+STAGES = (
+    ("parse", "candump text to frame columns (`candump.parse_block`)"),
+    ("veronte", "Veronte frames routed and decoded (`engine.decode_veronte`)"),
+    ("split", "DroneCAN frames split by session, checked, carried (`stream._dronecan`)"),
+    ("reassembly", "transfers joined and their CRCs checked (`dronecan.transfers`, `crc_ok`)"),
+    ("payloads", "payloads decoded field by field (`engine._decode_type`)"),
+    ("per frame", "irregular frames through the per-frame decoder (`Tables.add_records`)"),
+    ("tables", "Arrow columns and tables built (`Tables.add_columns`, `finish_with_keys`)"),
+    ("other", "reading the file, joining batches, the rest"),
+)
+"""The stages of `read_tables` that `stage_times` tells apart."""
+
+
+def stage_times(path: Path, repeat: int) -> tuple[float, dict[str, float]]:
+    """Thread CPU seconds of `read_tables` on one thread (no read-ahead), in all and per
+    stage (see `STAGES`), best of ``repeat`` runs. Each stage's functions are wrapped in a
+    timer that leaves out the time of the stages they call."""
+    import veronte4x.capture.columnar as columnar
+    from veronte4x.capture.columnar import batches, dronecan, engine, stream, tables
+
+    spent: dict[str, float] = {}
+    inside: list[float] = []
+
+    def timer(owner: Any, name: str, stage: str) -> tuple[Any, str, Any]:
+        function = getattr(owner, name, None)
+        if function is None:  # a version of veronte4x before this function
+            return owner, name, None
+
+        def timed(*args: Any, **kwargs: Any) -> Any:
+            start = time.thread_time()
+            inside.append(0.0)
+            try:
+                return function(*args, **kwargs)
+            finally:
+                took = time.thread_time() - start
+                spent[stage] = spent.get(stage, 0.0) + took - inside.pop()
+                if inside:
+                    inside[-1] += took
+
+        setattr(owner, name, timed)
+        return owner, name, function
+
+    wrapped = [
+        timer(batches, "parse_block", "parse"),
+        timer(batches, "parse_text", "parse"),  # its name before
+        timer(engine, "decode_veronte", "veronte"),
+        timer(stream.StreamDecoder, "_dronecan", "split"),
+        timer(dronecan, "transfers", "reassembly"),
+        timer(dronecan, "crc_ok", "reassembly"),
+        timer(engine, "_decode_type", "payloads"),
+        timer(tables.Tables, "add_records", "per frame"),
+        timer(tables.Tables, "add_columns", "tables"),
+        timer(tables.Tables, "finish_with_keys", "tables"),
+        timer(engine, "_add_transfers", "tables"),
+        timer(columnar, "_batched", "other"),
+        timer(columnar, "ahead", "other"),
+    ]
+    columnar.ahead = lambda batches, prepare=None: batches  # type: ignore[assignment]
+    best: tuple[float, dict[str, float]] = (float("inf"), {})
+    try:
+        for _ in range(repeat):
+            spent.clear()
+            start = time.thread_time()
+            capture.read_tables(path)
+            total = time.thread_time() - start
+            if total < best[0]:
+                best = (total, dict(spent))
+    finally:
+        for owner, name, function in wrapped:
+            if function is not None:
+                setattr(owner, name, function)
+    return best
+
+
+def print_stages(shapes: list[tuple[str, Path, int]], repeat: int) -> None:
+    """The per-stage table: nanoseconds of CPU per frame of each stage, per shape."""
+    found = [(name, frames, *stage_times(path, repeat)) for name, path, frames in shapes]
+    print(
+        f"\n{'read_tables per stage, CPU ns/frame on one thread':52}"
+        + "".join(f" {name:>16}" for name, *_ in found)
+    )
+    for stage, _ in STAGES:
+        cells = []
+        for _, frames, total, spent in found:
+            took = spent.get(stage, 0.0)
+            cells.append(f"{1e9 * took / frames:9.0f} ({100 * took / total:3.0f} %)")
+        print(f"{stage:52}" + "".join(f" {cell:>16}" for cell in cells))
+    totals = [f"{1e9 * total / frames:9.0f}" for _, frames, total, _ in found]
+    print(f"{'all (one thread)':52}" + "".join(f" {cell:>16}" for cell in totals))
+    for stage, meaning in STAGES:
+        print(f"  {stage}: {meaning}")
+
+
+def _both(function: Callable[[], int], repeat: int) -> tuple[float, float]:
+    """The best wall and the best CPU seconds (every thread of this process) of
+    ``repeat`` runs."""
+    wall = cpu = float("inf")
+    for _ in range(repeat):
+        start, start_cpu = time.perf_counter(), time.process_time()
+        function()
+        wall = min(wall, time.perf_counter() - start)
+        cpu = min(cpu, time.process_time() - start_cpu)
+    return wall, cpu
+
+
+def shape_rows(
+    shapes: list[tuple[str, Path, int]], dbc: Path, repeat: int
+) -> list[tuple[str, str, int, float, float]]:
+    """python-can's reader, asammdf and `read_tables` on each shape, taking turns:
+    (shape, reader, frames, wall s, CPU s)."""
+    rows = []
+    for name, path, frames in shapes:
+        mf4 = path.with_suffix(".mf4")
+        write_mf4(path, mf4)
+        readers: tuple[tuple[str, Callable[[], int]], ...] = (
+            ("python-can CanutilsLogReader", lambda p=path: python_can_reader(p)),
+            (
+                "asammdf extract_bus_logging + to_dataframe",
+                lambda m=mf4: asammdf_dataframe(m, dbc),
+            ),
+            ("veronte4x read_tables", lambda p=path: columnar_tables(p)),
+        )
+        times = {reader: (float("inf"), float("inf")) for reader, _ in readers}
+        for _ in range(repeat):  # one run of each per round: all see the same load
+            for reader, function in readers:
+                wall, cpu = _both(function, 1)
+                times[reader] = (min(times[reader][0], wall), min(times[reader][1], cpu))
+        rows += [(name, reader, frames, *times[reader]) for reader, _ in readers]
+        mf4.unlink()
+    return rows
+
+
+def print_shapes(rows: list[tuple[str, str, int, float, float]]) -> None:
+    """The three shapes' table: rates, and `read_tables`' ratios by wall and CPU time."""
+    print(
+        f"\n{'shape':14} {'reader':44} {'frames/s':>11} {'wall s':>7} {'CPU s':>7}"
+        f" {'read_tables is':>15} {'(CPU)':>7}"
+    )
+    ours = {shape: (wall, cpu) for shape, reader, _, wall, cpu in rows if "read_tables" in reader}
+    for shape, reader, frames, wall, cpu in rows:
+        ratio = f"{wall / ours[shape][0]:14.2f}x {cpu / ours[shape][1]:6.2f}x"
+        if "read_tables" in reader:
+            ratio = ""
+        print(f"{shape:14} {reader:44} {frames / wall:11,.0f} {wall:7.2f} {cpu:7.2f} {ratio}")
 
 
 def _timed(function: Callable[[], int], repeat: int) -> float:
@@ -339,6 +529,12 @@ def main() -> None:
     )
     parser.add_argument(
         "--vehicle-frames", type=int, default=200_000, help="frames of the vehicle bus"
+    )
+    parser.add_argument(
+        "--many-frames", type=int, default=1_000_000, help="frames of the many-session flight"
+    )
+    parser.add_argument(
+        "--sessions", type=int, default=1_500, help="DroneCAN sessions of that flight's can1"
     )
     parser.add_argument(
         "--memory-mb",
@@ -399,6 +595,21 @@ def main() -> None:
         hour = 63_000_000 / ours
         print(f"one hour of two 1 Mbit/s buses (63 M frames) at this rate: {hour:.0f} s")
 
+        many, vehicle = root / "many.log", root / "vehicle.log"
+        many.write_text(
+            "\n".join(many_session_lines(flight_lines(None), args.many_frames, args.sessions))
+            + "\n"
+        )
+        vehicle.write_text("\n".join(vehicle_lines(args.vehicle_frames)) + "\n")
+        shapes = [
+            ("flight", big, written),
+            (f"{args.sessions:,} sessions", many, args.many_frames),
+            ("vehicle bus", vehicle, args.vehicle_frames),
+        ]
+        print_shapes(shape_rows(shapes, dbc, repeat))
+        print_stages(shapes, repeat)
+        many.unlink()
+
         header = f"{'frames/s':>12} {'seconds':>8} {'peak MB':>8}"
         print(f"\n{'to_parquet (fresh process each)':48} {header}")
         for path in (small, big):
@@ -418,22 +629,6 @@ def main() -> None:
             print(
                 f"{name:48} {rate:12,.0f} {1e6 * seconds / frames:8.2f} {rate / python_can:26.2f}x"
             )
-        vehicle = root / "vehicle.log"
-        vehicle.write_text("\n".join(vehicle_lines(args.vehicle_frames)) + "\n")
-        rows = [
-            (
-                "python-can CanutilsLogReader",
-                _timed(lambda: python_can_reader(vehicle), repeat),
-            ),
-            ("veronte4x read_tables", _timed(lambda: columnar_tables(vehicle), repeat)),
-        ]
-        print(
-            f"\n{f'DroneCAN vehicle bus, {args.vehicle_frames:,} frames':48} {'frames/s':>12}"
-            f" {'seconds':>8} {'read_tables is':>15}"
-        )
-        for name, seconds in rows:
-            rate = args.vehicle_frames / seconds
-            print(f"{name:48} {rate:12,.0f} {seconds:8.2f} {seconds / rows[-1][1]:14.2f}x")
         vehicle.unlink()
         print(
             f"\n{'read_tables peak memory (fresh process each)':48} {'seconds':>8} "

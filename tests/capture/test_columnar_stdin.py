@@ -29,7 +29,13 @@ def _frames(data: bytes, monkeypatch: pytest.MonkeyPatch) -> tuple[list[Frame], 
 
 @pytest.mark.parametrize(
     "data",
-    [TEXT, gzip.compress(TEXT), TEXT.replace(b"\n", b"\r", 1), gzip.compress(TEXT[:-1] + b"\r")],
+    [
+        TEXT,
+        gzip.compress(TEXT, mtime=0),
+        TEXT.replace(b"\n", b"\r", 1),
+        gzip.compress(TEXT[:-1] + b"\r", mtime=0),
+    ],
+    ids=["plain", "gzip", "lone-cr", "gzip-cr-at-end"],
 )
 def test_standard_input_plain_gzip_and_lone_carriage_returns(
     data: bytes, monkeypatch: pytest.MonkeyPatch

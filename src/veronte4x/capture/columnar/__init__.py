@@ -124,9 +124,9 @@ def _batched(
         decoder = StreamDecoder(bus_map, channel, per_frame)
         parts: dict[str, list[tuple[pa.Table, npt.NDArray[np.int64]]]] = {}
         try:
-            for batch in ahead(read_batches(path, batches.BATCH_BYTES)):
+            for batch in ahead(read_batches(path, batches.BATCH_BYTES), decoder.prepare):
                 clock.see(batch.frames)
-                for kind, part in decoder.feed_with_keys(batch.frames).items():
+                for kind, part in decoder.feed_with_keys(batch.frames, batch.prepared).items():
                     parts.setdefault(kind, []).append(part)
                 if reached is not None and batch.position is not None:
                     reached(batch.position)

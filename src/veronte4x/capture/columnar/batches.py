@@ -19,12 +19,12 @@ import itertools
 import os
 import sys
 import zlib
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
-from typing import BinaryIO
+from typing import Any, BinaryIO
 
-from veronte4x.capture.columnar.candump import parse_text
+from veronte4x.capture.columnar.candump import parse_block, read_blocks
 from veronte4x.capture.columnar.frames import FrameColumns, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
@@ -45,10 +45,12 @@ class Batch:
         frames: The frames and bad lines of the batch.
         position: Bytes of the file read so far (compressed bytes for gzip), or None where
             the reader does not tell.
+        prepared: What `ahead`'s ``prepare`` made of the frames, if given one.
     """
 
     frames: FrameColumns
     position: int | None
+    prepared: Any = None
 
 
 def read_batches(
@@ -81,12 +83,10 @@ def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iter
     with _open_raw(source) as raw:
         stream: BinaryIO = gzip.GzipFile(fileobj=raw) if source.gzipped else raw  # type: ignore[assignment]
         try:
-            for block in _blocks(stream, batch_bytes):
-                frames = parse_text(block, line)
+            for block, size in read_blocks(stream, batch_bytes):
+                frames, count = parse_block(block, size, line)
                 if frames is None:  # lone carriage returns: the per-frame reader's lines
-                    frames, count = _universal_lines(block, line)
-                else:
-                    count = block.count(b"\n") + (not block.endswith(b"\n"))
+                    frames, count = _universal_lines(block[:size].tobytes(), line)
                 line += count
                 yield Batch(frames, _position(raw))
             return
@@ -106,24 +106,6 @@ def _position(raw: BinaryIO) -> int | None:
         return raw.tell()
     except OSError:  # a pipe
         return None
-
-
-def _blocks(stream: BinaryIO, size: int) -> Iterator[bytes]:
-    """Blocks of about ``size`` bytes that end at a line break (the last one may not)."""
-    rest = b""
-    while True:
-        chunk = stream.read(size)
-        if not chunk:
-            if rest:
-                yield rest
-            return
-        block = rest + chunk
-        cut = block.rfind(b"\n")
-        if cut < 0:
-            rest = block
-            continue
-        rest = block[cut + 1 :]
-        yield block[: cut + 1]
 
 
 def _universal_lines(block: bytes, first_line: int) -> tuple[FrameColumns, int]:
@@ -160,13 +142,24 @@ def _items(items: Iterable[tuple[int, Frame | BadLine]], batch_frames: int) -> I
         yield Batch(from_frames(chunk), None)
 
 
-def ahead(batches: Iterator[Batch]) -> Iterator[Batch]:
-    """The batches, each read on a thread while the one before it is decoded."""
+def ahead(
+    batches: Iterator[Batch], prepare: Callable[[FrameColumns], Any] | None = None
+) -> Iterator[Batch]:
+    """The batches, each read on a thread while the one before it is decoded (and, with
+    ``prepare``, its ``prepared`` made there too: the second processor's share of the
+    decoding, such as `StreamDecoder.prepare`)."""
+
+    def read() -> Batch | None:
+        batch = next(batches, None)
+        if batch is not None and prepare is not None:
+            batch.prepared = prepare(batch.frames)
+        return batch
+
     with ThreadPoolExecutor(1) as thread:
         try:
-            coming = thread.submit(next, batches, None)
+            coming = thread.submit(read)
             while (batch := coming.result()) is not None:
-                coming = thread.submit(next, batches, None)
+                coming = thread.submit(read)
                 yield batch
         finally:
             coming.cancel()

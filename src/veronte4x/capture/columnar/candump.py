@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 from collections import deque
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import BinaryIO
@@ -47,8 +47,8 @@ _ODD[[10, 13]] = False
 _ODD[128:] = True
 _ONES = np.uint64(0x0101010101010101)
 _HIGH = np.uint64(0x8080808080808080)
-_PAD = 32
-"""Line breaks after the text, more than the widest window."""
+_PAD = 96
+"""Line breaks after the text, more than the widest window (`_fixed_lines`' rows)."""
 _POW10 = 10 ** np.arange(19, dtype=np.int64)
 _POW10F = 10.0 ** np.arange(23)
 _EXACT = 1 << 53
@@ -71,12 +71,73 @@ def parse_text(text: bytes, first_line: int = 1) -> FrameColumns | None:
     """
     a = np.full(len(text) + 1 + _PAD, 10, np.uint8)
     a[: len(text)] = np.frombuffer(text, np.uint8)
-    return _parse(a, len(text) + (not text.endswith(b"\n")), first_line)[0]
+    return parse_block(a, len(text) + (not text.endswith(b"\n")), first_line)[0]
 
 
-def _parse(a: npt.NDArray[np.uint8], size: int, first_line: int) -> tuple[FrameColumns | None, int]:
+def parse_block(
+    a: npt.NDArray[np.uint8], size: int, first_line: int
+) -> tuple[FrameColumns | None, int]:
     """`parse_text` of ``a[:size]``: whole lines, each ending in a line break, followed by
-    at least `_PAD` more line breaks. Also returns the number of lines."""
+    at least `_PAD` more line breaks. Also returns the number of lines.
+
+    Lines of one fixed layout (`_fixed_lines`) are read first, a few layouts at most; the
+    other lines, if any, are copied into a text of their own for `_parse_any`."""
+    a = a[: size + _PAD]
+    breaks = np.flatnonzero(a[:size] == 10)
+    starts = np.empty(len(breaks), np.int64)
+    starts[0] = 0
+    starts[1:] = breaks[:-1] + 1
+    ends = breaks - (a[np.maximum(breaks - 1, 0)] == 13)  # a CR before the line break
+    ends = np.maximum(ends, starts)
+    rest = np.flatnonzero(ends > starts)
+    if not len(rest):  # blank lines only
+        return _parse_any(a, size, first_line)
+    parts = []
+    for _ in range(_LAYOUTS):
+        layout = _layout(a, starts, ends, rest)
+        if layout is None:
+            break
+        found, failed = _fixed_lines(a, starts[rest], ends[rest], layout)
+        found.line = rest[found.line]
+        if len(found.line):
+            parts.append(found.columns(first_line))
+        rest = rest[failed]
+        if not len(rest):
+            return concat(parts), len(breaks)
+    if len(rest):
+        # The other lines, each with its line break, one after the other.
+        sizes = breaks[rest] + 1 - starts[rest]
+        offsets = np.cumsum(sizes) - sizes
+        index = np.arange(int(sizes.sum())) + np.repeat(starts[rest] - offsets, sizes)
+        text = np.full(len(index) + _PAD, 10, np.uint8)
+        text[: len(index)] = a[index]
+        others, _ = _parse_any(text, len(index), 1)
+        if others is None:
+            return None, len(breaks)
+        parts.append(_renumbered(others, rest + first_line))
+    return concat(parts), len(breaks)
+
+
+_LAYOUTS = 4
+"""Fixed layouts tried per text (a log of merged captures may have several)."""
+
+
+def _renumbered(columns: FrameColumns, lines: npt.NDArray[np.int64]) -> FrameColumns:
+    """Columns of a text made of some lines of another, numbered from 1, given the line
+    numbers of those lines in the other text (``lines[k]``: the number of its line k+1)."""
+    columns.order = lines[columns.order - 1]
+    columns.bad_lines = [
+        (int(lines[order - 1]), bad._replace(line_number=int(lines[bad.line_number - 1])))
+        for order, bad in columns.bad_lines
+    ]
+    return columns
+
+
+def _parse_any(
+    a: npt.NDArray[np.uint8], size: int, first_line: int
+) -> tuple[FrameColumns | None, int]:
+    """`parse_block` for lines of any form: every field found by where the text's spaces and
+    "#" are."""
     a = a[: size + _PAD]
     breaks = np.flatnonzero(a[:size] == 10)
     starts = np.empty(len(breaks), np.int64)
@@ -110,6 +171,116 @@ def _parse(a: npt.NDArray[np.uint8], size: int, first_line: int) -> tuple[FrameC
         for item in parse_candump((raw,), first_line=first_line + line):
             items.append((first_line + line, item))
     return concat([columns, from_frames(items)]), len(breaks)
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """Where the fields of a log-form line are: ``(`` a timestamp of ``stamp`` characters
+    with its dot at ``dot`` (-1 for none), ``) `` an interface name of ``name`` characters,
+    a space, then the identifier."""
+
+    stamp: int
+    dot: int
+    name: int
+
+    @property
+    def ident(self) -> int:
+        """Where the identifier starts."""
+        return self.stamp + self.name + 4
+
+
+def _layout(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    lines: npt.NDArray[np.int64],
+) -> _Layout | None:
+    """The layout of the first of a few ``lines`` that has one `_fixed_lines` reads."""
+    for line in lines[:8].tolist():
+        text = a[starts[line] : ends[line]].tobytes()
+        close = text.find(b") ")
+        space = text.find(b" ", close + 2)
+        stamp = text[1:close]
+        if not text.startswith(b"(") or close < 0 or space < 0:
+            continue
+        digits = len(stamp) - stamp.count(b".")
+        if stamp.replace(b".", b"", 1).isdigit() and digits <= 16 and space - close - 2 <= 16:
+            return _Layout(len(stamp), stamp.find(b"."), space - close - 2)
+    return None
+
+
+def _fixed_lines(
+    a: npt.NDArray[np.uint8],
+    starts: npt.NDArray[np.int64],
+    ends: npt.NDArray[np.int64],
+    layout: _Layout,
+) -> tuple[_LogLines, npt.NDArray[np.int64]]:
+    """The lines of the log form and of one layout, every character checked where it must
+    be; also returns the others (as indices into ``starts``).
+
+    Each line is copied into a row of a matrix, and each field read at its fixed place in
+    the rows (an identifier of 3 or 8 digits moves the data: both places are read), so
+    that no search over the text is needed. A line taken here is one `_log_lines` takes,
+    with the same values."""
+    ident = layout.ident
+    width = ident + 33  # a word read at the last data digit stays in the row
+    rows = np.lib.stride_tricks.sliding_window_view(a, width)[starts]
+    words: npt.NDArray[np.uint64] = np.ndarray(
+        shape=(len(starts), width - 7), dtype="<u8", buffer=rows, strides=(width, 1)
+    )
+    close = layout.stamp + 1
+    ok = rows[:, 0] == 40  # "("
+    ok &= (rows[:, close] == 41) & (rows[:, close + 1] == 32) & (rows[:, ident - 1] == 32)
+    short = rows[:, ident + 3] == 35  # "#" after 3 digits
+    ok &= short | (rows[:, ident + 8] == 35)
+    data_size = ends - starts - np.where(short, ident + 4, ident + 9)
+    ok &= (data_size >= 0) & (data_size <= 2 * MAX_DATA) & (data_size % 2 == 0)
+    stamp, micros, good = _shaped_stamps(words, layout, len(starts))
+    ok &= good
+    can_id, extended, good = _identifiers(words[:, ident], np.where(short, 3, 8), strict=True)
+    ok &= good
+    data, good = _data(
+        np.where(short, words[:, ident + 4], words[:, ident + 9]),
+        np.where(short, words[:, ident + 12], words[:, ident + 17]),
+        data_size,
+        strict=True,
+    )
+    ok &= good
+    taken = np.flatnonzero(ok)
+    names_at = close + 2
+    interface, names = _interfaces(
+        words[taken, names_at],
+        words[taken, names_at + 8],
+        np.full(len(taken), layout.name, np.int64),
+    )
+    named = np.array([_plain_name(name) for name in names] or [True], np.bool_)
+    if not named.all():
+        ok[taken[~named[interface]]] = False
+        keep = np.flatnonzero(named[interface])
+        taken, interface = taken[keep], interface[keep]
+    data_bytes = data.view(np.uint8).reshape(-1, MAX_DATA)
+    if len(taken) == len(starts):  # every line (as most often): no copies
+        lines = _LogLines(
+            taken, stamp, interface, names, can_id, extended, data_size // 2, data_bytes, micros
+        )
+        return lines, np.zeros(0, np.int64)
+    lines = _LogLines(
+        taken,
+        stamp[taken],
+        interface,
+        names,
+        can_id[taken],
+        extended[taken],
+        data_size[taken] // 2,
+        data_bytes[taken],
+        micros[taken],
+    )
+    return lines, np.flatnonzero(~ok)
+
+
+def _plain_name(name: str) -> bool:
+    """An interface name `_fixed_lines` takes: printable ASCII, no space and no "#"."""
+    return all(33 <= ord(c) <= 126 and c != "#" for c in name)
 
 
 @dataclass
@@ -381,13 +552,20 @@ def _byte_mask(count: npt.NDArray[np.int64]) -> npt.NDArray[np.uint64]:
     return masks
 
 
-def _hex(word: npt.NDArray[np.uint64], mask: npt.NDArray[np.uint64]) -> tuple[np.ndarray, ...]:
-    """Eight hex characters per word (no control or non-ASCII bytes) to their nibbles, one
-    per byte, and whether every character under ``mask`` is a hex digit."""
+def _hex(
+    word: npt.NDArray[np.uint64], mask: npt.NDArray[np.uint64], strict: bool = False
+) -> tuple[np.ndarray, ...]:
+    """Eight hex characters per word to their nibbles, one per byte, and whether every
+    character under ``mask`` is a hex digit. The words hold no control character unless
+    ``strict`` (control characters 0x10 to 0x19 would pass for digits; a non-ASCII byte
+    never passes, and its carries reach only the bytes after it)."""
     lower = word | (_ONES * np.uint64(0x20))
     digit = (lower + _ONES * np.uint64(0x50)) & ~(lower + _ONES * np.uint64(0x46))
     letter = (lower + _ONES * np.uint64(0x1F)) & ~(lower + _ONES * np.uint64(0x19))
     good = (~(digit | letter) & mask & _HIGH) == 0
+    if strict:  # a hex digit has bit 5 or bit 6 set, a control character neither
+        marked = ((word >> np.uint64(5)) | (word >> np.uint64(6))) & mask & _ONES
+        good &= marked == (mask & _ONES)
     nibbles = (lower & (_ONES * np.uint64(15))) + np.uint64(9) * ((lower >> np.uint64(6)) & _ONES)
     return nibbles, good
 
@@ -426,36 +604,59 @@ def _stamps(
     rows = np.flatnonzero(sizes == size)
     if 0 < digits <= 16 and shape.count(b".") <= 1:
         base = at[rows]
-        runs = [(0, dot), (dot + 1, size - dot - 1)] if dot >= 0 else [(0, size)]
-        halves = [np.zeros(len(rows), np.uint64), np.zeros(len(rows), np.uint64)]
-        pad = 16 - digits
-        for half in range(2):
-            zeros = [j - 8 * half for j in range(8 * half, 8 * half + 8) if j < pad]
-            for j in zeros:
-                halves[half] |= np.uint64(48) << np.uint64(8 * j)
-        target = pad
-        for source, length in runs:
-            while length:
-                half, offset = divmod(target, 8)
-                piece = min(length, 8 - offset)
-                mask = np.uint64((1 << (8 * piece)) - 1)
-                halves[half] |= (words[base + source] & mask) << np.uint64(8 * offset)
-                target, source, length = target + piece, source + piece, length - piece
-        high, high_ok = _eight_digits(halves[0])
-        low, low_ok = _eight_digits(halves[1])
-        mantissa = high * np.uint64(100_000_000) + low
-        decimals = size - dot - 1 if dot >= 0 else 0
-        shaped = high_ok & low_ok & (mantissa < _EXACT) & (decimals <= 6)
+        stamp[rows], micros[rows], shaped = _shaped(lambda k: words[base + k], size, dot, len(rows))
         if dot >= 0:
             shaped &= a[base + dot] == 46
-        stamp[rows] = mantissa.astype(np.float64) / _POW10F[decimals]
-        micros[rows], safe = _micros(mantissa.astype(np.int64), np.full(len(rows), decimals))
-        good[rows] = shaped & safe
+        good[rows] = shaped
     rest = np.flatnonzero(~good)
     if len(rest):
         stamp[rest], micros[rest], good[rest] = _stamps_any(
             _window(a, at[rest], _STAMP), sizes[rest]
         )
+    return stamp, micros, good
+
+
+def _shaped(
+    word_at: Callable[[int], npt.NDArray[np.uint64]], size: int, dot: int, count: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """`_stamps` of ``count`` timestamps of one shape: ``size`` characters, digits but for
+    a dot at ``dot`` (-1: none, not checked here), at most 16 digits; ``word_at(k)``: the
+    eight characters from the k-th of each. Gives the floats, microseconds and which are
+    good."""
+    digits = size - (dot >= 0)
+    runs = [(0, dot), (dot + 1, size - dot - 1)] if dot >= 0 else [(0, size)]
+    halves = [np.zeros(count, np.uint64), np.zeros(count, np.uint64)]
+    pad = 16 - digits
+    for half in range(2):
+        zeros = [j - 8 * half for j in range(8 * half, 8 * half + 8) if j < pad]
+        for j in zeros:
+            halves[half] |= np.uint64(48) << np.uint64(8 * j)
+    target = pad
+    for source, length in runs:
+        while length:
+            half, offset = divmod(target, 8)
+            piece = min(length, 8 - offset)
+            mask = np.uint64((1 << (8 * piece)) - 1)
+            halves[half] |= (word_at(source) & mask) << np.uint64(8 * offset)
+            target, source, length = target + piece, source + piece, length - piece
+    high, high_ok = _eight_digits(halves[0])
+    low, low_ok = _eight_digits(halves[1])
+    mantissa = high * np.uint64(100_000_000) + low
+    decimals = size - dot - 1 if dot >= 0 else 0
+    shaped = high_ok & low_ok & (mantissa < _EXACT) & (decimals <= 6)
+    stamp = mantissa.astype(np.float64) / _POW10F[decimals]
+    micros, safe = _micros(mantissa.astype(np.int64), np.full(count, decimals))
+    return stamp, micros, shaped & safe
+
+
+def _shaped_stamps(
+    words: npt.NDArray[np.uint64], layout: _Layout, count: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The timestamps of lines of one layout (``words[:, k]``: each line's eight characters
+    from its k-th), as `_stamps` gives them."""
+    stamp, micros, good = _shaped(lambda k: words[:, 1 + k], layout.stamp, layout.dot, count)
+    if layout.dot >= 0:
+        good &= (words[:, 1 + layout.dot] & np.uint64(0xFF)) == np.uint64(46)
     return stamp, micros, good
 
 
@@ -502,10 +703,13 @@ def _stamps_any(chars: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
     return mantissa / _POW10F[np.minimum(decimals, 22)], micros, good
 
 
-def _identifiers(word: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
-    """3 or 8 hex digits to the identifier; error frames (bit 29) are not good."""
+def _identifiers(
+    word: np.ndarray, sizes: np.ndarray, strict: bool = False
+) -> tuple[np.ndarray, ...]:
+    """3 or 8 hex digits to the identifier; error frames (bit 29) are not good (``strict``:
+    see `_hex`)."""
     long = sizes == 8
-    nibbles, good = _hex(word, _byte_mask(sizes))
+    nibbles, good = _hex(word, _byte_mask(sizes), strict)
     short_id = (
         (nibbles & np.uint64(15)) << np.uint64(8)
         | ((nibbles >> np.uint64(8)) & np.uint64(15)) << np.uint64(4)
@@ -518,12 +722,15 @@ def _identifiers(word: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, ...]:
 
 
 def _data(
-    first: npt.NDArray[np.uint64], second: npt.NDArray[np.uint64], sizes: npt.NDArray[np.int64]
+    first: npt.NDArray[np.uint64],
+    second: npt.NDArray[np.uint64],
+    sizes: npt.NDArray[np.int64],
+    strict: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Up to 16 hex digits (in two words of eight) to up to 8 bytes, zero-padded, as one
-    little-endian word."""
-    high, good_high = _hex(first, _byte_mask(sizes))
-    low, good_low = _hex(second, _byte_mask(sizes - 8))
+    little-endian word (``strict``: see `_hex`)."""
+    high, good_high = _hex(first, _byte_mask(sizes), strict)
+    low, good_low = _hex(second, _byte_mask(sizes - 8), strict)
     data = (_pack(high) | _pack(low) << np.uint64(32)) & _byte_mask(sizes // 2)
     return data, good_high & good_low
 
@@ -543,7 +750,7 @@ def _interfaces(
         same = np.flatnonzero(same & (codes < 0))
         codes[same] = len(names)
         text = (int(low[row]) | int(high[row]) << 64).to_bytes(16, "little")
-        names.append(text[: sizes[row]].decode("ascii"))
+        names.append(text[: sizes[row]].decode("latin-1"))  # ASCII but in `_fixed_lines`
         left = np.flatnonzero(codes < 0)
     return codes, names
 
@@ -565,8 +772,8 @@ def parse_stream(stream: BinaryIO, workers: int | None = None) -> FrameColumns |
     pending: deque[Future[tuple[FrameColumns | None, int]]] = deque()
     line = 0
     with ThreadPoolExecutor(workers) as pool:
-        for block, size in _blocks(stream):
-            pending.append(pool.submit(_parse, block, size, 1))
+        for block, size in read_blocks(stream):
+            pending.append(pool.submit(parse_block, block, size, 1))
             while pending and (len(pending) > 2 * workers or pending[0].done()):
                 columns, lines = pending.popleft().result()
                 if columns is None:
@@ -593,14 +800,17 @@ def _shifted(columns: FrameColumns, offset: int) -> FrameColumns:
     return columns
 
 
-def _blocks(stream: BinaryIO) -> Iterator[tuple[npt.NDArray[np.uint8], int]]:
-    """Blocks of about `BLOCK` bytes of whole lines, read into arrays padded for `_parse`:
-    each comes as (array, size of its text)."""
+def read_blocks(
+    stream: BinaryIO, block: int = BLOCK
+) -> Iterator[tuple[npt.NDArray[np.uint8], int]]:
+    """Blocks of about ``block`` bytes of whole lines, read into arrays padded for
+    `parse_block`: each comes as (array, size of its text; a last line without a line
+    break gets one)."""
     carry = np.zeros(0, np.uint8)  # the start of a line the last block cut
     while True:
-        a = np.empty(len(carry) + BLOCK + 1 + _PAD, np.uint8)
+        a = np.empty(len(carry) + block + 1 + _PAD, np.uint8)
         a[: len(carry)] = carry
-        end = len(carry) + _read_into(stream, a.data[len(carry) : len(carry) + BLOCK])
+        end = len(carry) + _read_into(stream, a.data[len(carry) : len(carry) + block])
         if end == len(carry):  # the end of the stream
             if end:
                 a[end:] = 10  # a last line without a line break

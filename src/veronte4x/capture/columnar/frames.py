@@ -222,9 +222,8 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
         )
         remapped.append(codes[part.channel] if len(part) else part.channel)
     order = np.concatenate([p.order for p in parts])
-    in_sequence = all(
-        not len(a) or not len(b) or a.order[-1] < b.order[0] for a, b in itertools.pairwise(parts)
-    )
+    filled = [p for p in parts if len(p)]
+    in_sequence = all(a.order[-1] < b.order[0] for a, b in itertools.pairwise(filled))
     sort = order if in_sequence else np.argsort(order, kind="stable")
     long_data: dict[int, bytes] = {}
     if any(p.long_data for p in parts):

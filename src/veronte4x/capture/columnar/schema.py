@@ -31,6 +31,7 @@ keep their names.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -124,10 +125,10 @@ class TableSpec:
     head: tuple[pa.Field, ...]
     columns: tuple[Column, ...]
 
-    @property
+    @functools.cached_property
     def schema(self) -> pa.Schema:
         """The table's Arrow schema; fields with a physical unit carry it in their metadata
-        (``unit``: ``V``, ``A``, ``K``, ``rpm``, ``%``, ``s``)."""
+        (``unit``: ``V``, ``A``, ``K``, ``rpm``, ``%``, ``s``). Made once per spec."""
         fields = [pa.field(c.name, c.type, metadata=_unit(self.kind, c.name)) for c in self.columns]
         return pa.schema([*self.head, *fields])
 

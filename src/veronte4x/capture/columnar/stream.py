@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
@@ -47,7 +48,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import dbc, dronecan, engine
 from veronte4x.capture.columnar.frames import FrameColumns, concat
 from veronte4x.capture.columnar.schema import all_specs
-from veronte4x.capture.columnar.tables import Tables
+from veronte4x.capture.columnar.tables import Keyed, Tables
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.dronecan.reassembler import Reassembler
 
@@ -111,27 +112,43 @@ class StreamDecoder:
         """
         return {kind: table for kind, (table, _) in self.feed_with_keys(frames).items()}
 
-    def feed_with_keys(
-        self, frames: FrameColumns
-    ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
-        """`feed`, each table with the capture-order keys of its rows."""
+    def prepare(self, frames: FrameColumns) -> Prepared:
+        """The part of a batch's decoding that needs nothing of the batches before it (its
+        Veronte frames), which a second thread can do while this decoder takes the batch
+        before (see `veronte4x.capture.columnar.batches.ahead`); give it to
+        `feed_with_keys` with the same frames."""
         if self.channel is not None:
             frames = engine.only_channel(frames, self.channel)
+        tables = Tables(self._specs, list(frames.channels))
+        done, candidates = engine.decode_veronte(frames, self.bus_map, tables)
+        return Prepared(frames, done, candidates, tables.finish_with_keys())
+
+    def feed_with_keys(
+        self, frames: FrameColumns, prepared: Prepared | None = None
+    ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
+        """`feed`, each table with the capture-order keys of its rows (``prepared``:
+        `prepare` of the same frames, if made)."""
+        if prepared is None:
+            prepared = self.prepare(frames)
+        frames = prepared.frames
         pending, context = self._take_pending(frames)
+        done, candidates = prepared.done, prepared.candidates
         if pending is not None and len(pending):
-            joined = concat([pending, frames])
+            joined = concat([pending, frames])  # the carried frames come first
             context = np.concatenate([context, np.zeros(len(frames), np.bool_)])
+            # Carried frames are DroneCAN candidates, never Veronte frames.
+            done = np.concatenate([np.zeros(len(pending), np.bool_), done])
+            candidates = np.concatenate([np.arange(len(pending)), candidates + len(pending)])
         else:
             joined, context = frames, np.zeros(len(frames), np.bool_)
         tables = Tables(self._specs, list(joined.channels))
-        done, candidates = engine.decode_veronte(joined, self.bus_map, tables)
         if self.bus_map.dronecan:
             done |= self._dronecan(joined, candidates, context, tables)
         self._keep_pending()
         done |= context
         dbc.decode_frames(joined, self.bus_map, done, tables)
         tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
-        return tables.finish_with_keys()
+        return merged(prepared.tables, tables.finish_with_keys())
 
     def _dronecan(
         self,
@@ -413,6 +430,31 @@ class StreamDecoder:
         self._pending = pending
         self._context = context[keep][by_order]
         self._pending_keys = self._keys(pending)
+
+
+@dataclass
+class Prepared:
+    """A batch's frames (of the decoder's channel) and their Veronte decoding: which rows
+    are decoded, the rows that may be DroneCAN, and the tables of the decoded rows."""
+
+    frames: FrameColumns
+    done: npt.NDArray[np.bool_]
+    candidates: npt.NDArray[np.int64]
+    tables: Keyed
+
+
+def merged(first: Keyed, second: Keyed) -> Keyed:
+    """Two sets of keyed tables of one batch as one, each table's rows in key order."""
+    out = dict(first)
+    for kind, (table, keys) in second.items():
+        if kind not in out:
+            out[kind] = table, keys
+            continue
+        other, other_keys = out[kind]
+        joined = np.concatenate([other_keys, keys])
+        order = np.argsort(joined, kind="stable")
+        out[kind] = pa.concat_tables([other, table]).take(pa.array(order)), joined[order]
+    return out
 
 
 def stable_order(values: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:

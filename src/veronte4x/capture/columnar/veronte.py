@@ -10,6 +10,7 @@ error.
 
 from __future__ import annotations
 
+import weakref
 from typing import Any
 
 import numpy as np
@@ -20,7 +21,6 @@ from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import ByteOrder, FieldKind
 from veronte4x.codec.messages import Sender
-from veronte4x.codec.routes import Route
 
 Columns = dict[str, Any]
 
@@ -39,59 +39,95 @@ def targets(
     frames at once. ``data`` holds each frame's eight first bytes as one little-endian
     integer.
     """
-    table = codec.routes
-    index = {id(layout): i for i, layout in enumerate(layout_list(codec))}
-    by_command = np.full(256, -1, np.int16)
-    told: list[int] = []  # commands of several routes: told apart below
-    for command in table.commands():
-        group = table.of(command)
-        if len(group) == 1 and group[0].sender is None and group[0].header is None:
-            by_command[command] = index[id(group[0].frame)]
-        else:
-            told.append(command)
+    by_command, told = _routing(codec, sender)
     command = (data & np.uint64(0xFF)).astype(np.uint8)
     out = np.where(length > 0, by_command[command], -1).astype(np.int16)
+    if not told:
+        return out
     byte1 = (data >> np.uint64(8)) & np.uint64(0xFF)
-    for wire in told:
-        groups = table.for_sender(wire, sender)
+    for wire, headed, groups in told:
         mine = (command == wire) & (length > 0)
         out[mine] = -1
-        if any(group[0].header is not None for group in groups):
+        if headed:
             mine &= length >= 2
         rest = mine.copy()
-        for group in groups:
-            header = group[0].header
+        for header, forms in groups:
             if header is None:
                 chosen, rest = rest, np.zeros_like(rest)
             else:
                 chosen = rest & (byte1 == header)
                 rest &= ~chosen
-            out[chosen] = _form(group, length[chosen], excess, index)
+            out[chosen] = _form(forms, length[chosen], excess)
     return out
 
 
-def _form(
-    forms: list[Route], length: npt.NDArray[np.int64], excess: bool, index: dict[int, int]
-) -> npt.NDArray[np.int16]:
+_Forms = list[tuple[int, int]]
+"""A message's forms, largest first: (fixed size, index into `layout_list`)."""
+_Told = list[tuple[int, bool, list[tuple[int | None, _Forms]]]]
+"""Commands of several routes: (command, whether a group has a header, the groups of forms
+by header)."""
+_ROUTING: weakref.WeakKeyDictionary[Codec, dict[Sender, tuple[np.ndarray, _Told]]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def _routing(codec: Codec, sender: Sender) -> tuple[npt.NDArray[np.int16], _Told]:
+    """One sender's routing by the codec's route table, made once: the layout of each
+    command byte with one route (-1 for none or several), and the commands of several."""
+    of_codec = _ROUTING.setdefault(codec, {})
+    found = of_codec.get(sender)
+    if found is not None:
+        return found
+    table = codec.routes
+    index = {id(layout): i for i, layout in enumerate(layout_list(codec))}
+    by_command = np.full(256, -1, np.int16)
+    told: _Told = []
+    for command in table.commands():
+        group = table.of(command)
+        if len(group) == 1 and group[0].sender is None and group[0].header is None:
+            by_command[command] = index[id(group[0].frame)]
+            continue
+        groups = table.for_sender(command, sender)
+        told.append(
+            (
+                command,
+                any(forms[0].header is not None for forms in groups),
+                [
+                    (forms[0].header, [(r.frame.fixed_size, index[id(r.frame)]) for r in forms])
+                    for forms in groups
+                ],
+            )
+        )
+    of_codec[sender] = by_command, told
+    return by_command, told
+
+
+def _form(forms: _Forms, length: npt.NDArray[np.int64], excess: bool) -> npt.NDArray[np.int16]:
     """The layout of each frame of one message's forms, by length (see
     `veronte4x.codec.routes`): the largest form it holds, a smaller one only if exact or with
     ``excess``; -1 otherwise."""
     out = np.full(len(length), -1, np.int16)
     above: int | None = None
-    for route in forms:
-        size = route.frame.fixed_size
+    for size, index in forms:
         if above is None:
             fits = length >= size
         else:
             fits = (length == size) | ((length > size) & (length < above) & excess)
-        out[fits] = index[id(route.frame)]
+        out[fits] = index
         above = size
     return out
 
 
+_LAYOUTS: weakref.WeakKeyDictionary[Codec, list[FrameLayout]] = weakref.WeakKeyDictionary()
+
+
 def layout_list(codec: Codec) -> list[FrameLayout]:
-    """Every layout this codec decodes with, in the order of its route table."""
-    return codec.routes.layouts()
+    """Every layout this codec decodes with, in the order of its route table (made once
+    per codec: a codec does not change)."""
+    found = _LAYOUTS.get(codec)
+    if found is None:
+        found = _LAYOUTS[codec] = codec.routes.layouts()
+    return found
 
 
 def decode(
