@@ -146,10 +146,11 @@ def convert_file(
         frames = 0
         truncated.clear()
         try:
-            for batch in ahead(read_batches(name, batch_bytes)):
+            for batch in ahead(read_batches(name, batch_bytes), decoder.prepare):
                 frames += len(batch.frames)
                 clock.see(batch.frames)
-                for kind, (table, _) in clock(decoder.feed_with_keys(batch.frames)).items():
+                tables = decoder.feed_with_keys(batch.frames, batch.prepared)
+                for kind, (table, _) in clock(tables).items():
                     if kind == "errors":
                         truncated.extend(_truncations(table))
                     writer.write(kind, table)
