@@ -287,11 +287,11 @@ def test_adding_a_log_format(scratch: Path) -> None:
     assert {"Ready", "Score", "NodeStatus", "errors"} <= set(tables)
     for name, table in tables.items():
         rows = duckdb.execute(
-            f"SELECT count(*) FROM read_parquet('{out}/message={name}/*.parquet')"
+            f"SELECT count(*) FROM read_parquet('{out}/capture=*/{name}.parquet')"
         ).fetchone()
         assert rows == (table.num_rows + 2 * (name == "errors"),), name
     bad = duckdb.execute(
-        f"SELECT count(*) FROM read_parquet('{out}/message=errors/*.parquet') "
+        f"SELECT count(*) FROM read_parquet('{out}/capture=*/errors.parquet') "
         "WHERE error = 'bad line'"
     ).fetchone()
     assert bad == (2,)

@@ -114,7 +114,7 @@ def _got(columns: FrameColumns) -> list[Any]:
     return [_exact(item) for _, item in _items(columns)]
 
 
-@settings(max_examples=300, suppress_health_check=[HealthCheck.too_slow], deadline=None)
+@settings(max_examples=300, suppress_health_check=[HealthCheck.too_slow])
 @given(logs(), st.integers(1, 300))
 def test_logs_with_faults_agree_with_the_per_frame_reader(text: bytes, batch_bytes: int) -> None:
     with tempfile.TemporaryDirectory() as folder:

@@ -54,7 +54,7 @@ def _expected_feed(outcome: Transfer | Problems | None) -> Transfer | None:
     return outcome.transfer if isinstance(outcome, Problems) else outcome
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(
     seed=st.integers(0, 2**32),
     rate=st.sampled_from([0.0, 0.05, 0.2, 0.5]),
