@@ -286,14 +286,20 @@ def test_adding_a_log_format(scratch: Path) -> None:
     tables = capture.read_tables(scratch / "capture.log")
     assert {"Ready", "Score", "NodeStatus", "errors"} <= set(tables)
     for name, table in tables.items():
-        rows = duckdb.execute(
-            f"SELECT count(*) FROM read_parquet('{out}/capture=*/{name}.parquet')"
-        ).fetchone()
+        rows = (
+            duckdb.connect()
+            .execute(f"SELECT count(*) FROM read_parquet('{out}/capture=*/{name}.parquet')")
+            .fetchone()
+        )
         assert rows == (table.num_rows + 2 * (name == "errors"),), name
-    bad = duckdb.execute(
-        f"SELECT count(*) FROM read_parquet('{out}/capture=*/errors.parquet') "
-        "WHERE error = 'bad line'"
-    ).fetchone()
+    bad = (
+        duckdb.connect()
+        .execute(
+            f"SELECT count(*) FROM read_parquet('{out}/capture=*/errors.parquet') "
+            "WHERE error = 'bad line'"
+        )
+        .fetchone()
+    )
     assert bad == (2,)
     decoded = _run(scratch, "-m", "veronte4x", "decode", "capture.frames")
     assert decoded.returncode == 0, decoded.stderr

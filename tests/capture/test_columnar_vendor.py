@@ -176,7 +176,7 @@ def _duckdb_rows(out: Path, kind: str) -> list[dict[str, Any]]:
     duckdb = pytest.importorskip("duckdb")
     files = f"'{out}/capture=*/{kind}.parquet'"
     query = f"SELECT * EXCLUDE (source) FROM read_parquet({files}, hive_partitioning = false)"
-    table = duckdb.sql(query).to_arrow_table()
+    table = duckdb.connect().sql(query).to_arrow_table()
     return [{k: _plain(v) for k, v in row.items()} for row in table.to_pylist()]
 
 

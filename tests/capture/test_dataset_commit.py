@@ -105,7 +105,7 @@ def visible(out: Path, source: Path) -> dict[str, int]:
     duck = {}
     for kind in sorted({*TABLES, *OLD}):
         try:
-            (count,) = duckdb.execute(
+            (count,) = duckdb.connect().execute(
                 "SELECT count(*) FROM read_parquet(?, hive_partitioning = true) WHERE source = ?",
                 [f"{out}/capture=*/{kind}.parquet", str(source)],
             ).fetchone() or (0,)
@@ -216,7 +216,7 @@ def test_readers_skip_a_run_in_progress(tmp_path: Path) -> None:
     for glob in ("capture=*/Status.parquet", "*/Status.parquet"):
         pattern = f"{out}/{glob}"
         query = f"SELECT count(*) FROM read_parquet('{pattern}', hive_partitioning = true)"
-        assert duckdb.execute(query).fetchone() == (rows,)
+        assert duckdb.connect().execute(query).fetchone() == (rows,)
         scan = pl.scan_parquet(pattern, hive_partitioning=True)
         assert scan.select(pl.len()).collect().item() == rows
         with warnings.catch_warnings():  # dask's own use of pandas, deprecated in pandas 3.1
@@ -242,7 +242,9 @@ def test_which_names_each_reader_skips(tmp_path: Path, prefix: str) -> None:
     total = sum(TABLES.values())
     assert sum(pq.read_metadata(f).num_rows for f in ds.dataset(folder).files) == total
     glob = f"{folder}/*Status.parquet"
-    assert duckdb.execute(f"SELECT count(*) FROM read_parquet('{glob}')").fetchone() == (2 * rows,)
+    assert duckdb.connect().execute(f"SELECT count(*) FROM read_parquet('{glob}')").fetchone() == (
+        2 * rows,
+    )
     assert pl.scan_parquet(glob).select(pl.len()).collect().item() == 2 * rows
 
 
@@ -286,10 +288,14 @@ def _snapshot_duckdb(out: Path) -> dict[str, dict[str, int]]:
     """Rows per table of each capture, from one DuckDB listing of every table's files."""
     found: dict[str, dict[str, int]] = {}
     try:
-        listed = duckdb.execute(
-            "SELECT file_name, num_rows FROM parquet_file_metadata(?)",
-            [f"{out}/capture=*/*.parquet"],
-        ).fetchall()
+        listed = (
+            duckdb.connect()
+            .execute(
+                "SELECT file_name, num_rows FROM parquet_file_metadata(?)",
+                [f"{out}/capture=*/*.parquet"],
+            )
+            .fetchall()
+        )
     except duckdb.IOException:  # nothing published yet
         return found
     for name, rows in listed:

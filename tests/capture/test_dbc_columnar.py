@@ -237,15 +237,16 @@ def test_parquet_read_back_with_duckdb(tmp_path: Path) -> None:
         "unknown.parquet",
     ]  # fmt: skip
     bms = f"{out}/capture=*/BmsStatus.parquet"
-    assert duckdb.execute(
+    assert duckdb.connect().execute(
         f"SELECT voltage, current, state, temperature FROM read_parquet('{bms}')"
     ).fetchall() == [(10.0, -6.0, "charging", 25)]
     gimbal = f"{out}/capture=*/Gimbal.parquet"
-    assert duckdb.execute(
+    assert duckdb.connect().execute(
         f"SELECT can_id, mode, pitch, yaw FROM read_parquet('{gimbal}')"
     ).fetchall() == [(0x18FF1234, 2, None, -0.2)]
     errors = f"{out}/capture=*/errors.parquet"
-    assert duckdb.execute(f"SELECT error, detail FROM read_parquet('{errors}')").fetchall() == [
+    query = f"SELECT error, detail FROM read_parquet('{errors}')"
+    assert duckdb.connect().execute(query).fetchall() == [
         ("decode error", capture.read_tables(path, BUS_MAP, dbc=[PAYLOAD_DBC])["errors"]
          .column("detail")[0].as_py())
     ]  # fmt: skip

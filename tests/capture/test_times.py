@@ -242,12 +242,18 @@ def test_datasets_read_back_as_utc_timestamps(tmp_path: Path) -> None:
     out = tmp_path / "dataset"
     capture.to_parquet(EXAMPLE, out)
     files = str(out / "capture=*" / "Score.parquet")
-    kind = duckdb.sql(f"DESCRIBE SELECT timestamp FROM read_parquet('{files}')").fetchall()
+    kind = (
+        duckdb.connect().sql(f"DESCRIBE SELECT timestamp FROM read_parquet('{files}')").fetchall()
+    )
     assert kind[0][1] == "TIMESTAMP WITH TIME ZONE"
-    first = duckdb.sql(
-        "SELECT strftime(timestamp AT TIME ZONE 'UTC', '%Y-%m-%d %H:%M:%S.%f') "
-        f"FROM read_parquet('{files}') LIMIT 1"
-    ).fetchall()
+    first = (
+        duckdb.connect()
+        .sql(
+            "SELECT strftime(timestamp AT TIME ZONE 'UTC', '%Y-%m-%d %H:%M:%S.%f') "
+            f"FROM read_parquet('{files}') LIMIT 1"
+        )
+        .fetchall()
+    )
     assert first == [("2025-11-21 15:00:00.260000",)]
     frame = polars.read_parquet(files)
     assert frame.schema["timestamp"] == polars.Datetime("us", "UTC")
