@@ -22,6 +22,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from veronte4x.dronecan.crc import crc64we
 from veronte4x.errors import Veronte4xError
 
 
@@ -420,31 +421,6 @@ def nested_name(t: FieldType) -> str | None:
 
 
 # -- signatures -------------------------------------------------------------------------
-
-_MASK64 = (1 << 64) - 1
-_POLY = 0x42F0E1EBA9EA3693
-
-
-def _crc_table() -> tuple[int, ...]:
-    table = []
-    for byte in range(256):
-        crc = byte << 56
-        for _ in range(8):
-            crc = ((crc << 1) ^ _POLY) & _MASK64 if crc >> 63 else (crc << 1) & _MASK64
-        table.append(crc)
-    return tuple(table)
-
-
-_TABLE = _crc_table()
-
-
-def crc64we(data: bytes, value: int = 0) -> int:
-    """CRC-64-WE (poly 0x42F0E1EBA9EA3693, init and xor-out all ones), continuing from the
-    CRC ``value`` of the data before (0 to start)."""
-    crc = value ^ _MASK64
-    for byte in data:
-        crc = _TABLE[(crc >> 56) ^ byte] ^ (crc << 8) & _MASK64
-    return crc ^ _MASK64
 
 
 def signature(name: str, definitions: dict[str, Definition]) -> int:
