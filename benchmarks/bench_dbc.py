@@ -8,7 +8,7 @@ multiplexed 29-bit gimbal frame), and the example flight with those frames mixed
 frames already parsed (bytes in hand). Rows, in microseconds per DBC frame, best of the
 turns, and the ratio veronte4x over cantools:
 
-- ``columnar DBC pass``: the columnar engine's DBC step alone (`columnar.dbc.decode_frames`
+- ``columnar DBC pass``: the columnar engine's DBC step alone (`columnar.dbc.decode_dbc_frames`
   over the parsed frame columns, then the Arrow tables built): what decoding through the
   engine costs, the issue's 2x row;
 - ``read_tables``: the whole path, parsing the file and routing included (for the mixed
@@ -151,7 +151,7 @@ def main() -> None:
     calls = 10_000
     began = time.perf_counter()
     for _ in range(calls):
-        dbc.decode_frames(parsed, BUS_MAP, done, None)  # type: ignore[arg-type]
+        dbc.decode_dbc_frames(parsed, BUS_MAP, done, None)  # type: ignore[arg-type]
     per_call = (time.perf_counter() - began) / calls
     print(f"the engine's DBC step without a DBC: {per_call * 1e9:.0f} ns a call")
 
@@ -159,7 +159,7 @@ def main() -> None:
 def engine_pass(parsed: FrameColumns, bus_map: BusMap, specs: dict[str, TableSpec]) -> None:
     """The columnar engine's DBC step over parsed frames, and its tables built."""
     tables = Tables(specs, list(parsed.channels))
-    dbc.decode_frames(parsed, bus_map, np.zeros(len(parsed), np.bool_), tables)
+    dbc.decode_dbc_frames(parsed, bus_map, np.zeros(len(parsed), np.bool_), tables)
     tables.finish()
 
 

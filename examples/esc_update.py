@@ -15,7 +15,7 @@ from collections.abc import Callable
 
 import can
 
-from veronte4x.client import FirmwareUpdateError, Phase, UpdateProgress
+from veronte4x.client import FirmwareUpdateFailedError, Phase, UpdateProgress
 from veronte4x.client.bus import BusClient
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.simulator import SimulatedEsc
@@ -42,7 +42,7 @@ def main(clock: Callable[[], float] = time.monotonic, channel: str = "esc-update
 
         try:
             info = client.update_firmware(ESC_NODE, IMAGE, "esc.bin", progress=progress)
-        except FirmwareUpdateError as error:
+        except FirmwareUpdateFailedError as error:
             print(error)
             return 1
         after = info.software_version

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from arbiter_support import READY, SEED_VARIABLES, Rig, variable
 
-from veronte4x.arbiter import Arbiter, ArbiterConfig, DecisionKind, Method, Phase
+from veronte4x.arbiter import Arbiter, ArbiterConfig, ArbiterPhase, DecisionKind, Method
 
 CONFIG = ArbiterConfig(variables=SEED_VARIABLES)
 
@@ -150,7 +150,7 @@ def test_none_alive_selects_the_preferred_one() -> None:
         "AP3 dead: arbitration variable 0 missing for 0.1 s",
         "AP3 -> AP1: no autopilot alive: preferred AP1 selected",
     ]
-    assert rig.arb.state.phase is Phase.ARBITRATING
+    assert rig.arb.state.phase is ArbiterPhase.ARBITRATING
 
 
 def test_relative_variables_drop_out_when_two_are_left() -> None:

@@ -15,7 +15,7 @@ import pytest
 
 from veronte4x import dronecan
 from veronte4x.client import (
-    FirmwareUpdateError,
+    FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
     ParameterError,
@@ -153,7 +153,7 @@ def test_firmware_update_pulls_the_image_and_checks_its_crc(
 
 def test_firmware_update_of_a_node_that_hangs(buses: tuple[can.BusABC, can.BusABC]) -> None:
     node, client = _setup(buses, SimulatedEsc(21, update_stall_offset=1024))
-    with pytest.raises(FirmwareUpdateError) as error:
+    with pytest.raises(FirmwareUpdateFailedError) as error:
         client.update_firmware(21, _image(4096), read_timeout=0.5)
     assert str(error.value) == (
         "node 21 stopped reading the image at byte 1024 of 4096 (nothing for 0.5 s)"
@@ -163,5 +163,7 @@ def test_firmware_update_of_a_node_that_hangs(buses: tuple[can.BusABC, can.BusAB
 
 def test_firmware_update_refused(buses: tuple[can.BusABC, can.BusABC]) -> None:
     _, client = _setup(buses, SimulatedEsc(21, supports_firmware_update=False))
-    with pytest.raises(FirmwareUpdateError, match=r"^node 21 refused the update: INVALID_MODE"):
+    with pytest.raises(
+        FirmwareUpdateFailedError, match=r"^node 21 refused the update: INVALID_MODE"
+    ):
         client.update_firmware(21, _image(10))

@@ -15,7 +15,7 @@ import pytest
 
 from veronte4x import dronecan
 from veronte4x.client import (
-    FirmwareUpdateError,
+    FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
     ParameterError,
@@ -150,7 +150,7 @@ def test_firmware_update(bench: Callable[..., Blocking]) -> None:
 
 def test_firmware_update_of_a_node_that_hangs(bench: Callable[..., Blocking]) -> None:
     client = bench(SimulatedEsc(21, update_stall_offset=1024))
-    with pytest.raises(FirmwareUpdateError) as error:
+    with pytest.raises(FirmwareUpdateFailedError) as error:
         client.update_firmware(21, bytes(4096), read_timeout=0.5)
     assert str(error.value) == (
         "node 21 stopped reading the image at byte 1024 of 4096 (nothing for 0.5 s)"
@@ -193,7 +193,7 @@ def test_one_node_that_stops_mid_update_leaves_the_others_updated(
             for n in (21, 22, 23)
         ]
     )
-    assert isinstance(tasks[0].error, FirmwareUpdateError)
+    assert isinstance(tasks[0].error, FirmwareUpdateFailedError)
     assert str(tasks[0].error) == (
         "node 21 stopped reading the image at byte 2048 of 6000 (nothing for 0.5 s)"
     )

@@ -9,7 +9,7 @@ from typing import Any
 import pytest
 
 from veronte4x import dronecan
-from veronte4x.client import FirmwareUpdateError, Phase
+from veronte4x.client import FirmwareUpdateFailedError, Phase
 from veronte4x.client import operations as ops
 from veronte4x.client.protocol import ClientProtocol
 
@@ -34,7 +34,7 @@ def test_an_update_without_an_answer_fails_with_the_no_response_text() -> None:
         runner.poll(now)
         assert now < 5
     assert sent == 2  # the request and its one retry, nothing after
-    with pytest.raises(FirmwareUpdateError) as failed:
+    with pytest.raises(FirmwareUpdateFailedError) as failed:
         task.result()
     assert str(failed.value) == TEXT
     assert failed.value.timed_out

@@ -26,10 +26,10 @@ from veronte4x.arbiter.errors import ConfigError, InputError
 from veronte4x.arbiter.machine import (
     AUTOPILOT_TRANSITIONS,
     TRANSITIONS,
+    ArbiterEvent,
+    ArbiterPhase,
     AutopilotEvent,
     AutopilotPhase,
-    Event,
-    Phase,
 )
 from veronte4x.arbiter.model import Arbiter
 from veronte4x.arbiter.replay import (
@@ -42,13 +42,20 @@ from veronte4x.arbiter.replay import (
     replay,
 )
 from veronte4x.arbiter.scores import Contribution, compute_scores, explain_scores
-from veronte4x.arbiter.state import ArbiterState, Decision, DecisionKind, Mode, SystemChecks
+from veronte4x.arbiter.state import ArbiterMode, ArbiterState, Decision, DecisionKind, SystemChecks
+
+Mode = ArbiterMode  # old name, kept as an alias
+Phase = ArbiterPhase  # old name, kept as an alias
+Event = ArbiterEvent  # old name, kept as an alias
 
 __all__ = [
     "AUTOPILOT_TRANSITIONS",
     "TRANSITIONS",
     "Arbiter",
     "ArbiterConfig",
+    "ArbiterEvent",
+    "ArbiterMode",
+    "ArbiterPhase",
     "ArbiterState",
     "AutopilotEvent",
     "AutopilotPhase",
@@ -59,14 +66,14 @@ __all__ = [
     "DecisionKind",
     "Disagreement",
     "DisorderedError",
-    "Event",
+    "Event",  # old name, kept as an alias
     "Failover",
     "FrameError",
     "InputError",
     "MaxErrorMode",
     "Method",
-    "Mode",
-    "Phase",
+    "Mode",  # old name, kept as an alias
+    "Phase",  # old name, kept as an alias
     "RelativeMean",
     "ReplayResult",
     "Restart",

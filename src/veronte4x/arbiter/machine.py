@@ -11,8 +11,9 @@ from __future__ import annotations
 import enum
 
 
-class Phase(enum.Enum):
-    """Where the arbiter is in its status management."""
+class ArbiterPhase(enum.Enum):
+    """Where the arbiter is in its status management (`AutopilotPhase`: where one autopilot
+    is; `veronte4x.client.Phase`: where a firmware update is)."""
 
     IDLE = "Idle"
     NORMAL = "Normal, waiting for Ready"
@@ -20,8 +21,13 @@ class Phase(enum.Enum):
     MAINTENANCE = "Maintenance"
 
 
-class Event(enum.Enum):
-    """What moves the arbiter from one phase to another."""
+Phase = ArbiterPhase  # old name, kept as an alias
+"""`ArbiterPhase` under its earlier name, kept for code that imports it from here."""
+
+
+class ArbiterEvent(enum.Enum):
+    """What moves the arbiter from one phase to another (`AutopilotEvent`: one autopilot;
+    `veronte4x.client.Event`: what the DroneCAN client reports)."""
 
     CHECKS_PASS = "boot checks pass"
     CHECKS_FAIL_30S = "errors persist 30 s after boot"
@@ -29,14 +35,18 @@ class Event(enum.Enum):
     MAINTENANCE_COMMAND = "maintenance command"
 
 
+Event = ArbiterEvent  # old name, kept as an alias
+"""`ArbiterEvent` under its earlier name, kept for code that imports it from here."""
+
+
 #: (phase, event) -> next phase; an event not listed for a phase leaves it unchanged.
-TRANSITIONS: dict[tuple[Phase, Event], Phase] = {
-    (Phase.IDLE, Event.CHECKS_PASS): Phase.NORMAL,
-    (Phase.IDLE, Event.CHECKS_FAIL_30S): Phase.MAINTENANCE,
-    (Phase.IDLE, Event.MAINTENANCE_COMMAND): Phase.MAINTENANCE,
-    (Phase.NORMAL, Event.ALL_READY): Phase.ARBITRATING,
-    (Phase.NORMAL, Event.MAINTENANCE_COMMAND): Phase.MAINTENANCE,
-    (Phase.ARBITRATING, Event.MAINTENANCE_COMMAND): Phase.MAINTENANCE,
+TRANSITIONS: dict[tuple[ArbiterPhase, ArbiterEvent], ArbiterPhase] = {
+    (ArbiterPhase.IDLE, ArbiterEvent.CHECKS_PASS): ArbiterPhase.NORMAL,
+    (ArbiterPhase.IDLE, ArbiterEvent.CHECKS_FAIL_30S): ArbiterPhase.MAINTENANCE,
+    (ArbiterPhase.IDLE, ArbiterEvent.MAINTENANCE_COMMAND): ArbiterPhase.MAINTENANCE,
+    (ArbiterPhase.NORMAL, ArbiterEvent.ALL_READY): ArbiterPhase.ARBITRATING,
+    (ArbiterPhase.NORMAL, ArbiterEvent.MAINTENANCE_COMMAND): ArbiterPhase.MAINTENANCE,
+    (ArbiterPhase.ARBITRATING, ArbiterEvent.MAINTENANCE_COMMAND): ArbiterPhase.MAINTENANCE,
 }
 
 
@@ -73,7 +83,7 @@ AUTOPILOT_TRANSITIONS: dict[tuple[AutopilotPhase, AutopilotEvent], AutopilotPhas
 }
 
 
-def next_phase(phase: Phase, event: Event) -> Phase | None:
+def next_phase(phase: ArbiterPhase, event: ArbiterEvent) -> ArbiterPhase | None:
     """The phase ``event`` leads to from ``phase``, or ``None`` when it changes nothing."""
     return TRANSITIONS.get((phase, event))
 

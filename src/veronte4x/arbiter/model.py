@@ -18,10 +18,10 @@ from veronte4x import codec
 from veronte4x.arbiter.config import ArbiterConfig, Method, RelativeMean, autopilot_name
 from veronte4x.arbiter.errors import InputError
 from veronte4x.arbiter.machine import (
+    ArbiterEvent,
+    ArbiterPhase,
     AutopilotEvent,
     AutopilotPhase,
-    Event,
-    Phase,
     next_autopilot_phase,
     next_phase,
 )
@@ -84,7 +84,7 @@ class Arbiter:
             raise argument_type_error("Arbiter", "checks", "a SystemChecks or None", checks)
         self.config = config
         self._checks = SystemChecks() if checks is None else checks
-        self._phase = Phase.IDLE
+        self._phase = ArbiterPhase.IDLE
         self._time: float | None = None
         self._boot: float | None = None
         self._start: float | None = None
@@ -139,7 +139,7 @@ class Arbiter:
             self._on_variable(autopilot, message.number, message.value, timestamp)
         elif isinstance(message, codec.MaintenanceCommand):
             source = f"maintenance command from {autopilot_name(autopilot)}"
-            self._enter(Event.MAINTENANCE_COMMAND, timestamp, source)
+            self._enter(ArbiterEvent.MAINTENANCE_COMMAND, timestamp, source)
         return message
 
     def set_checks(self, timestamp: float, checks: SystemChecks) -> None:
@@ -149,7 +149,7 @@ class Arbiter:
             raise argument_type_error("set_checks", "checks", "a SystemChecks", checks)
         self.advance(timestamp)
         self._checks = checks
-        if self._phase is Phase.IDLE and checks.all_ok:
+        if self._phase is ArbiterPhase.IDLE and checks.all_ok:
             self._checks_pass(timestamp)
 
     def set_fts(self, timestamp: float, autopilot: int, ok: bool) -> None:
@@ -169,7 +169,7 @@ class Arbiter:
         """The maintenance command (t_cmd_maint), from wherever it comes."""
         timestamp = check_seconds("command_maintenance", "timestamp", timestamp)
         self.advance(timestamp)
-        self._enter(Event.MAINTENANCE_COMMAND, timestamp, "maintenance command")
+        self._enter(ArbiterEvent.MAINTENANCE_COMMAND, timestamp, "maintenance command")
 
     def advance(self, timestamp: float) -> None:
         """Bring the model to ``timestamp``: boot, timeouts, holding time, round robin.
@@ -209,10 +209,10 @@ class Arbiter:
         frames: list[SentFrame] = []
         arbiter_id = self.config.arbiter_id
         status_due = self._status is not None and self._status.take(timestamp)
-        if status_due and (self._phase is Phase.MAINTENANCE or self.config.send_status):
+        if status_due and (self._phase is ArbiterPhase.MAINTENANCE or self.config.send_status):
             frames.append((arbiter_id, codec.encode(self.status_message())))
         score_due = self._score is not None and self._score.take(timestamp)
-        normal = self._phase in (Phase.NORMAL, Phase.ARBITRATING)
+        normal = self._phase in (ArbiterPhase.NORMAL, ArbiterPhase.ARBITRATING)
         if score_due and normal and self.config.send_score:
             for autopilot, score in sorted(self._scores.items()):
                 message = codec.Score(autopilot, _within_float32(score))
@@ -227,7 +227,7 @@ class Arbiter:
         """
         checks = self._checks
         alive = self._flags(AutopilotPhase.ALIVE)
-        arbitrating = self._phase is Phase.ARBITRATING
+        arbitrating = self._phase is ArbiterPhase.ARBITRATING
         no_one_alive = arbitrating and not any(alive)
         return codec.Status(
             selected=self._selected,
@@ -249,7 +249,7 @@ class Arbiter:
             ap1_voltage_ok=checks.ap1_voltage_ok,
             ap2_voltage_ok=checks.ap2_voltage_ok,
             ap3_voltage_ok=checks.ap3_voltage_ok,
-            normal_mode=self._phase in (Phase.NORMAL, Phase.ARBITRATING),
+            normal_mode=self._phase in (ArbiterPhase.NORMAL, ArbiterPhase.ARBITRATING),
         )
 
     @property
@@ -284,11 +284,11 @@ class Arbiter:
         flags = self._autopilot
         return (flags[0] is phase, flags[1] is phase, flags[2] is phase, flags[3] is phase)
 
-    def _enter(self, event: Event, time: float, why: str) -> bool:
+    def _enter(self, event: ArbiterEvent, time: float, why: str) -> bool:
         phase = next_phase(self._phase, event)
         if phase is None:
             return False
-        if self._phase is Phase.IDLE:
+        if self._phase is ArbiterPhase.IDLE:
             self._status = Periodic(time, self.config.status_period)
         self._phase = phase
         self._retry_at = None
@@ -297,16 +297,18 @@ class Arbiter:
         return True
 
     def _checks_pass(self, time: float) -> None:
-        if self._enter(Event.CHECKS_PASS, time, "boot checks pass"):
+        if self._enter(ArbiterEvent.CHECKS_PASS, time, "boot checks pass"):
             self._score = Periodic(time, self.config.score_period)
             self._start_if_all_ready(time)
 
     def _start_if_all_ready(self, time: float) -> None:
         participants = self.config.participants
-        if self._phase is not Phase.NORMAL or not all(self._ready[ap] for ap in participants):
+        if self._phase is not ArbiterPhase.NORMAL or not all(
+            self._ready[ap] for ap in participants
+        ):
             return
         names = ", ".join(autopilot_name(ap) for ap in participants)
-        self._enter(Event.ALL_READY, time, f"Ready from {names}")
+        self._enter(ArbiterEvent.ALL_READY, time, f"Ready from {names}")
         self._start = time
         self._record(time, DecisionKind.ARBITRATION, None, f"arbitration starts: {names} alive")
         for autopilot in participants:
@@ -330,7 +332,7 @@ class Arbiter:
 
     def _kill(self, autopilot: int, event: AutopilotEvent, time: float, cause: str) -> None:
         # Deaths belong to arbitration; Maintenance freezes alive and dead as they were.
-        if self._phase is Phase.ARBITRATING and self._move(autopilot, event):
+        if self._phase is ArbiterPhase.ARBITRATING and self._move(autopilot, event):
             why = f"{autopilot_name(autopilot)} dead: {cause}"
             self._record(time, DecisionKind.DEAD, autopilot, why)
             self._update_scores()
@@ -403,7 +405,7 @@ class Arbiter:
         return self._start if self.config.method is Method.ROUND_ROBIN else None
 
     def _arbitrate(self, time: float) -> None:
-        if self._phase is not Phase.ARBITRATING:
+        if self._phase is not ArbiterPhase.ARBITRATING:
             return
         self._retry_at = None
         choice = choose(self.config, self._selected, self._alive(), self._scores)
@@ -452,9 +454,9 @@ class Arbiter:
     def _run_next_timer(self, now: float) -> bool:
         """Run the earliest timed event due at or before ``now``; False when none is due."""
         due: list[tuple[float, int, int, str]] = []
-        if self._phase is Phase.IDLE and self._boot is not None:
+        if self._phase is ArbiterPhase.IDLE and self._boot is not None:
             due.append((self._boot + self.config.boot_timeout, 0, -1, ""))
-        if self._phase is Phase.ARBITRATING:
+        if self._phase is ArbiterPhase.ARBITRATING:
             for autopilot in self._alive():
                 deadline, cause = self._deadline(autopilot)
                 due.append((deadline, 1, autopilot, cause))
@@ -470,7 +472,7 @@ class Arbiter:
         if kind == 0:
             failing = ", ".join(self._checks.failing())
             why = f"errors persist {self.config.boot_timeout:g} s after boot ({failing})"
-            self._enter(Event.CHECKS_FAIL_30S, time, why)
+            self._enter(ArbiterEvent.CHECKS_FAIL_30S, time, why)
         elif kind == 1:
             self._kill(autopilot, AutopilotEvent.MESSAGE_MISSING, time, cause)
         else:

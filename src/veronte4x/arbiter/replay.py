@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from veronte4x import codec
 from veronte4x.arbiter.config import ArbiterConfig, autopilot_name
 from veronte4x.arbiter.errors import InputError
-from veronte4x.arbiter.machine import Phase
+from veronte4x.arbiter.machine import ArbiterPhase
 from veronte4x.arbiter.model import Arbiter
 from veronte4x.arbiter.state import ArbiterState, Decision, SystemChecks
 from veronte4x.errors import DecodeError
@@ -264,7 +264,7 @@ class _Comparer:
 
 def _compare_status(compare: _Comparer, time: float, arb: Arbiter, status: codec.Status) -> None:
     state = arb.state
-    if state.phase is Phase.IDLE:
+    if state.phase is ArbiterPhase.IDLE:
         compare.check(time, "mode", "Status sent", "Idle, no Status")
         return
     if status.normal_mode is not None:

@@ -6,24 +6,28 @@ import enum
 from collections.abc import Mapping
 from dataclasses import dataclass, fields
 
-from veronte4x.arbiter.machine import Phase
+from veronte4x.arbiter.machine import ArbiterPhase
 from veronte4x.codec.messages import Flags4
 
 
-class Mode(enum.Enum):
+class ArbiterMode(enum.Enum):
     """The arbiter's mode (4x Software Manual, section 4): Idle after boot, then Normal or
-    Maintenance."""
+    Maintenance. Not `veronte4x.dronecan.Mode`, a DroneCAN node's mode in NodeStatus."""
 
     IDLE = "Idle"
     NORMAL = "Normal"
     MAINTENANCE = "Maintenance"
 
 
+Mode = ArbiterMode  # old name, kept as an alias
+"""`ArbiterMode` under its earlier name, kept for code that imports it from here."""
+
+
 MODE_OF_PHASE = {
-    Phase.IDLE: Mode.IDLE,
-    Phase.NORMAL: Mode.NORMAL,
-    Phase.ARBITRATING: Mode.NORMAL,
-    Phase.MAINTENANCE: Mode.MAINTENANCE,
+    ArbiterPhase.IDLE: ArbiterMode.IDLE,
+    ArbiterPhase.NORMAL: ArbiterMode.NORMAL,
+    ArbiterPhase.ARBITRATING: ArbiterMode.NORMAL,
+    ArbiterPhase.MAINTENANCE: ArbiterMode.MAINTENANCE,
 }
 
 
@@ -144,8 +148,8 @@ class ArbiterState:
     """
 
     time: float | None
-    mode: Mode
-    phase: Phase
+    mode: ArbiterMode
+    phase: ArbiterPhase
     arbitrating: bool
     ready: Flags4
     alive: Flags4

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 from veronte4x.cli.exit_codes import EXIT_NO_ANSWER, EXIT_OK, EXIT_REFUSED, EXIT_USAGE
 from veronte4x.client.errors import (
     ClientError,
-    FirmwareUpdateError,
+    FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
 )
@@ -100,7 +100,7 @@ def exit_code(error: Exception) -> int:
     """
     if isinstance(error, (NoResponseError, NoNodeError)):
         return EXIT_NO_ANSWER
-    if isinstance(error, FirmwareUpdateError):
+    if isinstance(error, FirmwareUpdateFailedError):
         return EXIT_NO_ANSWER if error.timed_out else EXIT_REFUSED
     if isinstance(error, (InvalidRequestError, EncodeError)):
         return EXIT_USAGE

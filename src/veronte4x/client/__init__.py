@@ -13,7 +13,7 @@ from __future__ import annotations
 from veronte4x.client.commander import Commander
 from veronte4x.client.errors import (
     ClientError,
-    FirmwareUpdateError,
+    FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
     ParameterError,
@@ -42,6 +42,8 @@ from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.node.requests import Answered, Pending, Requester, TimedOut, answers
 from veronte4x.node.transfer_ids import TransferIds
 
+FirmwareUpdateError = FirmwareUpdateFailedError  # old name, kept as an alias
+
 __all__ = [
     "DEFAULT_NODE_ID",
     "DEFAULT_SILENCE",
@@ -57,7 +59,8 @@ __all__ = [
     "FileServer",
     "FirmwareOptions",
     "FirmwareUpdate",
-    "FirmwareUpdateError",
+    "FirmwareUpdateError",  # old name, kept as an alias
+    "FirmwareUpdateFailedError",
     "InvalidRequestError",
     "NoResponseError",
     "NodeEntry",

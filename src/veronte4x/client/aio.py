@@ -52,7 +52,7 @@ from veronte4x.client.firmware import (
     FirmwareOptions,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.operations import Batch, Operation, Task
+from veronte4x.client.operations import Operation, OperationBatch, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import Event
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
@@ -131,7 +131,7 @@ class AsyncBusClient(BusAdapter):
     ) -> list[Task[Any]]:
         """Run operations concurrently, at most ``limit`` at a time (as `BusClient.run_all`);
         a cancellation forgets the requests of those still running."""
-        batch = Batch(self.runner, operations, limit)
+        batch = OperationBatch(self.runner, operations, limit)
         try:
             while batch.fill(self.clock()):
                 self.flush()

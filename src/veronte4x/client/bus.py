@@ -32,7 +32,7 @@ from veronte4x.client.firmware import (
     FirmwareOptions,
 )
 from veronte4x.client.nodes import NodeEntry
-from veronte4x.client.operations import Batch, Operation, Task
+from veronte4x.client.operations import Operation, OperationBatch, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
 from veronte4x.dronecan.frame import TransferFrame
@@ -143,7 +143,7 @@ class BusClient(BusAdapter):
         answers, as the bus carries every node's traffic interleaved. An exception (e.g.
         KeyboardInterrupt) forgets the requests of those still running.
         """
-        batch = Batch(self.runner, operations, limit)
+        batch = OperationBatch(self.runner, operations, limit)
         try:
             while batch.fill(self.clock()):
                 self.flush()
@@ -287,7 +287,7 @@ class BusClient(BusAdapter):
         Raises:
             InvalidRequestError: An empty image or one above ``max_image_size``, refused
                 before anything is sent.
-            FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
+            FirmwareUpdateFailedError: Refused, stalled, or the node reports another image CRC.
             NoResponseError: GetNodeInfo after the update got no answer.
         """
         with progress_callback(progress, node_id, len(image)) as report:

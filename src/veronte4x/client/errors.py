@@ -39,8 +39,11 @@ class ParameterError(ClientError):
     """A parameter that the node does not have, or a value it cannot take."""
 
 
-class FirmwareUpdateError(ClientError):
+class FirmwareUpdateFailedError(ClientError):
     """A firmware update that did not complete, or whose result the node contradicts.
+
+    A node's own answer to BeginFirmwareUpdate is the DSDL enum
+    `veronte4x.dronecan.FirmwareUpdateError`; a refusal raises this with its name.
 
     Attributes:
         timed_out: The node fell silent (rather than refusing or reporting another CRC).
@@ -49,6 +52,10 @@ class FirmwareUpdateError(ClientError):
     def __init__(self, message: str, *, timed_out: bool = False) -> None:
         super().__init__(message)
         self.timed_out = timed_out
+
+
+FirmwareUpdateError = FirmwareUpdateFailedError  # old name, kept as an alias
+"""`FirmwareUpdateFailedError` under its earlier name, kept for code that imports it from here."""
 
 
 class InvalidRequestError(ClientError, ValueError):

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
 from veronte4x.client.errors import (
-    FirmwareUpdateError,
+    FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
     ParameterError,
@@ -284,8 +284,9 @@ class Runner:
         task.done, task.waiting = True, None
 
 
-class Batch:
+class OperationBatch:
     """Operations run concurrently on a `Runner`, at most ``limit`` at a time, in order.
+    (`veronte4x.capture.columnar.batches.Batch` is a batch of a capture's frames.)
 
     An adapter calls `fill` with the time, sends the frames, waits for frames and calls
     `Runner.settle`, until `fill` returns False; then every task is done. `cancel` forgets
@@ -321,6 +322,10 @@ class Batch:
             if not task.done:
                 self.runner.cancel(task)
         self._running = []
+
+
+Batch = OperationBatch  # old name, kept as an alias
+"""`OperationBatch` under its earlier name, kept for code that imports it from here."""
 
 
 # -- operations --------------------------------------------------------------------------------
@@ -476,7 +481,7 @@ def update_firmware(
 
     Raises:
         InvalidRequestError: An empty image or one above ``options.max_image_size``.
-        FirmwareUpdateError: Refused, stalled, or the node reports another image CRC.
+        FirmwareUpdateFailedError: Refused, stalled, or the node reports another image CRC.
         NoResponseError: GetNodeInfo after the update got no answer.
     """
     check_image(image, options.max_image_size)
@@ -516,7 +521,7 @@ def update_firmware(
     finally:
         protocol.files.remove(name)
     if last.phase is not Phase.DONE:
-        raise FirmwareUpdateError(
+        raise FirmwareUpdateFailedError(
             last.error or f"node {node_id}: update failed", timed_out=last.timed_out
         )
     info = yield from node_info(node_id)
@@ -525,7 +530,7 @@ def update_firmware(
     if version.optional_field_flags & SoftwareVersionFlag.IMAGE_CRC and (
         version.image_crc != expected
     ):
-        raise FirmwareUpdateError(
+        raise FirmwareUpdateFailedError(
             f"node {node_id} reports image CRC {version.image_crc:#018x}, but the "
             f"image's CRC-64-WE is {expected:#018x}"
         )

@@ -10,7 +10,7 @@ from veronte4x.dronecan.definitions import DATA_TYPES, VALUE
 from veronte4x.dronecan.schema import Array, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.transfer import Transfer
-from veronte4x.dronecan.typeset import TypeSet, resolve
+from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import EncodeError, argument_type_error
 
 T = TypeVar("T")
@@ -41,7 +41,7 @@ _VENDOR_STRUCTS: weakref.WeakKeyDictionary[TypeSet, dict[type, Struct]] = (
 
 def _structs_of(types: TypeSet | None, where: str) -> dict[type, Struct]:
     """The struct schema of every class of a type set (nested types included)."""
-    found = resolve(types, where)
+    found = types_or_default(types, where)
     if found is TypeSet.standard():
         return _STRUCTS
     structs = _VENDOR_STRUCTS.get(found)

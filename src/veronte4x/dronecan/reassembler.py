@@ -39,7 +39,7 @@ from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK
 from veronte4x.dronecan.transfer import Transfer
-from veronte4x.dronecan.typeset import TypeSet, resolve
+from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
 TRANSFER_ID_TIMEOUT = 2.0
@@ -296,7 +296,7 @@ class Reassembler:
         max_reports: int = 256,
         types: TypeSet | None = None,
     ) -> None:
-        types = resolve(types, "Reassembler")
+        types = types_or_default(types, "Reassembler")
         found = _STANDARD_TYPES if types is TypeSet.standard() else _SESSION_TYPES.get(types)
         if found is None:
             found = _SESSION_TYPES[types] = _SessionTypes(types.by_id)

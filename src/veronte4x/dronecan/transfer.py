@@ -18,7 +18,7 @@ from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, Frames
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
-from veronte4x.dronecan.typeset import TypeSet, resolve
+from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
 
 DEFAULT_PRIORITY = 16
@@ -129,7 +129,7 @@ def _encode_checked(
     types: TypeSet | None = None,
 ) -> list[TransferFrame]:
     """`encode` through the generic serializer, checking every argument."""
-    codec = resolve(types, "encode").by_class.get(type(message))
+    codec = types_or_default(types, "encode").by_class.get(type(message))
     if codec is None:
         raise argument_type_error(
             "encode", "message", "a DroneCAN message, request or response", message
@@ -398,7 +398,7 @@ def _decode_frames_checked(
         raise DecodeError(None, f"{len(items)} frames, not 1..{len(MULTI_FRAME_TAILS[0]) - 1}", b"")
     can_id = items[0][0]
     fields = parse_can_id(can_id)
-    codec = resolve(types, "decode_frames").by_id.get((fields.kind, fields.data_type_id))
+    codec = types_or_default(types, "decode_frames").by_id.get((fields.kind, fields.data_type_id))
     name = codec.data_type.full_name if codec else None
     tid = items[0][1][-1] & 0x1F if items[0][1] else 0
     for index, (frame_id, data) in enumerate(items):

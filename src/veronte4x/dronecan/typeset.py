@@ -254,10 +254,14 @@ def load_dsdl(*root_namespace_dirs: str | os.PathLike[str]) -> TypeSet:
     return _default
 
 
-def resolve(types: TypeSet | None, where: str) -> TypeSet:
+def types_or_default(types: TypeSet | None, where: str) -> TypeSet:
     """``types``, or the default set for None; TypeError for anything else."""
     if types is None:
         return _default
     if not isinstance(types, TypeSet):
         raise argument_type_error(where, "types", "a TypeSet", types)
     return types
+
+
+resolve = types_or_default  # old name, kept as an alias
+"""`types_or_default` under its earlier name, kept for code that imports it from here."""

@@ -29,7 +29,7 @@ _UNKNOWN = SENDER_INDEX["unknown"]
 _CHOICE = pa.dictionary(pa.int16(), pa.string())
 
 
-def decode_frames(
+def decode_dbc_frames(
     frames: FrameColumns, bus_map: BusMap, done: npt.NDArray[np.bool_], tables: Tables
 ) -> None:
     """Decode the frames not ``done`` that a DBC of the bus map knows into ``tables``, and
@@ -53,6 +53,10 @@ def decode_frames(
         errors += _decode_group(frames, group, message, cls, tables)
     done[rows] = True
     tables.add_records(errors)
+
+
+decode_frames = decode_dbc_frames  # old name, kept as an alias
+"""`decode_dbc_frames` under its earlier name, kept for code that imports it from here."""
 
 
 def _decode_group(

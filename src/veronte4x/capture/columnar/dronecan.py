@@ -33,7 +33,7 @@ from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
 from veronte4x.dronecan.scalar_code import bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
-from veronte4x.dronecan.typeset import TypeSet, resolve
+from veronte4x.dronecan.typeset import TypeSet, types_or_default
 
 MAX_SESSIONS = 1024
 """The per-frame reassembler's session table (its default ``max_sessions``)."""
@@ -69,7 +69,7 @@ _INDEXES: weakref.WeakKeyDictionary[TypeSet, TypeIndex] = weakref.WeakKeyDiction
 
 def type_index_of(types: TypeSet | None = None) -> TypeIndex:
     """The `TypeIndex` of a type set (None: the default set), built once per set."""
-    types = resolve(types, "type_index_of")
+    types = types_or_default(types, "type_index_of")
     found = _INDEXES.get(types)
     if found is None:
         found = _INDEXES[types] = _build_index(types.codecs)

@@ -64,7 +64,7 @@ def _decode(
         taken = pool.submit(_decode_dronecan, frames, dronecan_rows, known, tables, whole)
         done = _decode_senders(frames, bus_map, sender_code, tables)
         done[taken.result()] = True
-    dbc.decode_frames(frames, bus_map, done, tables)
+    dbc.decode_dbc_frames(frames, bus_map, done, tables)
     decoder = CaptureDecoder(bus_map)
     tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
     return tables, decoder, dronecan_inputs(frames, dronecan_rows, known)[0]

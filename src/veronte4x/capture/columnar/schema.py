@@ -48,7 +48,7 @@ from veronte4x.codec.fields import Field, FieldKind
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
-from veronte4x.dronecan.typeset import TypeSet, resolve
+from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.units import unit
 
 SENDERS: tuple[str, ...] = (
@@ -207,7 +207,7 @@ def veronte_type(f: Field) -> pa.DataType:
 
 def dronecan_specs(types: TypeSet | None = None) -> dict[str, TableSpec]:
     """The table of every DroneCAN type of a type set (None: the default), by class name."""
-    types = resolve(types, "dronecan_specs")
+    types = types_or_default(types, "dronecan_specs")
     specs = _SPECS.get(types)
     if specs is None:
         specs = _SPECS[types] = _dronecan_specs(types)

@@ -146,7 +146,7 @@ class StreamDecoder:
             done |= self._dronecan(joined, candidates, context, tables)
         self._keep_pending()
         done |= context
-        dbc.decode_frames(joined, self.bus_map, done, tables)
+        dbc.decode_dbc_frames(joined, self.bus_map, done, tables)
         tables.add_records(engine.per_frame(joined, np.flatnonzero(~done), self.decoder))
         return merged(prepared.tables, tables.finish_with_keys())
 
