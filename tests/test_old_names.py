@@ -51,3 +51,56 @@ def test_each_kept_name_keeps_its_one_meaning() -> None:
     assert codec.Codec is not dronecan_codec.TypeCodec
     assert codec.Message is not dronecan.HandNamedMessage
     assert variables.Kind is not codec.FieldKind
+
+
+def test_second_round_old_names_are_aliases_of_the_new_ones() -> None:
+    from veronte4x import arbiter, client
+    from veronte4x.arbiter import machine, state
+    from veronte4x.capture.columnar import dbc
+    from veronte4x.client import errors, operations
+    from veronte4x.dronecan import typeset
+
+    assert client.FirmwareUpdateError is errors.FirmwareUpdateError
+    assert errors.FirmwareUpdateError is client.FirmwareUpdateFailedError
+    assert arbiter.Mode is state.Mode is arbiter.ArbiterMode
+    assert arbiter.Phase is machine.Phase is arbiter.ArbiterPhase
+    assert arbiter.Event is machine.Event is arbiter.ArbiterEvent
+    assert operations.Batch is operations.OperationBatch
+    assert dbc.decode_frames is dbc.decode_dbc_frames
+    assert typeset.resolve is typeset.types_or_default
+    for module, name in (
+        (client, "FirmwareUpdateError"),
+        (arbiter, "Mode"),
+        (arbiter, "Phase"),
+        (arbiter, "Event"),
+    ):
+        assert name in module.__all__, (module.__name__, name)
+
+
+def test_second_round_old_names_work_as_the_new_ones() -> None:
+    from veronte4x import arbiter, client
+
+    error = client.FirmwareUpdateFailedError("node 21 refused the update: INVALID_MODE")
+    try:
+        raise error
+    except client.FirmwareUpdateError as caught:  # what users wrote before
+        assert caught is error and not caught.timed_out
+    assert arbiter.Mode.IDLE is arbiter.ArbiterMode.IDLE
+    assert arbiter.TRANSITIONS[(arbiter.Phase.IDLE, arbiter.Event.CHECKS_PASS)] is (
+        arbiter.ArbiterPhase.NORMAL
+    )
+
+
+def test_second_round_each_kept_name_keeps_its_one_meaning() -> None:
+    from veronte4x import arbiter, client
+    from veronte4x.capture.columnar import batches
+    from veronte4x.client import operations
+
+    # the DSDL enum keeps its generated name; the client's exception has its own
+    assert issubclass(dronecan.FirmwareUpdateError, int)
+    assert not issubclass(client.FirmwareUpdateFailedError, int)
+    assert dronecan.Mode is not arbiter.ArbiterMode
+    assert client.Phase is not arbiter.ArbiterPhase
+    assert client.Event is not arbiter.ArbiterEvent
+    assert batches.Batch is not operations.OperationBatch
+    assert dronecan.decode_frames.__module__ == "veronte4x.dronecan.transfer"
