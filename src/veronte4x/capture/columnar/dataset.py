@@ -62,7 +62,7 @@ ROW_GROUP = 1 << 17
 BUFFERED = 1 << 25
 """Bytes of rows all tables may hold back together; past it the largest is written."""
 
-Progress = Callable[[int], None]
+ReadProgress = Callable[[int], None]
 """Told the bytes of a capture read so far."""
 
 
@@ -124,7 +124,7 @@ def convert_file(
     bus_map: BusMap | None = None,
     channel: str | None = None,
     batch_bytes: int = BATCH_BYTES,
-    progress: Progress | None = None,
+    progress: ReadProgress | None = None,
     time_form: str = "timestamp",
 ) -> Summary:
     """Decode one capture batch by batch into the dataset at ``out_dir``, its
