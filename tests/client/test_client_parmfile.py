@@ -103,6 +103,14 @@ def test_mission_planner_lines_comments_and_windows_line_ends() -> None:
     ]
 
 
+@pytest.mark.parametrize("string", [",", ",0", " , x", "a,b"])
+def test_a_string_keeps_a_comma_after_the_space(string: str) -> None:
+    """The GUI tool writes ``NAME VALUE`` and reads the value after the first space."""
+    current = [_info("s", StringValue(b""))]
+    (back,) = typed(loads(f"s {string}\n"), 21, current).parameters
+    assert back.value == StringValue(string.encode("utf-8"))
+
+
 def test_a_real_is_what_the_bus_carries() -> None:
     (back,) = typed(loads("throttle_slew 0.1\n"), 23, CURRENT).parameters
     assert back.value == RealValue(0.10000000149011612)  # float32, as read back

@@ -17,7 +17,8 @@ commit 4eda5d8, class ``ConfigParams``: the writer ``_do_save_to_file``, lines 8
 Mission Planner writes ArduPilot parameter files with the same ``.parm`` suffix as
 ``NAME,VALUE`` lines, and reads lines split at spaces, commas or tabs, skipping lines that
 start with ``#`` (``ArduPilot/MissionPlanner``, ``ExtLibs/Utilities/ParamFile.cs``). This
-module reads both: the separator is the first space, tab or comma after the name, and blank
+module reads both: the separator is the first space, tab or comma after the name (a string
+value keeps a comma after that space, as the GUI tool reads it; a number may follow one), and blank
 lines and ``#`` lines are skipped. Where the GUI tool guesses, this reader refuses: a line
 without a value, a name given twice, an integer written ``1.0``, a boolean that is not one
 of the words below, a name the node lacks (the GUI tool skips it silently).
@@ -61,7 +62,7 @@ _BOOLEANS = {
 """Boolean words, case-insensitive: those the GUI tool reads as true, and their opposites
 (it reads anything else as false; this reader refuses anything else)."""
 
-_LINE = re.compile(r"([^\s,]+)(?:[ \t]*,|[ \t])(.*)")
+_LINE = re.compile(r"([^\s,]+)(?:,|[ \t])(.*)")
 _INTEGER = re.compile(r"[+-]?[0-9]+")
 _REAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 _TOML_START = re.compile(r"\s*(?:\[|format\s*=)")
@@ -164,6 +165,8 @@ def _value(kind: Value, line: ParmLine) -> Value:
     if isinstance(kind, StringValue):
         return StringValue(line.text.encode("utf-8"))
     word = line.text.strip(" \t")
+    if word.startswith(","):  # Mission Planner's NAME , VALUE: the comma after a space
+        word = word[1:].lstrip(" \t")
     if isinstance(kind, IntegerValue):
         if _INTEGER.fullmatch(word) is None:
             raise ParameterFileError(f"{where} takes an integer, not {word!r}")
