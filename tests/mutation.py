@@ -368,21 +368,21 @@ def import_time_lines(tree: ast.Module) -> set[int]:
     return set(range(1, last + 1)) - inside
 
 
-def map_from_coverage(measured: str) -> Path:
+def map_from_coverage(measured: str, data: Path = COVERAGE, maps: Path = MAPS) -> Path:
     """Write the test map of the coverage data in ``COVERAGE``: for each module, the tests
     that ran each line (as indices into a list of node ids), the lines run outside any test
     (imports, the code generated at import), the lines run at import; and each test's time."""
-    data = coverage.CoverageData(str(COVERAGE / "data"))
-    data.read()
+    lines_run = coverage.CoverageData(str(data / "data"))
+    lines_run.read()
     tests: dict[str, int] = {}
     modules: dict[str, dict[str, Any]] = {}
-    for measured_file in data.measured_files():
+    for measured_file in lines_run.measured_files():
         path = Path(measured_file)
         if PACKAGE not in path.parents:
             continue
         lines: dict[str, list[int]] = {}
         outside: list[int] = []
-        for line, contexts in sorted((data.contexts_by_lineno(measured_file) or {}).items()):
+        for line, contexts in sorted((lines_run.contexts_by_lineno(measured_file) or {}).items()):
             named = sorted(c.split("|")[0] for c in contexts if c)
             if "" in contexts:
                 outside.append(line)
@@ -392,11 +392,11 @@ def map_from_coverage(measured: str) -> Path:
         module = path.relative_to(PACKAGE).as_posix()
         modules[module] = {"lines": lines, "outside": outside, "import_time": import_time}
     durations: dict[str, float] = {}
-    for times in COVERAGE.glob("durations.*.json"):
+    for times in data.glob("durations.*.json"):
         for name, seconds in json.loads(times.read_text()).items():
             durations[name] = max(seconds, durations.get(name, 0.0))
-    MAPS.mkdir(parents=True, exist_ok=True)
-    target = MAPS / f"{measured}.json"
+    maps.mkdir(parents=True, exist_ok=True)
+    target = maps / f"{measured}.json"
     content = {"tests": list(tests), "durations": durations, "modules": modules}
     target.write_text(json.dumps(content))
     return target
@@ -409,6 +409,12 @@ class CoverageMap:
     tests: list[str]
     durations: dict[str, float]
     modules: dict[str, dict[str, Any]]
+
+    @classmethod
+    def read(cls, path: Path) -> CoverageMap:
+        """A map written by `map_from_coverage`."""
+        content = json.loads(path.read_text())
+        return cls(content["tests"], content["durations"], content["modules"])
 
     @classmethod
     def load(cls, build: bool = True) -> CoverageMap:
@@ -428,8 +434,7 @@ class CoverageMap:
                 print(f"the test map took {time.monotonic() - start:.0f} s", flush=True)
             else:
                 map_from_coverage(measured)
-        content = json.loads(target.read_text())
-        return cls(content["tests"], content["durations"], content["modules"])
+        return cls.read(target)
 
     def select(self, mutant: Mutant, span: tuple[int, int]) -> list[str] | None:
         """The tests that run the mutated statement (lines ``span``), quickest first; ``None``
@@ -615,7 +620,7 @@ def _plans(mutants: list[Mutant], arguments: argparse.Namespace, copy: Path) -> 
             tests = [f"src/veronte4x/{mutant.module}", *package_tests(package)]
             plans[mutant] = Plan(tests, limits[package], "package")
         return plans
-    tests_map = CoverageMap.load()
+    tests_map = CoverageMap.read(arguments.map) if arguments.map else CoverageMap.load()
     trees: dict[str, ast.Module] = {}
     for mutant in mutants:
         tree = trees.setdefault(mutant.module, ast.parse((PACKAGE / mutant.module).read_text()))
@@ -648,6 +653,7 @@ def main() -> None:
     parser.add_argument(
         "--whole", action="store_true", help="run the package's tests, not the tests of the line"
     )
+    parser.add_argument("--map", type=Path, help="this test map, not the sources' own")
     parser.add_argument(
         "--coverage", action="store_true", help="make coverage: the suite under coverage, the map"
     )
