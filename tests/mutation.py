@@ -332,7 +332,7 @@ def run_coverage() -> bool:
     subprocess.run([sys.executable, "-m", "coverage", "combine", "--quiet"], cwd=ROOT, check=True)
     if passed:
         (COVERAGE / "sources").write_text(measured)
-        map_from_coverage(measured)
+        map_from_coverage(measured, COVERAGE, MAPS)
     return passed
 
 
@@ -433,7 +433,7 @@ class CoverageMap:
                     raise SystemExit("the suite fails: no test map")
                 print(f"the test map took {time.monotonic() - start:.0f} s", flush=True)
             else:
-                map_from_coverage(measured)
+                map_from_coverage(measured, COVERAGE, MAPS)
         return cls.read(target)
 
     def select(self, mutant: Mutant, span: tuple[int, int]) -> list[str] | None:
