@@ -10,6 +10,13 @@ tables that mutmut does not mutate, so every mutant here is written into a copy 
 package put first on ``PYTHONPATH`` and its tests run in a fresh interpreter (the CLI's
 subprocesses inherit it). A test failure, an import error or a timeout kills a mutant.
 
+Each mutant runs only the tests that run its statement, quickest first, as mutmut does: the
+map comes from ``make coverage`` (``--coverage``: the suite under coverage, each line with
+the tests that ran it, ``tests/coverage_contexts.py``), cached in ``.venv/mutation-map`` by
+a hash of the sources and rebuilt when they change. A statement run at import (a module's
+tables, the code generated from them) or outside any test runs its package's tests, as
+``--whole`` does for every mutant; one that no test runs is ``not covered``, a survivor.
+
 The sample is stratified: the same number of mutants from each package (``codec``,
 ``dronecan``, ``arbiter``, ``capture`` with ``columnar`` and ``readers``, ``client``,
 ``node``, ``simulator``, ``cli``, ``variables`` and the top-level modules as ``core``), drawn with a
@@ -21,6 +28,8 @@ root::
     .venv/bin/python tests/mutation.py --first 5          # 5 of each package's 30
     .venv/bin/python tests/mutation.py --list             # the sample, not run
     .venv/bin/python tests/mutation.py codec/core.py:41   # some mutants by name
+    .venv/bin/python tests/mutation.py --first 2 --whole  # each against its package's tests
+    .venv/bin/python tests/mutation.py --coverage         # make coverage, and the test map
 
 It prints each outcome as it comes, then the score per package and every survivor with
 its diff, and writes the same to ``--report`` (Markdown).
@@ -31,6 +40,8 @@ from __future__ import annotations
 import argparse
 import ast
 import difflib
+import hashlib
+import json
 import os
 import queue
 import random
@@ -44,6 +55,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+import coverage
 
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGE = ROOT / "src" / "veronte4x"
@@ -61,6 +74,14 @@ _CLI_TESTS: tuple[str, ...] = (
 )
 _CLI_TESTS += ("tests/client/test_cli_esc.py", "tests/client/test_cli_monitor.py")
 _CLI_TESTS += ("tests/client/test_cli_plot_list.py",)
+COVERAGE = ROOT / ".venv" / "coverage"
+"""Coverage's data (``data_file`` in ``[tool.coverage.run]``) and the tests' times."""
+MAPS = ROOT / ".venv" / "mutation-map"
+"""The test map of each state of the sources, by hash."""
+_NOT_SOURCES = ("mutation.py", "coverage_contexts.py", "test_mutation_selection.py")
+KILLED = ("killed", "timeout")
+"""The outcomes that kill a mutant; ``survived`` and ``not covered`` (no test runs its
+line) do not."""
 
 
 _OPERATORS: dict[type[ast.AST], type[ast.AST]] = {
@@ -280,6 +301,170 @@ def first_of_each(mutants: list[Mutant], count: int) -> list[Mutant]:
     return [share[turn] for turn in range(count) for share in shares.values() if turn < len(share)]
 
 
+def sources_hash() -> str:
+    """A hash of everything the test map depends on: the package, the tests (their data
+    included) and the settings; not the mutation runner itself."""
+    digest = hashlib.sha256()
+    paths = [ROOT / "pyproject.toml", ROOT / "tests" / "conftest.py"]
+    for folder in (PACKAGE, ROOT / "tests", ROOT / "docs" / "_hooks"):
+        paths += sorted(
+            p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+        )
+    for path in paths:
+        if path.name not in _NOT_SOURCES:
+            digest.update(path.relative_to(ROOT).as_posix().encode() + b"\0")
+            digest.update(path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def run_coverage() -> bool:
+    """Run the whole suite under coverage (``make coverage``), each line recorded with the
+    tests that ran it (``tests/coverage_contexts.py``), and write the test map of the
+    sources measured if the suite passed; return whether it did. The data and the tests'
+    times go to ``COVERAGE``."""
+    shutil.rmtree(COVERAGE, ignore_errors=True)
+    COVERAGE.mkdir(parents=True)
+    measured = sources_hash()
+    command = [sys.executable, "-m", "coverage", "run", "-m", "pytest"]
+    command += ["-p", "tests.coverage_contexts", "--hypothesis-profile=derandomized"]
+    command += ["--numprocesses", "auto", "--maxprocesses", "4"]
+    passed = subprocess.run(command, cwd=ROOT, check=False).returncode == 0
+    subprocess.run([sys.executable, "-m", "coverage", "combine", "--quiet"], cwd=ROOT, check=True)
+    if passed:
+        (COVERAGE / "sources").write_text(measured)
+        map_from_coverage(measured, COVERAGE, MAPS)
+    return passed
+
+
+def branch_table(below: float = 90.0) -> str:
+    """The modules with less than ``below`` % of their branches taken in ``COVERAGE``'s data
+    (coverage's own table mixes lines and branches), lowest first, in Markdown."""
+    report = COVERAGE / "coverage.json"
+    command = [sys.executable, "-m", "coverage", "json", "--quiet", "-o", str(report)]
+    subprocess.run(command, cwd=ROOT, check=True)
+    rows: list[tuple[float, str, int, int]] = []
+    for name, found in json.loads(report.read_text())["files"].items():
+        summary = found["summary"]
+        branches, taken = summary["num_branches"], summary["covered_branches"]
+        if branches and 100 * taken / branches < below:
+            module = Path(name).resolve().relative_to(PACKAGE).as_posix()
+            rows.append((100 * taken / branches, module, taken, branches))
+    lines = [f"Modules below {below:g} % of branches:", "", "| module | branches | % |"]
+    lines.append("|---|---|---|")
+    for percent, module, taken, branches in sorted(rows):
+        lines.append(f"| `{module}` | {taken} / {branches} | {percent:.1f} |")
+    return "\n".join(lines)
+
+
+def import_time_lines(tree: ast.Module) -> set[int]:
+    """The lines run when the module is imported: not in the body of a function."""
+    inside: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda):
+            body = node.body if isinstance(node.body, list) else [node.body]
+            for statement in body:
+                inside.update(range(statement.lineno, (statement.end_lineno or 0) + 1))
+    last = max((getattr(n, "end_lineno", 0) or 0 for n in ast.walk(tree)), default=0)
+    return set(range(1, last + 1)) - inside
+
+
+def map_from_coverage(measured: str, data: Path = COVERAGE, maps: Path = MAPS) -> Path:
+    """Write the test map of the coverage data in ``COVERAGE``: for each module, the tests
+    that ran each line (as indices into a list of node ids), the lines run outside any test
+    (imports, the code generated at import), the lines run at import; and each test's time."""
+    lines_run = coverage.CoverageData(str(data / "data"))
+    lines_run.read()
+    tests: dict[str, int] = {}
+    modules: dict[str, dict[str, Any]] = {}
+    for measured_file in lines_run.measured_files():
+        path = Path(measured_file)
+        if PACKAGE not in path.parents:
+            continue
+        lines: dict[str, list[int]] = {}
+        outside: list[int] = []
+        for line, contexts in sorted((lines_run.contexts_by_lineno(measured_file) or {}).items()):
+            named = sorted(c.split("|")[0] for c in contexts if c)
+            if "" in contexts:
+                outside.append(line)
+            if named:
+                lines[str(line)] = [tests.setdefault(name, len(tests)) for name in named]
+        import_time = sorted(import_time_lines(ast.parse(path.read_text())))
+        module = path.relative_to(PACKAGE).as_posix()
+        modules[module] = {"lines": lines, "outside": outside, "import_time": import_time}
+    durations: dict[str, float] = {}
+    for times in data.glob("durations.*.json"):
+        for name, seconds in json.loads(times.read_text()).items():
+            durations[name] = max(seconds, durations.get(name, 0.0))
+    maps.mkdir(parents=True, exist_ok=True)
+    target = maps / f"{measured}.json"
+    content = {"tests": list(tests), "durations": durations, "modules": modules}
+    target.write_text(json.dumps(content))
+    return target
+
+
+@dataclass(frozen=True)
+class CoverageMap:
+    """Which tests run each line of the package, and how long each test takes."""
+
+    tests: list[str]
+    durations: dict[str, float]
+    modules: dict[str, dict[str, Any]]
+
+    @classmethod
+    def read(cls, path: Path) -> CoverageMap:
+        """A map written by `map_from_coverage`."""
+        content = json.loads(path.read_text())
+        return cls(content["tests"], content["durations"], content["modules"])
+
+    @classmethod
+    def load(cls, build: bool = True) -> CoverageMap:
+        """The map of the sources as they are; built by a coverage run if there is none
+        (``make coverage`` leaves one too)."""
+        measured = sources_hash()
+        target = MAPS / f"{measured}.json"
+        if not target.exists():
+            stamp = COVERAGE / "sources"
+            if not (stamp.exists() and stamp.read_text() == measured):
+                if not build:
+                    raise SystemExit("no test map for these sources: run make coverage")
+                start = time.monotonic()
+                print("no test map for these sources: running the suite under coverage")
+                if not run_coverage():
+                    raise SystemExit("the suite fails: no test map")
+                print(f"the test map took {time.monotonic() - start:.0f} s", flush=True)
+            else:
+                map_from_coverage(measured, COVERAGE, MAPS)
+        return cls.read(target)
+
+    def select(self, mutant: Mutant, span: tuple[int, int]) -> list[str] | None:
+        """The tests that run the mutated statement (lines ``span``), quickest first; ``None``
+        when it runs at import or outside any test (its package's tests are run instead),
+        ``[]`` when no test runs it."""
+        module = self.modules.get(mutant.module)
+        if module is None:
+            return []
+        lines = range(span[0], span[1] + 1)
+        if set(lines) & set(module["import_time"]) or set(lines) & set(module["outside"]):
+            return None
+        indices = {index for line in lines for index in module["lines"].get(str(line), ())}
+        names = {self.tests[index] for index in indices}
+        return sorted(names, key=lambda name: (self.durations.get(name, 0.0), name))
+
+
+def statement_span(tree: ast.Module, line: int) -> tuple[int, int]:
+    """The lines of the innermost statement at ``line`` (of a compound statement, its head
+    only: an ``if`` and its test, not its body)."""
+    spans = [(line, line)]
+    for node in ast.walk(tree):
+        if isinstance(node, ast.stmt):
+            bodies = [getattr(node, f, None) for f in ("body", "orelse", "finalbody", "handlers")]
+            firsts = [body[0].lineno for body in bodies if isinstance(body, list) and body]
+            end = max(node.lineno, min(firsts) - 1 if firsts else node.end_lineno or 0)
+            if node.lineno <= line <= end:
+                spans.append((node.lineno, end))
+    return min(spans[1:] or spans, key=lambda span: span[1] - span[0])
+
+
 def _files(patterns: tuple[str, ...]) -> list[str]:
     names: list[str] = []
     for pattern in patterns:
@@ -307,7 +492,8 @@ def package_tests(package: str) -> list[str]:
 
 
 def _run(copy: Path, tests: list[str], timeout: float) -> str:
-    """``killed``, ``survived`` or ``timeout``: the outcome of the tests on the copy."""
+    """``killed``, ``survived``, ``timeout`` or ``not found`` (a test named is not there, or
+    no test was collected): the outcome of the tests on the copy."""
     command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
     command += ["-c", str(ROOT / "pyproject.toml"), "--rootdir", str(ROOT), "-n", "0"]
     command += ["--hypothesis-profile=derandomized", *tests]
@@ -318,7 +504,22 @@ def _run(copy: Path, tests: list[str], timeout: float) -> str:
         )
     except subprocess.TimeoutExpired:
         return "timeout"
+    if result.returncode in (4, 5):  # pytest's usage error (not found), no tests collected
+        return "not found"
     return "survived" if result.returncode == 0 else "killed"
+
+
+def in_copy(tests: list[str], copy: Path) -> list[str]:
+    """The tests to run on ``copy``: a doctest of the package becomes its module in the copy
+    (the package is imported from there)."""
+    found: list[str] = []
+    source = f"{PACKAGE.relative_to(ROOT).as_posix()}/"
+    for name in tests:
+        if name.startswith(source):
+            name = str(copy / "veronte4x" / name.split("::")[0][len(source) :])
+        if name not in found:
+            found.append(name)
+    return found
 
 
 def _copy(into: Path) -> Path:
@@ -367,19 +568,70 @@ def report(results: list[tuple[Mutant, str]], seed: int) -> str:
     packages = sorted({package_of(m.module) for m, _ in results}, key=PACKAGES.index)
     for package in packages:
         outcomes = [o for m, o in results if package_of(m.module) == package]
-        killed = sum(o != "survived" for o in outcomes)
+        killed = sum(o in KILLED for o in outcomes)
         lines.append(
             f"| {package} | {killed} / {len(outcomes)} | {100 * killed / len(outcomes):.0f} % |"
         )
-    killed = sum(o != "survived" for _, o in results)
+    killed = sum(o in KILLED for _, o in results)
     lines.append(
         f"| all | {killed} / {len(results)} | {100 * killed / max(1, len(results)):.0f} % |"
     )
     for mutant, outcome in results:
-        if outcome == "survived":
-            lines += ["", f"Survived: {mutant.name} (line {mutant.line}, {mutant.change})"]
+        if outcome not in KILLED:
+            lines += [
+                "",
+                f"{outcome.capitalize()}: {mutant.name} (line {mutant.line}, {mutant.change})",
+            ]
             lines += ["", "```diff", diff(mutant), "```"]
     return "\n".join(lines) + "\n"
+
+
+def _seconds(tests: list[str], durations: dict[str, float]) -> float:
+    """The time ``tests`` (node ids, or files for all their tests) took in the map's run."""
+    total = 0.0
+    for name, seconds in durations.items():
+        if any(name == test or name.startswith(f"{test}::") for test in tests):
+            total += seconds
+    return total
+
+
+@dataclass(frozen=True)
+class Plan:
+    """The tests a mutant runs and how long they may take."""
+
+    tests: list[str]
+    limit: float
+    how: str
+
+
+def _plans(mutants: list[Mutant], arguments: argparse.Namespace, copy: Path) -> dict[Mutant, Plan]:
+    """Each mutant's tests: its package's (``--whole``, or a line run at import), or the
+    tests that run its line (``make coverage``'s map), quickest first."""
+    packages = {package_of(m.module) for m in mutants}
+    plans: dict[Mutant, Plan] = {}
+    if arguments.whole:
+        if arguments.timeout is None:
+            times = _baseline(copy, packages)
+            limits = {package: 3 * times[package] + 60 for package in packages}
+        else:
+            limits = dict.fromkeys(packages, arguments.timeout)
+        for mutant in mutants:
+            package = package_of(mutant.module)
+            tests = [f"src/veronte4x/{mutant.module}", *package_tests(package)]
+            plans[mutant] = Plan(tests, limits[package], "package")
+        return plans
+    tests_map = CoverageMap.read(arguments.map) if arguments.map else CoverageMap.load()
+    trees: dict[str, ast.Module] = {}
+    for mutant in mutants:
+        tree = trees.setdefault(mutant.module, ast.parse((PACKAGE / mutant.module).read_text()))
+        chosen = tests_map.select(mutant, statement_span(tree, mutant.line))
+        how = f"{len(chosen)} tests" if chosen else "not covered"
+        if chosen is None:
+            package = package_of(mutant.module)
+            chosen, how = [f"src/veronte4x/{mutant.module}", *package_tests(package)], "package"
+        limit = arguments.timeout or 3 * _seconds(chosen, tests_map.durations) + 60
+        plans[mutant] = Plan(chosen, limit, how)
+    return plans
 
 
 def main() -> None:
@@ -398,7 +650,21 @@ def main() -> None:
     parser.add_argument("--timeout", type=float, help="seconds per mutant (no baseline run)")
     parser.add_argument("--report", type=Path, help="write the scores and survivors here")
     parser.add_argument("--list", action="store_true", help="print the sample, run nothing")
+    parser.add_argument(
+        "--whole", action="store_true", help="run the package's tests, not the tests of the line"
+    )
+    parser.add_argument("--map", type=Path, help="this test map, not the sources' own")
+    parser.add_argument(
+        "--coverage", action="store_true", help="make coverage: the suite under coverage, the map"
+    )
     arguments = parser.parse_args()
+    if arguments.coverage:
+        start = time.monotonic()
+        passed = run_coverage()
+        print(f"the suite under coverage took {time.monotonic() - start:.0f} s", flush=True)
+        subprocess.run([sys.executable, "-m", "coverage", "report", "--sort=cover"], check=False)
+        print(branch_table(), flush=True)
+        raise SystemExit(0 if passed else 1)
     every = all_mutants()
     if arguments.names:
         by_name = {mutant.name: mutant for mutant in every}
@@ -419,27 +685,34 @@ def main() -> None:
             copies.put(_copy(Path(temporary) / str(job)))
         first = copies.get()
         _uses_the_copy(first)
-        needed = {package_of(m.module) for m in mutants}
-        if arguments.timeout is None:
-            times = _baseline(first, needed)
-            limits = {package: 3 * times[package] + 60 for package in needed}
-        else:
-            limits = dict.fromkeys(needed, arguments.timeout)
+        plans = _plans(mutants, arguments, first)
         copies.put(first)
 
         def run(mutant: Mutant) -> str:
-            copy = copies.get()
-            target = copy / "veronte4x" / mutant.module
-            original = target.read_text()
-            target.write_text(mutated_source(PACKAGE / mutant.module, mutant.index))
-            try:
-                package = package_of(mutant.module)
-                tests = [str(target), *package_tests(package)]
-                outcome = _run(copy, tests, limits[package])
-            finally:
-                target.write_text(original)
-                copies.put(copy)
-            print(f"{outcome:8}  {mutant.name}  line {mutant.line}  {mutant.change}", flush=True)
+            plan = plans[mutant]
+            start = time.monotonic()
+            if not plan.tests:
+                outcome = "not covered"
+            else:
+                copy = copies.get()
+                target = copy / "veronte4x" / mutant.module
+                original = target.read_text()
+                target.write_text(mutated_source(PACKAGE / mutant.module, mutant.index))
+                try:
+                    outcome = _run(copy, in_copy(plan.tests, copy), plan.limit)
+                    if outcome == "not found":  # a test of the map is gone: the package's
+                        package = package_of(mutant.module)
+                        tests = in_copy([str(target), *package_tests(package)], copy)
+                        outcome = _run(copy, tests, max(plan.limit, 3600))
+                finally:
+                    target.write_text(original)
+                    copies.put(copy)
+            seconds = time.monotonic() - start
+            print(
+                f"{outcome:11}  {mutant.name}  line {mutant.line}  {mutant.change}"
+                f"  ({plan.how}, {seconds:.0f} s)",
+                flush=True,
+            )
             return outcome
 
         outcomes: list[str] = []
