@@ -1,6 +1,7 @@
 """Whole captures to tables: the columnar engine against the tools a user would pick instead.
 
 Run: python benchmarks/bench_columnar.py [--frames 2000000] [--small 1000000]
+(``--shapes-only``: just the three shapes of capture below and their stages)
 
 The capture is the example flight (`examples/make_capture.py`: three autopilots and the
 arbiter, PWM sets, four Vertiq ESCs over DroneCAN with multi-frame esc.Status, RawCommand,
