@@ -1,6 +1,7 @@
 """Whole captures to tables: the columnar engine against the tools a user would pick instead.
 
 Run: python benchmarks/bench_columnar.py [--frames 2000000] [--small 1000000]
+(``--shapes-only``: just the three shapes of capture below and their stages)
 
 The capture is the example flight (`examples/make_capture.py`: three autopilots and the
 arbiter, PWM sets, four Vertiq ESCs over DroneCAN with multi-frame esc.Status, RawCommand,
@@ -516,6 +517,26 @@ def _head(path: Path, frames: int, out: Path) -> None:
         head.writelines(islice(lines, frames))
 
 
+def shapes_and_stages(
+    root: Path, big: Path, written: int, dbc: Path, args: argparse.Namespace
+) -> None:
+    """The three shapes' table and the per-stage table."""
+    many, vehicle = root / "many.log", root / "vehicle.log"
+    many.write_text(
+        "\n".join(many_session_lines(flight_lines(None), args.many_frames, args.sessions)) + "\n"
+    )
+    vehicle.write_text("\n".join(vehicle_lines(args.vehicle_frames)) + "\n")
+    shapes = [
+        ("flight", big, written),
+        (f"{args.sessions:,} sessions", many, args.many_frames),
+        ("vehicle bus", vehicle, args.vehicle_frames),
+    ]
+    print_shapes(shape_rows(shapes, dbc, args.repeat))
+    print_stages(shapes, args.repeat)
+    many.unlink()
+    vehicle.unlink()
+
+
 def main() -> None:
     """Build the files, time every reader in one run, print rates and ratios."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -543,6 +564,11 @@ def main() -> None:
         default=[100, 1000],
         help="sizes of the files read_tables reads in a fresh process for its peak memory",
     )
+    parser.add_argument(
+        "--shapes-only",
+        action="store_true",
+        help="time only the three shapes of capture and their stages",
+    )
     args = parser.parse_args()
     repeat = args.repeat
     with tempfile.TemporaryDirectory() as folder:
@@ -559,6 +585,9 @@ def main() -> None:
             f"{big.stat().st_size / 1e6:.0f} MB of candump text, {mf4.stat().st_size / 1e6:.0f}"
             " MB of MF4"
         )
+        if args.shapes_only:
+            shapes_and_stages(root, big, written, dbc, args)
+            return
         rows = [
             (
                 "python-can CanutilsLogReader",
@@ -595,20 +624,7 @@ def main() -> None:
         hour = 63_000_000 / ours
         print(f"one hour of two 1 Mbit/s buses (63 M frames) at this rate: {hour:.0f} s")
 
-        many, vehicle = root / "many.log", root / "vehicle.log"
-        many.write_text(
-            "\n".join(many_session_lines(flight_lines(None), args.many_frames, args.sessions))
-            + "\n"
-        )
-        vehicle.write_text("\n".join(vehicle_lines(args.vehicle_frames)) + "\n")
-        shapes = [
-            ("flight", big, written),
-            (f"{args.sessions:,} sessions", many, args.many_frames),
-            ("vehicle bus", vehicle, args.vehicle_frames),
-        ]
-        print_shapes(shape_rows(shapes, dbc, repeat))
-        print_stages(shapes, repeat)
-        many.unlink()
+        shapes_and_stages(root, big, written, dbc, args)
 
         header = f"{'frames/s':>12} {'seconds':>8} {'peak MB':>8}"
         print(f"\n{'to_parquet (fresh process each)':48} {header}")
@@ -629,7 +645,6 @@ def main() -> None:
             print(
                 f"{name:48} {rate:12,.0f} {1e6 * seconds / frames:8.2f} {rate / python_can:26.2f}x"
             )
-        vehicle.unlink()
         print(
             f"\n{'read_tables peak memory (fresh process each)':48} {'seconds':>8} "
             f"{'tables MB':>9} {'peak MB':>8} {'peak/(2 tables+300)':>20}"

@@ -21,6 +21,7 @@ reassembler whole.
 
 from __future__ import annotations
 
+import functools
 import weakref
 from dataclasses import dataclass
 from typing import Any
@@ -28,6 +29,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from veronte4x.capture.columnar.payloads import integer_dtype
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
@@ -101,6 +103,18 @@ def _crc_table() -> npt.NDArray[np.uint32]:
 
 
 _CRC_TABLE = _crc_table()
+
+
+def _crc_pairs() -> npt.NDArray[np.uint32]:
+    """The CRC register after two zero bytes from each 16-bit register: feeding bytes
+    ``a``, ``b`` to register ``c`` is ``_CRC_PAIRS[c ^ (a << 8 | b)]`` (the CRC is linear)."""
+    crc = np.arange(1 << 16, dtype=np.uint32)
+    for _ in range(2):
+        crc = ((crc << 8) & 0xFFFF) ^ _CRC_TABLE[crc >> 8]
+    return crc
+
+
+_CRC_PAIRS = _crc_pairs()
 
 
 @dataclass
@@ -351,29 +365,22 @@ def transfers(
         rows: Frames of regular sessions, in session order (see `regular_sessions`).
         data, length, types: Per frame (indexed by ``rows``).
     """
-    tail = data[rows, np.maximum(length[rows] - 1, 0)]
-    start = (tail & 0x80) != 0
+    used = length[rows] - 1
+    start = (data[rows, np.maximum(used, 0)] & 0x80) != 0
     first = np.flatnonzero(start)
-    n = len(rows)
     last = np.empty(len(first), np.int64)
     last[:-1] = first[1:] - 1
     if len(first):
-        last[-1] = n - 1
-    used = length[rows] - 1
-    keep = np.arange(8) < used[:, None]
-    flat = data[rows][keep]
-    sizes = np.add.reduceat(used, first) if len(first) else np.zeros(0, np.int64)
-    starts = np.zeros(len(first) + 1, np.int64)
-    np.cumsum(sizes, out=starts[1:])
+        last[-1] = len(rows) - 1
     multi = last != first
+    heads = rows[first[multi]]
     crc = np.full(len(first), -1, np.int64)
-    at = starts[:-1][multi]
-    crc[multi] = flat[at].astype(np.int64) | flat[at + 1].astype(np.int64) << 8
-    # Drop the two CRC bytes of multi-frame transfers from the payload.
-    drop = np.zeros(len(flat), np.bool_)
-    drop[at] = drop[at + 1] = True
-    payload = flat[~drop]
-    sizes = sizes - 2 * multi
+    crc[multi] = data[heads, 0].astype(np.int64) | data[heads, 1].astype(np.int64) << 8
+    # The data bytes but the tail byte and, in multi-frame transfers, the two CRC bytes.
+    keep = np.arange(8) < used[:, None]
+    keep[first[multi], :2] = False
+    payload = data[rows][keep]
+    sizes = np.add.reduceat(used, first) - 2 * multi if len(first) else np.zeros(0, np.int64)
     offsets = np.zeros(len(first) + 1, np.int64)
     np.cumsum(sizes, out=offsets[1:])
     return Transfers(rows[last], rows[first], types[rows[first]], payload, offsets, crc)
@@ -383,18 +390,23 @@ def crc_ok(
     found: Transfers, which: npt.NDArray[np.int64], known: TypeIndex
 ) -> npt.NDArray[np.int64]:
     """The transfer CRC computed over each of ``which`` (multi-frame) transfers' payloads
-    (their types numbered by ``known``), a byte position at a time over the transfers that
-    long (longest first: a prefix)."""
+    (their types numbered by ``known``), two bytes at a time over the transfers that long
+    (longest first: a prefix), then the odd last byte of the others."""
     sizes = found.offsets[which + 1] - found.offsets[which]
     longest = np.argsort(-sizes, kind="stable")
     sizes, starts = sizes[longest], found.offsets[which][longest]
     crc = known.seeds[found.type_index[which][longest]].astype(np.uint32)
-    positions = np.arange(int(sizes.max(initial=0)))
-    counts = np.searchsorted(-sizes, -positions, "left")  # transfers longer than each
-    for position, active in enumerate(counts.tolist()):
-        value = crc[:active]
-        byte = found.payload[starts[:active] + position]
-        crc[:active] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
+    payload = found.payload
+    pairs = np.arange(int(sizes.max(initial=0)) // 2)
+    counts = np.searchsorted(-sizes, -(2 * pairs + 2), "right")  # transfers that long
+    for pair, active in enumerate(counts.tolist()):
+        at = starts[:active] + 2 * pair
+        word = payload[at].astype(np.uint32) << 8 | payload[at + 1]
+        crc[:active] = _CRC_PAIRS[crc[:active] ^ word]
+    odd = np.flatnonzero(sizes & 1)
+    if len(odd):
+        value, byte = crc[odd], payload[starts[odd] + sizes[odd] - 1]
+        crc[odd] = ((value << 8) & 0xFFFF) ^ _CRC_TABLE[((value >> 8) ^ byte) & 0xFF]
     computed = np.empty(len(sizes), np.int64)
     computed[longest] = crc
     return computed
@@ -405,9 +417,14 @@ def crc_ok(
 
 def payload_matrix(found: Transfers, which: npt.NDArray[np.int64], size: int) -> np.ndarray:
     """The payloads of ``which`` transfers, all ``size`` bytes long, as rows (plus padding)."""
-    index = found.offsets[which][:, None] + np.arange(size)
     matrix = np.zeros((len(which), size + 8), np.uint8)
-    matrix[:, :size] = found.payload[index] if size else matrix[:, :0]
+    if not size or not len(which):
+        return matrix
+    if which[-1] - which[0] == len(which) - 1 and (np.diff(which) == 1).all():
+        low = int(found.offsets[which[0]])  # one after the other: a slice of the payloads
+        matrix[:, :size] = found.payload[low : low + len(which) * size].reshape(-1, size)
+    else:
+        matrix[:, :size] = found.payload[found.offsets[which][:, None] + np.arange(size)]
     return matrix
 
 
@@ -428,12 +445,28 @@ def _bits(matrix: np.ndarray, start: int, width: int) -> npt.NDArray[np.uint64]:
     return out
 
 
+_WHOLE: dict[int, np.dtype[Any]] = {
+    8: np.dtype("u1"),
+    16: np.dtype("<u2"),
+    32: np.dtype("<u4"),
+    64: np.dtype("<u8"),
+}
+"""Scalars of whole bytes, which the stream holds as little-endian bytes."""
+
+_bit_runs = functools.cache(bit_runs)
+
+
 def scalar(matrix: np.ndarray, t: Scalar, offset: int) -> np.ndarray:
     """A DSDL scalar at bit ``offset`` of the stream, for every row, as the codec decodes it
     (integers sign-extended, floats widened exactly, bools)."""
-    raw = np.zeros(len(matrix), np.uint64)
-    for source, width, dest in bit_runs(offset, t.bits):
-        raw |= _bits(matrix, dest, width) << np.uint64(source)
+    if offset % 8 == 0 and t.bits in _WHOLE:  # whole bytes, little-endian: one view
+        at = offset // 8
+        whole = np.ascontiguousarray(matrix[:, at : at + t.bits // 8])
+        raw = whole.view(_WHOLE[t.bits])[:, 0].astype(np.uint64)
+    else:
+        raw = np.zeros(len(matrix), np.uint64)
+        for source, width, dest in _bit_runs(offset, t.bits):
+            raw |= _bits(matrix, dest, width) << np.uint64(source)
     if t.kind == "int":
         signed: np.ndarray = raw.astype(np.int64)
         signed -= ((signed >> (t.bits - 1)) & 1) * (1 << t.bits)
@@ -465,6 +498,9 @@ def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
     for f in struct.fields:
         assert isinstance(f.type, Scalar)
         if f.name:
-            out[f.name] = scalar(matrix, f.type, offset)
+            value = scalar(matrix, f.type, offset)
+            if f.type.kind in ("int", "uint"):  # as the column holds it
+                value = value.astype(integer_dtype(f.type))
+            out[f.name] = value
         offset += f.type.bits
     return out

@@ -233,22 +233,25 @@ def decode_transfers(
     """Decode the transfers of ``taken`` (whole transfers of regular sessions, in session
     order, of the types ``known`` numbers) into ``tables``, leaving out those whose last
     frame is a ``skip`` row."""
+    # Frames of one type together (a session's frames are all of one type, in order):
+    # each type's transfers and payloads come out one after the other.
+    taken = taken[np.argsort(types[taken], kind="stable")]
     found = dronecan.transfers(taken, frames.data, frames.length, types)
     keep = np.ones(len(found.last), np.bool_) if skip is None else ~skip[found.last]
-    records: list[tuple[int, Record]] = []
-    for index in np.unique(found.type_index[keep]).tolist():
-        which = np.flatnonzero((found.type_index == index) & keep)
-        multi = which[found.crc[which] >= 0]
-        computed = dronecan.crc_ok(found, multi, known)
-        wrong = multi[computed != found.crc[multi]]
-        records += _crc_mismatches(
-            frames, found, wrong, computed[computed != found.crc[multi]], stamp
-        )
-        intact = np.ones(len(found.last), np.bool_)
-        intact[wrong] = False
-        good = which[intact[which]]
-        codec = known.codec_of(index)
-        records += _decode_type(frames, found, codec, good, stamp, tables)
+    multi = np.flatnonzero(keep & (found.crc >= 0))
+    computed = dronecan.crc_ok(found, multi, known)
+    mismatch = computed != found.crc[multi]
+    wrong = multi[mismatch]
+    records = _crc_mismatches(frames, found, wrong, computed[mismatch], stamp)
+    keep[wrong] = False
+    kinds = found.type_index
+    bounds = np.flatnonzero(kinds[1:] != kinds[:-1]) + 1
+    for begin, end in zip([0, *bounds.tolist()], [*bounds.tolist(), len(kinds)], strict=True):
+        which = begin + np.flatnonzero(keep[begin:end])
+        if len(which):  # in capture order: the table needs no sorting
+            which = which[np.argsort(found.last[which], kind="stable")]
+            codec = known.codec_of(int(kinds[begin]))
+            records += _decode_type(frames, found, codec, which, stamp, tables)
     tables.add_records(records)
 
 
@@ -295,7 +298,8 @@ def _decode_type(
         _add_transfers(frames, found, good, kind, dronecan.decode_fixed(schema, matrix), tables)
         left = which[sizes != fixed]
     else:
-        fields, refused = payloads.decode(schema, found.payload, starts, sizes)
+        low, high = int(starts.min()), int((starts + sizes).max())
+        fields, refused = payloads.decode(schema, found.payload[low:high], starts - low, sizes)
         kept = ~refused
         if not kept.all():
             mask = pa.array(kept)

@@ -18,6 +18,7 @@ Columns are named and typed as `veronte4x.capture.columnar.schema` states.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any, TypeAlias
 
@@ -40,6 +41,16 @@ class UnionValue:
     members: list[tuple[Ints, Any]]
 
 
+@functools.cache
+def integer_dtype(t: Scalar) -> np.dtype[Any]:
+    """The NumPy type of an integer scalar's column (its Arrow type's)."""
+    return np.dtype(f"{'int' if t.low < 0 else 'uint'}{scalar_type(t).bit_width}")
+
+
+_WHOLE: dict[int, np.dtype[Any]] = {16: np.dtype("<u2"), 32: np.dtype("<u4"), 64: np.dtype("<u8")}
+"""Scalars of whole bytes, which the stream holds as little-endian bytes."""
+
+
 class _Reader:
     """The payloads of one type's transfers, one after the other in ``payload``.
 
@@ -48,8 +59,9 @@ class _Reader:
     """
 
     def __init__(self, payload: npt.NDArray[np.uint8], starts: Ints, sizes: Ints) -> None:
-        self.buffer = np.concatenate([payload, np.zeros(2, np.uint8)]).astype(np.int64)
-        self.limit = len(self.buffer) - 2
+        self.octets = np.concatenate([payload, np.zeros(8, np.uint8)])
+        self.buffer = self.octets.astype(np.int64)
+        self.limit = len(self.buffer) - 8
         self.end = 8 * (starts + sizes)
         self.bad = np.zeros(len(starts), np.bool_)
 
@@ -72,6 +84,11 @@ class _Reader:
         if width <= 8:
             return self.bits(pos, width).astype(np.uint64)
         full, rest = divmod(width, 8)
+        if not rest and width in _WHOLE and not (pos & 7).any():  # whole bytes: one gather
+            byte = np.minimum(pos >> 3, self.limit)
+            octets = self.octets[byte[:, None] + np.arange(full)]
+            whole: npt.NDArray[np.uint64] = octets.view(_WHOLE[width])[:, 0].astype(np.uint64)
+            return whole
         value = np.zeros(len(pos), np.uint64)
         for k in range(full):
             value |= self.bits(pos + 8 * k, 8).astype(np.uint64) << np.uint64(8 * k)
@@ -91,7 +108,7 @@ class _Reader:
         if t.kind == "bool":
             flags: np.ndarray = raw != 0
             return flags
-        dtype = np.dtype(f"{'int' if t.low < 0 else 'uint'}{scalar_type(t).bit_width}")
+        dtype = integer_dtype(t)
         if t.kind == "int":
             signed = raw.view(np.int64)
             if t.bits < 64:
