@@ -127,12 +127,7 @@ DRONECAN_MESSAGES = st.one_of(
         error_flags=st.integers(0, 255),
     ),
     st.builds(dronecan.RawCommand, cmd=st.lists(int14, max_size=20).map(tuple)),
-    st.builds(
-        dronecan.LogMessage,
-        level=st.builds(dronecan.LogLevel, value=st.integers(0, 7)),
-        source=texts(31),
-        text=texts(90),
-    ),
+    st.builds(dronecan.KeyValue, value=float32s, key=texts(58)),  # text in one to 9 frames
 )
 SERVICES = st.one_of(
     st.builds(dronecan.GetNodeInfoRequest),
