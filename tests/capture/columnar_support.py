@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 
 from veronte4x import codec, dronecan
 from veronte4x.capture import BusMap
+from veronte4x.capture.busmap import TEXT_FORMS
 from veronte4x.codec import Linear
 from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
 from veronte4x.dronecan.crc import crc16
@@ -47,7 +48,8 @@ _NODE_STATUS_OF_20 = 16 << 24 | 341 << 8 | 20
 @st.composite
 def drawn_bus_maps(draw: st.DrawFn) -> BusMap:
     """A bus map with any five Veronte ids of either width (29-bit ones among the DroneCAN
-    ids too, where the bus map wins), with or without DroneCAN and declared layouts."""
+    ids too, where the bus map wins), with or without DroneCAN and declared layouts, DroneCAN
+    text as strings or bytes."""
     extended = draw(st.booleans())
     top = 2**29 - 1 if extended else 0x7FF
     some = st.integers(0, top) | st.sampled_from([0, top])
@@ -62,6 +64,7 @@ def drawn_bus_maps(draw: st.DrawFn) -> BusMap:
         allow_excess=draw(st.booleans()),
         layouts=draw(st.sampled_from([(), (DECLARED,)])),
         dronecan=draw(st.booleans()),
+        dronecan_text=draw(st.sampled_from(TEXT_FORMS)),
     )
 
 
@@ -72,13 +75,27 @@ BUS_MAPS = (
             BusMap(pwm_packing=codec.PwmPacking.MSB_FIRST),
             BusMap(layouts=(DECLARED,), allow_excess=True),
             BusMap(arbiter_id=0x100, autopilot_ids=(0x101, 0x102, 0x103, 0x104), extended=True),
+            BusMap(dronecan_text="binary"),
         ]
     )
     | drawn_bus_maps()
 )
-"""Four fixed bus maps, and drawn ones."""
+"""Five fixed bus maps, and drawn ones."""
 VENDOR_BUS_MAPS = BUS_MAPS.map(lambda bus_map: bus_map.with_types(VENDOR_TYPES))
 """The bus maps with the vendor type set."""
+
+
+def texts(max_size: int) -> st.SearchStrategy[bytes]:
+    """The bytes of a text field: empty, UTF-8 (multi-byte characters too), UTF-8 cut
+    inside a character, or any bytes (mostly not UTF-8)."""
+    characters = st.characters(exclude_categories=["Cs"])  # no lone surrogate: not UTF-8
+    utf8 = st.text(characters, max_size=max_size).map(lambda text: text.encode()[:max_size])
+    wide = st.characters(min_codepoint=0x80, exclude_categories=["Cs"])
+    cut = st.text(wide, min_size=1, max_size=max_size).map(
+        lambda text: text.encode()[: min(max_size, len(text.encode()) - 1)]
+    )
+    return st.one_of(st.just(b""), utf8, cut, st.binary(max_size=max_size))
+
 
 float32s = st.floats(width=32, allow_nan=True)
 int14 = st.integers(-8192, 8191)
@@ -110,6 +127,7 @@ DRONECAN_MESSAGES = st.one_of(
         error_flags=st.integers(0, 255),
     ),
     st.builds(dronecan.RawCommand, cmd=st.lists(int14, max_size=20).map(tuple)),
+    st.builds(dronecan.KeyValue, value=float32s, key=texts(58)),  # text in one to 9 frames
 )
 SERVICES = st.one_of(
     st.builds(dronecan.GetNodeInfoRequest),
@@ -120,9 +138,9 @@ SERVICES = st.one_of(
             st.builds(dronecan.Empty),
             st.builds(dronecan.IntegerValue, value=st.integers(-(2**63), 2**63 - 1)),
             st.builds(dronecan.RealValue, value=st.floats(width=32, allow_nan=False)),
-            st.builds(dronecan.StringValue, value=st.binary(max_size=20)),
+            st.builds(dronecan.StringValue, value=texts(20)),
         ),
-        name=st.binary(max_size=12),
+        name=texts(12),
     ),
     st.builds(dronecan.RestartNodeRequest, magic_number=st.integers(0, 2**40 - 1)),
 )
@@ -139,11 +157,12 @@ def schema_values(t: Struct | Union | Array | Scalar) -> st.SearchStrategy[Any]:
         items = schema_values(t.item)
         if not t.dynamic:
             return st.lists(items, min_size=t.max_size, max_size=t.max_size)
-        return st.one_of(
+        some = st.one_of(
             st.just([]),
             st.lists(items, min_size=t.max_size, max_size=t.max_size),
             st.lists(items, max_size=min(t.max_size, 8)),
         )
+        return some | texts(t.max_size).map(list) if t.is_bytes else some
     if t.kind == "float":
         return st.floats(width=32) if t.bits < 64 else st.floats()
     if t.kind == "bool":

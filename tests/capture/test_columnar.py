@@ -77,7 +77,10 @@ def test_dronecan_tables(flight: Path) -> None:
     assert tables["RawCommand"].schema.field("cmd").type == pa.list_(pa.int16())
     info = tables["GetNodeInfoResponse"]
     assert "destination_node_id" in info.schema.names
-    assert info.column("name").to_pylist()[0] == b"iq_motion.esc"
+    assert info.schema.field("name").type == pa.string()
+    assert info.column("name").to_pylist()[0] == "iq_motion.esc"
+    exact = capture.read_tables(flight, text="binary")["GetNodeInfoResponse"]
+    assert exact.column("name").to_pylist()[0] == b"iq_motion.esc"
 
 
 def test_flight_agrees_and_takes_the_fast_paths(

@@ -77,4 +77,4 @@ def test_bad_payloads_are_error_rows_column_wise(
         assert row["detail"] == f"{dronecan.Problem.BAD_PAYLOAD.value} {refused.value}"
     assert [row["node_id"] for row in rows(got["NodeStatus"])] == [20, 21]
     assert [row["uptime_sec"] for row in rows(got["NodeStatus"])] == [7, 7]
-    assert [row["name"] for row in rows(got["GetNodeInfoResponse"])] == [INFO.name] * 2
+    assert [row["name"] for row in rows(got["GetNodeInfoResponse"])] == ["com.example.esc"] * 2

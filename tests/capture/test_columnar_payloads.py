@@ -17,8 +17,8 @@ from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.errors import DecodeError
 
 pa = pytest.importorskip("pyarrow")
-SPECS = dronecan_specs()
-VENDOR_SPECS = dronecan_specs(VENDOR_TYPES)
+SPECS = dronecan_specs(text="binary")  # payloads give bytes; `Tables` makes text strings
+VENDOR_SPECS = dronecan_specs(VENDOR_TYPES, "binary")
 VENDOR_CODECS = VENDOR_TYPES.codecs[len(CODECS) :]
 
 

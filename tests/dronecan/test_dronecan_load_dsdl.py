@@ -355,7 +355,7 @@ def test_read_tables_equals_the_records_and_holds_every_value(tmp_path: Path) ->
     telemetry = tables["Telemetry"].to_pylist()[0]
     assert telemetry["timestamp.usec"] == 1234567
     assert telemetry["state"] == "FAULT"
-    assert telemetry["reading.type"] == "label" and telemetry["reading.label"] == b"rpm"
+    assert telemetry["reading.type"] == "label" and telemetry["reading.label"] == "rpm"
     assert telemetry["phase_current"] == [1, -2, 2047, -2048]
     assert telemetry["cells"] == [
         {"voltage": 3.5, "index": 1, "ok": True},

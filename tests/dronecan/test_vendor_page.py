@@ -53,4 +53,4 @@ def test_every_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
     assert outputs[0].startswith(first.removesuffix("..."))
     assert outputs[0].splitlines()[1] == second
     table = pq.read_table(capture.dataset_files(tmp_path / "vendor-dataset", "Telemetry"))
-    assert table.column("name").to_pylist() == [b"front left"]
+    assert table.column("name").to_pylist() == ["front left"]  # text: a string

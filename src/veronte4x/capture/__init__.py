@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.aio import stream
 from veronte4x.capture.align import AlignError, align
-from veronte4x.capture.busmap import BusMap, BusMapError, Role
+from veronte4x.capture.busmap import BusMap, BusMapError, Role, TextForm
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.datasets import dataset_files, dataset_tables, open_dataset
 from veronte4x.capture.dbc import export_dbc, write_dbc
@@ -122,6 +122,7 @@ def read_tables(
     progress: bool | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
+    text: TextForm | None = None,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -160,12 +161,17 @@ def read_tables(
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
             added).
+        text: The form of the DroneCAN text fields (names, paths, log text: the ``uint8``
+            arrays the DSDL makes text, see the Tables page of the docs): ``string``, Arrow
+            strings, a value that is not UTF-8 null with a ``bad text`` row in ``errors``
+            holding its bytes; ``binary``, every ``uint8`` array as its exact bytes. None
+            for the bus map's ``dronecan_text`` (``string`` unless set).
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
         MissingExtraError: The ``arrow`` extra (or the ``can`` extra, for formats other
             than candump text and MF4) is not installed; the message names it.
-        ValueError: ``time`` is none of the forms above.
+        ValueError: ``time`` or ``text`` is none of the forms above.
 
     Examples:
         >>> from veronte4x import capture
@@ -182,7 +188,7 @@ def read_tables(
         >>> tables["errors"].column("error").to_pylist()
         ['unknown command']
     """
-    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
     if bus_map.dbc:
         decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
@@ -192,14 +198,18 @@ def read_tables(
 
 
 def tables_from_records(
-    records: Iterable[Record], bus_map: BusMap | None = None, types: TypeSet | None = None
+    records: Iterable[Record],
+    bus_map: BusMap | None = None,
+    types: TypeSet | None = None,
+    text: TextForm | None = None,
 ) -> dict[str, pyarrow.Table]:
     """The tables of `read_tables` from records decoded one by one (a live bus, `read`).
 
     Rows keep the order of the records. Needs the ``arrow`` extra. ``types``: the DroneCAN
-    type set the records were decoded with, as in `read`.
+    type set the records were decoded with, as in `read`; ``text``: the form of DroneCAN
+    text fields, as in `read_tables` (the records keep their bytes either way).
     """
-    bus_map = (bus_map or BusMap()).with_types(types)
+    bus_map = (bus_map or BusMap()).with_types(types).with_text(text)
     tables: dict[str, pyarrow.Table] = _columnar().tables_from_records(records, bus_map)
     return tables
 
@@ -214,6 +224,7 @@ def to_parquet(
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
     time: TimeForm = "timestamp",
+    text: TextForm | None = None,
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -251,6 +262,9 @@ def to_parquet(
             DuckDB reads as ``TIMESTAMP WITH TIME ZONE`` and Polars as
             ``Datetime(us, UTC)``), ``relative`` or ``seconds`` (float64). Keep one form
             per dataset: files of two forms do not read back as one table.
+        text: The form of DroneCAN text fields, as in `read_tables`: ``string`` (Parquet
+            ``BYTE_ARRAY`` annotated ``STRING``, DuckDB's ``VARCHAR``) or ``binary``
+            (``BLOB``); None for the bus map's. Keep one form per dataset, as for ``time``.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -261,12 +275,13 @@ def to_parquet(
             directories).
         SourceError: A path is a directory or a file in no format veronte4x knows.
         MissingExtraError: An extra it needs is not installed; the message names it.
+        ValueError: ``time`` or ``text`` is none of the forms `read_tables` takes.
     """
     _columnar()
     require("pyarrow.parquet", "parquet", "writing Parquet")
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
-    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
     if bus_map.dbc:
         decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any file
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel, time_form=time)

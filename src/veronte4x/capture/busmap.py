@@ -38,7 +38,7 @@ import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any
+from typing import Any, Literal
 
 from veronte4x import codec
 from veronte4x.dronecan.typeset import TypeSet
@@ -47,6 +47,28 @@ from veronte4x.extras import require
 
 AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external")
 """Autopilot names by index, as the Status message orders them."""
+
+
+TextForm = Literal["string", "binary"]
+"""How tables give the DroneCAN fields whose DSDL makes them text (their ``text`` option,
+`veronte4x.dronecan.types.is_text`): ``string``, Arrow strings (the default; a value that
+is not UTF-8 is null, with a ``bad text`` row in ``errors`` holding its bytes);
+``binary``, every ``uint8`` array as its exact bytes."""
+TEXT_FORMS: tuple[TextForm, ...] = ("string", "binary")
+
+
+def check_text_form(text: str) -> TextForm:
+    """The ``text`` option, checked.
+
+    Raises:
+        ValueError: It is none of `TEXT_FORMS`.
+    """
+    if text not in TEXT_FORMS:
+        raise ValueError(
+            f"text={text!r}: give 'string' (text fields as strings, the default) or 'binary' "
+            "(every uint8 array as its exact bytes)"
+        )
+    return text
 
 
 class Role(enum.Enum):
@@ -78,6 +100,8 @@ class BusMap:
             None for the default set (the standard one, plus what
             `veronte4x.dronecan.load_dsdl` added).
         dbc: DBC files for the frames outside the bus map (see `veronte4x.capture.dbc_in`).
+        dronecan_text: How tables give DroneCAN text fields (`TextForm`): ``string`` or
+            ``binary``. Records keep their bytes either way.
     """
 
     arbiter_id: int = 255
@@ -89,11 +113,13 @@ class BusMap:
     dronecan: bool = True
     dronecan_types: TypeSet | None = None
     dbc: tuple[str, ...] = ()
+    dronecan_text: TextForm = "string"
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )
 
     def __post_init__(self) -> None:
+        check_text_form(self.dronecan_text)
         roles = self._roles
         roles[self.arbiter_id] = (Role.ARBITER, None)
         for index, can_id in enumerate(self.autopilot_ids):
@@ -123,6 +149,16 @@ class BusMap:
         if not isinstance(types, TypeSet):
             raise argument_type_error("BusMap.with_types", "types", "a TypeSet", types)
         return dataclasses.replace(self, dronecan_types=types)
+
+    def with_text(self, text: TextForm | None) -> BusMap:
+        """This bus map with the DroneCAN text form ``text`` (itself for None).
+
+        Raises:
+            ValueError: ``text`` is none of `TEXT_FORMS`.
+        """
+        if text is None:
+            return self
+        return dataclasses.replace(self, dronecan_text=check_text_form(text))
 
     def codec(self) -> codec.Codec:
         """A Veronte codec with this bus map's choices (made once for the same choices: a

@@ -78,7 +78,8 @@ def to_dataframe(
     Given a path, the capture is decoded by the columnar engine (`read_tables`, the
     ``arrow`` extra too) and the frame joins its tables in capture order: the same rows, with
     the tables' column names and Arrow-backed dtypes (enums as categories of names,
-    RawCommand's ``cmd`` as a list); ``data`` is kept for errors only.
+    RawCommand's ``cmd`` as a list, DroneCAN text fields as strings unless the bus map's
+    ``dronecan_text`` is ``binary``); ``data`` is kept for errors only.
 
     Either way, ``timestamp`` is the capture's time in UTC to the microsecond (the log's,
     exactly), and ``frame.attrs["units"]`` maps each column with a physical unit to its

@@ -56,8 +56,8 @@ TEXT_FIELDS = frozenset(
 )
 """(class name, attribute) of the byte fields of the standard types that hold text: the
 ``uint8[<=N]`` arrays whose DSDL name or comment says name, path, text, string, message,
-key, description, reason, label or source (`veronte4x.dronecan.types.is_text`; vendor types follow
-the same rule). Every other byte field is data, shown in hex."""
+key, description, reason, label, source, ASCII or UTF (`veronte4x.dronecan.types.is_text`;
+vendor types follow the same rule). Every other byte field is data, shown in hex."""
 
 
 def _float_bits(owner: type, attr: str) -> int:

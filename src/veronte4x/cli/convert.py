@@ -7,7 +7,7 @@ import sys
 from typing import Any
 
 from veronte4x import capture
-from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.busmap import TEXT_FORMS, BusMap
 from veronte4x.cli import aligned
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import tell
@@ -48,6 +48,14 @@ def add_parser(commands: Any) -> None:
         help="the time column: timestamp (UTC to the microsecond, the default; ISO 8601 in "
         "a CSV), relative (seconds from the first frame) or seconds (as logged)",
     )
+    parser.add_argument(
+        "--text",
+        choices=TEXT_FORMS,
+        default="string",
+        help="DroneCAN text fields (names, paths, log text): string (the default; bytes "
+        "that are not UTF-8 give a null and a 'bad text' error row holding them) or binary "
+        "(every uint8 array as its exact bytes)",
+    )
     add_capture_options(parser)
     aligned.add_options(parser)
     parser.set_defaults(run=run)
@@ -56,6 +64,7 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Convert the captures; progress and a one-line summary go to standard error."""
     format_, out_dir = args.to
+    bus_map = bus_map.with_text(args.text)
     if format_ not in FORMATS:
         print(
             f"veronte4x: cannot convert to {format_!r}: the formats are {', '.join(FORMATS)}",

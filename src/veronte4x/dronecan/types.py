@@ -171,7 +171,20 @@ def data_types(
 
 
 TEXT_WORDS = frozenset(
-    {"name", "path", "text", "string", "message", "key", "description", "reason", "label", "source"}
+    {
+        "name",
+        "path",
+        "text",
+        "string",
+        "message",
+        "key",
+        "description",
+        "reason",
+        "label",
+        "source",
+        "ascii",
+        "utf",
+    }
 )
 """The words that make a ``uint8[<=N]`` field text (see `is_text`)."""
 
@@ -180,7 +193,9 @@ def is_text(attribute: Attribute) -> bool:
     """Whether a field holds text: a dynamic ``uint8`` array whose name or DSDL comment
     has one of the `TEXT_WORDS` (``name``, ``parameter_name``, ``reason_text``,
     ``string_value``, ``optional_error_message``, ``source``, or a comment such as "Full
-    data type name"). Other byte arrays are data (``data``, ``buffer``, ``unique_id``)."""
+    data type name" or "in ASCII characters"). Other byte arrays are data (``data``,
+    ``buffer``, ``unique_id``). Only the field's own line counts, not the comment block
+    above it, which often describes the whole type."""
     t = attribute.type
     if not (
         isinstance(t, ArrayType)

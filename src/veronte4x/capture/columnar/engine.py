@@ -54,7 +54,10 @@ def _decode(
 ) -> tuple[Tables, CaptureDecoder, npt.NDArray[np.int64]]:
     """Decode, the DroneCAN frames of ``whole`` channels all frame by frame; also return
     the per-frame decoder and the DroneCAN frames that use the reassembler's table."""
-    tables = Tables(all_specs(bus_map.codec(), bus_map.dronecan_types), list(frames.channels))
+    tables = Tables(
+        all_specs(bus_map.codec(), bus_map.dronecan_types, bus_map.dronecan_text),
+        list(frames.channels),
+    )
     plain, sender_code = _routes(frames, bus_map)
     dronecan_rows = np.flatnonzero(plain & frames.extended & (sender_code < 0))
     if not bus_map.dronecan:
@@ -400,6 +403,6 @@ def tables_from_records(
     Rows keep the order of ``records``. The exact reference of the column-wise path.
     """
     bus_map = bus_map or BusMap()
-    tables = Tables(all_specs(bus_map.codec(), bus_map.dronecan_types), [])
+    tables = Tables(all_specs(bus_map.codec(), bus_map.dronecan_types, bus_map.dronecan_text), [])
     tables.add_records((index * SUB, record) for index, record in enumerate(records))
     return tables.finish()

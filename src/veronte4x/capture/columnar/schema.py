@@ -6,21 +6,27 @@ compiles), DroneCAN tables from the DSDL definitions. Column names are those of
 structs ``outer.inner``. Types follow the wire: the smallest unsigned or signed integer
 that holds the field, ``float32`` for float32 and float16 (every float16 is a float32;
 Polars and DuckDB read no float16), ``float64`` for scaled integers, ``bool``, ``binary``
-for raw bytes and uint8 arrays, a ``list`` for other arrays (RawCommand's ``cmd``), and
-dictionary-encoded names for enums, whose dictionary lists every wire value (a value
-without a member is named by its number).
+for raw bytes and uint8 arrays, ``string`` for DroneCAN text fields, a ``list`` for other
+arrays (RawCommand's ``cmd``), and dictionary-encoded names for enums, whose dictionary
+lists every wire value (a value without a member is named by its number).
 
 A DSDL union (param ``Value``, ``NumericValue``) becomes ``name.type``, the member's
 name, and one nullable column per member with a value: ``name.integer_value`` (int64),
 ``name.real_value`` (float32), ``name.boolean_value`` (uint8), ``name.string_value``
-(binary); ``empty`` has no column.
+(string); ``empty`` has no column.
 
 Every DroneCAN type of a type set (standard or vendor) has its table, by the same rules:
 nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists
 of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there as their
-integers), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``: DSDL v0
-has no text type, so names and paths (``model_name`` of ``power.BatteryInfo``, ``text`` of
-``debug.LogMessage``) keep their exact bytes. A field named as a head column (``HEAD_NAMES``:
+integers), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``, but
+for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule of
+`veronte4x.dronecan.types.is_text` (its name or its comment says so: ``name`` of
+``GetNodeInfoResponse``, ``path`` of ``file.Path``, ``text`` and ``source`` of
+``debug.LogMessage``, the union member ``string_value``), applied here to every type set,
+vendor namespaces included. With the text form ``string`` (`TextForm`, the default) those
+columns are Arrow ``string``, checked by `veronte4x.capture.columnar.text`; with
+``binary`` they keep their exact bytes. Text fields inside lists of structs stay binary
+(the standard set has none). A field named as a head column (``HEAD_NAMES``:
 ``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``, ``destination_node_id``)
 becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
 a vendor type's ``message.channel``); fields inside lists of structs, and those named
@@ -33,14 +39,14 @@ from __future__ import annotations
 import dataclasses
 import functools
 import weakref
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from operator import attrgetter
 from typing import Any, cast
 
 import pyarrow as pa
 
-from veronte4x.capture.busmap import AUTOPILOT_NAMES
+from veronte4x.capture.busmap import AUTOPILOT_NAMES, TextForm
 from veronte4x.capture.columnar.veronte import layout_list
 from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
@@ -103,12 +109,15 @@ class Column:
         type: Arrow type.
         get: Its value from a message object (for a dictionary column, the index).
         names: The dictionary of a dictionary column.
+        text: A DroneCAN text field as ``string``: its values are bytes, made strings
+            (and checked) as the table is built.
     """
 
     name: str
     type: pa.DataType
     get: Callable[[Any], Any]
     names: tuple[str, ...] | None = None
+    text: bool = False
 
 
 @dataclass(frozen=True)
@@ -131,6 +140,11 @@ class TableSpec:
         (``unit``: ``V``, ``A``, ``K``, ``rpm``, ``%``, ``s``). Made once per spec."""
         fields = [pa.field(c.name, c.type, metadata=_unit(self.kind, c.name)) for c in self.columns]
         return pa.schema([*self.head, *fields])
+
+    @functools.cached_property
+    def texts(self) -> frozenset[str]:
+        """The columns of text fields made strings (`Column.text`)."""
+        return frozenset(c.name for c in self.columns if c.text)
 
 
 def _unit(kind: str, name: str) -> dict[str, str] | None:
@@ -205,33 +219,45 @@ def veronte_type(f: Field) -> pa.DataType:
 # DroneCAN --------------------------------------------------------------------------------
 
 
-def dronecan_specs(types: TypeSet | None = None) -> dict[str, TableSpec]:
-    """The table of every DroneCAN type of a type set (None: the default), by class name."""
+def dronecan_specs(types: TypeSet | None = None, text: TextForm = "string") -> dict[str, TableSpec]:
+    """The table of every DroneCAN type of a type set (None: the default), by class name,
+    text fields in the form ``text``."""
     types = types_or_default(types, "dronecan_specs")
-    specs = _SPECS.get(types)
+    forms = _SPECS.setdefault(types, {})
+    specs = forms.get(text)
     if specs is None:
-        specs = _SPECS[types] = _dronecan_specs(types)
+        specs = forms[text] = _dronecan_specs(types, types.text_fields if text == "string" else {})
     return dict(specs)
 
 
-_SPECS: weakref.WeakKeyDictionary[TypeSet, dict[str, TableSpec]] = weakref.WeakKeyDictionary()
-"""The tables of each type set, kept as long as the set lives."""
+_SPECS: weakref.WeakKeyDictionary[TypeSet, dict[str, dict[str, TableSpec]]] = (
+    weakref.WeakKeyDictionary()
+)
+"""The tables of each type set, by text form, kept as long as the set lives."""
 
 
-def _dronecan_specs(types: TypeSet) -> dict[str, TableSpec]:
+def _dronecan_specs(types: TypeSet, texts: Texts) -> dict[str, TableSpec]:
     specs = {}
     for data_type in types.data_types:
         head: tuple[pa.Field, ...] = (*HEAD, NODE_ID)
         if data_type.kind is not TransferKind.MESSAGE:
             head = (*head, DESTINATION)
         kind = data_type.schema.cls.__name__
-        columns = _struct_columns(data_type.schema, "", ())
+        columns = _struct_columns(data_type.schema, "", (), texts)
         named = (dataclasses.replace(c, name=field_column(c.name)) for c in columns)
         specs[kind] = TableSpec(kind, head, tuple(named))
     return specs
 
 
-def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[Column]:
+Texts = Mapping[type, frozenset[str]]
+"""The text fields to give as strings: the attributes of each class (`TypeSet.text_fields`),
+or none."""
+
+
+def _struct_columns(
+    struct: Struct, prefix: str, path: tuple[str, ...], texts: Texts
+) -> list[Column]:
+    """The columns of a struct's fields, ``texts`` as strings."""
     columns: list[Column] = []
     for f in struct.fields:
         if not f.name:
@@ -239,11 +265,13 @@ def _struct_columns(struct: Struct, prefix: str, path: tuple[str, ...]) -> list[
         name, where = prefix + f.name, (*path, f.name)
         t = f.type
         if isinstance(t, Struct):
-            columns += _struct_columns(t, name + ".", where)
+            columns += _struct_columns(t, name + ".", where, texts)
         elif isinstance(t, Union):
-            columns += _union_columns(t, name, where)
+            columns += _union_columns(t, name, where, texts)
         elif isinstance(t, Array) and isinstance(t.item, Struct):
             columns.append(Column(name, pa.list_(struct_type(t.item)), _items(where)))
+        elif f.name in texts.get(struct.cls, ()):
+            columns.append(Column(name, pa.string(), _path(where), text=True))
         elif isinstance(t, Array):
             columns.append(Column(name, value_type(t), _path(where)))
         elif f.enum is not None:
@@ -291,7 +319,7 @@ def _items(where: tuple[str, ...]) -> Callable[[Any], Any]:
     return lambda message: [_plain(item) for item in get(message)]
 
 
-def _union_columns(union: Union, name: str, where: tuple[str, ...]) -> list[Column]:
+def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts) -> list[Column]:
     members = tuple(member.name for member in union.members)
     classes = {member.cls: index for index, member in enumerate(union.members)}
     get_value = _path(where)
@@ -301,8 +329,12 @@ def _union_columns(union: Union, name: str, where: tuple[str, ...]) -> list[Colu
     for member in union.members:
         if isinstance(member.type, Struct):
             continue  # Empty: the type says it all
+        get = _member(get_value, member.cls)
+        if "value" in texts.get(member.cls, ()):
+            columns.append(Column(f"{name}.{member.name}", pa.string(), get, text=True))
+            continue
         t = pa.binary() if isinstance(member.type, Array) else scalar_type(member.type)
-        columns.append(Column(f"{name}.{member.name}", t, _member(get_value, member.cls)))
+        columns.append(Column(f"{name}.{member.name}", t, get))
     return columns
 
 
@@ -342,13 +374,15 @@ def enum_type(names: tuple[str, ...]) -> pa.DataType:
     return pa.dictionary(integer_type(0, len(names) - 1), pa.string())
 
 
-def all_specs(codec: Codec, types: TypeSet | None = None) -> dict[str, TableSpec]:
+def all_specs(
+    codec: Codec, types: TypeSet | None = None, text: TextForm = "string"
+) -> dict[str, TableSpec]:
     """Every message table a capture decoded with this codec and these DroneCAN types
-    (None: the default set) can give, by kind."""
+    (None: the default set) can give, by kind, DroneCAN text fields in the form ``text``."""
     specs = {
         kind: veronte_spec(kind, variants) for kind, variants in veronte_layouts(codec).items()
     }
-    specs.update(dronecan_specs(types))
+    specs.update(dronecan_specs(types, text))
     return specs
 
 

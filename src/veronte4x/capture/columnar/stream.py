@@ -87,7 +87,9 @@ class StreamDecoder:
         self.channel = channel
         self.per_frame_channels = frozenset(per_frame_channels)
         self.decoder = CaptureDecoder(self.bus_map)
-        self._specs = all_specs(self.bus_map.codec(), self.bus_map.dronecan_types)
+        self._specs = all_specs(
+            self.bus_map.codec(), self.bus_map.dronecan_types, self.bus_map.dronecan_text
+        )
         self._known = dronecan.type_index_of(self.bus_map.dronecan_types)
         # Frames carried to the next batch (capture order), whether each is context (else
         # a transfer still open), and each one's session key.

@@ -17,6 +17,7 @@ import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
+from veronte4x.capture.columnar import text
 from veronte4x.capture.columnar.frames import NO_TIME, FrameColumns, micros_of
 from veronte4x.capture.columnar.schema import (
     ERRORS,
@@ -67,7 +68,8 @@ class Tables:
 
         ``head`` holds ``time`` (`FrameColumns.time`), ``has_time``, ``channel`` (codes),
         ``can_id``, ``sender`` (codes into `SENDERS`), and for DroneCAN ``node_id`` and
-        ``destination_node_id``.
+        ``destination_node_id``. Text columns (`TableSpec.texts`) take bytes: a value that
+        is not UTF-8 adds a row to ``errors`` (`veronte4x.capture.columnar.text`).
         """
         if not len(keys):
             return
@@ -75,6 +77,12 @@ class Tables:
         names = {c.name: c.names for c in spec.columns}
         arrays: dict[str, pa.Array] = {}
         for field in spec.schema:
+            if field.name in spec.texts:
+                arrays[field.name], bad = text.strings(fields[field.name])
+                if bad.any():
+                    rows = text.bad_text_rows(kind, field.name, head, fields[field.name], bad)
+                    self.add_columns("errors", keys[bad], rows, {})
+                continue
             if field.name == "timestamp":
                 time = np.asarray(head["time"], np.int64)
                 missing = ~np.asarray(head["has_time"], np.bool_) | (time == NO_TIME)
