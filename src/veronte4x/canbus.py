@@ -109,6 +109,7 @@ def widen_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> None:
 
 
 __all__ = [
+    "RECEIVE_BUFFER",
     "BusOpenError",
     "DecodingListener",
     "decode_can_message",
