@@ -9,13 +9,15 @@ from collections.abc import Iterator
 
 import can
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from veronte4x import dronecan
 from veronte4x.client import NoResponseError
 from veronte4x.client.bus import BusClient
 from veronte4x.dronecan import vertiq
 from veronte4x.simulator import SimulatedEsc
-from veronte4x.simulator.can_node import EscNode, to_message, wanted
+from veronte4x.simulator.can_node import EscBus, EscNode, to_message, wanted
 
 from .support import ESC, StepClock
 
@@ -125,6 +127,70 @@ def test_run_serves_for_a_duration_of_the_clock(buses: tuple[can.BusABC, can.Bus
     heard = [type(t.message).__name__ for t in other.listen(0.0)]
     assert heard.count("NodeStatus") == 2
     assert heard.count("EscStatus") == heard.count("Temperature") > 10
+
+
+class _NoBus:
+    """`EscBus.feed` never touches its bus."""
+
+
+_REQUESTS = [
+    dronecan.GetNodeInfoRequest(),
+    vertiq.get_parameter("esc_index"),
+    vertiq.set_parameter("esc_index", 3),
+    vertiq.set_parameter("uavcan_node_id", 30),
+    dronecan.RestartNodeRequest(dronecan.RestartNodeRequest.MAGIC_NUMBER),
+    vertiq.raw_command([0.2, 0.4, 0.6]),
+]
+
+
+@st.composite
+def _traffic(draw: st.DrawFn) -> list[tuple[int, bytes]]:
+    """Requests to nodes 21-23 and 30 (a node id an ESC may take after a restart), RawCommands,
+    and frames cut short, torn or made up: what one bus carries for several ESCs."""
+    frames: list[tuple[int, bytes]] = []
+    renumbered = draw(st.sampled_from([None, 21, 22, 23]))  # becomes node 30 at once
+    first = [] if renumbered is None else [(_REQUESTS[3], renumbered), (_REQUESTS[4], renumbered)]
+    for transfer_id in range(draw(st.integers(0, 12)) + len(first)):
+        request, destination = (
+            first[transfer_id]
+            if transfer_id < len(first)
+            else (draw(st.sampled_from(_REQUESTS)), draw(st.sampled_from([21, 22, 23, 30])))
+        )
+        encoded = dronecan.encode(
+            request,
+            source_node_id=draw(st.sampled_from([10, 127])),
+            destination_node_id=None if isinstance(request, dronecan.RawCommand) else destination,
+            transfer_id=transfer_id % 32,
+            priority=24,
+        )
+        frames += [(f.can_id, f.data) for f in encoded]
+        if draw(st.booleans()):
+            frames.pop(draw(st.integers(0, len(frames) - 1)))  # a frame lost
+        if draw(st.booleans()):
+            frames.append((draw(st.integers(0, 0x1FFFFFFF)), draw(st.binary(max_size=8))))
+    return frames
+
+
+@given(_traffic())
+def test_esc_bus_gives_each_esc_what_feeding_it_everything_does(
+    frames: list[tuple[int, bytes]],
+) -> None:
+    routed = EscBus(_NoBus(), [SimulatedEsc(n, n - 21) for n in (21, 22, 23)])  # type: ignore[arg-type]
+    twins = [SimulatedEsc(n, n - 21) for n in (21, 22, 23)]
+    for step, (can_id, data) in enumerate(frames):
+        now = step * 0.01
+        routed.clock = lambda now=now: now  # type: ignore[misc]
+        message = can.Message(arbitration_id=can_id, data=data, is_extended_id=True)
+        routed.feed(message)
+        for twin in twins if wanted(message) else []:
+            twin.receive(can_id, data, now)
+        if step % 5 == 4:  # restarts take effect, node ids change, responses go out
+            for esc, twin in zip(routed.escs, twins, strict=True):
+                assert esc.poll(now) == twin.poll(now)
+    end = len(frames) * 0.01
+    for esc, twin in zip(routed.escs, twins, strict=True):
+        assert esc.poll(end) == twin.poll(end)
+        assert (esc.node_id, esc.esc_index, esc.state) == (twin.node_id, twin.esc_index, twin.state)
 
 
 def test_the_simulator_does_not_import_the_ground_client() -> None:

@@ -134,6 +134,17 @@ def service_can_id(
     )
 
 
+def service_destination(can_id: int) -> int | None:
+    """The destination node id of a service frame's CAN ID, or None for a message's (spec
+    4.1): a node's quick test of whether a frame is for it, without `parse_can_id`'s checks.
+
+    Examples:
+        >>> service_destination(0x1E0B95FF), service_destination(0x10015514) is None
+        (21, True)
+    """
+    return (can_id >> 8) & 0x7F if can_id & 0x80 else None
+
+
 def parse_can_id(can_id: int) -> CanId:
     """Split a 29-bit CAN ID into its DroneCAN fields.
 

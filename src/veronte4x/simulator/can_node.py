@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 import can
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
+from veronte4x.dronecan.can_id import service_destination
 from veronte4x.simulator.esc import SimulatedEsc
 
 __all__ = ["EscBus", "EscNode", "to_message", "wanted"]
@@ -125,12 +126,18 @@ class EscBus:
         self.clock = clock
 
     def feed(self, message: can.Message) -> None:
-        """Give one bus message to every ESC, stamped with the clock."""
+        """Give one bus message to every ESC it may concern, stamped with the clock: a
+        message to each, a service frame only to the ESC it is addressed to (the others
+        would drop it, as `SimulatedEsc.receive` does; 8 ESCs take a 256-byte file read in
+        38 frames, for one of them)."""
         if wanted(message):
             now = self.clock()
+            can_id = message.arbitration_id
             data = bytes(message.data)
+            destination = service_destination(can_id)
             for esc in self.escs:
-                esc.receive(message.arbitration_id, data, now)
+                if destination is None or esc.node_id == destination:
+                    esc.receive(can_id, data, now)
 
     def step(self) -> int:
         """Feed every message waiting on the bus, then send what each ESC has to send now.

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.can_id import TransferKind, service_destination
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import (
@@ -368,8 +368,9 @@ class SimulatedEsc:
         timestamp = check_seconds("receive", "timestamp", timestamp)
         if timestamp < self._start_time or self._in_bootloader:
             return
-        if can_id & _SERVICE and (can_id >> 8) & 0x7F != self._node_id:
-            return  # a service frame to another node (DroneCAN CAN ID: destination bits 8-14)
+        destination = service_destination(can_id)
+        if destination is not None and destination != self._node_id:
+            return  # a service frame to another node
         self._advance(timestamp)
         transfer = self._reassembler.feed(can_id, data, timestamp)
         if transfer is None:
@@ -627,6 +628,3 @@ class SimulatedEsc:
 
 
 _INDEX = {r.parameter: i for i, r in enumerate(parameters.PARAMETERS)}
-
-_SERVICE = 0x80
-"""The service-not-message bit of a DroneCAN CAN ID (bit 7)."""
