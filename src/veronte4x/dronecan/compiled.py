@@ -21,7 +21,9 @@ How the code stays cheap:
   public frozen dataclass, filled by plain attribute stores and then given the public class
   (``__class__`` assignment, which Python allows between classes of identical layout).
   The result is an ordinary instance of the public class, built about four times faster
-  than through the frozen ``__init__``.
+  than through the frozen ``__init__``. A frozen type of at most one payload byte (an empty
+  request, ArmingStatus) builds none: its decoders return one of its messages made in
+  advance (`_shared_values`).
 
 Anything unusual (a value out of range or of the wrong type, a payload of the wrong length)
 raises inside the generated code; the caller then runs the generic `Serializer`, which

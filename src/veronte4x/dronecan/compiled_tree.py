@@ -15,7 +15,8 @@ The bit stream (see `serializer`) is read and written in pieces:
   it is (``unpack_from``, a slice for ``uint8`` arrays); elsewhere from the payload as one
   big-endian int ``x``, shifted so that reads past the end give zeros.
 - Arrays of whole-byte scalars are one ``struct`` call; other scalar arrays one list
-  comprehension; arrays of structs a loop; a union an ``if`` per member.
+  comprehension (an integer item of more than 8 bits from two tables, `_half_tables`);
+  arrays of structs a loop; a union an ``if`` per member.
 - The encoder appends every piece to one int ``a`` and its bit count, then pads to bytes.
 
 Anything unusual raises inside the generated code (`SlowPath` for a value it does not take

@@ -187,11 +187,11 @@ def _check_transport(codec: TypeCodec, source: object, tid: object, priority: ob
             raise EncodeError(name, field, value, f"an int in {low}..{high}")
 
 
-SingleRoute = tuple[Callable[[bytes], Any], int, "int | None", int, TransferKind, int]
+_SingleRoute = tuple[Callable[[bytes], Any], int, "int | None", int, TransferKind, int]
 """The single-frame route of a CAN ID: the generated frame decoder of its type, and the
 source node, destination node, priority, kind and data type id of its transfers."""
 
-MultiRoute = Callable[[list[Any], float], "Transfer | None"]
+_MultiRoute = Callable[[list[Any], float], "Transfer | None"]
 """The multi-frame route of a CAN ID: ``route(frames, timestamp)``, a list of at least two
 frames to their transfer; None (or one of `DECODE_FALLBACK`) where the checked path must
 decide."""
@@ -207,8 +207,8 @@ class _Routes:
     def __init__(self, types: TypeSet) -> None:
         self.types = types
         self.by_id = types.by_id
-        self.single: dict[int, SingleRoute] = {}
-        self.multi: dict[int, MultiRoute] = {}
+        self.single: dict[int, _SingleRoute] = {}
+        self.multi: dict[int, _MultiRoute] = {}
 
     def codec(self, can_id: int) -> TypeCodec | None:
         """The codec of a CAN ID's type if the CAN ID is a valid one of a known type."""
@@ -221,7 +221,7 @@ class _Routes:
         kind = TransferKind.REQUEST if can_id & 0x8000 else TransferKind.RESPONSE
         return self.by_id.get((kind, (can_id >> 16) & 0xFF))
 
-    def add_single(self, can_id: int) -> SingleRoute | None:
+    def add_single(self, can_id: int) -> _SingleRoute | None:
         """The single-frame route of a CAN ID, now kept; None for a CAN ID with none."""
         codec = self.codec(can_id)
         if codec is None or codec.fast.decode_frame is None:
@@ -231,7 +231,7 @@ class _Routes:
         route = self.single[can_id] = _single_route(codec, can_id)
         return route
 
-    def add_multi(self, can_id: int) -> MultiRoute | None:
+    def add_multi(self, can_id: int) -> _MultiRoute | None:
         """The multi-frame route of a CAN ID, now kept; None for a CAN ID with none."""
         codec = self.codec(can_id)
         if codec is None:
@@ -254,14 +254,14 @@ def _transfer_fields(codec: TypeCodec, can_id: int) -> tuple[int, int | None, in
     return can_id & 0x7F, destination, can_id >> 24, data_type.kind, data_type.data_type_id
 
 
-def _single_route(codec: TypeCodec, can_id: int) -> SingleRoute:
+def _single_route(codec: TypeCodec, can_id: int) -> _SingleRoute:
     """The single-frame route of a valid CAN ID of a type with a frame decoder."""
     decode = codec.fast.decode_frame
     assert decode is not None
     return (decode, *_transfer_fields(codec, can_id))
 
 
-def _multi_route(codec: TypeCodec, can_id: int) -> MultiRoute:
+def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
     """The multi-frame route of a valid CAN ID of a type."""
     decode, seed = codec.fast.decode, codec.crc_seed
     source, destination, priority, kind, data_type_id = _transfer_fields(codec, can_id)
