@@ -10,6 +10,7 @@ a bit flipped or node id 0, data as bytearray, timestamps that are not floats.
 
 from __future__ import annotations
 
+import weakref
 from typing import Any
 
 import pytest
@@ -20,7 +21,8 @@ from test_dronecan_compiled import _payloads, _same
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import CODECS, TypeCodec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
+from veronte4x.dronecan.typeset import TypeSet
 
 SINGLE = [c for c in CODECS if c.fast.decode_frame is not None]
 _IDS = [f"{c.data_type.full_name}-{c.data_type.kind.name}" for c in SINGLE]
@@ -71,10 +73,16 @@ def test_the_route_of_a_can_id_decodes_as_the_checked_path(
         assert _same(_outcome(dronecan.decode_frames, frames, timestamp), expected)
 
 
+def _fresh_routes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Start from no routes; every route global is put back after the test."""
+    monkeypatch.setattr(transfer_module, "_ROUTES_OF", weakref.WeakKeyDictionary())
+    monkeypatch.setattr(transfer_module, "_ROUTES", transfer_module._Routes(TypeSet.standard()))
+
+
 def test_the_routes_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
     """Past the bound every route is forgotten; decoding goes on the same."""
     monkeypatch.setattr(transfer_module, "_MAX_ROUTES", 3)
-    monkeypatch.setattr(transfer_module, "_ROUTES", {})
+    _fresh_routes(monkeypatch)
     for source in range(1, 40):
         ((can_id, data),) = [
             (f.can_id, f.data)
@@ -87,11 +95,12 @@ def test_the_routes_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
         for _ in range(2):
             transfer = dronecan.decode_frames([(can_id, data)], 1.0)
             assert transfer == transfer_module._decode_frames_checked([(can_id, data)], 1.0)
-        assert 1 <= len(transfer_module._ROUTES) <= 3
+        assert 1 <= len(transfer_module._ROUTES.single) <= 3
 
 
 def test_a_known_can_id_takes_the_route(monkeypatch: pytest.MonkeyPatch) -> None:
     """Once a CAN ID was seen, its single frames decode without the type lookup."""
+    _fresh_routes(monkeypatch)
     ((can_id, data),) = [
         (f.can_id, f.data)
         for f in dronecan.encode(
@@ -99,12 +108,67 @@ def test_a_known_can_id_takes_the_route(monkeypatch: pytest.MonkeyPatch) -> None
         )
     ]
     first = dronecan.decode_frames([(can_id, data)], 2.0)
-    assert can_id in transfer_module._ROUTES
+    assert can_id in transfer_module._ROUTES.single
 
-    def refuse(key: int) -> None:
+    def refuse(self: Any, can_id: int) -> None:
         raise AssertionError("looked the type up again")
 
-    monkeypatch.setattr(transfer_module, "_fast_type", refuse)
-    monkeypatch.setattr(transfer_module, "_FAST_TYPES", {})
+    monkeypatch.setattr(transfer_module._Routes, "codec", refuse)
     assert dronecan.decode_frames([(can_id, data)], 2.0) == first
     assert first == (dronecan.GetNodeInfoRequest(), 9, 3, 16, 4, 2.0, TransferKind.REQUEST, 1)
+
+
+def _without(kind: TransferKind, data_type_id: int) -> TypeSet:
+    """The standard set less one type."""
+    codecs = tuple(
+        c for c in CODECS if (c.data_type.kind, c.data_type.data_type_id) != (kind, data_type_id)
+    )
+    standard = TypeSet.standard()
+    return TypeSet(
+        codecs,
+        standard.classes,
+        standard._enums,
+        standard._members,
+        standard.definitions,
+        (),
+        standard._names,
+    )
+
+
+@pytest.mark.parametrize("frames_of", ["NodeStatus", "esc.Status"])
+def test_an_explicit_type_set_is_not_decoded_with_the_routes_of_another(frames_of: str) -> None:
+    """The routes of the default set are not used for a set that lacks the type, nor for a
+    ``types=`` that is no set; each set decodes as the checked path does with it."""
+    if frames_of == "NodeStatus":
+        message: Any = dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    else:
+        message = dronecan.EscStatus(3, 24.5, 12.25, 310.0, 4321, 55, 2)
+    frames = [(f.can_id, f.data) for f in dronecan.encode(message, source_node_id=9, transfer_id=1)]
+    codec = BY_CLASS[type(message)]
+    lacking = _without(codec.data_type.kind, codec.data_type.data_type_id)
+    for _ in range(2):  # the routes of each set, made by the first round, used by the second
+        assert dronecan.decode_frames(frames, 1.0).message == message
+        with pytest.raises(dronecan.DecodeError, match="no message type with id"):
+            dronecan.decode_frames(frames, 1.0, types=lacking)
+        assert dronecan.decode_frames(frames, 1.0, types=TypeSet.standard()).message == message
+        with pytest.raises(TypeError, match="types"):
+            dronecan.decode_frames(frames, 1.0, types="uavcan")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("index", [0, 1, 2])
+@pytest.mark.parametrize("kind", [float, bool])
+def test_a_frame_id_that_is_no_int_is_refused_in_any_frame(index: int, kind: type) -> None:
+    """Equal is not enough: a CAN ID of another type (1234.0 == 1234) is the checked
+    path's TypeError in every frame, the first or a later one."""
+    message = dronecan.EscStatus(3, 24.5, 12.25, 310.0, 4321, 55, 2)
+    frames: list[Any] = [
+        (f.can_id, f.data) for f in dronecan.encode(message, source_node_id=9, transfer_id=1)
+    ]
+    assert len(frames) == 3
+    for _ in range(2):  # the second time along the route of the CAN ID
+        assert dronecan.decode_frames(frames, 1.0).message == message
+        can_id, data = frames[index]
+        changed = list(frames)
+        changed[index] = (kind(can_id) if kind is float else True, data)
+        with pytest.raises(TypeError, match=rf"frames\[{index}\]\[0\]"):
+            dronecan.decode_frames(changed, 1.0)

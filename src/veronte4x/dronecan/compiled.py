@@ -21,7 +21,9 @@ How the code stays cheap:
   public frozen dataclass, filled by plain attribute stores and then given the public class
   (``__class__`` assignment, which Python allows between classes of identical layout).
   The result is an ordinary instance of the public class, built about four times faster
-  than through the frozen ``__init__``.
+  than through the frozen ``__init__``. A frozen type of at most one payload byte (an empty
+  request, ArmingStatus) builds none: its decoders return one of its messages made in
+  advance (`_shared_values`).
 
 Anything unusual (a value out of range or of the wrong type, a payload of the wrong length)
 raises inside the generated code; the caller then runs the generic `Serializer`, which
@@ -38,8 +40,10 @@ from typing import Any, NamedTuple
 
 from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.dronecan.scalar_code import NAMES, pack_scalars, unpack_scalars
-from veronte4x.dronecan.schema import Array, Scalar, Struct
+from veronte4x.dronecan.schema import Array, Scalar, Struct, StructField
+from veronte4x.dronecan.serializer import Serializer
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
+from veronte4x.errors import DecodeError
 
 FramesFunction = Callable[[Any, int, int, int, Any], list[Any]]
 PayloadEncoder = Callable[[Any], bytes]
@@ -112,6 +116,24 @@ class _Source:
         return compile_source("\n".join(self.lines), self.names, title)
 
 
+def _shared_values(schema: Struct, size: int) -> tuple[Any, ...] | None:
+    """Every message of a frozen type of at most one payload byte, by that byte (an empty
+    type's one message first); None for a longer or mutable type. Frozen messages can be
+    shared: the decoders of such a type return these instead of building new ones. A
+    payload the generic serializer refuses is None in the table."""
+    params = getattr(schema.cls, "__dataclass_params__", None)
+    if size > 1 or params is None or not params.frozen:
+        return None
+    serializer = Serializer(schema)
+    values = []
+    for payload in [b""] if size == 0 else [bytes((b,)) for b in range(256)]:
+        try:
+            values.append(serializer.decode(payload))
+        except DecodeError:
+            values.append(None)
+    return tuple(values)
+
+
 def _slot_builder(cls: type) -> type:
     made = slot_builder(cls)
     assert made is not None, cls  # every DroneCAN class is a plain slotted dataclass
@@ -181,6 +203,51 @@ def _emit_multi_frame(
     src.lines.append(f"    return [{', '.join(items)}]")
 
 
+def _emit_decoders(src: _Source, schema: Struct, fields: list[StructField], size: int) -> None:
+    """Emit ``decode`` and ``decode_frame`` of a flat struct: one `struct` unpack, then the
+    message built by slot stores."""
+    builder = src.name("B", _slot_builder(schema.cls))
+    cls = src.name("C", schema.cls)
+    unpacking = unpack_scalars(
+        [f.type for f in fields if isinstance(f.type, Scalar)],
+        [f"o.{f.name}" if f.name else None for f in fields],
+        [f.enum for f in fields],
+        src.name,
+    )
+    for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
+        unpacker = src.name("S", struct.Struct(unpacking.format + pad))
+        src.lines.append(f"def {function}(buf):")
+        if function == "decode":  # decode_frame relies on struct's own length check
+            src.lines += [f"    if len(buf) != {length}:", "        raise SlowPath"]
+        src.lines += [
+            f"    {unpacking.targets}= {unpacker}.unpack(buf)"
+            if unpacking.targets
+            else f"    {unpacker}.unpack(buf)",
+            f"    o = {builder}()",
+            *(f"    {line}" for line in unpacking.lines),
+            f"    o.__class__ = {cls}",
+            "    return o",
+        ]
+
+
+def _emit_shared_decoders(src: _Source, size: int, table: str) -> None:
+    """Emit ``decode`` and ``decode_frame`` of a type of at most one payload byte: the
+    message from ``table`` (see `_shared_values`)."""
+    for function, pad in (("decode", ""), ("decode_frame", "x")):
+        unpacker = src.name("S", struct.Struct("<" + "B" * size + pad))  # checks the length
+        src.lines.append(f"def {function}(buf):")
+        if size == 0:
+            src.lines += [f"    {unpacker}.unpack(buf)", f"    return {table}[0]"]
+        else:
+            src.lines += [
+                f"    v, = {unpacker}.unpack(buf)",
+                f"    o = {table}[v]",
+                "    if o is None:",
+                "        raise SlowPath",
+                "    return o",
+            ]
+
+
 def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     """Generate the fast paths of a struct of scalars, or None if it is not flat.
 
@@ -209,28 +276,11 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
         else:
             packer = src.name("S", struct.Struct(packing.format))
             src.lines.append(f"    return {packer}.pack({', '.join(packing.values)})")
-    builder = src.name("B", _slot_builder(schema.cls))
-    cls = src.name("C", schema.cls)
-    unpacking = unpack_scalars(
-        scalars,
-        [f"o.{f.name}" if f.name else None for f in fields],
-        [f.enum for f in fields],
-        src.name,
-    )
-    for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
-        unpacker = src.name("S", struct.Struct(unpacking.format + pad))
-        src.lines.append(f"def {function}(buf):")
-        if function == "decode":  # decode_frame relies on struct's own length check
-            src.lines += [f"    if len(buf) != {length}:", "        raise SlowPath"]
-        src.lines += [
-            f"    {unpacking.targets}= {unpacker}.unpack(buf)"
-            if unpacking.targets
-            else f"    {unpacker}.unpack(buf)",
-            f"    o = {builder}()",
-            *(f"    {line}" for line in unpacking.lines),
-            f"    o.__class__ = {cls}",
-            "    return o",
-        ]
+    shared = _shared_values(schema, size)
+    if shared is not None:
+        _emit_shared_decoders(src, size, src.name("M", shared))
+    else:
+        _emit_decoders(src, schema, fields, size)
     code = src.build(f"fast paths {schema.name}")
     return FastPaths(
         code["frames"], code["payload"], code["decode"], code["decode_frame"] if size <= 7 else None

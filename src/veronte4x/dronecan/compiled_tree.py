@@ -15,7 +15,8 @@ The bit stream (see `serializer`) is read and written in pieces:
   it is (``unpack_from``, a slice for ``uint8`` arrays); elsewhere from the payload as one
   big-endian int ``x``, shifted so that reads past the end give zeros.
 - Arrays of whole-byte scalars are one ``struct`` call; other scalar arrays one list
-  comprehension; arrays of structs a loop; a union an ``if`` per member.
+  comprehension (an integer item of more than 8 bits from two tables, `_half_tables`);
+  arrays of structs a loop; a union an ``if`` per member.
 - The encoder appends every piece to one int ``a`` and its bit count, then pads to bytes.
 
 Anything unusual raises inside the generated code (`SlowPath` for a value it does not take
@@ -70,6 +71,27 @@ def _from_piece(t: Scalar, var: str, name: Namer) -> str:
     """The value of scalar ``t`` from ``var``, the ``t.bits``-bit piece of the stream it
     fills, as a big-endian int."""
     return scalar_value(t, gather(var, be_runs(0, t.bits, t.bits), t.bits), None, name)
+
+
+def _half_tables(t: Scalar) -> tuple[tuple[int, ...], tuple[int, ...]]:
+    """Two tables that decode an integer scalar of more than 8 bits from its piece of the
+    stream (``t.bits`` bits, a big-endian int): the value is ``high[piece >> h] +
+    low[piece & (2**h - 1)]``, ``h`` half the bits rounded up. The piece's bit runs are
+    disjoint, so each half contributes its own bits of the value; the half that holds the
+    sign bit of an ``int`` also subtracts ``2**bits``."""
+    runs = be_runs(0, t.bits, t.bits)
+    sign = 1 << t.bits if t.kind == "int" else 0
+
+    def part(piece: int) -> int:
+        bits = 0  # as `gather` reads them
+        for source, width, dest in runs:
+            bits |= (piece >> dest & (1 << width) - 1) << source
+        return bits - sign if bits >> (t.bits - 1) and sign else bits
+
+    low_bits = (t.bits + 1) // 2
+    high = tuple(part(j << low_bits) for j in range(1 << (t.bits - low_bits)))
+    low = tuple(part(j) for j in range(1 << low_bits))
+    return high, low
 
 
 def _to_piece(t: Scalar, var: str) -> str:
@@ -367,6 +389,19 @@ class _Decoder(_Writer):
                         "A", tuple(struct.Struct(f"<{n}{code}") for n in range(t.max_size + 1))
                     )
                     self.emit(f"{v} = {table}[{k}].unpack({data})")
+        elif item.kind in ("int", "uint") and item.bits > 8:
+            self.uses_x = True
+            y, i = self.fresh("y"), self.fresh("i")
+            high, low = _half_tables(item)
+            low_bits = (item.bits + 1) // 2
+            # The items as one int, first item on top; each item from two tables.
+            self.emit(f"{y} = x >> (q - {self.at()} - ({total}))")
+            self.emit(
+                f"{v} = tuple([{self.src.name('H', high)}[({y} >> ({i} + {low_bits}))"
+                f" & {len(high) - 1:#x}] + {self.src.name('L', low)}[({y} >> {i})"
+                f" & {len(low) - 1:#x}] for {i} in range(({total}) - {item.bits}, -1,"
+                f" -{item.bits})])"
+            )
         else:
             self.uses_x = True
             z, i, r = self.fresh("z"), self.fresh("i"), self.fresh("r")

@@ -8,13 +8,20 @@ receiver for a stream of frames is
 
 from __future__ import annotations
 
+import struct
+import weakref
 from binascii import crc_hqx  # the transfer CRC, see veronte4x.dronecan.crc
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any, NamedTuple
 
+from veronte4x.dronecan import typeset as _typeset
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
-from veronte4x.dronecan.codec import BY_CLASS, BY_ID, TypeCodec, can_id_base
-from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, FramesFunction
+from veronte4x.dronecan.codec import BY_CLASS, TypeCodec, can_id_base
+from veronte4x.dronecan.compiled import (
+    DECODE_FALLBACK,
+    ENCODE_FALLBACK,
+    FramesFunction,
+)
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
@@ -180,64 +187,150 @@ def _check_transport(codec: TypeCodec, source: object, tid: object, priority: ob
             raise EncodeError(name, field, value, f"an int in {low}..{high}")
 
 
-_Single = tuple[Any, TransferKind, int, Any, Any, int]
-"""What the fast `decode_frames` needs of a type: codec, kind, type id, decode_frame, the
-generated payload decoder and the CRC seed."""
+_SingleRoute = tuple[Callable[[bytes], Any], int, "int | None", int, TransferKind, int]
+"""The single-frame route of a CAN ID: the generated frame decoder of its type, and the
+source node, destination node, priority, kind and data type id of its transfers."""
+
+_MultiRoute = Callable[[list[Any], float], "Transfer | None"]
+"""The multi-frame route of a CAN ID: ``route(frames, timestamp)``, a list of at least two
+frames to their transfer; None (or one of `DECODE_FALLBACK`) where the checked path must
+decide."""
 
 
-_FAST_TYPES: dict[int, _Single] = {}
-"""What `decode_frames` needs of each type met so far, by the key of its CAN IDs: the type id
-of a message, 0x10000 | the type id << 1 | the request bit of a service."""
+class _Routes:
+    """What `decode_frames` keeps of one `TypeSet`: the routes of the CAN IDs seen so far
+    (at most `_MAX_ROUTES` of each kind, then forgotten all at once; a bus of that many
+    CAN IDs is not the common case)."""
 
+    __slots__ = ("by_id", "multi", "single", "types")
 
-def _fast_type(key: int) -> _Single | None:
-    """What `decode_frames` needs of a type, its decoders compiled on first use; None for
-    an unknown type."""
-    if key < 0x10000:
-        codec = BY_ID.get((TransferKind.MESSAGE, key))
-    else:
-        kind = TransferKind.REQUEST if key & 1 else TransferKind.RESPONSE
-        codec = BY_ID.get((kind, (key & 0xFFFF) >> 1))
-    if codec is None:
-        return None
-    data_type, fast = codec.data_type, codec.fast
-    found = _FAST_TYPES[key] = (
-        codec,
-        data_type.kind,
-        data_type.data_type_id,
-        fast.decode_frame,
-        fast.decode,
-        codec.crc_seed,
-    )
-    return found
+    def __init__(self, types: TypeSet) -> None:
+        self.types = types
+        self.by_id = types.by_id
+        self.single: dict[int, _SingleRoute] = {}
+        self.multi: dict[int, _MultiRoute] = {}
 
+    def codec(self, can_id: int) -> TypeCodec | None:
+        """The codec of a CAN ID's type if the CAN ID is a valid one of a known type."""
+        if not (0 < can_id >> 7 < 1 << 22 and can_id & 0x7F):
+            return None
+        if not can_id & 0x80:
+            return self.by_id.get((TransferKind.MESSAGE, (can_id >> 8) & 0xFFFF))
+        if not can_id & 0x7F00:
+            return None
+        kind = TransferKind.REQUEST if can_id & 0x8000 else TransferKind.RESPONSE
+        return self.by_id.get((kind, (can_id >> 16) & 0xFF))
 
-_Route = tuple[Any, int, "int | None", int, TransferKind, int]
-"""What the single-frame fast path of `decode_frames` needs of a CAN ID: the generated frame
-decoder of its type, and the source node, destination node, priority, kind and data type id
-of its transfers."""
+    def add_single(self, can_id: int) -> _SingleRoute | None:
+        """The single-frame route of a CAN ID, now kept; None for a CAN ID with none."""
+        codec = self.codec(can_id)
+        if codec is None or codec.fast.decode_frame is None:
+            return None
+        if len(self.single) >= _MAX_ROUTES:
+            self.single.clear()
+        route = self.single[can_id] = _single_route(codec, can_id)
+        return route
 
-_ROUTES: dict[int, _Route] = {}
-"""The `_Route` of each valid CAN ID of a type with a frame decoder, once a single frame
-of it went through the fast path (at most `_MAX_ROUTES`)."""
+    def add_multi(self, can_id: int) -> _MultiRoute | None:
+        """The multi-frame route of a CAN ID, now kept; None for a CAN ID with none."""
+        codec = self.codec(can_id)
+        if codec is None:
+            return None
+        if len(self.multi) >= _MAX_ROUTES:
+            self.multi.clear()
+        route = self.multi[can_id] = _multi_route(codec, can_id)
+        return route
+
 
 _MAX_ROUTES = 4096
+_new_tuple = tuple.__new__
+_MAX_FRAMES = len(MULTI_FRAME_TAILS[0])  # the most frames of a transfer, plus one
 
 
-def _add_route(can_id: int, fast: _Single) -> None:
-    """Remember the route of a valid CAN ID of the type ``fast``; forget every route first
-    when there are `_MAX_ROUTES` (a bus of that many CAN IDs is not the common case)."""
-    if len(_ROUTES) >= _MAX_ROUTES:
-        _ROUTES.clear()
-    service = can_id & 0x80
-    _ROUTES[can_id] = (
-        fast[3],
-        can_id & 0x7F,
-        (can_id >> 8) & 0x7F if service else None,
-        can_id >> 24,
-        fast[1],
-        fast[2],
-    )
+def _transfer_fields(codec: TypeCodec, can_id: int) -> tuple[int, int | None, int, Any, int]:
+    """Source, destination, priority, kind and data type id of a valid CAN ID of a type."""
+    destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
+    data_type = codec.data_type
+    return can_id & 0x7F, destination, can_id >> 24, data_type.kind, data_type.data_type_id
+
+
+def _single_route(codec: TypeCodec, can_id: int) -> _SingleRoute:
+    """The single-frame route of a valid CAN ID of a type with a frame decoder."""
+    decode = codec.fast.decode_frame
+    assert decode is not None
+    return (decode, *_transfer_fields(codec, can_id))
+
+
+def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
+    """The multi-frame route of a valid CAN ID of a type."""
+    decode, seed = codec.fast.decode, codec.crc_seed
+    source, destination, priority, kind, data_type_id = _transfer_fields(codec, can_id)
+
+    def route(frames: list[Any], timestamp: float) -> Transfer | None:
+        count = len(frames)
+        if count >= _MAX_FRAMES:
+            return None
+        chunks = []
+        for frame in frames:
+            if frame.__class__ is not tuple or len(frame) != 2:
+                return None
+            frame_id, data = frame
+            if (
+                frame_id.__class__ is not int
+                or frame_id != can_id
+                or data.__class__ is not bytes
+                or len(data) > 8
+            ):
+                return None
+            chunks.append(data)
+        joined = b"".join(chunks)
+        size = len(joined) - 8 * (count - 1)  # of the last frame, if the others have 8 bytes
+        if not 0 < size <= len(chunks[-1]):  # then all frames have 1..8 bytes, the others 8
+            return None
+        tails = _TAILS[joined[7] & 0x1F][count]  # of the frames before the last, and the last
+        if joined[7 : 8 * count - 8 : 8] != tails[0] or joined[-1] != tails[1]:
+            return None
+        body = b"".join(_CHUNKS[count].unpack_from(joined)) + joined[8 * count - 8 : -1]
+        payload = body[2:]
+        if crc_hqx(payload, seed) != body[0] | body[1] << 8:
+            return None
+        return _new_tuple(Transfer, (decode(payload), source, destination, priority,
+                                     joined[7] & 0x1F, timestamp, kind, data_type_id))  # fmt: skip
+
+    return route
+
+
+_TAILS = tuple(
+    tuple((bytes(tails[:-1]), tails[-1]) if tails else (b"", 0) for tails in by_count)
+    for by_count in MULTI_FRAME_TAILS
+)
+"""``_TAILS[transfer_id][frame_count]``: the tail bytes of the frames before the last, and
+the last one's."""
+
+_CHUNKS = tuple(struct.Struct("7sx" * (count - 1)) for count in range(_MAX_FRAMES))
+"""``_CHUNKS[frame_count]`` unpacks the payload bytes (7 each) of the frames before the last."""
+
+_ROUTES_OF: weakref.WeakKeyDictionary[TypeSet, _Routes] = weakref.WeakKeyDictionary()
+"""The routes of each type set used so far."""
+
+_ROUTES = _ROUTES_OF[TypeSet.standard()] = _Routes(TypeSet.standard())
+"""The routes of the type set used last (one object, so that a thread that reads it sees
+the routes of one set)."""
+
+
+def _routes_of(types: object) -> _Routes | None:
+    """The routes of ``types`` (None: the default set), now `_ROUTES`; None if it is no
+    `TypeSet` (the checked path then raises the error)."""
+    global _ROUTES
+    if types is None:
+        types = _typeset._default
+    if not isinstance(types, TypeSet):
+        return None
+    routes = _ROUTES_OF.get(types)
+    if routes is None:
+        routes = _ROUTES_OF[types] = _Routes(types)
+    _ROUTES = routes
+    return routes
 
 
 _FAST_ERRORS = DECODE_FALLBACK  # what the generated decoders raise
@@ -265,100 +358,47 @@ def decode_frames(
         TypeError: ``frames`` is not an iterable of ``(int, bytes-like)`` pairs, or
             ``timestamp`` is not a number.
     """
-    # Fast paths: frames of a type with generated decoders, everything as expected. On
-    # anything else the checked path below decides, and raises the precise error.
+    # Fast paths: a route per CAN ID of a known type (see `_Routes`), everything as
+    # expected. On anything else the checked path below decides, and raises the precise
+    # error.
     if frames.__class__ is list and timestamp.__class__ is float:
-        count = len(frames)
-        if count == 1:  # a single frame, of a CAN ID seen before: one lookup
+        routes: _Routes | None = _ROUTES
+        if routes.types is not (_typeset._default if types is None else types):  # type: ignore[union-attr]
+            routes = _routes_of(types)
+        if routes is None:
+            pass
+        elif len(frames) == 1:
             first = frames[0]
             if first.__class__ is tuple and len(first) == 2:
                 can_id, data = first
-                route = _ROUTES.get(can_id) if can_id.__class__ is int else None
-                if route is not None and data.__class__ is bytes and data:
-                    tail = data[-1]
-                    if tail & 0xE0 == 0xC0:
-                        decode, source, destination, priority, kind, data_type_id = route
-                        try:  # the frame decoder checks the frame's length
-                            message = decode(data)
+                if can_id.__class__ is int and data.__class__ is bytes and data:
+                    route = routes.single.get(can_id) or routes.add_single(can_id)
+                    if route is not None:
+                        tail = data[-1]
+                        if tail & 0xE0 == 0xC0:
+                            decode, source, destination, priority, kind, data_type_id = route
+                            try:  # the frame decoder checks the frame's length
+                                message = decode(data)
+                            except _FAST_ERRORS:
+                                pass
+                            else:
+                                return _new_tuple(Transfer, (message, source, destination,
+                                                             priority, tail & 0x1F, timestamp,
+                                                             kind, data_type_id))  # fmt: skip
+        elif frames:
+            first = frames[0]
+            if first.__class__ is tuple and len(first) == 2:
+                can_id = first[0]
+                if can_id.__class__ is int:
+                    multi = routes.multi.get(can_id) or routes.add_multi(can_id)
+                    if multi is not None:
+                        try:
+                            transfer = multi(frames, timestamp)
                         except _FAST_ERRORS:
-                            pass
-                        else:
-                            return _new_tuple(Transfer, (message, source, destination, priority,
-                                                         tail & 0x1F, timestamp, kind,
-                                                         data_type_id))  # fmt: skip
-        first = frames[0] if count else None
-        if first.__class__ is tuple and len(first) == 2:
-            can_id, data = first
-            if (
-                can_id.__class__ is int
-                and data.__class__ is bytes
-                and data
-                and 0 < can_id >> 7 < 1 << 22
-            ):
-                service = can_id & 0x80
-                key = 0x10000 | (can_id >> 15) & 0x1FF if service else (can_id >> 8) & 0xFFFF
-                fast = _FAST_TYPES.get(key) or _fast_type(key)
-                if fast is not None and can_id & 0x7F and (not service or can_id & 0x7F00):
-                    if count == 1 and fast[3] is not None:
-                        _add_route(can_id, fast)
-                    try:
-                        if count == 1:  # a single frame (the frame decoder checks its length)
-                            decode = fast[3]
-                            message = (
-                                decode(data)
-                                if data[-1] & 0xE0 == 0xC0 and decode is not None
-                                else None
-                            )
-                        else:
-                            message = _fast_multi(fast, frames, can_id, count)
-                    except _FAST_ERRORS:
-                        message = None
-                    if message is not None:
-                        return _new_tuple(
-                            Transfer,
-                            (
-                                message,
-                                can_id & 0x7F,
-                                (can_id >> 8) & 0x7F if service else None,
-                                can_id >> 24,
-                                data[-1] & 0x1F,
-                                timestamp,
-                                fast[1],
-                                fast[2],
-                            ),
-                        )
+                            transfer = None
+                        if transfer is not None:
+                            return transfer
     return _decode_frames_checked(_frame_list(frames), _check_timestamp(timestamp), types)
-
-
-_new_tuple = tuple.__new__
-_MAX_FRAMES = len(MULTI_FRAME_TAILS[0])  # the most frames of a transfer, plus one
-
-
-def _fast_multi(fast: _Single, frames: list[Any], can_id: int, count: int) -> Any:
-    """The message of a multi-frame transfer, or None to let the checked path decide."""
-    if count >= _MAX_FRAMES:
-        return None
-    chunks = []
-    tails = MULTI_FRAME_TAILS[frames[0][1][-1] & 0x1F][count]  # one per frame
-    for frame, tail in zip(frames, tails, strict=False):  # as many tails as frames
-        if frame.__class__ is not tuple or len(frame) != 2:
-            return None
-        frame_id, data = frame
-        if (
-            frame_id != can_id
-            or data.__class__ is not bytes
-            or not 0 < len(data) <= 8
-            or data[-1] != tail
-        ):
-            return None
-        chunks.append(data[:-1])
-    body = b"".join(chunks)
-    if len(body) - len(chunks[-1]) != 7 * (count - 1):  # a frame before the last is short
-        return None
-    payload = body[2:]
-    if crc_hqx(payload, fast[5]) != body[0] | body[1] << 8:
-        return None
-    return fast[4](payload)
 
 
 def _frame_list(frames: object) -> list[tuple[int, bytes]]:
