@@ -111,6 +111,12 @@ def test_a_string_keeps_a_comma_after_the_space(string: str) -> None:
     assert back.value == StringValue(string.encode("utf-8"))
 
 
+def test_a_string_that_is_no_utf8_is_refused() -> None:
+    current = [_info("s", StringValue(b""))]
+    with pytest.raises(ParameterFileError, match="line 1: s: the value is not UTF-8 text"):
+        typed(loads("s \ud800\n"), 21, current)
+
+
 def test_a_real_is_what_the_bus_carries() -> None:
     (back,) = typed(loads("throttle_slew 0.1\n"), 23, CURRENT).parameters
     assert back.value == RealValue(0.10000000149011612)  # float32, as read back
@@ -118,7 +124,11 @@ def test_a_real_is_what_the_bus_carries() -> None:
 
 
 float32 = st.floats(width=32, allow_nan=False, allow_infinity=False)
-texts = st.text(st.characters(blacklist_characters="\n\r"), min_size=1, max_size=20)
+texts = st.text(
+    st.characters(blacklist_characters="\n\r", blacklist_categories=("Cs",)),
+    min_size=1,
+    max_size=20,
+)
 
 
 @given(

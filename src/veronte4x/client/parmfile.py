@@ -163,7 +163,10 @@ def typed(
 def _value(kind: Value, line: ParmLine) -> Value:
     where = f"line {line.line}: {line.name}"
     if isinstance(kind, StringValue):
-        return StringValue(line.text.encode("utf-8"))
+        try:
+            return StringValue(line.text.encode("utf-8"))
+        except UnicodeEncodeError:  # a lone surrogate, from text decoded with surrogates
+            raise ParameterFileError(f"{where}: the value is not UTF-8 text") from None
     word = line.text.strip(" \t")
     if word.startswith(","):  # Mission Planner's NAME , VALUE: the comma after a space
         word = word[1:].lstrip(" \t")
