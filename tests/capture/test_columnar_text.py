@@ -47,13 +47,13 @@ def test_log_text_is_strings_and_bad_bytes_are_error_rows(
     assert_same_tables(got, capture.tables_from_records(capture.read(path)))
     table = got["LogMessage"]
     assert table.schema.field("text").type == pa.string()
-    assert [(row["source"], row["text"]) for row in rows(table)] == [
+    assert [(row["message.source"], row["text"]) for row in rows(table)] == [
         (_decoded(source), _decoded(body)) for source, body in fields
     ]
     bad = [
         (f"LogMessage.{name}", value)
         for source, body in fields
-        for name, value in (("source", source), ("text", body))
+        for name, value in (("message.source", source), ("text", body))
         if _decoded(value) is None
     ]
     errors = rows(got["errors"]) if "errors" in got else []
@@ -62,8 +62,21 @@ def test_log_text_is_strings_and_bad_bytes_are_error_rows(
     ]
     exact = capture.read_tables(path, text="binary")
     assert "errors" not in exact
-    assert exact["LogMessage"].select(["source", "text"]).to_pylist() == [
-        {"source": source, "text": body} for source, body in fields
+    assert exact["LogMessage"].select(["message.source", "text"]).to_pylist() == [
+        {"message.source": source, "text": body} for source, body in fields
+    ]
+
+
+def test_a_log_source_and_the_dataset_source_are_two_columns(tmp_path: Path) -> None:
+    """A dataset adds ``source`` (the capture's file) to every table: LogMessage's own
+    ``source`` field is ``message.source``, so that the dataset opens."""
+    pytest.importorskip("pyarrow.parquet")
+    messages = [dronecan.LogMessage(source=b"EKF", text=b"aligned")]
+    path = write(tmp_path / "flight.log", _lines(messages))
+    capture.to_parquet(path, tmp_path / "out", progress=False)
+    table = capture.open_dataset(tmp_path / "out", "LogMessage").to_table()
+    assert table.select(["source", "message.source", "text"]).to_pylist() == [
+        {"source": str(path), "message.source": "EKF", "text": "aligned"}
     ]
 
 
@@ -89,7 +102,7 @@ def test_the_rule_types_the_standard_text_fields() -> None:
         ("GetSetRequest", "name"),
         ("GetSetResponse", "value.string_value"),
         ("GetSetResponse", "default_value.string_value"),
-        ("LogMessage", "source"),
+        ("LogMessage", "message.source"),
         ("LogMessage", "text"),
         ("KeyValue", "key"),
         ("FileReadRequest", "path.path"),

@@ -28,10 +28,11 @@ columns are Arrow ``string``, checked by `veronte4x.capture.columnar.text`; with
 ``binary`` they keep their exact bytes. Text fields inside lists of structs stay binary
 (the standard set has none). A field named as a head column (``HEAD_NAMES``:
 ``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``, ``destination_node_id``)
-becomes ``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
-a vendor type's ``message.channel``); fields inside lists of structs, and those named
-``error``, ``detail`` or ``data`` (columns of the ``errors`` and ``unknown`` tables only),
-keep their names.
+or as a column a Parquet dataset adds (``DATASET_NAMES``: ``source``, ``capture``) becomes
+``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
+``message.source`` of ``debug.LogMessage``, a vendor type's ``message.channel``); fields
+inside lists of structs, and those named ``error``, ``detail`` or ``data`` (columns of the
+``errors`` and ``unknown`` tables only), keep their names.
 """
 
 from __future__ import annotations
@@ -98,6 +99,9 @@ PROBLEM = (
 UNKNOWN = (pa.field("detail", pa.string()), pa.field("data", pa.binary()))
 HEAD_NAMES = frozenset(f.name for f in (*HEAD, NODE_ID, DESTINATION))
 """The head columns of a DroneCAN table."""
+DATASET_NAMES = frozenset({"source", "capture"})
+"""The columns a Parquet dataset adds to every table: the capture's file (``source``) and
+the key of its directory (``capture=``)."""
 
 
 @dataclass(frozen=True)
@@ -284,8 +288,9 @@ def _struct_columns(
 
 def field_column(name: str) -> str:
     """The column of a DroneCAN field: its name, or ``message.`` and its name for a field
-    named as a head column (``node_id`` of ``dynamic_node_id.Allocation``)."""
-    return f"message.{name}" if name in HEAD_NAMES else name
+    named as a head column (``node_id`` of ``dynamic_node_id.Allocation``) or as a column a
+    dataset adds (``source`` of ``debug.LogMessage``)."""
+    return f"message.{name}" if name in HEAD_NAMES or name in DATASET_NAMES else name
 
 
 def struct_type(struct: Struct) -> pa.DataType:
