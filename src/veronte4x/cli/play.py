@@ -21,6 +21,7 @@ from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import bus_settings
+from veronte4x.words import counted
 
 
 def add_parser(commands: Any) -> None:
@@ -171,9 +172,9 @@ def _play(
         return EXIT_FINDINGS
     timing = player.timing()
     print(
-        f"veronte4x: sent {timing.frames} frames in {clock() - began:.3f} s; late against the "
-        f"schedule: {timing.mean_late * 1000:.3g} ms on average, {timing.max_late * 1000:.3g} ms "
-        "at most",
+        f"veronte4x: sent {counted(timing.frames, 'frame')} in {clock() - began:.3f} s; late "
+        f"against the schedule: {timing.mean_late * 1000:.3g} ms on average, "
+        f"{timing.max_late * 1000:.3g} ms at most",
         file=sys.stderr,
     )
     return EXIT_OK
