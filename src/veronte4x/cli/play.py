@@ -20,7 +20,7 @@ from veronte4x.capture.playback import IdFilter, Pacer, PlaybackError, Player
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
-from veronte4x.cli.options import bus_settings
+from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.words import counted
 
 
@@ -64,17 +64,7 @@ def add_parser(commands: Any) -> None:
         metavar="N",
         help="play N times, or for ever without N (until Ctrl-C)",
     )
-    parser.add_argument("--bitrate", type=int, help="bit rate in bit/s")
-    parser.add_argument(
-        "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
-    )
-    parser.add_argument(
-        "--bus-option",
-        metavar="KEY=VALUE",
-        action="append",
-        default=[],
-        help="another keyword argument of the python-can bus, e.g. port=43113 (repeatable)",
-    )
+    add_bus_options(parser, interface=False)
     parser.set_defaults(run=run, bus_map=None)
 
 
