@@ -164,8 +164,8 @@ def open_frame_source(
 def _live_frames(
     args: argparse.Namespace, stop: threading.Event | None
 ) -> Iterator[Frame | BadLine]:
-    from veronte4x.canbus import open_bus
     from veronte4x.capture.readers.live import read_bus
+    from veronte4x.cli.buses import open_bus
 
     bus = open_bus(**bus_settings(args))
     try:

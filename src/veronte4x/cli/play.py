@@ -19,7 +19,7 @@ from veronte4x.capture.frames import Frame
 from veronte4x.capture.playback import IdFilter, Pacer, PlaybackError, Player
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
-from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
+from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.words import counted
 
@@ -97,7 +97,7 @@ def paced(
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Play the capture; the timing goes to standard error."""
-    from veronte4x.canbus import open_bus
+    from veronte4x.cli.buses import open_bus
 
     interface, _, channel = args.bus.partition(":")
     args.interface, args.channel = interface or None, channel or None
@@ -158,8 +158,8 @@ def _play(
     except can.CanError as error:
         with contextlib.suppress(OSError):
             sys.stdout.flush()
-        print(f"veronte4x: sending frame {sent + 1} failed: {error}", file=sys.stderr)
-        return EXIT_FINDINGS
+        print(f"veronte4x: the CAN bus failed sending frame {sent + 1}: {error}", file=sys.stderr)
+        return EXIT_USAGE
     timing = player.timing()
     print(
         f"veronte4x: sent {counted(timing.frames, 'frame')} in {clock() - began:.3f} s; late "

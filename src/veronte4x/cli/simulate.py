@@ -95,7 +95,7 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
     """Serve the bus until Ctrl-C, SIGTERM or the duration."""
     require("can", "can", "veronte4x simulate")
-    from veronte4x.canbus import open_bus
+    from veronte4x.cli.buses import open_bus
     from veronte4x.errors import EncodeError
     from veronte4x.simulator import SimulatedEsc
     from veronte4x.simulator.can_node import EscBus
