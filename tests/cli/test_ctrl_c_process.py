@@ -120,3 +120,31 @@ def test_ctrl_c_during_convert_to_csv_leaves_no_part_of_the_file(tmp_path: Path)
     assert result.returncode == 130
     assert result.stderr == b"veronte4x: interrupted\n"
     assert sorted(path.name for path in tmp_path.iterdir()) == ["live.log"]
+
+
+def _interrupt_after_first_line(args: list[str]) -> subprocess.CompletedProcess[bytes]:
+    """Run the CLI, Ctrl-C it once it has written its first line on standard error."""
+    process = subprocess.Popen(
+        [sys.executable, "-m", "veronte4x", *args],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        stdin=subprocess.DEVNULL,
+    )
+    assert process.stderr is not None
+    first = process.stderr.readline()
+    process.send_signal(signal.SIGINT)
+    _, rest = process.communicate(timeout=600)  # a hang guard, not a timed assertion
+    return subprocess.CompletedProcess(args, process.returncode, b"", first + rest)
+
+
+def test_ctrl_c_stops_the_simulator_with_the_interrupt_code() -> None:
+    """Ctrl-C is 130 as for every command (SIGTERM stays a clean stop, 0), without waiting
+    for --duration, and the bus is shut down."""
+    pytest.importorskip("can")
+    args = ["simulate", "esc", "--interface", "virtual", "--channel", "ctrl-c", "--duration", "600"]
+    result = _interrupt_after_first_line(args)
+    assert result.returncode == 130
+    assert result.stderr.decode().splitlines() == [
+        "veronte4x: simulating Vertiq ESC nodes 21 (esc_index 0); Ctrl-C stops",
+        "veronte4x: interrupted",
+    ]
