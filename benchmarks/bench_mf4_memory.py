@@ -26,13 +26,12 @@ from __future__ import annotations
 import argparse
 import datetime
 import runpy
-import subprocess
-import sys
 import tempfile
 from pathlib import Path
 
 import numpy as np
 from bench_capture import flight_lines, make_file
+from bench_columnar import read_in_process
 
 from veronte4x.capture.columnar.frames import FrameColumns
 from veronte4x.capture.columnar.sources import read_frames
@@ -47,21 +46,6 @@ LAYOUTS = {
     "deflate": "one bus group, transposed deflate (DZ)",
     "buses": "two bus groups (Veronte, DroneCAN), uncompressed (DT)",
 }
-
-READ = """
-import re, sys, time
-from pathlib import Path
-from veronte4x import capture
-import veronte4x.capture.columnar  # imported before the clock starts
-start = time.perf_counter()
-tables = capture.read_tables(sys.argv[1])
-seconds = time.perf_counter() - start
-peak = re.search(r"VmHWM:\\s+(\\d+) kB", Path("/proc/self/status").read_text())[1]
-print(sum(t.num_rows for t in tables.values()), sum(t.nbytes for t in tables.values()),
-      seconds, int(peak) * 1024)
-"""
-"""`read_tables` in a fresh process: rows, table bytes, seconds, peak bytes (``VmHWM``,
-not ``ru_maxrss``, which would count the parent's memory at the fork)."""
 
 
 def flight_frames() -> FrameColumns:
@@ -119,24 +103,15 @@ def write_mf4(path: Path, frames: int, layout: str, flight: FrameColumns | None 
     mdf.close()
 
 
-def measure(path: Path) -> tuple[int, int, float, int]:
-    """`read_tables` of ``path`` in a fresh process: rows, table bytes, seconds, peak."""
-    done = subprocess.run(
-        [sys.executable, "-c", READ, str(path)], capture_output=True, text=True, check=True
-    )
-    rows, size, seconds, peak = done.stdout.split()
-    return int(rows), int(size), float(seconds), int(peak)
-
-
 def report(name: str, path: Path) -> None:
     """Measure ``path`` and print its row: peak against the bound."""
     file_size = path.stat().st_size
-    rows, size, seconds, peak = measure(path)
-    bound = 2 * size + 300 * MB
+    rows, size_mb, seconds, peak_mb = read_in_process(path)
+    bound_mb = 2 * size_mb + 300
     print(
         f"{name}, {file_size / MB:,.0f} MB: read_tables {seconds:.1f} s, tables "
-        f"{size / MB:,.0f} MB ({rows:,} rows), peak RSS {peak / MB:,.0f} MB, bound "
-        f"{bound / MB:,.0f} MB, peak / bound = {peak / bound:.2f}",
+        f"{size_mb:,.0f} MB ({rows:,} rows), peak RSS {peak_mb:,.0f} MB, bound "
+        f"{bound_mb:,.0f} MB, peak / bound = {peak_mb / bound_mb:.2f}",
         flush=True,
     )
 

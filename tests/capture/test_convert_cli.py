@@ -10,6 +10,7 @@ from pathlib import Path
 from tests.capture.columnar_support import assert_same_tables
 from tests.capture.test_dataset import FLIGHT, read_back
 from veronte4x import capture
+from veronte4x.words import counted
 
 
 def convert(*args: str) -> subprocess.CompletedProcess[str]:
@@ -29,8 +30,8 @@ def test_convert_writes_the_dataset_and_one_summary_line(tmp_path: Path) -> None
     (line,) = result.stderr.splitlines()  # no progress bar: standard error is not a terminal
     expected = capture.read_tables(FLIGHT)
     rows = sum(len(t) for kind, t in expected.items() if kind != "errors")
-    assert line.startswith(f"veronte4x: 1 files, 39 frames, {rows} records (")
-    assert f", {len(expected['errors'])} errors, " in line
+    assert line.startswith(f"veronte4x: 1 file, 39 frames, {rows} records (")
+    assert f", {counted(len(expected['errors']), 'error')}, " in line
     assert line.endswith(f" s, dataset in {out}")
     assert_same_tables(read_back(out), expected)
 

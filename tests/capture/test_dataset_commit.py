@@ -279,7 +279,7 @@ def test_two_commands_on_one_capture_at_once_both_succeed(tmp_path: Path, rename
     runs = [subprocess.Popen(command, stderr=subprocess.PIPE, text=True) for _ in range(3)]
     errors = [run.communicate(timeout=600)[1] for run in runs]
     assert [run.returncode for run in runs] == [0, 0, 0], errors
-    assert all(e.startswith("veronte4x: 1 files, 39 frames") for e in errors)
+    assert all(e.startswith("veronte4x: 1 file, 39 frames") for e in errors)
     assert visible(out, FLIGHT) == TABLES
     assert leftovers(out) == []
 

@@ -122,9 +122,29 @@ def test_suffixes_are_claimed_once_and_the_unknown_are_named(toy: Path, tmp_path
         registry.register(registry.Reader("piped", (".pipe",), "toy_reader:frames", streams=True))
     other = tmp_path / "notes.md"
     other.write_text("# not a capture\n")
-    with pytest.raises(SourceError, match=r"\.mf4, \.toy, \.trc: convert it"):
+    with pytest.raises(SourceError, match=r"\.mf4, \.toy, \.trc; rename it"):
         capture.read(other)
     assert capture.source.resolve(toy).format == "toy"
+
+
+def test_the_unknown_name_every_format_tried_by_content(tmp_path: Path) -> None:
+    """A format with a sniffer is named among those tried; one without is not."""
+    sniffer = registry.Reader(
+        "sniffed", (".sniffed",), "toy_reader:frames", sniff=lambda head: False
+    )
+    registry.register(sniffer)
+    try:
+        other = tmp_path / "notes.md"
+        other.write_text("# not a capture\n")
+        with pytest.raises(SourceError) as raised:
+            capture.source.resolve(other)
+    finally:
+        registry.unregister("sniffed")
+    assert str(raised.value) == (
+        f"{other}: in no format veronte4x knows: its content is not candump or sniffed, and "
+        "its suffix is none of .log, .txt, .candump, .asc, .blf, .csv, .db, .mf4, .sniffed, "
+        ".trc; rename it to the suffix of its format, or convert it to candump text"
+    )
 
 
 def _tables_from_stdin(data: bytes) -> str:

@@ -47,14 +47,14 @@ def test_resolve_by_suffix_then_by_content(tmp_path: Path) -> None:
         capture.read(tmp_path)
     other = tmp_path / "notes.md"
     other.write_text("# not a capture\n")
-    with pytest.raises(SourceError, match="not candump text"):
+    with pytest.raises(SourceError, match="its content is not candump, and its suffix"):
         capture.read(other)
     garbled = tmp_path / "garbled"
     garbled.write_text("garbage first\n" + EXAMPLE.read_text())
     assert resolve(garbled).format == "candump"  # one bad line first is still candump
     empty = tmp_path / "empty"
     empty.write_bytes(b"")
-    with pytest.raises(SourceError, match="not candump text"):
+    with pytest.raises(SourceError, match="empty is empty: give a capture file"):
         resolve(empty)
 
 

@@ -50,10 +50,26 @@ def test_an_unknown_format_is_a_usage_error(tmp_path: Path) -> None:
     result = run("decode", str(path))
     assert result.returncode == 2
     assert first_error_line(result) == (
-        f"veronte4x: {path}: not candump text, and its suffix is none of .log, .txt, .candump, "
-        ".asc, .blf, .csv, .db, .mf4, .trc: convert it, or rename it to the suffix of its format"
+        f"veronte4x: {path}: in no format veronte4x knows: its content is not candump, and its "
+        "suffix is none of .log, .txt, .candump, .asc, .blf, .csv, .db, .mf4, .trc; rename it "
+        "to the suffix of its format, or convert it to candump text"
     )
     assert result.stdout == b""
+
+
+def test_an_unknown_gzipped_format_and_an_empty_file(tmp_path: Path) -> None:
+    packed = tmp_path / "dump.bin"
+    packed.write_bytes(gzip.compress(bytes(range(256)) * 8))
+    result = run("stats", str(packed))
+    assert result.returncode == 2
+    [line] = result.stderr.decode().splitlines()
+    assert line.startswith(f"veronte4x: {packed}: in no format veronte4x knows: its gunzipped ")
+    assert line.endswith("; rename it to the suffix of its format, or convert it to candump text")
+    empty = tmp_path / "dump"
+    empty.write_bytes(b"")
+    result = run("decode", str(empty))
+    assert result.returncode == 2
+    assert result.stderr == f"veronte4x: {empty} is empty: give a capture file\n".encode()
 
 
 @pytest.mark.parametrize("name", ["flight", "flight.bin", "flight.bin.gz", "flight.gz"])
@@ -159,7 +175,7 @@ def test_ctrl_c_during_decode_of_stdin() -> None:
     assert result.returncode == 130
     [line] = result.stderr.decode().splitlines()
     assert line.startswith("veronte4x: interrupted after ")
-    assert line.endswith(" records, 0 undecoded, 0 bad")
+    assert line.endswith((" records, 0 undecoded, 0 bad", " 1 record, 0 undecoded, 0 bad"))
     assert result.stdout.startswith(b"0.000000 can0 009 AP2")
     records = int(line.split()[3])
     assert len(result.stdout.splitlines()) == records  # nothing decoded is lost

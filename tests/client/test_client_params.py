@@ -86,7 +86,8 @@ def test_check_type_and_range() -> None:
         == "velocity_kp takes true or false, not 'x'"
     )
     assert _info(StringValue(b"a")).check(StringValue(b"b")) is None
-    assert _info(Empty()).check(IntegerValue(1)) is None  # no type to hold it to
+    missing = "velocity_kp does not exist on the node (its value is empty)"
+    assert _info(Empty()).check(IntegerValue(1)) == missing
 
 
 def test_parse_by_type() -> None:
@@ -95,7 +96,8 @@ def test_parse_by_type() -> None:
     assert _info(BooleanValue(0)).parse("On") == BooleanValue(1)
     assert _info(BooleanValue(1)).parse("no") == BooleanValue(0)
     assert _info(StringValue(b"")).parse("café") == StringValue("café".encode())
-    assert _info(Empty()).parse("7") == StringValue(b"7")
+    with pytest.raises(ValueError, match=r"^velocity_kp does not exist on the node"):
+        _info(Empty()).parse("7")  # an Empty value: no such parameter, not a string
     with pytest.raises(ValueError, match=r"^velocity_kp takes an integer, not '1\.5'$"):
         _info(IntegerValue(0)).parse("1.5")
     with pytest.raises(ValueError, match=r"^velocity_kp takes a number, not 'x'$"):
@@ -104,3 +106,24 @@ def test_parse_by_type() -> None:
         _info(RealValue(0.0)).parse("nan")
     with pytest.raises(ValueError, match=r"^velocity_kp takes true or false, not 'maybe'$"):
         _info(BooleanValue(0)).parse("maybe")
+
+
+def test_a_parameter_answered_with_an_empty_value_does_not_exist() -> None:
+    """DroneCAN GetSet: an Empty value means there is no such parameter; setting it and
+    applying a saved set to it are refused in words."""
+    from veronte4x.client import ParameterError
+    from veronte4x.client.operations import wanted_value
+    from veronte4x.client.paramfile import NodeParameters, ParameterFileError, plan
+
+    missing = _info(Empty())
+    assert not missing.exists
+    assert _info(IntegerValue(0)).exists
+    for value in ("7", 7, IntegerValue(7)):
+        with pytest.raises(ParameterError, match=r"^node 23 has no parameter 'velocity_kp'$"):
+            wanted_value(23, missing, value)
+    saved = NodeParameters(23, "", "", "", None, (_info(IntegerValue(7)),))
+    with pytest.raises(
+        ParameterFileError,
+        match=r"^node 23: velocity_kp does not exist on the node \(its value is empty\)$",
+    ):
+        plan(23, saved, [missing])

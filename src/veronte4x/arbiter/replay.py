@@ -25,6 +25,7 @@ from veronte4x.arbiter.model import Arbiter
 from veronte4x.arbiter.state import ArbiterState, Decision, SystemChecks
 from veronte4x.errors import DecodeError
 from veronte4x.numbers import shortest
+from veronte4x.words import counted
 
 #: One captured frame: (timestamp in s, CAN ID, data bytes).
 CapturedFrame = tuple[float, int, bytes]
@@ -131,7 +132,9 @@ class DisorderedError(InputError):
 
     def __init__(self, steps: int, frames: int) -> None:
         super().__init__(
-            "timestamps", f"{steps} steps back in {frames} frames", "a capture in time order"
+            "timestamps",
+            f"{counted(steps, 'step')} back in {counted(frames, 'frame')}",
+            "a capture in time order",
         )
         self.steps = steps
         self.frames = frames

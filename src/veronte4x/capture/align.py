@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.errors import Veronte4xError
 from veronte4x.extras import require
+from veronte4x.files import whole_file
 
 if TYPE_CHECKING:
     import numpy
@@ -301,7 +302,7 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
             continue
         names.append(name)
         columns.append(column)
-    with open(path, "wb") as file:
+    with whole_file(path) as file:
         pyarrow.csv.write_csv(
             pa.table(columns, names=names),
             file,

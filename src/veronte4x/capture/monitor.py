@@ -26,6 +26,7 @@ from veronte4x.capture.readable import format_message
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
 from veronte4x.numbers import shortest
+from veronte4x.words import counted
 
 RATE_WINDOW = 2.0
 """Seconds over which a row's rate is counted."""
@@ -240,7 +241,7 @@ class MonitorState:
         span = ""
         if self.first_timestamp is not None and self.last_timestamp is not None:
             span = f", {round(self.last_timestamp - self.first_timestamp, 3)} s"
-        return f"{self.records} records, {self.errors} bad{span}"
+        return f"{counted(self.records, 'record')}, {self.errors} bad{span}"
 
 
 def can_id_text(can_id: int) -> str:

@@ -92,9 +92,19 @@ def resolve(path: str | os.PathLike[str]) -> Source:
     reader = registry.by_content(_gunzip_head(name) if gzipped else head)
     if reader is not None:
         return Source(name, reader, gzipped)
-    raise SourceError(
-        f"{name}: not candump text, and its suffix is none of {registry.known_suffixes()}: "
-        "convert it, or rename it to the suffix of its format"
+    raise SourceError(_unknown(name, gzipped, empty=not head))
+
+
+def _unknown(name: str, gzipped: bool, empty: bool) -> str:
+    """The error of a file no reader claims: what was tried and what to do, in one line."""
+    if empty:
+        return f"{name} is empty: give a capture file"
+    tried = " or ".join(registry.sniffing()) or "any format (none is recognised by content)"
+    content = "its gunzipped content" if gzipped else "its content"
+    return (
+        f"{name}: in no format veronte4x knows: {content} is not {tried}, and its suffix is "
+        f"none of {registry.known_suffixes()}; rename it to the suffix of its format, or "
+        "convert it to candump text"
     )
 
 

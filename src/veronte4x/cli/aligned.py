@@ -9,6 +9,7 @@ from veronte4x import capture
 from veronte4x.capture.align import DIRECTIONS, AlignError, write_csv
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.words import counted
 
 
 def add_options(parser: argparse.ArgumentParser) -> None:
@@ -46,7 +47,8 @@ def run_csv(args: argparse.Namespace, bus_map: BusMap, out: str) -> int:
     except AlignError as error:
         return _usage(str(error))
     columns = write_csv(aligned, out)
-    print(f"veronte4x: {aligned.num_rows} rows, {columns} columns, in {out}", file=sys.stderr)
+    rows = counted(aligned.num_rows, "row")
+    print(f"veronte4x: {rows}, {counted(columns, 'column')}, in {out}", file=sys.stderr)
     return EXIT_OK
 
 

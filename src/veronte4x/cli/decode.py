@@ -25,6 +25,7 @@ from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 from veronte4x.cli.options import live as live_bus
 from veronte4x.times import format_time
+from veronte4x.words import counted
 
 HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
 """The record's own columns, before the message's fields."""
@@ -104,7 +105,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
 def _summary(counts: Stats) -> str:
     errors = sum(counts.errors.values())
     unknown = sum(counts.unknown.values())
-    return f"{counts.records} records, {unknown} undecoded, {errors} bad"
+    return f"{counted(counts.records, 'record')}, {unknown} undecoded, {errors} bad"
 
 
 class _Clock:

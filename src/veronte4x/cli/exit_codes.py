@@ -10,7 +10,7 @@ EXIT_BAD_FRAME = EXIT_FINDINGS
 EXIT_USAGE = 2
 """A usage error, or an input that cannot be opened (missing file, bad bus map, unknown
 format, a ``--dsdl`` directory with a malformed definition or a data type id claimed twice,
-missing extra, a CAN bus that cannot be opened)."""
+missing extra, a CAN bus that cannot be opened or that fails while in use)."""
 EXIT_NO_ANSWER = 3
 """A node did not answer: none on the bus, a request timed out, an update stalled."""
 EXIT_REFUSED = 4

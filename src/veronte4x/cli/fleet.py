@@ -19,6 +19,7 @@ from veronte4x.client.errors import (
 )
 from veronte4x.client.operations import Operation
 from veronte4x.errors import EncodeError
+from veronte4x.words import counted
 
 if TYPE_CHECKING:
     from veronte4x.client.bus import BusClient
@@ -159,7 +160,7 @@ def each(
 
 def total(count: int, failed: list[int]) -> str:
     """The total line: how many nodes, how many failed and which."""
-    nodes = "1 node" if count == 1 else f"{count} nodes"
+    nodes = counted(count, "node")
     if not failed:
         return f"{nodes}: succeeded" if count == 1 else f"{nodes}: all succeeded"
     if count == 1:

@@ -13,6 +13,7 @@ from collections.abc import Iterable, Iterator
 from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.capture.records import Record
 from veronte4x.errors import SourceError
+from veronte4x.words import counted
 
 
 def tell(detail: str) -> None:
@@ -78,7 +79,8 @@ class InputWatch:
         if self.path is not None and self.bad and not self.frames:
             raise SourceError(
                 f"{self._name} is not a capture of any known format: none of its "
-                f"{self.bad} lines is a CAN frame; give candump text or a log python-can reads"
+                f"{counted(self.bad, 'line')} is a CAN frame; give candump text or a log "
+                "python-can reads"
             )
 
     def note(self) -> str | None:
@@ -86,6 +88,6 @@ class InputWatch:
         if self.path is None or self.bad <= self.frames:
             return None
         return (
-            f"{self.bad} of {self.bad + self.frames} lines are not CAN frames: is "
+            f"{self.bad} of {counted(self.bad + self.frames, 'line')} are not CAN frames: is "
             f"{self._name} a capture?"
         )

@@ -43,19 +43,23 @@ def add_dsdl_option(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def add_bus_options(parser: argparse.ArgumentParser, *, channel: bool = True) -> None:
+def add_bus_options(
+    parser: argparse.ArgumentParser, *, channel: bool = True, interface: bool = True
+) -> None:
     """python-can's bus options: ``--interface``, ``--channel``, ``--bitrate`` and more.
 
     Without ``--interface`` python-can reads its own configuration (``--can-config`` or its
     default files and environment). ``channel=False`` leaves ``--channel`` to
     `add_capture_options`, where it filters a capture and names the bus channel of a live
-    source.
+    source; ``interface=False`` leaves both to a command that names the bus otherwise
+    (``play``'s ``BUS`` argument).
     """
     group = parser.add_argument_group("bus (python-can, the 'can' extra)")
-    group.add_argument(
-        "--interface", help="python-can interface: socketcan, pcan, slcan, udp_multicast, ..."
-    )
-    if channel:
+    if interface:
+        group.add_argument(
+            "--interface", help="python-can interface: socketcan, pcan, slcan, udp_multicast, ..."
+        )
+    if channel and interface:
         group.add_argument("--channel", help="the interface's channel, e.g. can0")
     group.add_argument("--bitrate", type=int, help="bit rate in bit/s (DroneCAN: 1000000)")
     group.add_argument(
@@ -160,8 +164,8 @@ def open_frame_source(
 def _live_frames(
     args: argparse.Namespace, stop: threading.Event | None
 ) -> Iterator[Frame | BadLine]:
-    from veronte4x.canbus import open_bus
     from veronte4x.capture.readers.live import read_bus
+    from veronte4x.cli.buses import open_bus
 
     bus = open_bus(**bus_settings(args))
     try:

@@ -19,8 +19,9 @@ from veronte4x.capture.frames import Frame
 from veronte4x.capture.playback import IdFilter, Pacer, PlaybackError, Player
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
-from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
-from veronte4x.cli.options import bus_settings
+from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.words import counted
 
 
 def add_parser(commands: Any) -> None:
@@ -63,17 +64,7 @@ def add_parser(commands: Any) -> None:
         metavar="N",
         help="play N times, or for ever without N (until Ctrl-C)",
     )
-    parser.add_argument("--bitrate", type=int, help="bit rate in bit/s")
-    parser.add_argument(
-        "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
-    )
-    parser.add_argument(
-        "--bus-option",
-        metavar="KEY=VALUE",
-        action="append",
-        default=[],
-        help="another keyword argument of the python-can bus, e.g. port=43113 (repeatable)",
-    )
+    add_bus_options(parser, interface=False)
     parser.set_defaults(run=run, bus_map=None)
 
 
@@ -106,7 +97,7 @@ def paced(
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Play the capture; the timing goes to standard error."""
-    from veronte4x.canbus import open_bus
+    from veronte4x.cli.buses import open_bus
 
     interface, _, channel = args.bus.partition(":")
     args.interface, args.channel = interface or None, channel or None
@@ -167,13 +158,13 @@ def _play(
     except can.CanError as error:
         with contextlib.suppress(OSError):
             sys.stdout.flush()
-        print(f"veronte4x: sending frame {sent + 1} failed: {error}", file=sys.stderr)
-        return EXIT_FINDINGS
+        print(f"veronte4x: the CAN bus failed sending frame {sent + 1}: {error}", file=sys.stderr)
+        return EXIT_USAGE
     timing = player.timing()
     print(
-        f"veronte4x: sent {timing.frames} frames in {clock() - began:.3f} s; late against the "
-        f"schedule: {timing.mean_late * 1000:.3g} ms on average, {timing.max_late * 1000:.3g} ms "
-        "at most",
+        f"veronte4x: sent {counted(timing.frames, 'frame')} in {clock() - began:.3f} s; late "
+        f"against the schedule: {timing.mean_late * 1000:.3g} ms on average, "
+        f"{timing.max_late * 1000:.3g} ms at most",
         file=sys.stderr,
     )
     return EXIT_OK

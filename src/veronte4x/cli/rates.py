@@ -13,6 +13,7 @@ from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.rates import RateTracker
 from veronte4x.capture.records import Record
 from veronte4x.cli.options import open_frame_source, with_dbc
+from veronte4x.words import counted
 
 
 def add_options(parser: argparse.ArgumentParser) -> None:
@@ -60,7 +61,7 @@ def report(rates: RateTracker, now: float | None = None) -> str:
     lines = ["rates:"]
     for s in rates.streams(now):
         flags = f"  {', '.join(s.flags)}" if s.flags else ""
-        gaps = f", {s.gaps} gaps" if s.gaps else ""
+        gaps = f", {counted(s.gaps, 'gap')}" if s.gaps else ""
         lines.append(
             f"  {s.channel or '-'} {s.label}: {s.count} at {_hz(s.rate)}, jitter "
             f"{_ms(s.jitter)}, longest gap {_ms(s.longest_gap)}{gaps}{flags}"
@@ -72,7 +73,7 @@ def report(rates: RateTracker, now: float | None = None) -> str:
         else:
             how = "detected: the lowest that fits" if load.detected else "given"
             rate = f"{_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s ({how})"
-        lines.append(f"  {load.channel or '-'}: {load.frames} frames, {rate}")
+        lines.append(f"  {load.channel or '-'}: {counted(load.frames, 'frame')}, {rate}")
     return "\n".join(lines)
 
 

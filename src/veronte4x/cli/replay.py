@@ -16,6 +16,7 @@ from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
 from veronte4x.errors import SourceError
 from veronte4x.times import format_time
+from veronte4x.words import counted
 
 if TYPE_CHECKING:
     from veronte4x.arbiter.config import ArbiterConfig
@@ -79,15 +80,17 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     except DisorderedError as error:
         sys.stdout.flush()
         print(
-            f"veronte4x: {_name(args)} is not in time order ({error.steps} steps back in "
-            f"{error.frames} frames): replay needs it sorted by time; sort the capture first",
+            f"veronte4x: {_name(args)} is not in time order ({counted(error.steps, 'step')} "
+            f"back in {counted(error.frames, 'frame')}): replay needs it sorted by time; sort "
+            "the capture first",
             file=sys.stderr,
         )
         return EXIT_NOT_IN_TIME_ORDER
     print(result.timeline(clock.format))
     summary = (
-        f"veronte4x: {len(result.decisions)} decisions, {len(result.disagreements)} "
-        f"disagreements, {len(result.errors)} bad frames"
+        f"veronte4x: {counted(len(result.decisions), 'decision')}, "
+        f"{counted(len(result.disagreements), 'disagreement')}, "
+        f"{counted(len(result.errors), 'bad frame')}"
     )
     if result.late:
         summary += f", {_count(result.late, 'frame')} out of time order (taken late)"

@@ -93,9 +93,9 @@ def add_parser(commands: Any) -> None:
 
 
 def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
-    """Serve the bus until Ctrl-C, SIGTERM or the duration."""
+    """Serve the bus until Ctrl-C (exit code 130), SIGTERM or the duration (0)."""
     require("can", "can", "veronte4x simulate")
-    from veronte4x.canbus import open_bus
+    from veronte4x.cli.buses import open_bus
     from veronte4x.errors import EncodeError
     from veronte4x.simulator import SimulatedEsc
     from veronte4x.simulator.can_node import EscBus
@@ -117,23 +117,23 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
         option = _OPTIONS.get(error.field, error.field)
         print(f"veronte4x: {option} {error.value!r} is refused: {error.allowed}", file=sys.stderr)
         return EXIT_USAGE
-    bus = open_bus(**bus_settings(args))
-    stop = threading.Event()
-    signal.signal(signal.SIGTERM, lambda *_: stop.set())
-    if args.duration is not None:
-        threading.Timer(args.duration, stop.set).start()
-    node = EscBus(bus, escs)
-    start = node.clock()
-    for esc in escs:
-        esc.power_cycle(start)
-    names = ", ".join(f"{n} (esc_index {i})" for i, n in enumerate(args.nodes))
-    print(f"veronte4x: simulating Vertiq ESC nodes {names}; Ctrl-C stops", file=sys.stderr)
     import can
 
-    try:
-        node.run(stop)
-    except KeyboardInterrupt:
-        pass
+    bus = open_bus(**bus_settings(args))
+    stop = threading.Event()
+    try:  # from here on the bus is shut down whatever ends the run, Ctrl-C included
+        signal.signal(signal.SIGTERM, lambda *_: stop.set())
+        if args.duration is not None:
+            timer = threading.Timer(args.duration, stop.set)
+            timer.daemon = True  # a Ctrl-C before the duration does not wait for it
+            timer.start()
+        node = EscBus(bus, escs)
+        start = node.clock()
+        for esc in escs:
+            esc.power_cycle(start)
+        names = ", ".join(f"{n} (esc_index {i})" for i, n in enumerate(args.nodes))
+        print(f"veronte4x: simulating Vertiq ESC nodes {names}; Ctrl-C stops", file=sys.stderr)
+        node.run(stop)  # Ctrl-C goes through: exit code 130, as every command
     except can.CanError as error:
         print(f"veronte4x: the CAN bus failed: {error}", file=sys.stderr)
         return EXIT_USAGE

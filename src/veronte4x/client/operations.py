@@ -393,8 +393,11 @@ def wanted_value(
 
     Raises:
         InvalidRequestError: Text that does not parse as the parameter's type.
-        ParameterError: A value of another type or out of range.
+        ParameterError: No such parameter (an Empty value), a value of another type or out
+            of range.
     """
+    if not current.exists:
+        raise ParameterError(f"node {node_id} has no parameter {current.name!r}")
     if isinstance(value, _VALUES):
         wanted: Value = value
     elif isinstance(value, str) and not isinstance(current.value, StringValue):

@@ -107,9 +107,22 @@ class ParameterInfo:
             "index": self.index,
         }
 
+    @property
+    def exists(self) -> bool:
+        """Whether the node has this parameter. The DroneCAN specification
+        (``uavcan.protocol.param.GetSet``, the response): an Empty value (and/or an empty
+        name) indicates that there is no such parameter."""
+        return bool(self.name) and not isinstance(self.value, Empty)
+
+    def _missing(self) -> str:
+        return f"{self.name or 'the parameter'} does not exist on the node (its value is empty)"
+
     def check(self, value: Value) -> str | None:
-        """Why ``value`` cannot be set here (wrong type, out of range), or None if it can."""
-        if type(value) is not type(self.value) and not isinstance(self.value, Empty):
+        """Why ``value`` cannot be set here (no such parameter, wrong type, out of range), or
+        None if it can."""
+        if not self.exists:
+            return self._missing()
+        if type(value) is not type(self.value):
             return f"{self.name} takes {_KINDS[type(self.value)]}, not {plain(value)!r}"
         if isinstance(value, (IntegerValue, RealValue)):
             low, high = plain(self.minimum), plain(self.maximum)
@@ -124,8 +137,11 @@ class ParameterInfo:
         """A value of this parameter's type from text (as typed on a command line).
 
         Raises:
-            ValueError: The text is not a value of that type.
+            ValueError: The text is not a value of that type, or the parameter does not
+                exist (`exists`).
         """
+        if not self.exists:
+            raise ValueError(self._missing())
         value = self.value
         if isinstance(value, IntegerValue):
             try:

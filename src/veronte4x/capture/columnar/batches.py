@@ -156,8 +156,8 @@ def ahead(
         return batch
 
     with ThreadPoolExecutor(1) as thread:
+        coming = thread.submit(read)  # before the try: a Ctrl-C here has nothing to cancel
         try:
-            coming = thread.submit(read)
             while (batch := coming.result()) is not None:
                 coming = thread.submit(read)
                 yield batch

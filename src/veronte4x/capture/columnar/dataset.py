@@ -54,6 +54,7 @@ from veronte4x.capture.datasets import CAPTURE, capture_directory, table_file
 from veronte4x.capture.source import STDIN
 from veronte4x.errors import SourceError
 from veronte4x.progress import Bar
+from veronte4x.words import counted
 
 SOURCE = pa.field("source", pa.dictionary(pa.int32(), pa.string()))
 """The column naming the capture a row comes from."""
@@ -112,9 +113,10 @@ class Summary:
         total = sum(self.records[k] for k in kinds)
         per_kind = ", ".join(f"{kind} {self.records[kind]}" for kind in kinds)
         return (
-            f"{self.files} files, {self.frames} frames, {total} records"
+            f"{counted(self.files, 'file')}, {counted(self.frames, 'frame')}, "
+            f"{counted(total, 'record')}"
             + (f" ({per_kind})" if per_kind else "")
-            + f", {self.errors} errors, {self.seconds:.3g} s"
+            + f", {counted(self.errors, 'error')}, {self.seconds:.3g} s"
         )
 
 

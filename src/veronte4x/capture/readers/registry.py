@@ -141,6 +141,11 @@ def by_content(head: bytes) -> Reader | None:
     return next((r for r in READERS.values() if r.recognises(head)), None)
 
 
+def sniffing() -> list[str]:
+    """The names of the formats recognised by content, in the order they are tried."""
+    return [r.name for r in READERS.values() if r.sniff is not None]
+
+
 def streaming() -> Reader:
     """The reader of standard input and pipes."""
     return next(r for r in READERS.values() if r.streams)
