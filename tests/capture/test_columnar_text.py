@@ -156,14 +156,14 @@ def _convert(*args: str) -> subprocess.CompletedProcess[str]:
 def test_convert_text_binary_on_the_command_line(tmp_path: Path) -> None:
     pq = pytest.importorskip("pyarrow.parquet")
     path = write(tmp_path / "log.log", _lines([dronecan.LogMessage(text=b"\xc3")]))
-    for form, errors in (("string", 1), ("binary", 0)):
+    for form, errors in (("string", "1 error"), ("binary", "0 errors")):
         out = tmp_path / form
         result = _convert(str(path), "--to", "parquet", str(out), "--text", form)
         assert result.returncode == 0, result.stderr
-        assert f", {errors} errors, " in result.stderr
+        assert f", {errors}, " in result.stderr
         (file,) = capture.dataset_files(out, "LogMessage")
         table = pq.read_table(file, columns=["text"])
-        assert table.column("text").to_pylist() == [None if errors else b"\xc3"]
+        assert table.column("text").to_pylist() == [None if form == "string" else b"\xc3"]
     result = _convert(str(path), "--to", "parquet", str(tmp_path / "x"), "--text", "utf8")
     assert result.returncode == 2
     assert "--text: invalid choice: 'utf8'" in result.stderr
