@@ -157,7 +157,12 @@ class CaptureDecoder:
                         route = veronte.get(ident)
                         if route is not None:
                             try:
-                                seconds = _seconds(stamp)
+                                # _seconds, inlined for candump's own (%010lu.%06lu).
+                                seconds = float(stamp[1:-1])
+                                if not (len(stamp) == 19 and stamp[11] == 46
+                                        and seconds < 8_589_934_592.0
+                                        and stamp[12:18].isdigit()):  # fmt: skip
+                                    seconds = _seconds(stamp)
                                 data = unhexlify(text)
                             except ValueError:
                                 seconds = math.nan
@@ -177,7 +182,11 @@ class CaptureDecoder:
                                 continue
                         elif dronecan and len(ident) == 8:
                             try:
-                                seconds = _seconds(stamp)
+                                seconds = float(stamp[1:-1])  # as above
+                                if not (len(stamp) == 19 and stamp[11] == 46
+                                        and seconds < 8_589_934_592.0
+                                        and stamp[12:18].isdigit()):  # fmt: skip
+                                    seconds = _seconds(stamp)
                                 can_id = identifiers[ident]
                                 data = unhexlify(text)
                             except ValueError:
