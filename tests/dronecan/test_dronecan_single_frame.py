@@ -155,6 +155,23 @@ def test_an_explicit_type_set_is_not_decoded_with_the_routes_of_another(frames_o
             dronecan.decode_frames(frames, 1.0, types="uavcan")  # type: ignore[arg-type]
 
 
+def test_an_explicit_type_set_encodes_only_its_own_types() -> None:
+    """``encode(types=...)`` takes the class from that set, as the checked path does: a set
+    that lacks it refuses it, and a ``types=`` that is no set is a TypeError."""
+    message = dronecan.EscStatus(3, 24.5, 12.25, 310.0, 4321, 55, 2)
+    codec = BY_CLASS[type(message)]
+    lacking = _without(codec.data_type.kind, codec.data_type.data_type_id)
+    expected = dronecan.encode(message, source_node_id=9, transfer_id=1)
+    for _ in range(2):  # the default set's fast function made by the first round
+        assert dronecan.encode(message, source_node_id=9, transfer_id=1) == expected
+        got = dronecan.encode(message, source_node_id=9, transfer_id=1, types=TypeSet.standard())
+        assert got == expected
+        with pytest.raises(TypeError, match="message"):
+            dronecan.encode(message, source_node_id=9, transfer_id=1, types=lacking)
+        with pytest.raises(TypeError, match="types"):
+            dronecan.encode(message, source_node_id=9, transfer_id=1, types="uavcan")  # type: ignore[arg-type]
+
+
 @pytest.mark.parametrize("index", [0, 1, 2])
 @pytest.mark.parametrize("kind", [float, bool])
 def test_a_frame_id_that_is_no_int_is_refused_in_any_frame(index: int, kind: type) -> None:

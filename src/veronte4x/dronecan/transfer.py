@@ -109,7 +109,11 @@ def encode(
     """
     if not saturate:
         # Generated fast path; on anything unusual the checked path raises the precise error.
-        fast = _FAST.get(message.__class__) or _fast_frames(message.__class__)
+        if types is None:
+            fast = _FAST.get(message.__class__) or _fast_frames(message.__class__)
+        else:  # that set's own codec, never the default set's
+            codec = types_or_default(types, "encode").by_class.get(message.__class__)
+            fast = None if codec is None else codec.fast.frames
         if fast is not None:
             try:
                 return fast(message, source_node_id, transfer_id, priority, destination_node_id)
