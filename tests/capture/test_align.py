@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 
 from veronte4x import capture
 from veronte4x.capture import AlignError, align
+from veronte4x.capture.align import write_csv
 
 EPOCH = datetime.datetime(1970, 1, 1, tzinfo=datetime.timezone.utc)
 ROOT = Path(__file__).resolve().parents[2]
@@ -259,6 +260,29 @@ def test_convert_to_an_aligned_csv(tmp_path: Path) -> None:
     ready = aligned.column("Ready/AP1/ready").to_pylist()
     assert [None if math.isnan(v) else bool(v) for v in frame["Ready/AP1/ready"]] == ready
     assert not any(c.startswith("ScorpionEscTelemetry") for c in frame.columns)  # raw bytes
+
+
+def test_csv_keeps_text_and_leaves_out_bytes_and_lists(tmp_path: Path) -> None:
+    text = ["ARMED", None, 'say "hi", then \u00b0C\nbye']
+    aligned = pa.table(
+        {
+            "timestamp": pa.array([0, 1, 2], pa.int64()).cast(pa.timestamp("us", tz="UTC")),
+            "LogMessage/node 20/text": pa.array(text, pa.string()),
+            "LogMessage/node 20/source": pa.array(["a", "b", None], pa.large_string()),
+            "Raw/node 20/payload": pa.array([b"\x00", b"", None], pa.binary()),
+            "Array/node 20/values": pa.array([[1], [], None], pa.list_(pa.int8())),
+        }
+    )
+    out = tmp_path / "text.csv"
+    assert write_csv(aligned, out) == 3
+    frame = pd.read_csv(out, keep_default_na=False)
+    assert frame.columns.tolist() == [
+        "time",
+        "LogMessage/node 20/text",
+        "LogMessage/node 20/source",
+    ]
+    assert frame["LogMessage/node 20/text"].tolist() == ["ARMED", "", text[2]]
+    assert frame["LogMessage/node 20/source"].tolist() == ["a", "b", ""]
 
 
 def test_convert_to_csv_usage_errors(tmp_path: Path) -> None:

@@ -42,6 +42,7 @@ fields = [
 
 [dronecan]
 enabled = false
+text = "binary"
 """
     )
     bus = BusMap.from_toml(str(path))
@@ -50,6 +51,7 @@ enabled = false
     assert bus.pwm_packing is codec.PwmPacking.MSB_FIRST
     assert bus.allow_excess is True
     assert bus.dronecan is False
+    assert bus.dronecan_text == "binary"
     message = bus.codec().decode(bytes.fromhex("093ff681"), sender=codec.Sender.AUTOPILOT)
     assert type(message).__name__ == "CellTemperature"
     assert (message.sensor, round(message.celsius, 1)) == (3, -1.0)  # type: ignore[attr-defined]
@@ -65,6 +67,8 @@ enabled = false
         ("[veronte]\nextended = 1\n", "extended: 1 is not true or false"),
         ("[veronte]\npwm_packing = 'sideways'\n", "'sideways' is not one of lsb_first"),
         ("[[veronte.layouts]]\ncommand = 2\nname = 'X'\n", "command 2 has a public layout"),
+        ("[dronecan]\ntext = 'utf-16'\n", "[dronecan] text: 'utf-16' is not one of string"),
+        ("[dronecan]\ntext = 1\n", "[dronecan] text: 1 is not one of string, binary"),
         ("x = [", "bus.toml"),
     ],
 )

@@ -164,6 +164,16 @@ def test_convert_text_binary_on_the_command_line(tmp_path: Path) -> None:
         (file,) = capture.dataset_files(out, "LogMessage")
         table = pq.read_table(file, columns=["text"])
         assert table.column("text").to_pylist() == [None if form == "string" else b"\xc3"]
+    bus_map = tmp_path / "bus.toml"
+    bus_map.write_text('[dronecan]\ntext = "binary"\n')
+    for option, value in (((), b"\xc3"), (("--text", "string"), None)):  # the option wins
+        out = tmp_path / f"map{len(option)}"
+        result = _convert(
+            str(path), "--to", "parquet", str(out), "--bus-map", str(bus_map), *option
+        )
+        assert result.returncode == 0, result.stderr
+        (file,) = capture.dataset_files(out, "LogMessage")
+        assert pq.read_table(file, columns=["text"]).column("text").to_pylist() == [value]
     result = _convert(str(path), "--to", "parquet", str(tmp_path / "x"), "--text", "utf8")
     assert result.returncode == 2
     assert "--text: invalid choice: 'utf8'" in result.stderr

@@ -96,6 +96,10 @@ def test_decode_of_a_live_bus_that_fails(tmp_path: Path, kind: str) -> None:
             ["play", str(EXAMPLE), "failing"],
             "the CAN bus failed sending frame 4: RuntimeError: driver crashed",
         ),
+        (
+            ["esc", "nodes", "--interface", "failing"],
+            "the CAN bus failed: RuntimeError: driver crashed",
+        ),
     ],
 )
 def test_other_commands_on_a_bus_that_fails(tmp_path: Path, args: list[str], line: str) -> None:

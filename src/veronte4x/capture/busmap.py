@@ -200,7 +200,7 @@ class BusMap:
             "[veronte]",
         )
         dronecan = _table(top.get("dronecan", {}), "[dronecan]")
-        _only(dronecan, {"enabled"}, "[dronecan]")
+        _only(dronecan, {"enabled", "text"}, "[dronecan]")
         default = cls()
         ids = tuple(
             _int(i, "[veronte] autopilot_ids")
@@ -215,6 +215,9 @@ class BusMap:
                 f"[veronte] pwm_packing: {packing!r} is not one of {', '.join(choices)}"
             )
         decode_dronecan = _bool(dronecan.get("enabled", True), "[dronecan] enabled")
+        text = dronecan.get("text", default.dronecan_text)
+        if text not in TEXT_FORMS:
+            raise BusMapError(f"[dronecan] text: {text!r} is not one of {', '.join(TEXT_FORMS)}")
         layouts = tuple(
             _layout(_table(entry, f"[[veronte.layouts]] number {number}"), number)
             for number, entry in enumerate(_list(veronte.get("layouts", []), "veronte.layouts"), 1)
@@ -229,6 +232,7 @@ class BusMap:
                 allow_excess=_bool(veronte.get("allow_excess", False), "allow_excess"),
                 layouts=layouts,
                 dronecan=decode_dronecan,
+                dronecan_text=text,
             )
             bus_map.codec()  # declared layouts are checked against the built-in ones here
         except (ValueError, TypeError) as error:

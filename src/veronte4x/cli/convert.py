@@ -51,10 +51,9 @@ def add_parser(commands: Any) -> None:
     parser.add_argument(
         "--text",
         choices=TEXT_FORMS,
-        default="string",
-        help="DroneCAN text fields (names, paths, log text): string (the default; bytes "
-        "that are not UTF-8 give a null and a 'bad text' error row holding them) or binary "
-        "(every uint8 array as its exact bytes)",
+        help="DroneCAN text fields (names, paths, log text): string (bytes that are not "
+        "UTF-8 give a null and a 'bad text' error row holding them) or binary (every uint8 "
+        "array as its exact bytes); default: the bus map's text, string unless it says",
     )
     add_capture_options(parser)
     aligned.add_options(parser)

@@ -272,7 +272,7 @@ def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int
         require("can", "can", "veronte4x esc")
         import can
 
-        from veronte4x.canbus import open_bus
+        from veronte4x.cli.buses import open_bus
         from veronte4x.client.bus import BusClient
 
         bus = open_bus(**bus_settings(args))
@@ -464,7 +464,7 @@ def _save_file(client: BusClient, args: argparse.Namespace) -> int:
     if args.json:
         _print_json(summary)
     else:
-        print(f"saved {count} parameters of node{'s' * (len(saved) > 1)} "
+        print(f"saved {count} parameter{'s' * (count != 1)} of node{'s' * (len(saved) > 1)} "
               f"{', '.join(str(n.node_id) for n in saved)} to {args.save}")  # fmt: skip
     return EXIT_OK
 
