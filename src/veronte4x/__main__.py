@@ -62,6 +62,7 @@ def _exit_now() -> None:
     to its default action by then, which would end the process without a word."""
     if _Process.code is not None:
         _flush()
+        _save_coverage()
         os._exit(_Process.code)
 
 
@@ -70,7 +71,19 @@ def _interrupted() -> NoReturn:
     _flush()
     with contextlib.suppress(OSError):
         os.write(sys.stderr.fileno(), b"veronte4x: interrupted\n")
+    _save_coverage()
     os._exit(EXIT_INTERRUPTED)
+
+
+def _save_coverage() -> None:
+    """Save coverage.py's data when it measures this process (``make coverage`` follows the
+    command lines the tests start): its exit function, registered before this module's,
+    would never run after ``os._exit``."""
+    coverage = sys.modules.get("coverage")
+    current = None if coverage is None else coverage.Coverage.current()
+    if current is not None:
+        current.stop()
+        current.save()
 
 
 def _flush() -> None:

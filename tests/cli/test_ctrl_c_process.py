@@ -85,6 +85,46 @@ def test_a_finished_command_exits_with_its_own_code(tmp_path: Path) -> None:
     assert b"Traceback" not in result.stderr
 
 
+def test_coverage_measures_a_command_line_started_by_a_measured_process(tmp_path: Path) -> None:
+    """The process ends with ``os._exit`` (no slow unloading), after saving the data of
+    coverage.py if it measures the process (as ``make coverage`` does in the command lines
+    the tests start, through its subprocess patch)."""
+    coverage = pytest.importorskip("coverage")
+    example = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
+    (tmp_path / ".coveragerc").write_text(
+        "[run]\nparallel = true\npatch = subprocess\nsource_pkgs = veronte4x\n"
+        f"data_file = {tmp_path / 'data'}\n"
+    )
+    (tmp_path / "parent.py").write_text(
+        "import subprocess, sys\n"
+        f"command = [sys.executable, '-m', 'veronte4x', 'stats', {str(example)!r}]\n"
+        "subprocess.run(command, check=True)\n"
+    )
+    environment = {k: v for k, v in os.environ.items() if not k.startswith("COVERAGE_")}
+    result = subprocess.run(
+        [sys.executable, "-m", "coverage", "run", "parent.py"],
+        capture_output=True,
+        check=False,
+        env=environment,
+        cwd=tmp_path,
+    )
+    assert result.returncode == 0, result.stderr
+    combined = subprocess.run(
+        [sys.executable, "-m", "coverage", "combine", "--quiet"],
+        capture_output=True,
+        check=False,
+        env=environment,
+        cwd=tmp_path,
+    )
+    assert combined.returncode == 0, combined.stderr
+    measured = coverage.CoverageData(str(tmp_path / "data"))
+    measured.read()
+    stats = next(f for f in measured.measured_files() if f.endswith("veronte4x/cli/stats.py"))
+    lines = Path(stats).read_text().splitlines()
+    report = next(i for i, line in enumerate(lines, 1) if "print(capture.stats(" in line)
+    assert report in (measured.lines(stats) or ())  # the command's own line, not an import
+
+
 def _interrupt_on_fifo(tmp_path: Path, args: list[str]) -> subprocess.CompletedProcess[bytes]:
     """Run the CLI on a FIFO, feed it some lines, Ctrl-C it while it waits for more."""
     fifo = tmp_path / "live.log"
