@@ -121,7 +121,7 @@ def _gunzip_head(name: str) -> bytes:
     try:
         with gzip.open(name, "rb") as file:
             while len(out) < registry.SNIFF_BYTES:
-                chunk = file.read(registry.SNIFF_BYTES - len(out))
+                chunk = file.read1(registry.SNIFF_BYTES - len(out))
                 if not chunk:
                     break
                 out += chunk
