@@ -268,8 +268,8 @@ TIMING_HEADS = ("period", "jitter", "gap", "state")
 
 
 def timing_texts(row: Row) -> tuple[str, str, str, str]:
-    """A row's timing columns (`TIMING_HEADS`) as text."""
-    gap = seconds_text(row.longest_gap) if row.count > 1 else "-"
+    """A row's timing columns (`TIMING_HEADS`) as text; no gap without two timed records."""
+    gap = "-" if math.isnan(row.period) else seconds_text(row.longest_gap)
     return seconds_text(row.period), seconds_text(row.jitter), gap, flags_text(row.flags)
 
 
