@@ -94,3 +94,22 @@ def test_a_capture_without_timestamps(tmp_path: Path) -> None:
         "AP3     error: unknown command       00A        0      0.0       -       -    -"
         "              1",
     ]
+
+
+def test_the_filter_keeps_rows_whose_sender_or_type_holds_it_in_any_case() -> None:
+    state = MonitorState()
+    for record in capture.read(EXAMPLE):
+        state.add(record)
+    assert [(r.sender, r.kind) for r in state.rows("ap2")] == [
+        ("AP2", "ArbitrationVariable"),
+        ("AP2", "PwmSet"),
+        ("AP2", "Ready"),
+    ]
+    assert [(r.sender, r.kind) for r in state.rows("READY")] == [
+        ("AP1", "Ready"),
+        ("AP2", "Ready"),
+        ("AP3", "Ready"),
+    ]
+    assert state.rows("no such row") == []
+    lines = render_text(state, "status").splitlines()
+    assert [line.split()[:2] for line in lines[3:]] == [["arbiter", "Status"]]
