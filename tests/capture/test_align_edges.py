@@ -1,10 +1,6 @@
 """`capture.align` and `write_csv` at their edges: a capture without timestamps, a table
 without a time column, arguments of the wrong kind, and the CSV of float seconds, flags and
 enums, written in this process.
-
-Not reachable: ``capture/align.py:242`` (``_pick`` with no row, ``n == 0``): `_streams`
-makes a stream only of a key that has at least one timed row, so every stream `_pick` is
-given has a row.
 """
 
 from __future__ import annotations

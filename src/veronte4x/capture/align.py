@@ -216,7 +216,8 @@ def _pick(
     direction: str,
     limit: int | None,
 ) -> numpy.ndarray[Any, Any]:
-    """For each grid time, the row of ``rows`` it takes, or -1."""
+    """For each grid time, the row of ``rows`` (at least one: `_streams` makes no empty
+    stream) it takes, or -1."""
     import numpy as np
 
     order = rows[np.argsort(values[rows], kind="stable")]
@@ -226,8 +227,8 @@ def _pick(
     after = np.searchsorted(times, grid, side="left")
     has_before = before >= 0
     has_after = after < n
-    gap_before = np.where(has_before, grid - times[np.clip(before, 0, max(n - 1, 0))], 0)
-    gap_after = np.where(has_after, times[np.clip(after, 0, max(n - 1, 0))] - grid, 0)
+    gap_before = np.where(has_before, grid - times[np.clip(before, 0, n - 1)], 0)
+    gap_after = np.where(has_after, times[np.clip(after, 0, n - 1)] - grid, 0)
     if direction == "backward":
         chosen, ok, gap = before, has_before, gap_before
     elif direction == "forward":
@@ -239,8 +240,6 @@ def _pick(
         gap = np.where(take_before, gap_before, gap_after)
     if limit is not None:
         ok = ok & (gap <= limit)
-    if n == 0:
-        return np.full(len(grid), -1, dtype=np.int64)
     result: numpy.ndarray[Any, Any] = np.where(ok, order[np.clip(chosen, 0, n - 1)], -1)
     return result
 
