@@ -331,5 +331,8 @@ def test_a_response_delay_holds_each_answer_and_each_read() -> None:
     (reply,) = decode(esc.poll(0.502))
     assert reply.message.name == b"esc_index"
     for bad in (-0.1, float("nan"), True):
-        with pytest.raises(EncodeError, match="response_delay"):
+        with pytest.raises(EncodeError) as refused:
             SimulatedEsc(ESC, response_delay=bad)
+        assert str(refused.value) == (
+            f"SimulatedEsc.response_delay = {bad!r}: expected seconds, 0 or above"
+        )
