@@ -263,3 +263,15 @@ def test_async_erase_restores_the_defaults_and_restart_reaches_the_bootloader(
     assert asyncio.run(bench()) == [5, 0]
     assert served_escs[0].state.parameters["esc_index"] == 0
     assert served_escs[1].state.in_bootloader and not served_escs[0].state.in_bootloader
+
+
+def test_timeout_and_retries_set_on_a_client_apply_to_its_next_request(
+    client_bus: can.BusABC, escs: EscBus
+) -> None:
+    client = _client(client_bus, escs)
+    assert (client.node_id, client.timeout, client.retries) == (127, 0.2, 1)
+    client.timeout, client.retries = 0.05, 0
+    assert (client.runner.timeout, client.runner.retries) == (0.05, 0)
+    with pytest.raises(NoResponseError) as error:
+        client.node_info(99)
+    assert (error.value.attempts, error.value.timeout) == (1, 0.05)
