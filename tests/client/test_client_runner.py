@@ -147,3 +147,20 @@ def test_a_batch_stopped_midway_keeps_what_ended_and_forgets_the_rest() -> None:
     assert done.result().name == b"iq_motion.esc"
     assert running.done and running.error is None and running.waiting is None
     assert len(batch.tasks) == 2 and protocol.next_deadline() is None
+
+
+def test_the_wait_for_frames_ends_at_the_first_deadline_never_before_now() -> None:
+    """`Runner.wait` is how long an adapter blocks on the bus: at most ``longest``, and no
+    later than the first request timeout or `Listen` time, so that each fires on time."""
+    protocol = ClientProtocol()
+    runner = ops.Runner(protocol, timeout=0.5, retries=0)
+    assert runner.wait(0.0, 0.05) == 0.05 and runner.next_deadline() is None
+    runner.start(ops.discover(protocol, 0.25), 0.0)  # resumes at 0.25
+    runner.start(ops.node_info(21), 0.0)  # times out at 0.5
+    assert (runner.next_deadline(), protocol.next_deadline()) == (0.25, 0.5)
+    assert runner.wait(0.0, 1.0) == 0.25
+    assert runner.wait(0.0, 0.125) == 0.125
+    runner.poll(0.25)  # the listen ends: the request's timeout is next
+    assert runner.next_deadline() is None
+    assert runner.wait(0.375, 1.0) == 0.125
+    assert runner.wait(0.75, 1.0) == 0.0  # overdue: poll at once, never a negative wait
