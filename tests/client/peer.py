@@ -69,12 +69,18 @@ class Peer:
         runner.settle(events, now)
 
     def run(
-        self, protocol: ClientProtocol, runner: ops.Runner, task: ops.Task[Any], step: float
+        self,
+        protocol: ClientProtocol,
+        runner: ops.Runner,
+        task: ops.Task[Any],
+        step: float,
+        start: float = 0.0,
     ) -> float:
-        """Exchange every ``step`` seconds from 0 until ``task`` is done; return the time."""
-        now = 0.0
+        """Exchange every ``step`` seconds from ``start`` until ``task`` is done (within 60 s);
+        return the time."""
+        now = start
         while not task.done:
             now += step
             self.exchange(protocol, runner, now)
-            assert now < 60, "the operation never ended"
+            assert now < start + 60, "the operation never ended"
         return now
