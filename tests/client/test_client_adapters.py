@@ -185,15 +185,28 @@ def test_an_interrupted_batch_forgets_its_requests_and_the_client_goes_on(
 # -- the asyncio client ----------------------------------------------------------------------
 
 
-def test_an_async_client_used_before_it_starts_says_so(client_bus: can.BusABC) -> None:
+def test_an_async_client_used_before_it_starts_says_so_and_sends_nothing(
+    client_bus: can.BusABC, spy: can.BusABC
+) -> None:
+    """Before the fix a BeginFirmwareUpdate or a RestartNode went out before this error:
+    the node restarted, or waited in its bootloader for reads nobody would serve."""
     client = AsyncBusClient(client_bus)
     client.stop()  # stopping what never started does nothing
     start_first = r"^start the client first: async with AsyncBusClient\(bus\) as client$"
     with pytest.raises(RuntimeError, match=start_first):
         asyncio.run(client.spin_once())
     with pytest.raises(RuntimeError, match=start_first):
-        asyncio.run(client.node_info(21))
-    assert client.protocol.next_deadline() is None  # its request is not left waiting
+        asyncio.run(client.update_firmware(21, b"image", progress=False))
+    with pytest.raises(RuntimeError, match=start_first):
+        asyncio.run(client.restart(21))
+    assert _heard(spy) == []
+    assert (
+        client.protocol.next_deadline() is None
+        and client.protocol.files.read(dronecan.FileReadRequest(0, dronecan.Path(b"firmware.bin")))[
+            1
+        ].size
+        is None
+    )
 
 
 def test_an_async_client_stopped_twice(client_bus: can.BusABC) -> None:
