@@ -96,6 +96,12 @@ class AsyncBusClient(BusAdapter):
             self._notifier.stop()
             self._notifier = None
 
+    def _started(self) -> can.AsyncBufferedReader:
+        """The reader, or a RuntimeError when the client was not started."""
+        if self._reader is None:
+            raise RuntimeError("start the client first: async with AsyncBusClient(bus) as client")
+        return self._reader
+
     def _waiting(self, first: can.Message | None) -> Iterator[can.Message]:
         assert self._reader is not None
         queue = self._reader.buffer
@@ -110,13 +116,10 @@ class AsyncBusClient(BusAdapter):
         Returns:
             The events of the frames received and of the requests timed out.
         """
-        if self._reader is None:
-            raise RuntimeError("start the client first: async with AsyncBusClient(bus) as client")
+        reader = self._started()
         message: can.Message | None
         try:
-            message = await asyncio.wait_for(
-                self._reader.buffer.get(), timeout=self.wait_time(max_wait)
-            )
+            message = await asyncio.wait_for(reader.buffer.get(), timeout=self.wait_time(max_wait))
         except asyncio.TimeoutError:
             message = None
         return self.receive(self._waiting(message))
@@ -131,6 +134,7 @@ class AsyncBusClient(BusAdapter):
     ) -> list[Task[Any]]:
         """Run operations concurrently, at most ``limit`` at a time (as `BusClient.run_all`);
         a cancellation forgets the requests of those still running."""
+        self._started()  # before anything is sent: no answer could be read
         batch = OperationBatch(self.runner, operations, limit)
         try:
             while batch.fill(self.clock()):

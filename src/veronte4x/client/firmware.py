@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import enum
 import functools
+import math
 from dataclasses import dataclass
 
 from veronte4x.client.errors import InvalidRequestError
@@ -19,6 +20,7 @@ from veronte4x.client.files import FileRead
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import BeginFirmwareUpdateResponse, FirmwareUpdateError, Mode
+from veronte4x.errors import real
 
 START_TIMEOUT = 10.0
 """Seconds a node may take from accepting the update to its first read (erasing flash)."""
@@ -47,12 +49,38 @@ class FirmwareOptions:
         restart_timeout: Seconds after the last read for the node to run again
             (`RESTART_TIMEOUT`).
         max_image_size: Bytes above which an image is refused (`MAX_IMAGE_SIZE`).
+
+    Raises:
+        InvalidRequestError: A timeout that is not a finite number of seconds above 0.
     """
 
     start_timeout: float = START_TIMEOUT
     read_timeout: float = READ_TIMEOUT
     restart_timeout: float = RESTART_TIMEOUT
     max_image_size: int = MAX_IMAGE_SIZE
+
+    def __post_init__(self) -> None:
+        _check_timeouts(self.start_timeout, self.read_timeout, self.restart_timeout)
+
+
+def _check_timeouts(start_timeout: object, read_timeout: object, restart_timeout: object) -> None:
+    """Refuse an update timeout that is not a finite number of seconds above 0 (a NaN or an
+    infinite one would never give a stalled update up).
+
+    Raises:
+        InvalidRequestError: Which timeout, and its value.
+    """
+    for name, value in (
+        ("start_timeout", start_timeout),
+        ("read_timeout", read_timeout),
+        ("restart_timeout", restart_timeout),
+    ):
+        seconds = real(value)
+        if seconds is None or not 0 < seconds < math.inf:
+            raise InvalidRequestError(
+                f"the firmware update's {name} is {value!r}, not a finite number of seconds "
+                "above 0; nothing was sent"
+            )
 
 
 DEFAULT_OPTIONS = FirmwareOptions()
@@ -144,6 +172,9 @@ class FirmwareUpdate:
         read_timeout: See `READ_TIMEOUT`.
         restart_timeout: See `RESTART_TIMEOUT`.
 
+    Raises:
+        InvalidRequestError: A timeout that is not a finite number of seconds above 0.
+
     Examples:
         >>> from veronte4x import dronecan
         >>> update = FirmwareUpdate(21, b"fw.bin", 300, now=0.0)
@@ -167,6 +198,7 @@ class FirmwareUpdate:
         read_timeout: float = READ_TIMEOUT,
         restart_timeout: float = RESTART_TIMEOUT,
     ) -> None:
+        _check_timeouts(start_timeout, read_timeout, restart_timeout)
         self.node_id = node_id
         self.path = path
         self.size = size
