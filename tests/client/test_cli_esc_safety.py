@@ -95,6 +95,13 @@ def test_node_ids_out_of_range_in_plain_words() -> None:
     result = veronte4x("esc", "spin", "21", "--throttle", "0.1", "--duration", "1", "--yes",
                        "--rate", "0", *bus_args(free_port()))  # fmt: skip
     assert (result.returncode, result.stderr) == (2, "veronte4x: --rate 0 must be above 0\n")
+    for duration in ("inf", "nan", "0"):  # an endless spin is refused before anything is sent
+        result = veronte4x("esc", "spin", "21", "--throttle", "0.1", "--duration", duration,
+                           "--yes", *bus_args(free_port()))  # fmt: skip
+        assert (result.returncode, result.stderr) == (
+            2,
+            f"veronte4x: --duration {duration} must be a finite number of seconds above 0\n",
+        )
 
 
 def test_empty_oversized_and_missing_images_are_refused(bus: list[str], tmp_path: Path) -> None:

@@ -162,6 +162,13 @@ def test_commander_rate_watchdog_and_stop() -> None:
         commander.set([1.5], now=1.0)
     with pytest.raises(EncodeError):
         Commander(rate=0)
+    for name in ("rate", "watchdog"):
+        for bad in (float("inf"), float("nan"), -1.0):
+            with pytest.raises(EncodeError) as refused:  # an infinite watchdog never trips
+                Commander(**{name: bad})
+            assert str(refused.value) == (
+                f"Commander.{name} = {bad!r}: expected a finite number above 0"
+            )
 
 
 def test_firmware_update_phases() -> None:

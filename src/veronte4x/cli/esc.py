@@ -757,8 +757,10 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
         return EXIT_USAGE
     if not -1.0 <= args.throttle <= 1.0:
         raise InvalidRequestError(f"--throttle {args.throttle:g} is outside -1..1")
-    if not args.duration > 0:
-        raise InvalidRequestError(f"--duration {args.duration:g} must be above 0 seconds")
+    if not 0 < args.duration < float("inf"):
+        raise InvalidRequestError(
+            f"--duration {args.duration:g} must be a finite number of seconds above 0"
+        )
     for option in ("silence", "rate", "watchdog"):
         if not 0 < getattr(args, option) < float("inf"):
             raise InvalidRequestError(f"--{option} {getattr(args, option):g} must be above 0")

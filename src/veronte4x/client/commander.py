@@ -8,6 +8,7 @@ Vertiq "Standard DroneCAN Support", Zero Behavior).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 
 from veronte4x.dronecan import vertiq
@@ -31,8 +32,9 @@ class Commander:
     """When to send which RawCommand, from throttles set by the caller and the time.
 
     Args:
-        rate: Commands per second, above 0.
-        watchdog: Seconds a setpoint stays valid after `set`, above 0.
+        rate: Commands per second, finite and above 0.
+        watchdog: Seconds a setpoint stays valid after `set`, finite and above 0 (an
+            infinite one would never stop the motors).
 
     Raises:
         EncodeError: A rate or watchdog that is not a positive number.
@@ -52,8 +54,12 @@ class Commander:
 
     def __init__(self, rate: float = DEFAULT_RATE, watchdog: float = DEFAULT_WATCHDOG) -> None:
         for name, value in (("rate", rate), ("watchdog", watchdog)):
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-                raise EncodeError("Commander", name, value, "a number above 0")
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, (int, float))
+                or not 0 < value < math.inf
+            ):
+                raise EncodeError("Commander", name, value, "a finite number above 0")
         self.period = 1.0 / rate
         self.watchdog = watchdog
         self._cmd: tuple[int, ...] = ()
