@@ -3,9 +3,16 @@ more than eight bytes, a group without a bus channel (a logger of one bus), and 
 hold no record; the same frames as python-can's reader, the same tables as the per-frame
 path.
 
-A branch of `veronte4x.capture.columnar.mf4` no input reaches: ``mf4.py:100`` on its
-``failed = False`` side (the ``else`` of ``_read``'s ``try``): the loop inside leaves only
-by ``return``, which skips the ``else``, or by an error, which sets ``failed``.
+Branches of `veronte4x.capture.columnar.mf4` no input reaches:
+
+- ``mf4.py:100`` on its ``failed = False`` side (the ``else`` of ``_read``'s ``try``): the
+  loop inside leaves only by ``return``, which skips the ``else``, or by an error, which
+  sets ``failed``.
+- ``mf4.py:251`` (frames of python-can's reader after asammdf failed): python-can's reader
+  opens the file with asammdf too, reading every group whole on opening (its bus-logging
+  pass), so a file or a chunk asammdf cannot read here makes python-can's reader fail
+  before its first frame (a `SourceError`, as in
+  ``test_a_damaged_data_block_is_the_per_frame_paths_error``).
 """
 
 from __future__ import annotations
@@ -14,6 +21,7 @@ import datetime
 import heapq
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Literal
 
 import pytest
 from hypothesis import given
@@ -22,6 +30,7 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import assert_same_tables
 from veronte4x import capture
 from veronte4x.capture.frames import Frame
+from veronte4x.errors import SourceError
 
 np = pytest.importorskip("numpy")
 can = pytest.importorskip("can")
@@ -83,9 +92,9 @@ def test_can_fd_frames_longer_than_eight_bytes(tmp_path: Path, size: int) -> Non
     assert_same_tables(capture.read_tables(path), capture.tables_from_records(capture.read(path)))
 
 
-def _one_bus(path: Path, count: int) -> Path:
+def _one_bus(path: Path, count: int, compression: Literal[0, 1] = 0) -> Path:
     """A CAN_DataFrame group without a BusChannel channel (asammdf's writer, as loggers of
-    one bus write it), in data blocks of 16 records."""
+    one bus write it), in data blocks of 16 records (deflated ones with ``compression``)."""
     fields = [f for f in STD_DTYPE.descr if f[0] != "CAN_DataFrame.BusChannel"]
     dtype = np.dtype(fields)
     records = np.zeros(count, dtype=dtype)
@@ -106,7 +115,7 @@ def _one_bus(path: Path, count: int) -> Path:
             source=Source("CAN", "CAN", "", Source.SOURCE_BUS, Source.BUS_TYPE_CAN),
         )
     )
-    mdf.save(path, overwrite=True)
+    mdf.save(path, overwrite=True, compression=compression)
     mdf.close()
     return path
 
@@ -156,3 +165,28 @@ def test_chunks_without_records_merge_as_heapq_merges_them(
     merged = mf4.merge([chunks(g, e) for g, e in zip(frames, empties, strict=True)])
     got = [int(i) for part in merged for i in part.can_id]
     assert got == expected
+
+
+def test_a_damaged_data_block_is_the_per_frame_paths_error(tmp_path: Path) -> None:
+    """A deflated data block in the middle of the file overwritten: the chunks before it
+    read, the one holding it fails, and python-can's reader, taking over from there,
+    refuses the file as the per-frame path does (reading all of it on opening)."""
+    path = _one_bus(tmp_path / "damaged.mf4", 400, compression=1)
+    data = bytearray(path.read_bytes())
+    blocks = [at for at in range(len(data)) if data[at : at + 4] == b"##DZ"]
+    assert len(blocks) == 25  # 16 records a block
+    middle = blocks[12]
+    data[middle + 60 : middle + 90] = bytes(b ^ 0x55 for b in data[middle + 60 : middle + 90])
+    path.write_bytes(bytes(data))
+    with pytest.raises(SourceError) as per_frame:
+        list(capture.read(path))
+    assert str(per_frame.value).startswith(f"{path}: not a readable MF4 file (")
+    batches = read_batches(path, batch_frames=16)
+    first = next(batches).frames.can_id.tolist()  # the rows no later chunk precedes
+    assert first == [0x100 + row for row in range(len(first))] and 0 < len(first) <= 16
+    with pytest.raises(SourceError) as columnar:
+        list(batches)
+    assert str(columnar.value) == str(per_frame.value)
+    with pytest.raises(SourceError) as tables:
+        capture.read_tables(path)
+    assert str(tables.value) == str(per_frame.value)
