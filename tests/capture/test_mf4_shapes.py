@@ -8,11 +8,12 @@ Branches of `veronte4x.capture.columnar.mf4` no input reaches:
 - ``mf4.py:100`` on its ``failed = False`` side (the ``else`` of ``_read``'s ``try``): the
   loop inside leaves only by ``return``, which skips the ``else``, or by an error, which
   sets ``failed``.
-- ``mf4.py:251`` (frames of python-can's reader after asammdf failed): python-can's reader
-  opens the file with asammdf too, reading every group whole on opening (its bus-logging
-  pass), so a file or a chunk asammdf cannot read here makes python-can's reader fail
-  before its first frame (a `SourceError`, as in
-  ``test_a_damaged_data_block_is_the_per_frame_paths_error``).
+- ``mf4.py:251`` to 252 (a batch of python-can's frames after asammdf failed here):
+  python-can's reader opens the file with asammdf too, reading every group whole on
+  opening (its bus-logging pass), so a file or a chunk asammdf cannot read here makes
+  python-can's reader fail before its first frame (a `SourceError`, as in
+  ``test_a_damaged_data_block_is_the_per_frame_paths_error``) or give none past the
+  frames the chunks read.
 """
 
 from __future__ import annotations
