@@ -33,13 +33,17 @@ ESCAPE = "table-"
 """Put before a table's name that starts with ``.`` or ``_`` (a DBC message may):
 readers skip files named so."""
 SUFFIX = ".parquet"
+STEM = 200
+"""Characters of a capture's base name kept in its directory's name: with the run's suffix
+(`veronte4x.capture.columnar.dataset`), the name stays within the 255 bytes file systems
+take."""
 
 
 def capture_directory(source: str) -> str:
     """The name of a capture's directory: ``capture=``, its base name (characters other
     than letters, digits, ``.``, ``_`` and ``-`` replaced, leading ``.`` and ``_``
-    dropped) and a digest of its path as given."""
-    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")
+    dropped, cut to ``STEM`` characters) and a digest of its path as given."""
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")[:STEM]
     stem = stem or "capture"
     digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
     return f"{CAPTURE}{stem}-{digest}"

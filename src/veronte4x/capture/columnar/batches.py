@@ -22,7 +22,7 @@ import zlib
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
-from typing import Any, BinaryIO
+from typing import Any, BinaryIO, cast
 
 from veronte4x.capture.columnar.candump import parse_block, read_blocks
 from veronte4x.capture.columnar.frames import FrameColumns, from_frames
@@ -95,9 +95,9 @@ def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iter
     yield from _lines_from(source, line, batch_frames)
 
 
-def _open_raw(source: Source) -> BinaryIO:
-    if source.is_stdin:
-        return open(sys.stdin.buffer.fileno(), "rb", closefd=False)
+def _open_raw(source: Source) -> contextlib.AbstractContextManager[BinaryIO]:
+    if source.is_stdin:  # its buffer, which holds the bytes `resolve` peeked at; not closed
+        return contextlib.nullcontext(cast(BinaryIO, sys.stdin.buffer))
     return open(source.path, "rb")
 
 

@@ -205,7 +205,8 @@ class _Reader:
             item_pos = np.repeat(pos, count) + within * size
             values, _ = self.struct(item, np.repeat(row, count), item_pos, False)
             self.check(row, pos + count * size)
-            return _list(t, offsets, _arrow(item, values)), pos + count * size
+            items = _arrow(item, values, int(offsets[-1]))
+            return _list(t, offsets, items), pos + count * size
         pos = pos.copy()
         pieces, places = [], []
         for k in range(int(count.max(initial=0))):
@@ -216,7 +217,7 @@ class _Reader:
                 if not len(chosen):
                     continue
                 values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], tail)
-                pieces.append(_arrow(item, values))
+                pieces.append(_arrow(item, values, len(chosen)))
                 places.append(offsets[chosen] + k)
         return _list(t, offsets, _ordered(item, pieces, places, int(offsets[-1]))), pos
 
@@ -237,7 +238,7 @@ class _Reader:
                 break
             values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], False)
             count[chosen] += 1
-            found.append((chosen, _arrow(item, values)))
+            found.append((chosen, _arrow(item, values, len(chosen))))
         offsets = np.zeros(len(row) + 1, np.int64)
         np.cumsum(count, out=offsets[1:])
         places = [offsets[chosen] + k for k, (chosen, _) in enumerate(found)]
@@ -268,8 +269,9 @@ def _list(t: Array, offsets: Ints, values: Any) -> pa.Array:
     return pa.ListArray.from_arrays(pa.array(offsets.astype(np.int32)), items)
 
 
-def _arrow(t: Scalar | Array | Struct | Union, value: Any) -> pa.Array:
-    """Values of an array's items (or of their fields) as Arrow, typed as the schema's."""
+def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Array:
+    """``size`` values of an array's items (or of their fields) as Arrow, typed as the
+    schema's."""
     if isinstance(t, Scalar):
         return pa.array(value, scalar_type(t))
     if isinstance(t, Array):
@@ -277,10 +279,9 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any) -> pa.Array:
         return value
     if isinstance(t, Union):
         raise TypeError(f"{t.name}: a union inside an array has no column type")
-    named = [f for f in t.fields if f.name]
-    if not named:
-        raise TypeError(f"{t.name}: a struct without fields inside an array has no column type")
-    children = [_arrow(f.type, value[f.name]) for f in named]
+    children = [_arrow(f.type, value[f.name], size) for f in t.fields if f.name]
+    if not children:  # a struct without named fields: its items are empty
+        return pa.StructArray.from_buffers(struct_type(t), size, [None], children=[])
     return pa.StructArray.from_arrays(children, fields=list(struct_type(t)))
 
 
@@ -335,7 +336,7 @@ def _flatten(struct: Struct, values: dict[str, Any], prefix: str, out: dict[str,
                     continue
                 index = np.full(size, -1, np.int64)
                 index[chosen] = np.arange(len(chosen))
-                arrow = _arrow(member.type, member_values)
+                arrow = _arrow(member.type, member_values, len(chosen))
                 out[f"{name}.{member.name}"] = arrow.take(pa.array(index, mask=index < 0))
         else:
             out[name] = value
