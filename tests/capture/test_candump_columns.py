@@ -5,6 +5,7 @@ merged logs of several layouts, 11- and 29-bit ids, error, remote and CAN FD lin
 
 from __future__ import annotations
 
+import datetime
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -150,3 +151,33 @@ def test_a_fixed_layout_takes_the_plain_lines() -> None:
     columns = candump.parse_text(text)
     assert columns is not None
     assert [bad.line_number for _, bad in columns.bad_lines] == [4]
+
+
+def test_the_human_view_takes_dated_lines_with_their_exact_times() -> None:
+    """``candump -t A`` lines (a date and a time of day) are read column-wise, with the
+    microseconds since the epoch that `datetime` gives, leap days and the last second of a
+    year included; a date that is no date goes to the general parser."""
+    stamps = [
+        "2025-11-21 15:00:00.010000",
+        "2024-02-29 23:59:59.999999",
+        "1999-12-31 23:59:59.000001",
+        "1970-01-01 00:00:00.000000",
+        "2100-03-01 12:34:56.789012",
+    ]
+    text = "".join(f"({s})  can0  123   [2]  00 11\n" for s in stamps)
+    text += "(2023-02-29 00:00:00.000000)  can0  123   [2]  00 11\n"  # no such day
+    raw = text.encode()
+    a = np.full(len(raw) + 1 + candump._PAD, 10, np.uint8)
+    a[: len(raw)] = np.frombuffer(raw, np.uint8)
+    breaks = np.flatnonzero(a[: len(raw)] == 10)
+    starts = np.append(0, breaks[:-1] + 1)
+    found = candump._human_lines(a, starts, breaks, np.arange(len(starts)))
+    assert found.line.tolist() == list(range(len(stamps)))
+    epoch = datetime.datetime(1970, 1, 1, tzinfo=datetime.timezone.utc)
+    expected = [
+        (datetime.datetime.strptime(s, "%Y-%m-%d %H:%M:%S.%f").replace(tzinfo=epoch.tzinfo)
+         - epoch) // datetime.timedelta(microseconds=1)
+        for s in stamps
+    ]  # fmt: skip
+    assert found.micros.tolist() == expected
+    assert found.stamp.tolist() == [m / 1e6 for m in found.micros.tolist()]

@@ -351,11 +351,10 @@ class _Writer:
             self._flush(max(self._bytes, key=self._bytes.__getitem__))
 
     def _flush(self, kind: str) -> None:
-        buffer = self._buffers.pop(kind, [])
-        self._bytes.pop(kind, None)
-        if buffer:
-            self._wait()
-            self._writing = self._thread.submit(self._write, kind, buffer)
+        buffer = self._buffers.pop(kind)  # never empty: `write` adds a table with its key
+        del self._bytes[kind]
+        self._wait()
+        self._writing = self._thread.submit(self._write, kind, buffer)
 
     def _wait(self) -> None:
         if self._writing is not None:

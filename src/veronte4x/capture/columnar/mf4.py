@@ -92,14 +92,11 @@ def _read(mdf: Any, source: Source, batch_bytes: int, size: int) -> Iterator[Bat
             position += len(frames)
             yield Batch(frames, None)
     except Exception:  # damage past the first chunk: python-can's reader goes on from here
-        failed = True
-    else:
-        failed = False
+        pass
     finally:
         mdf.close()
-    if failed:
-        collect_quietly()
-        yield from _python_can(source, size, position)
+    collect_quietly()  # only after damage: the frames' end returns above
+    yield from _python_can(source, size, position)
 
 
 def _groups(mdf: Any) -> Iterator[tuple[int, str, set[str]]]:
