@@ -336,3 +336,11 @@ def test_a_response_delay_holds_each_answer_and_each_read() -> None:
         assert str(refused.value) == (
             f"SimulatedEsc.response_delay = {bad!r}: expected seconds, 0 or above"
         )
+
+
+def test_an_opcode_other_than_save_and_erase_is_refused_with_argument_zero() -> None:
+    """A mutation survivor: the refusal's ``argument`` made -1."""
+    esc = SimulatedEsc(ESC, telem_frequency=0)
+    esc.poll(0.0)
+    reply = ask(esc, dronecan.ExecuteOpcodeRequest(opcode=7), 0.5)
+    assert reply.message == dronecan.ExecuteOpcodeResponse(0, False)

@@ -1,0 +1,46 @@
+"""Behaviours the mutation run found unchecked (`make mutation`, docs/mutation.md): each
+test here fails on the mutant named beside it."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from veronte4x import dronecan
+from veronte4x.errors import EncodeError
+from veronte4x.node.requests import Requester
+from veronte4x.times import EPOCH_THRESHOLD, format_time
+
+
+def test_a_request_of_a_message_that_is_no_request_is_refused() -> None:
+    """``node/requests.py`` (the refusal made ``pass``): nothing is queued or sent."""
+    requester = Requester(node_id=127)
+    status = dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+    for message in (status, dronecan.GetNodeInfoResponse.__name__):
+        with pytest.raises(EncodeError) as refused:
+            requester.request(message, 21, now=0.0)
+        assert str(refused.value) == (
+            f"request.message = {message!r}: expected a DroneCAN service request"
+        )
+    assert requester.take_frames() == []
+
+
+def test_the_epoch_threshold_is_read_as_unix_time() -> None:
+    """``times.py`` (``<`` made ``<=``): at the threshold a time is Unix time, below it a
+    capture's own seconds."""
+    assert format_time(EPOCH_THRESHOLD) == "1973-03-03T09:46:40.000000Z"
+    assert format_time(EPOCH_THRESHOLD - 1e-6) == "99999999.999999"
+
+
+def test_a_classic_frame_of_nine_bytes_is_no_dronecan_frame() -> None:
+    """``canbus.py::is_dronecan_frame`` (``dlc <= 8`` made ``<= 9``)."""
+    can = pytest.importorskip("can")
+    from veronte4x.canbus import is_dronecan_frame
+
+    def frame(size: int) -> Any:
+        return can.Message(
+            arbitration_id=0x1001, is_extended_id=True, data=bytes(size), check=False
+        )
+
+    assert [is_dronecan_frame(frame(size)) for size in (0, 1, 8, 9)] == [False, True, True, False]
