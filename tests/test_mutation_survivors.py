@@ -44,3 +44,22 @@ def test_a_classic_frame_of_nine_bytes_is_no_dronecan_frame() -> None:
         )
 
     assert [is_dronecan_frame(frame(size)) for size in (0, 1, 8, 9)] == [False, True, True, False]
+
+
+def test_a_replay_keeps_two_different_disagreements_of_a_field_apart() -> None:
+    """``arbiter/replay.py`` (a run closed on ``same or`` a new pair, made ``and``): a
+    disagreement followed at once by another one of the same field is two runs, and
+    frames that repeat a disagreement extend its run."""
+    from veronte4x.arbiter.replay import Disagreement, _Comparer
+
+    compare = _Comparer(tolerance=0.0)
+    compare.check(1.0, "selected", 1, 0)
+    compare.check(2.0, "selected", 1, 0)
+    compare.check(3.0, "selected", 2, 0)
+    compare.check(4.0, "selected", 0, 0)
+    compare.check(5.0, "selected", 3, 0)
+    assert compare.finish() == (
+        Disagreement(1.0, 2.0, "selected", 1, 0, 2),
+        Disagreement(3.0, 3.0, "selected", 2, 0, 1),
+        Disagreement(5.0, 5.0, "selected", 3, 0, 1),
+    )
