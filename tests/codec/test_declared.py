@@ -170,3 +170,14 @@ def test_a_big_endian_nan_before_another_field_keeps_its_payload() -> None:
         assert bits_from_float(message.value) == 0x7FA0_0001
         assert message.tag == 0x55
         assert layout.encode(message) == data
+
+
+def test_a_byte_past_the_layout_is_refused_unless_allowed() -> None:
+    """A mutation survivor: ``Layout.decode``'s ``allow_excess`` defaulting to True."""
+    data = bytes.fromhex("0564d0ff00004841") + b"\x00"
+    with pytest.raises(codec.DecodeError) as refused:
+        ESC.decode(data)
+    assert str(refused.value) == (
+        "EscTelemetry: 9 bytes; the layout has 8 (data: 05 64 d0 ff 00 00 48 41 00)"
+    )
+    assert ESC.decode(data, allow_excess=True) == ESC.message_class(50.0, -3, 12.5)
