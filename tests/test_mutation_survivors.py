@@ -63,3 +63,20 @@ def test_a_replay_keeps_two_different_disagreements_of_a_field_apart() -> None:
         Disagreement(3.0, 3.0, "selected", 2, 0, 1),
         Disagreement(5.0, 5.0, "selected", 3, 0, 1),
     )
+
+
+def test_a_bar_of_bytes_counts_in_kilobytes_and_megabytes(capsys: Any) -> None:
+    """``progress.py`` (``unit_scale=unit == "B"`` made ``unit == None``): a bar of bytes
+    reads ``2.10M/4.00M``, a bar of frames counts them one by one."""
+    pytest.importorskip("tqdm")
+    from veronte4x.progress import Bar
+
+    for unit, amount, shown in (
+        ("B", 2_100_000, " 2.10M/4.00M "),
+        ("frames", 2_100, " 2100/4000000 "),
+    ):
+        bar = Bar(True, 4_000_000, unit, "decoding")
+        bar.update(amount)
+        bar._bar.refresh()
+        assert shown in capsys.readouterr().err
+        bar.close()
