@@ -80,3 +80,16 @@ def test_a_bar_of_bytes_counts_in_kilobytes_and_megabytes(capsys: Any) -> None:
         bar._bar.refresh()
         assert shown in capsys.readouterr().err
         bar.close()
+
+
+def test_seconds_past_two_to_the_53_microseconds_stay_exact(tmp_path: Any) -> None:
+    """``capture/dataframe.py`` (the exact path from ``1 << 53`` microseconds made
+    ``1 << 54``): a time in the year 2255 keeps its last microsecond in a DataFrame of
+    seconds (a float64 division of the microseconds would give ...740992)."""
+    pytest.importorskip("pandas")
+    from veronte4x import capture
+
+    log = tmp_path / "late.log"
+    log.write_text("(9007199254.740993) can0 123#0011\n")
+    frame = capture.to_dataframe(capture.read(log), time="seconds")
+    assert repr(float(frame["timestamp"][0])) == "9007199254.740993"
