@@ -135,3 +135,18 @@ def test_the_node_table() -> None:
 
 def test_anything_else_is_its_escaped_repr() -> None:
     assert to_html("<b>") == "<pre>&#x27;&lt;b&gt;&#x27;</pre>"
+
+
+def test_the_span_of_a_capture_and_the_destination_of_a_service(tmp_path: Path) -> None:
+    """Mutation survivors: the span rows and the "to node" row dropped."""
+    stats = capture.stats(capture.read(CAPTURE))
+    rows = _cells(stats._repr_html_())
+    assert ["from", "2025-11-21T15:00:00.000000Z"] in rows
+    assert ["span", "0.501 s"] in rows
+    assert "errors by kind:\n  unknown command" in stats.report()
+    request = dronecan.GetNodeInfoRequest()
+    frames = dronecan.encode(request, source_node_id=127, destination_node_id=21, transfer_id=1)
+    lines = "".join(f"(1.0) can0 {f.can_id:08X}#{f.data.hex().upper()}\n" for f in frames)
+    (tmp_path / "request.log").write_text(lines)
+    (record,) = capture.read(tmp_path / "request.log")
+    assert ["to node", "21"] in _cells(record._repr_html_())

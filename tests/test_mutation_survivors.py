@@ -93,3 +93,19 @@ def test_seconds_past_two_to_the_53_microseconds_stay_exact(tmp_path: Any) -> No
     log.write_text("(9007199254.740993) can0 123#0011\n")
     frame = capture.to_dataframe(capture.read(log), time="seconds")
     assert repr(float(frame["timestamp"][0])) == "9007199254.740993"
+
+
+def test_the_reserved_commands_have_no_layout_and_are_refused() -> None:
+    """``codec/layouts.py`` (``RESERVED_COMMANDS`` {4, 14, 15} made {4, 13, 15}): the
+    commands the Software Manual's message-type table reserves are those without a layout,
+    and a frame of one is refused as reserved or unknown from either sender."""
+    from veronte4x import codec
+    from veronte4x.codec.layouts import RESERVED_COMMANDS
+
+    veronte = codec.Codec()
+    for command in sorted(RESERVED_COMMANDS):
+        data = bytes([command, 0, 0, 0])
+        for sender in codec.Sender:
+            with pytest.raises(codec.UnknownCommandError) as refused:
+                veronte.decode(data, sender=sender)
+            assert f"command byte {command} is reserved or unknown" in str(refused.value)
