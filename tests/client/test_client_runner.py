@@ -10,6 +10,7 @@ import pytest
 
 from veronte4x import dronecan
 from veronte4x.client import operations as ops
+from veronte4x.client.errors import OperationCancelledError
 from veronte4x.client.firmware import Phase, UpdateProgress
 from veronte4x.client.protocol import ClientProtocol
 from veronte4x.dronecan.image_crc import crc64we
@@ -72,11 +73,16 @@ def test_cancel_forgets_its_own_request_only_and_a_late_answer_is_dropped() -> N
     first = runner.start(ops.node_info(21), 0.0)
     second = runner.start(ops.node_info(22), 0.0)
     runner.cancel(first)
-    assert first.done and first.waiting is None and first.error is None
+    assert first.done and first.waiting is None
+    assert isinstance(first.error, OperationCancelledError)
+    with pytest.raises(OperationCancelledError) as cancelled:
+        first.result()  # no result: not None taken for one
+    assert str(cancelled.value) == "the operation was cancelled before it finished"
     assert protocol.next_deadline() == 0.5  # the request to node 22 still waits
     peer.exchange(protocol, runner, 0.01)  # both nodes answer; node 21's answer is dropped
     assert second.result().name == b"iq_motion.esc"
-    assert first.error is None and protocol.next_deadline() is None
+    assert isinstance(first.error, OperationCancelledError)
+    assert protocol.next_deadline() is None
 
 
 def test_a_cancelled_update_stops_serving_its_image() -> None:
@@ -93,7 +99,7 @@ def test_a_cancelled_update_stops_serving_its_image() -> None:
         assert now < 5
     assert _served(protocol, b"firmware.bin") and runner.next_deadline() is not None
     runner.cancel(task)
-    assert task.done and task.error is None
+    assert task.done and isinstance(task.error, OperationCancelledError)
     assert not _served(protocol, b"firmware.bin")
     assert runner.next_deadline() is None
     runner.poll(now + 60)  # its deadline passes: nothing resumes it
@@ -124,7 +130,7 @@ def test_an_update_cancelled_by_another_operation_is_not_resumed_by_the_same_eve
     )
     peer.run(protocol, runner, first, 0.01)
     assert first.result().software_version.image_crc == crc64we(image)
-    assert second.done and second.error is None
+    assert second.done and isinstance(second.error, OperationCancelledError)
     assert phases[0] == (Phase.WAITING, None)
     assert (Phase.READING, Phase.WAITING) in phases  # cancelled while it waited to be read
     assert [p.phase for p in second_seen] == [Phase.WAITING]
@@ -145,7 +151,8 @@ def test_a_batch_stopped_midway_keeps_what_ended_and_forgets_the_rest() -> None:
     assert done.done and not running.done
     batch.cancel()
     assert done.result().name == b"iq_motion.esc"
-    assert running.done and running.error is None and running.waiting is None
+    assert running.done and running.waiting is None
+    assert isinstance(running.error, OperationCancelledError)
     assert len(batch.tasks) == 2 and protocol.next_deadline() is None
 
 

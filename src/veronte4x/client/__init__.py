@@ -16,6 +16,7 @@ from veronte4x.client.errors import (
     FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
+    OperationCancelledError,
     ParameterError,
     RejectedError,
 )
@@ -65,6 +66,7 @@ __all__ = [
     "NoResponseError",
     "NodeEntry",
     "NodeTable",
+    "OperationCancelledError",
     "ParameterError",
     "ParameterInfo",
     "Pending",

@@ -61,3 +61,8 @@ FirmwareUpdateError = FirmwareUpdateFailedError  # old name, kept as an alias
 class InvalidRequestError(ClientError, ValueError):
     """A request refused before anything was sent: an empty parameter name, a value that
     does not parse as the parameter's type, an empty or oversized firmware image."""
+
+
+class OperationCancelledError(ClientError):
+    """The operation was cancelled (`Runner.cancel`) before it finished: it has no result,
+    and what it had asked of a node may or may not have been done."""

@@ -34,6 +34,7 @@ from veronte4x.client.errors import (
     FirmwareUpdateFailedError,
     InvalidRequestError,
     NoResponseError,
+    OperationCancelledError,
     ParameterError,
     RejectedError,
 )
@@ -273,7 +274,8 @@ class Runner:
         return min(times, default=None)
 
     def cancel(self, task: Task[Any]) -> None:
-        """Stop an operation (its pending request is forgotten)."""
+        """Stop an operation (its pending request is forgotten); its `Task.result` then
+        raises `OperationCancelledError`."""
         for handle, waiting in list(self._calls.items()):
             if waiting is task:
                 del self._calls[handle]
@@ -282,6 +284,7 @@ class Runner:
             self._listening.remove(task)
         task.operation.close()
         task.done, task.waiting = True, None
+        task._error = OperationCancelledError("the operation was cancelled before it finished")
 
 
 class OperationBatch:
