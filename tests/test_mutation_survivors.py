@@ -109,3 +109,16 @@ def test_the_reserved_commands_have_no_layout_and_are_refused() -> None:
             with pytest.raises(codec.UnknownCommandError) as refused:
                 veronte.decode(data, sender=sender)
             assert f"command byte {command} is reserved or unknown" in str(refused.value)
+
+
+@pytest.mark.parametrize("timeout", [float("nan"), float("inf"), 0.0, -1.0])
+def test_a_request_timeout_must_be_finite_and_above_zero(timeout: float) -> None:
+    """A NaN timeout timed a request out at once ("nan s each"), an infinite one never:
+    both are refused before anything is queued."""
+    requester = Requester(node_id=127)
+    with pytest.raises(EncodeError) as refused:
+        requester.request(dronecan.GetNodeInfoRequest(), 21, now=0.0, timeout=timeout)
+    assert str(refused.value) == (
+        f"request.timeout = {timeout!r}: expected a finite number of seconds above 0"
+    )
+    assert requester.take_frames() == []

@@ -102,6 +102,11 @@ def test_node_ids_out_of_range_in_plain_words() -> None:
             2,
             f"veronte4x: --duration {duration} must be a finite number of seconds above 0\n",
         )
+    result = veronte4x("esc", "info", "21", "--timeout", "nan", *bus_args(free_port()))
+    assert (result.returncode, result.stderr) == (
+        2,
+        "veronte4x: request.timeout = nan: expected a finite number of seconds above 0\n",
+    )
 
 
 def test_empty_oversized_and_missing_images_are_refused(bus: list[str], tmp_path: Path) -> None:

@@ -8,6 +8,7 @@ whose time is up after their last retry.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -149,11 +150,14 @@ class Requester:
         """Queue a request to ``destination``; return its handle.
 
         Raises:
-            EncodeError: Not a request class, or a field out of range.
+            EncodeError: Not a request class, a field out of range, or a timeout that is
+                not a finite number of seconds above 0.
             TypeError: ``now`` or ``timeout`` is not a number of seconds.
         """
         now = check_seconds("request", "now", now)
         timeout = check_seconds("request", "timeout", timeout)
+        if not 0 < timeout < math.inf:  # NaN would time out at once, inf never
+            raise EncodeError("request", "timeout", timeout, "a finite number of seconds above 0")
         codec = BY_CLASS.get(type(message))
         if codec is None or codec.data_type.kind is not TransferKind.REQUEST:
             raise EncodeError("request", "message", message, "a DroneCAN service request")
