@@ -4,6 +4,7 @@ no timing, errors counted on the row of their CAN ID."""
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 from veronte4x import capture, codec
@@ -12,14 +13,8 @@ from veronte4x.capture.monitor import ArbiterView, MonitorState, render_text
 from veronte4x.capture.records import Record
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
-FLAGS = dict.fromkeys(
-    (
-        "cbit_ok", "pbit_ok", "pdi_ok", "memory_ok", "can_a_ok", "can_b_ok", "cio_low_ok",
-        "cio_high_ok", "power_ok", "bus_a_voltage_ok", "bus_b_voltage_ok",
-        "arbiter_voltage_ok", "ap1_voltage_ok", "ap2_voltage_ok", "ap3_voltage_ok",
-    ),
-    True,
-)  # fmt: skip
+FLAGS = {f.name: True for f in dataclasses.fields(codec.Status) if f.name.endswith("_ok")}
+"""Every check of a Status passed."""
 
 
 def _arbiter(stamp: float, message: codec.Status | codec.Score) -> Record:

@@ -4,6 +4,7 @@ frames without any Score."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any
 
@@ -16,14 +17,8 @@ from veronte4x.capture.records import Record
 
 pytest.importorskip("matplotlib")
 
-FLAGS = dict.fromkeys(
-    (
-        "cbit_ok", "pbit_ok", "pdi_ok", "memory_ok", "can_a_ok", "can_b_ok", "cio_low_ok",
-        "cio_high_ok", "power_ok", "bus_a_voltage_ok", "bus_b_voltage_ok",
-        "arbiter_voltage_ok", "ap1_voltage_ok", "ap2_voltage_ok", "ap3_voltage_ok",
-    ),
-    True,
-)  # fmt: skip
+FLAGS = {f.name: True for f in dataclasses.fields(codec.Status) if f.name.endswith("_ok")}
+"""Every check of a Status passed."""
 Alive = tuple[bool, bool, bool, bool]
 UP: Alive = (True, True, True, False)
 AP1_DEAD: Alive = (False, True, True, False)
