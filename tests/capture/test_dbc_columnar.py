@@ -6,6 +6,7 @@ read back with DuckDB."""
 from __future__ import annotations
 
 import math
+import os
 import subprocess
 import sys
 import tempfile
@@ -23,7 +24,7 @@ from tests.capture.columnar_support import DECLARED, assert_same_tables, write
 from tests.capture.test_dataset import read_back
 from veronte4x import capture
 from veronte4x.capture import BusMap
-from veronte4x.capture.columnar import dataset
+from veronte4x.capture.columnar import dataset, engine
 from veronte4x.errors import SourceError
 
 BUS_MAP = BusMap(dronecan=False)
@@ -302,3 +303,40 @@ def test_a_dbc_message_named_as_a_declared_layout_is_refused(tmp_path: Path) -> 
     bus_map = BusMap(layouts=(DECLARED,))
     with pytest.raises(SourceError, match="both named ScorpionTelemetry: rename one"):
         capture.read_tables(path, bus_map, dbc=[dbc])
+
+
+@pytest.mark.parametrize("source", ["file", "stdin"])
+def test_dbc_frames_take_the_column_wise_path(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, source: str
+) -> None:
+    """A mutation survivor: the DBC pass skipped, its frames decoded one by one instead.
+
+    A file is decoded batch by batch, standard input whole: each path has its DBC pass.
+    """
+    dbc = tmp_path / "one.dbc"
+    dbc.write_text(
+        'VERSION ""\nNS_ :\nBS_:\nBU_: X\nBO_ 1792 Pack: 2 X\n'
+        ' SG_ volts : 0|16@1+ (0.01,0) [0|655.35] "V" X\n'
+    )
+    lines = [f"({i / 10:.6f}) can0 700#{i:02X}05" for i in range(20)]
+    path = write(tmp_path / "x.log", lines)
+    expected = capture.tables_from_records(capture.read(path, BUS_MAP, dbc=[dbc]))
+    if source == "stdin":
+        read, written = os.pipe()
+        with open(written, "wb") as pipe:  # 20 lines: less than a pipe holds
+            pipe.write(path.read_bytes())
+        monkeypatch.setattr(sys, "stdin", open(read, encoding="utf-8"))  # noqa: SIM115
+    taken = []
+    original = engine.per_frame
+
+    def per_frame(frames: object, rows: object, decoder: object) -> object:
+        taken.append(len(rows))  # type: ignore[arg-type]
+        return original(frames, rows, decoder)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(engine, "per_frame", per_frame)
+    tables = capture.read_tables(path if source == "file" else "-", BUS_MAP, dbc=[dbc])
+    if source == "stdin":
+        sys.stdin.close()
+    assert_same_tables(tables, expected)
+    assert tables["Pack"].column("volts").to_pylist()[:2] == [12.8, 12.81]
+    assert taken and sum(taken) == 0

@@ -344,3 +344,14 @@ def test_an_opcode_other_than_save_and_erase_is_refused_with_argument_zero() -> 
     esc.poll(0.0)
     reply = ask(esc, dronecan.ExecuteOpcodeRequest(opcode=7), 0.5)
     assert reply.message == dronecan.ExecuteOpcodeResponse(0, False)
+
+
+def test_a_power_cycle_drops_the_answers_still_held_by_the_response_delay() -> None:
+    """A mutation survivor: `power_cycle` kept the delayed answers of before the cycle."""
+    esc = SimulatedEsc(ESC, telem_frequency=0, response_delay=0.002)
+    esc.poll(0.0)
+    feed(esc, vertiq.get_parameter("esc_index"), 0.5)
+    esc.power_cycle(0.501)
+    assert names(esc.poll(0.501)) == ["NodeStatus"]
+    assert esc.poll(0.502) == [] and esc.poll(0.6) == []
+    assert esc.next_time() == pytest.approx(1.501)
