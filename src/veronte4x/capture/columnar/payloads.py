@@ -26,7 +26,15 @@ import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
-from veronte4x.capture.columnar.schema import scalar_type, struct_type, value_type
+from veronte4x.capture.columnar.schema import (
+    scalar_type,
+    spread,
+    struct_array,
+    struct_type,
+    union_array,
+    value_type,
+    valued_members,
+)
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union, max_bits, min_bits, uses_tao
 
 Ints: TypeAlias = npt.NDArray[np.int64]
@@ -278,11 +286,20 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Arra
         assert isinstance(value, pa.Array)
         return value
     if isinstance(t, Union):
-        raise TypeError(f"{t.name}: a union inside an array has no column type")
+        return union_array(t, value.tag, _members(t, value, size))
     children = [_arrow(f.type, value[f.name], size) for f in t.fields if f.name]
-    if not children:  # a struct without named fields: its items are empty
-        return pa.StructArray.from_buffers(struct_type(t), size, [None], children=[])
-    return pa.StructArray.from_arrays(children, fields=list(struct_type(t)))
+    return struct_array(t, children, size)
+
+
+def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:
+    """The array of each valued member of ``size`` union values (null where another
+    member is set)."""
+    valued = valued_members(t)
+    return [
+        spread(_arrow(member.type, member_values, len(chosen)), chosen, size)
+        for member, (chosen, member_values) in zip(t.members, value.members, strict=True)
+        if member in valued
+    ]
 
 
 def _ordered(item: Struct, pieces: list[pa.Array], places: list[Ints], size: int) -> pa.Array:
@@ -330,13 +347,8 @@ def _flatten(struct: Struct, values: dict[str, Any], prefix: str, out: dict[str,
             _flatten(t, value, name + ".", out)
         elif isinstance(t, Union):
             out[f"{name}.type"] = value.tag
-            size = len(value.tag)
-            for member, (chosen, member_values) in zip(t.members, value.members, strict=True):
-                if isinstance(member.type, Struct):
-                    continue
-                index = np.full(size, -1, np.int64)
-                index[chosen] = np.arange(len(chosen))
-                arrow = _arrow(member.type, member_values, len(chosen))
-                out[f"{name}.{member.name}"] = arrow.take(pa.array(index, mask=index < 0))
+            members = _members(t, value, len(value.tag))
+            for member, arrow in zip(valued_members(t), members, strict=True):
+                out[f"{name}.{member.name}"] = arrow
         else:
             out[name] = value
