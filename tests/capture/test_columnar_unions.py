@@ -40,11 +40,12 @@ pa = pytest.importorskip("pyarrow")
 NAMESPACE = {
     "Nothing": ["# No field at all."],
     "Choice": [
-        "# A union: a byte, a float16, a flag or nothing.",
+        "# A union: a byte, a float16, a flag, a text or nothing.",
         "@union",
         "uint8 small",
         "float16 half",
         "bool flag",
+        "uint8[<=5] label",
         "Nothing nothing",
     ],
     "Holder": ["# A struct holding a union.", "uint8 key", "Choice choice"],
@@ -54,11 +55,12 @@ NAMESPACE = {
         "Holder[<=2] holders",
     ],
     "Wide": [
-        "# A union of a struct holding a union, an array of those, a list, nothing.",
+        "# A union of a struct holding a union, an array of those, a list, a text, nothing.",
         "@union",
         "Holder holder",
         "Holder[<=2] holders",
         "int5[<=3] nibbles",
+        "uint8[<=3] name",
         "Nothing nothing",
     ],
     "Boxed": ["# Padding, and a union with struct and array members.", "void3", "Wide wide"],
@@ -137,6 +139,7 @@ def uni(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Uni]:
 def _choice(member: str, value: Any) -> dict[str, Any]:
     """A ``Choice`` as its columns hold it: the member's name, its value, null elsewhere."""
     out: dict[str, Any] = {"type": member, "small": None, "half": None, "flag": None}
+    out["label"] = None
     if member != "nothing":
         out[member] = value
     return out
@@ -146,6 +149,7 @@ CHOICES: list[tuple[dict[str, Any], dict[str, Any]]] = [
     ({"small": 200}, _choice("small", 200)),
     ({"half": -1.5}, _choice("half", -1.5)),
     ({"flag": True}, _choice("flag", True)),
+    ({"label": "é"}, _choice("label", "é".encode())),
     ({"nothing": {}}, _choice("nothing", None)),
 ]
 """Every member of ``Choice``: its plain data and its column value."""
@@ -154,6 +158,15 @@ CHOICES: list[tuple[dict[str, Any], dict[str, Any]]] = [
 def _holder(key: int, choice: int) -> tuple[dict[str, Any], dict[str, Any]]:
     data, column = CHOICES[choice]
     return {"key": key, "choice": data}, {"key": key, "choice": column}
+
+
+def _wide(member: str, value: Any) -> dict[str, Any]:
+    """A ``Wide`` as its columns hold it (without the prefix ``value.``)."""
+    out: dict[str, Any] = {"type": member, "holder": None, "holders": None, "nibbles": None}
+    out["name"] = None
+    if member != "nothing":
+        out[member] = value
+    return out
 
 
 def _tables(uni: Uni, path: Path) -> dict[str, Any]:
@@ -172,32 +185,35 @@ def test_a_union_in_a_list_is_a_struct_of_its_top_level_columns(uni: Uni) -> Non
             ("small", pa.uint8()),
             ("half", pa.float32()),
             ("flag", pa.bool_()),
+            ("label", pa.binary()),
         ]
     )
     holder = pa.struct([("key", pa.uint8()), ("choice", choice)])
     columns = {c.name: c.type for c in uni.specs["Fixed"].columns}
     assert columns == {"pair": pa.list_(holder), "after": pa.uint8()}
-    top = {c.name: c.type for c in uni.specs["Top"].columns}
-    assert top == {
+    top = dronecan_specs(uni.types)["Top"]  # text as strings, the default
+    assert {c.name: c.type for c in top.columns} == {
         "value.type": pa.dictionary(pa.uint8(), pa.string()),
         "value.holder": holder,
         "value.holders": pa.list_(holder),
         "value.nibbles": pa.list_(pa.int8()),
+        "value.name": pa.string(),
     }
-    [tag] = [c for c in uni.specs["Top"].columns if c.name == "value.type"]
-    assert tag.names == ("holder", "holders", "nibbles", "nothing")
+    assert top.texts == {"value.name"}  # text inside the structs stays binary
+    [tag] = [c for c in top.columns if c.name == "value.type"]
+    assert tag.names == ("holder", "holders", "nibbles", "name", "nothing")
 
 
 def test_every_member_in_static_and_dynamic_arrays(uni: Uni, tmp_path: Path) -> None:
     """Every member of the union in every place, arrays empty and full, exact values."""
     items: list[tuple[str, dict[str, Any]]] = []
     expected: dict[str, list[dict[str, Any]]] = {kind: [] for kind in KINDS}
-    for n in range(4):
-        a, b = _holder(n, n), _holder(255 - n, 3 - n)
+    for n in range(5):
+        a, b = _holder(n, n), _holder(255 - n, 4 - n)
         items.append(("Fixed", {"pair": [a[0], b[0]], "after": n}))
         expected["Fixed"].append({"pair": [a[1], b[1]], "after": n})
     for count in range(4):
-        held = [_holder(10 * count + k, (count + k) % 4) for k in range(count)]
+        held = [_holder(10 * count + k, (count + k) % 5) for k in range(count)]
         for kind, other in (("Tail", "code"), ("Middle", "after")):
             items.append((kind, {other: count, "holders": [h[0] for h in held]}))
             expected[kind].append({other: count, "holders": [h[1] for h in held]})
@@ -218,17 +234,12 @@ def test_unions_one_level_further_and_with_struct_and_array_members(
         {"inner": h1[0], "holders": [h2[0], h0[0]]},
     ]
     wides = [
-        ({"holder": h1[0]}, {"type": "holder", "holder": h1[1], "holders": None, "nibbles": None}),
-        (
-            {"holders": [h2[0], h0[0]]},
-            {"type": "holders", "holder": None, "holders": [h2[1], h0[1]], "nibbles": None},
-        ),
-        ({"holders": []}, {"type": "holders", "holder": None, "holders": [], "nibbles": None}),
-        (
-            {"nibbles": [-16, 15, 0]},
-            {"type": "nibbles", "holder": None, "holders": None, "nibbles": [-16, 15, 0]},
-        ),
-        ({"nothing": {}}, {"type": "nothing", "holder": None, "holders": None, "nibbles": None}),
+        ({"holder": h1[0]}, _wide("holder", h1[1])),
+        ({"holders": [h2[0], h0[0]]}, _wide("holders", [h2[1], h0[1]])),
+        ({"holders": []}, _wide("holders", [])),
+        ({"nibbles": [-16, 15, 0]}, _wide("nibbles", [-16, 15, 0])),
+        ({"nothing": {}}, _wide("nothing", None)),
+        ({"name": "ab"}, _wide("name", "ab")),  # a text: a string at the top level
     ]
     items: list[tuple[str, dict[str, Any]]] = [
         ("Deep", {"outers": outers}),
@@ -238,6 +249,7 @@ def test_unions_one_level_further_and_with_struct_and_array_members(
     items += [("Boxes", {"boxes": [{"wide": data} for data, _ in wides[:2]], "after": 9})]
     items += [("Boxes", {"boxes": [{"wide": data} for data, _ in wides[2:4]], "after": 15})]
     items += [("Boxes", {"boxes": [], "after": 0})]
+    items += [("Boxes", {"boxes": [{"wide": {"name": "ab"}}], "after": 1})]
     path = write(tmp_path / "deep.log", uni.lines(items))
     got = _tables(uni, path)
     deep = [row["outers"] for row in rows(got["Deep"])]
@@ -255,6 +267,7 @@ def test_unions_one_level_further_and_with_struct_and_array_members(
         ([{"wide": column} for _, column in wides[:2]], 9),
         ([{"wide": column} for _, column in wides[2:4]], 15),
         ([], 0),
+        ([{"wide": _wide("name", b"ab")}], 1),  # a text inside a list: its bytes
     ]
 
 
