@@ -28,14 +28,15 @@ for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule o
 ``debug.LogMessage``, the union member ``string_value``), applied here to every type set,
 vendor namespaces included. With the text form ``string`` (`TextForm`, the default) those
 columns are Arrow ``string``, checked by `veronte4x.capture.columnar.text`; with
-``binary`` they keep their exact bytes. Text fields inside lists of structs stay binary
-(the standard set has none). A field named as a head column (``HEAD_NAMES``:
-``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``, ``destination_node_id``)
-or as a column a Parquet dataset adds (``DATASET_NAMES``: ``source``, ``capture``) becomes
-``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
-``message.source`` of ``debug.LogMessage``, a vendor type's ``message.channel``); fields
-inside lists of structs, and those named ``error``, ``detail`` or ``data`` (columns of the
-``errors`` and ``unknown`` tables only), keep their names.
+``binary`` they keep their exact bytes. Text fields inside lists of structs and inside a
+union's struct member stay binary (the standard set has none). A field named as a head
+column (``HEAD_NAMES``: ``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``,
+``destination_node_id``) or as a column a Parquet dataset adds (``DATASET_NAMES``:
+``source``, ``capture``) becomes ``message.`` and its name (``message.node_id`` of
+``dynamic_node_id.Allocation``, ``message.source`` of ``debug.LogMessage``, a vendor type's
+``message.channel``); fields inside lists of structs, and those named ``error``,
+``detail`` or ``data`` (columns of the ``errors`` and ``unknown`` tables only), keep their
+names.
 """
 
 from __future__ import annotations
