@@ -80,15 +80,23 @@ NAMESPACE = {
         "Outer[<=2] outers",
     ],
     "20304.Top": ["# A top-level union with struct and array members.", "Wide value"],
+    "Row": ["# Ends in an array of a union.", "uint4 k", "Choice[<=2] choices"],
+    "20306.Choices": ["# An array of a union in tail position.", "Choice[<=3] choices"],
+    "20307.Pairs": [
+        "# A static array of a union, before another field.",
+        "Choice[2] pair",
+        "uint8 after",
+    ],
+    "20308.Rows": ["# Items ending in an array of a union.", "Row[<=3] rows"],
     "20305.Boxes": [
         "# Items holding that union, before another field.",
         "Boxed[<=2] boxes",
         "uint4 after",
     ],
 }
-"""The namespace ``uni``: every message holds a union inside an array of structs, or
-a union with struct and array members."""
-KINDS = ["Fixed", "Tail", "Middle", "Deep", "Top", "Boxes"]
+"""The namespace ``uni``: every message holds a union inside an array of structs, an
+array of a union, or a union with struct and array members."""
+KINDS = ["Fixed", "Tail", "Middle", "Deep", "Top", "Boxes", "Choices", "Pairs", "Rows"]
 
 
 @dataclass(frozen=True)
@@ -223,6 +231,32 @@ def test_every_member_in_static_and_dynamic_arrays(uni: Uni, tmp_path: Path) -> 
     for kind in ("Fixed", "Tail", "Middle"):
         fields = [c.name for c in uni.specs[kind].columns]
         assert [{k: row[k] for k in fields} for row in rows(got[kind])] == expected[kind], kind
+
+
+def test_arrays_of_a_union(uni: Uni, tmp_path: Path) -> None:
+    """``Choice[<=3]`` in tail position, ``Choice[2]`` before a field, and items ending in
+    ``Choice[<=2]``: every member, arrays empty and full, exact values."""
+    items: list[tuple[str, dict[str, Any]]] = []
+    expected: dict[str, list[Any]] = {"Choices": [], "Pairs": [], "Rows": []}
+    for n in range(5):
+        chosen = [CHOICES[(n + k) % 5] for k in range(min(n, 3))]
+        items.append(("Choices", {"choices": [data for data, _ in chosen]}))
+        expected["Choices"].append({"choices": [column for _, column in chosen]})
+        pair = [CHOICES[n], CHOICES[4 - n]]
+        items.append(("Pairs", {"pair": [data for data, _ in pair], "after": n}))
+        expected["Pairs"].append({"pair": [column for _, column in pair], "after": n})
+        rows_ = [(k, [CHOICES[(n + k + j) % 5] for j in range(k % 3)]) for k in range(n % 4)]
+        items.append(("Rows", {"rows": [{"k": k, "choices": [d for d, _ in c]} for k, c in rows_]}))
+        expected["Rows"].append(
+            {"rows": [{"k": k, "choices": [c for _, c in cs]} for k, cs in rows_]}
+        )
+    path = write(tmp_path / "choices.log", uni.lines(items))
+    got = _tables(uni, path)
+    for kind, values in expected.items():
+        fields = [c.name for c in uni.specs[kind].columns]
+        assert [{k: row[k] for k in fields} for row in rows(got[kind])] == values, kind
+    choice = uni.specs["Fixed"].columns[0].type.value_type.field("choice").type
+    assert [c.type for c in uni.specs["Choices"].columns] == [pa.list_(choice)]
 
 
 def test_unions_one_level_further_and_with_struct_and_array_members(

@@ -22,7 +22,6 @@ from veronte4x.dronecan.parser import (
     ArrayType,
     Attribute,
     Definition,
-    DsdlError,
     FieldType,
     PrimitiveType,
     check_references,
@@ -136,8 +135,7 @@ class _Builder:
             return self.build(t)
         if isinstance(t, ArrayType):
             item = self._type(d, t.item, line)
-            if isinstance(item, (Union, Array)):
-                raise DsdlError(d.path, line, "an array of unions is not supported")
+            assert not isinstance(item, Array)  # refused by the parser, naming the line
             return Array(item, t.max_size, t.dynamic)
         return _scalar(t)
 

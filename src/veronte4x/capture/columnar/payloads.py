@@ -30,7 +30,6 @@ from veronte4x.capture.columnar.schema import (
     scalar_type,
     spread,
     struct_array,
-    struct_type,
     union_array,
     value_type,
     valued_members,
@@ -168,7 +167,7 @@ class _Reader:
     def array(self, t: Array, row: Ints, pos: Ints, tao: bool) -> tuple[pa.Array, Ints]:
         """An array's values (an Arrow list, or binary for uint8 items) over a group."""
         item = t.item
-        if isinstance(item, Struct) and tao and uses_tao(t):
+        if not isinstance(item, Scalar) and tao and uses_tao(t):
             return self.tail_structs(t, item, row, pos)
         if tao and uses_tao(t):
             assert isinstance(item, Scalar)
@@ -186,7 +185,7 @@ class _Reader:
             count = np.minimum(count, t.max_size)
         offsets = np.zeros(len(row) + 1, np.int64)
         np.cumsum(count, out=offsets[1:])
-        if isinstance(item, Struct):
+        if not isinstance(item, Scalar):
             return self.structs(t, item, row, pos, count, offsets, tao)
         within = np.arange(offsets[-1]) - np.repeat(offsets[:-1], count)
         item_pos = np.repeat(pos, count) + within * item.bits
@@ -197,21 +196,21 @@ class _Reader:
     def structs(
         self,
         t: Array,
-        item: Struct,
+        item: Struct | Union,
         row: Ints,
         pos: Ints,
         count: Ints,
         offsets: Ints,
         tao: bool,
     ) -> tuple[pa.Array, Ints]:
-        """An array of structs with a known number of items per element. Items of one
+        """An array of structs or unions with a known number of items per element. Items of one
         fixed size are read together; others one item index at a time (the last item of
         an element inherits its tail position)."""
         size = min_bits(item)
         if size == max_bits(item) and not (tao and _tail_array(item)):
             within = np.arange(offsets[-1]) - np.repeat(offsets[:-1], count)
             item_pos = np.repeat(pos, count) + within * size
-            values, _ = self.struct(item, np.repeat(row, count), item_pos, False)
+            values, _ = self.value(item, np.repeat(row, count), item_pos, False)
             self.check(row, pos + count * size)
             items = _arrow(item, values, int(offsets[-1]))
             return _list(t, offsets, items), pos + count * size
@@ -224,14 +223,16 @@ class _Reader:
                 chosen = np.flatnonzero(mask)
                 if not len(chosen):
                     continue
-                values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], tail)
+                values, pos[chosen] = self.value(item, row[chosen], pos[chosen], tail)
                 pieces.append(_arrow(item, values, len(chosen)))
                 places.append(offsets[chosen] + k)
         return _list(t, offsets, _ordered(item, pieces, places, int(offsets[-1]))), pos
 
-    def tail_structs(self, t: Array, item: Struct, row: Ints, pos: Ints) -> tuple[pa.Array, Ints]:
-        """An array of structs under the tail array optimisation: items while a whole byte
-        remains, one item index at a time."""
+    def tail_structs(
+        self, t: Array, item: Struct | Union, row: Ints, pos: Ints
+    ) -> tuple[pa.Array, Ints]:
+        """An array of structs or unions under the tail array optimisation: items while a
+        whole byte remains, one item index at a time."""
         pos = pos.copy()
         count = np.zeros(len(row), np.int64)
         going = np.ones(len(row), np.bool_)
@@ -244,7 +245,7 @@ class _Reader:
             if k == t.max_size:
                 self.bad[row[chosen]] = True
                 break
-            values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], False)
+            values, pos[chosen] = self.value(item, row[chosen], pos[chosen], False)
             count[chosen] += 1
             found.append((chosen, _arrow(item, values, len(chosen))))
         offsets = np.zeros(len(row) + 1, np.int64)
@@ -254,9 +255,11 @@ class _Reader:
         return _list(t, offsets, items), pos
 
 
-def _tail_array(struct: Struct) -> bool:
+def _tail_array(struct: Struct | Union) -> bool:
     """Whether the tail position changes how a struct reads: its last field ends in a
-    dynamic array the tail array optimisation applies to."""
+    dynamic array the tail array optimisation applies to (or may, for a union)."""
+    if isinstance(struct, Union):
+        return True
     if not struct.fields:
         return False
     t = struct.fields[-1].type
@@ -302,10 +305,12 @@ def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:
     ]
 
 
-def _ordered(item: Struct, pieces: list[pa.Array], places: list[Ints], size: int) -> pa.Array:
+def _ordered(
+    item: Struct | Union, pieces: list[pa.Array], places: list[Ints], size: int
+) -> pa.Array:
     """Items decoded in pieces, put at their places."""
     if not pieces:
-        return pa.array([], struct_type(item))
+        return pa.array([], value_type(item))
     joined = pa.concat_arrays(pieces)
     where = np.concatenate(places)
     order = np.empty(size, np.int64)

@@ -287,7 +287,7 @@ def _struct_columns(
             columns += _struct_columns(t, name + ".", where, texts)
         elif isinstance(t, Union):
             columns += _union_columns(t, name, where, texts)
-        elif isinstance(t, Array) and isinstance(t.item, Struct):
+        elif isinstance(t, Array) and not isinstance(t.item, Scalar):
             columns.append(Column(name, value_type(t), _path(where), dsdl=t))
         elif f.name in texts.get(struct.cls, ()):
             columns.append(Column(name, pa.string(), _path(where), text=True))
@@ -426,7 +426,7 @@ def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts
             columns.append(Column(f"{name}.{member.name}", pa.string(), get, text=True))
             continue
         t = member.type
-        nested = isinstance(t, Struct) or (isinstance(t, Array) and isinstance(t.item, Struct))
+        nested = isinstance(t, Struct) or (isinstance(t, Array) and not isinstance(t.item, Scalar))
         dsdl = t if nested else None
         columns.append(Column(f"{name}.{member.name}", value_type(t), get, dsdl=dsdl))
     return columns
