@@ -360,6 +360,7 @@ def test_to_parquet_read_back_with_duckdb(uni: Uni, tmp_path: Path) -> None:
         ("Middle", {"holders": [], "after": 4}),
         ("Top", {"value": {"holders": [h1[0]]}}),
         ("Top", {"value": {"nibbles": [-3]}}),
+        ("Choices", {"choices": [{"flag": True}, {"label": "é"}]}),
     ]
     path = write(tmp_path / "capture.log", uni.lines(items))
     out = tmp_path / "out"
@@ -377,9 +378,12 @@ def test_to_parquet_read_back_with_duckdb(uni: Uni, tmp_path: Path) -> None:
     assert got == [("holders", -1.5), ("nibbles", None)]
     got = _duckdb(out, top.format(column='"value.nibbles", "value.holder"'))
     assert got == [(None, None), ([-3], None)]
+    choices = "SELECT choices[1].type, choices[1].flag, choices[2].label FROM read_parquet("
+    got = _duckdb(out, choices + "'{out}/capture=*/Choices.parquet')")
+    assert got == [("flag", True, "é".encode())]
     expected = capture.read_tables(path, uni.bus_map)
     duckdb = pytest.importorskip("duckdb")
-    for kind in ("Middle", "Top"):
+    for kind in ("Middle", "Top", "Choices"):
         files = f"'{out}/capture=*/{kind}.parquet'"
         query = f"SELECT * EXCLUDE (source) FROM read_parquet({files}, hive_partitioning = false)"
         assert rows(duckdb.connect().sql(query).to_arrow_table()) == rows(expected[kind]), kind
