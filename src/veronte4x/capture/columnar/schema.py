@@ -396,7 +396,7 @@ def arrow_values(t: Scalar | Array | Struct | Union, values: Sequence[Any]) -> p
             if member not in valued:
                 continue
             chosen = np.flatnonzero(tag == index)
-            inner = [member_value(member, values[i]) for i in chosen.tolist()]
+            inner = [_member_value(member, values[i]) for i in chosen.tolist()]
             members.append(spread(arrow_values(member.type, inner), chosen, len(values)))
         return union_array(t, tag, members)
     if isinstance(t, Array) and not t.is_bytes:
@@ -407,7 +407,7 @@ def arrow_values(t: Scalar | Array | Struct | Union, values: Sequence[Any]) -> p
     return pa.array(list(values), value_type(t))
 
 
-def member_value(member: Member, value: Any) -> Any:
+def _member_value(member: Member, value: Any) -> Any:
     """The value of a union member from the object that holds it (a struct member's
     object is its value)."""
     return value if isinstance(member.type, Struct) else value.value
@@ -435,7 +435,7 @@ def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts
 def _member(get_value: Callable[[Any], Any], member: Member) -> Callable[[Any], Any]:
     def get(message: Any) -> Any:
         value = get_value(message)
-        return member_value(member, value) if type(value) is member.cls else None
+        return _member_value(member, value) if type(value) is member.cls else None
 
     return get
 
