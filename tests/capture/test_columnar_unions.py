@@ -88,6 +88,8 @@ NAMESPACE = {
         "uint8 after",
     ],
     "20308.Rows": ["# Items ending in an array of a union.", "Row[<=3] rows"],
+    "Tagged": ["# A member named as the tag.", "@union", "uint8 type", "int4 c", "bool b"],
+    "20309.Tags": ["Tagged tag", "Tagged[<=2] tags"],
     "20305.Boxes": [
         "# Items holding that union, before another field.",
         "Boxed[<=2] boxes",
@@ -96,7 +98,7 @@ NAMESPACE = {
 }
 """The namespace ``uni``: every message holds a union inside an array of structs, an
 array of a union, or a union with struct and array members."""
-KINDS = ["Fixed", "Tail", "Middle", "Deep", "Top", "Boxes", "Choices", "Pairs", "Rows"]
+KINDS = ["Fixed", "Tail", "Middle", "Deep", "Top", "Boxes", "Choices", "Pairs", "Rows", "Tags"]
 
 
 @dataclass(frozen=True)
@@ -257,6 +259,43 @@ def test_arrays_of_a_union(uni: Uni, tmp_path: Path) -> None:
         assert [{k: row[k] for k in fields} for row in rows(got[kind])] == values, kind
     choice = uni.specs["Fixed"].columns[0].type.value_type.field("choice").type
     assert [c.type for c in uni.specs["Choices"].columns] == [pa.list_(choice)]
+
+
+def test_a_member_named_type_keeps_the_tag_column(uni: Uni, tmp_path: Path) -> None:
+    """A member ``type`` has the column ``tag.type_``; ``tag.type`` stays the tag (two
+    columns ``tag.type`` before, and a table that could not be built)."""
+    tagged = pa.struct(
+        [
+            ("type", pa.dictionary(pa.uint8(), pa.string())),
+            ("type_", pa.uint8()),
+            ("c", pa.int8()),
+            ("b", pa.bool_()),
+        ]
+    )
+    assert {c.name: c.type for c in uni.specs["Tags"].columns} == {
+        "tag.type": tagged.field("type").type,
+        "tag.type_": pa.uint8(),
+        "tag.c": pa.int8(),
+        "tag.b": pa.bool_(),
+        "tags": pa.list_(tagged),
+    }
+    items: list[tuple[str, dict[str, Any]]] = [
+        ("Tags", {"tag": {"type": 200}, "tags": [{"type": 9}, {"c": -8}]}),
+        ("Tags", {"tag": {"c": 7}, "tags": []}),
+    ]
+    got = _tables(uni, write(tmp_path / "tags.log", uni.lines(items)))
+    fields = [c.name for c in uni.specs["Tags"].columns]
+    none = {"type_": None, "c": None, "b": None}
+    assert [[row[k] for k in fields] for row in rows(got["Tags"])] == [
+        [
+            "type",
+            200,
+            None,
+            None,
+            [{**none, "type": "type", "type_": 9}, {**none, "type": "c", "c": -8}],
+        ],
+        ["c", None, 7, None, []],
+    ]
 
 
 def test_unions_one_level_further_and_with_struct_and_array_members(

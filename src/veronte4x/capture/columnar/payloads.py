@@ -297,7 +297,7 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Arra
 def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:
     """The array of each valued member of ``size`` union values (null where another
     member is set)."""
-    valued = valued_members(t)
+    valued = [member for _, member in valued_members(t)]
     return [
         spread(_arrow(member.type, member_values, len(chosen)), chosen, size)
         for member, (chosen, member_values) in zip(t.members, value.members, strict=True)
@@ -353,7 +353,7 @@ def _flatten(struct: Struct, values: dict[str, Any], prefix: str, out: dict[str,
         elif isinstance(t, Union):
             out[f"{name}.type"] = value.tag
             members = _members(t, value, len(value.tag))
-            for member, arrow in zip(valued_members(t), members, strict=True):
-                out[f"{name}.{member.name}"] = arrow
+            for (field, _), arrow in zip(valued_members(t), members, strict=True):
+                out[f"{name}.{field}"] = arrow
         else:
             out[name] = value

@@ -320,15 +320,18 @@ def union_type(union: Union) -> pa.DataType:
     (`valued_members`), null but for the member set: the top-level columns
     ``name.type``, ``name.<member>`` as the fields of a struct ``name``."""
     names = tuple(member.name for member in union.members)
-    fields = [pa.field(m.name, value_type(m.type)) for m in valued_members(union)]
+    fields = [pa.field(field, value_type(m.type)) for field, m in valued_members(union)]
     return pa.struct([pa.field("type", enum_type(names)), *fields])
 
 
-def valued_members(union: Union) -> tuple[Member, ...]:
-    """The members of a union that hold a value: all but structs without named fields
-    (``Empty``), whose name says it all."""
+def valued_members(union: Union) -> tuple[tuple[str, Member], ...]:
+    """The members of a union that hold a value, each with the name of its field or
+    column: all but structs without named fields (``Empty``), whose name says it all. The
+    name is the member's, but ``type_`` for a member named ``type``, the tag's name (no
+    other member is named ``type_``: their classes would take one name, which
+    `veronte4x.dronecan.load_dsdl` refuses)."""
     return tuple(
-        m
+        ("type_" if m.name == "type" else m.name, m)
         for m in union.members
         if not (isinstance(m.type, Struct) and not any(f.name for f in m.type.fields))
     )
@@ -390,7 +393,7 @@ def arrow_values(t: Scalar | Array | Struct | Union, values: Sequence[Any]) -> p
     if isinstance(t, Union):
         classes = {member.cls: index for index, member in enumerate(t.members)}
         tag = np.array([classes[type(value)] for value in values], np.int64)
-        valued = valued_members(t)
+        valued = [member for _, member in valued_members(t)]
         members = []
         for index, member in enumerate(t.members):
             if member not in valued:
@@ -420,15 +423,15 @@ def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts
     columns = [
         Column(f"{name}.type", enum_type(members), lambda m: classes[type(get_value(m))], members)
     ]
-    for member in valued_members(union):
+    for field, member in valued_members(union):
         get = _member(get_value, member)
         if "value" in texts.get(member.cls, ()):
-            columns.append(Column(f"{name}.{member.name}", pa.string(), get, text=True))
+            columns.append(Column(f"{name}.{field}", pa.string(), get, text=True))
             continue
         t = member.type
         nested = isinstance(t, Struct) or (isinstance(t, Array) and not isinstance(t.item, Scalar))
         dsdl = t if nested else None
-        columns.append(Column(f"{name}.{member.name}", value_type(t), get, dsdl=dsdl))
+        columns.append(Column(f"{name}.{field}", value_type(t), get, dsdl=dsdl))
     return columns
 
 
