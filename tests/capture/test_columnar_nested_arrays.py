@@ -4,14 +4,10 @@ tail position and before another field), items of a few bits in tail position (e
 a scalar, a static array, a nested struct, an array of structs), a static array of structs
 in tail position, and items without named fields (an empty struct, padding alone).
 
-Branches of `veronte4x.capture.columnar.payloads` no input reaches:
-
-- ``payloads.py:231`` (the loop of ``tail_structs`` running to its end): its last pass,
-  ``k == t.max_size``, breaks whether any element still has a whole byte left (too many
-  items: refused) or not.
-- ``payloads.py:280`` (``_arrow`` of a union): the tables' schema
-  (`veronte4x.capture.columnar.schema.value_type`) refuses a union inside an array of
-  structs before any payload is decoded, with the same message.
+A branch of `veronte4x.capture.columnar.payloads` no input reaches:
+``payloads.py:239`` (the loop of ``tail_structs`` running to its end): its last pass,
+``k == t.max_size``, breaks whether any element still has a whole byte left (too many
+items: refused) or not. Unions inside arrays of structs are in `test_columnar_unions`.
 """
 
 from __future__ import annotations

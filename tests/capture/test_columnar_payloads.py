@@ -54,7 +54,7 @@ def check(found: TypeCodec, items: list[bytes], specs: dict[str, Any] = SPECS) -
             value = columns[column.name]
             got = value[row].as_py() if isinstance(value, pa.Array) else value[row].item()
             if column.names is None:  # through Arrow, as the record tables hold it
-                expected = pa.array([column.get(message)], column.type)[0].as_py()
+                expected = pa.array(column.values([message]), column.type)[0].as_py()
             else:
                 expected = column.get(message)
             assert _same(got, expected), (column.name, payload.hex())

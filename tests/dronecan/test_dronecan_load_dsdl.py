@@ -416,3 +416,14 @@ def test_cli_bad_dsdl_is_one_line_and_exit_2(tmp_path: Path) -> None:
     assert (
         result.stderr == f"veronte4x: {tmp_path / 'missing'}: not a directory of DSDL definitions\n"
     )
+
+
+def test_a_union_in_a_union_names_its_line(tmp_path: Path, default_types: None) -> None:
+    """DSDL v0 allows it, veronte4x does not: it raised TypeError from the generated
+    classes."""
+    files = {"U.uavcan": "@union\nuint8 a\nbool b\n", "V.uavcan": "@union\nuint8 c\nU u\n"}
+    root = _namespace(tmp_path / "bad", {**files, "20999.Broken.uavcan": "V v\n"})
+    with pytest.raises(DsdlError) as error:
+        v4.load_dsdl(root)
+    assert str(error.value) == f"{root}/V.uavcan:3: a union in a union is not supported"
+    assert v4.default_types() is TypeSet.standard()  # unchanged

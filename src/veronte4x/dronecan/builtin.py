@@ -62,7 +62,7 @@ def _convert(value: Any, t: Any) -> Any:
         inner = value if isinstance(member.type, Struct) else value.value
         return {member.name: _convert(inner, member.type)}
     if isinstance(t, Array):
-        if isinstance(t.item, Struct):
+        if isinstance(t.item, (Struct, Union)):
             return [_convert(item, t.item) for item in value]
         return list(value)
     if isinstance(value, enum.Enum):
@@ -124,7 +124,7 @@ def _build(t: Any, data: Any, enum: type | None, path: str) -> Any:
                 return bytes(data.encode() if isinstance(data, str) else data)
             except (TypeError, ValueError):
                 raise EncodeError(t.dsdl, path, data, "byte values 0..255") from None
-        if isinstance(t.item, Struct):
+        if isinstance(t.item, (Struct, Union)):
             return tuple(_build(t.item, item, None, f"{path}[{i}]") for i, item in enumerate(data))
         return tuple(data)
     if enum is not None and isinstance(data, int):

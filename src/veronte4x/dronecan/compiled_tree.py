@@ -134,7 +134,7 @@ def _static(t: Scalar | Array | Struct | Union) -> bool:
 def _tail_differs(t: Scalar | Array | Struct | Union) -> bool:
     """Whether ``t`` in tail position holds an array under the tail array rule."""
     if isinstance(t, Array):
-        return uses_tao(t) or (isinstance(t.item, Struct) and _tail_differs(t.item))
+        return uses_tao(t) or (not isinstance(t.item, Scalar) and _tail_differs(t.item))
     if isinstance(t, Struct):
         return bool(t.fields) and _tail_differs(t.fields[-1].type)
     if isinstance(t, Union):
@@ -354,7 +354,7 @@ class _Decoder(_Writer):
     def array(self, t: Array, tao: bool) -> str:
         item = t.item
         tail = tao and uses_tao(t)
-        if isinstance(item, Struct):
+        if not isinstance(item, Scalar):
             return self.struct_array(t, item, tao)
         if not t.dynamic:
             k: str = str(t.max_size)
@@ -418,7 +418,8 @@ class _Decoder(_Writer):
             self.advance(f"{k} * {item.bits}", 0 if item.bits % 8 == 0 else None)
         return v
 
-    def struct_array(self, t: Array, item: Struct, tao: bool) -> str:
+    def struct_array(self, t: Array, item: Struct | Union, tao: bool) -> str:
+        """An array of structs or unions: its items one by one."""
         tail = tao and uses_tao(t)
         items = self.fresh("a")
         static = _static(item)
@@ -445,12 +446,12 @@ class _Decoder(_Writer):
             if not k:
                 self.emit(f"if len({items}) == {t.max_size}:")
                 self.emit("    raise SlowPath")
-            self.emit(f"{items}.append({self.struct(item, False)})")
+            self.emit(f"{items}.append({self.value(item, False)})")
             self.flush()
         if last_tail:
             self.pmod = None
             with self.block(f"if {k}:"):
-                self.emit(f"{items}.append({self.struct(item, True)})")
+                self.emit(f"{items}.append({self.value(item, True)})")
                 self.flush()
         self.pmod = outer if mod == 0 else None
         return f"tuple({items})"
@@ -586,6 +587,15 @@ class _Encoder(_Writer):
             if last_tail:
                 with self.block(f"if {v}:"):
                     self.counted(lambda: self.struct(item, f"{v}[-1]", True))
+            return
+        if isinstance(item, Union):
+            last_tail = tao and not tail and _tail_differs(item)
+            e = self.fresh("e")
+            with self.block(f"for {e} in {v}[:-1]:" if last_tail else f"for {e} in {v}:"):
+                self.counted(lambda: self.union(item, e, False))
+            if last_tail:
+                with self.block(f"if {v}:"):
+                    self.counted(lambda: self.union(item, f"{v}[-1]", True))
             return
         bits = f"len({v}) * {item.bits}"
         if is_whole(item):

@@ -234,7 +234,7 @@ def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
                 raise DsdlError(d.path, None, "a union as a top-level type is not supported")
             candidates += _enum_candidates(key, section)
             if section.union:
-                result.members[key] = _member_names(key, d, section, result.names, taken)
+                result.members[key] = _member_names(key, d, section, definitions, result, taken)
     counts: dict[str, int] = {}
     for *_, prefix in candidates:
         counts[_camel(prefix.lower())] = counts.get(_camel(prefix.lower()), 0) + 1
@@ -251,12 +251,20 @@ def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
 
 
 def _member_names(
-    key: str, d: Definition, section: Section, names: dict[str, str], taken: set[str]
+    key: str,
+    d: Definition,
+    section: Section,
+    definitions: dict[str, Definition],
+    result: Plan,
+    taken: set[str],
 ) -> tuple[str, ...]:
     members = []
     for a in section.fields:
         target = a.type if isinstance(a.type, str) else None
-        name = names[target] if target is not None else names[key] + _camel(a.name)
+        inner = definitions.get(target) if target is not None else None
+        if inner is not None and inner.sections[0].union:
+            raise DsdlError(d.path, a.line, "a union in a union is not supported")
+        name = result.names[target] if target is not None else result.names[key] + _camel(a.name)
         if name in members:
             raise DsdlError(d.path, a.line, f"two members of the union hold a {name}")
         if target is None:

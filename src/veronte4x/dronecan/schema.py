@@ -42,13 +42,14 @@ class Scalar:
 
 @dataclass(frozen=True)
 class Array:
-    """An array of scalars or structs: fixed ``[max_size]`` or dynamic ``[<=max_size]``.
+    """An array of scalars, structs or unions: fixed ``[max_size]`` or dynamic
+    ``[<=max_size]``.
 
-    Arrays of uint8 are ``bytes`` in Python, others tuples (of ints, floats, bools or
-    struct instances).
+    Arrays of uint8 are ``bytes`` in Python, others tuples (of ints, floats, bools, struct
+    instances or union values).
     """
 
-    item: Scalar | Struct
+    item: Scalar | Struct | Union
     max_size: int
     dynamic: bool
 

@@ -209,6 +209,11 @@ class Serializer:
             w.put_bytes(bytes(items))
             return
         item_type = t.item
+        if isinstance(item_type, Union):
+            last = -1 if t.dynamic and tao and uses_tao(t) else count - 1
+            for i, item in enumerate(items):
+                self._put_union(w, item_type, item, f"{path}[{i}]", tao and i == last, saturate)
+            return
         if isinstance(item_type, Struct):
             # Items of a TAO array are whole; otherwise the last one inherits the tail position.
             last = -1 if t.dynamic and tao and uses_tao(t) else count - 1
@@ -292,7 +297,7 @@ class Serializer:
 
     def _get_array(self, r: _Reader, t: Array, path: str, tao: bool) -> Any:
         item_type = t.item
-        if isinstance(item_type, Struct):
+        if not isinstance(item_type, Scalar):
             return self._get_struct_array(r, t, item_type, path, tao)
         if tao and uses_tao(t):
             count = 0
@@ -318,8 +323,9 @@ class Serializer:
         )
 
     def _get_struct_array(
-        self, r: _Reader, t: Array, item: Struct, path: str, tao: bool
+        self, r: _Reader, t: Array, item: Struct | Union, path: str, tao: bool
     ) -> tuple[Any, ...]:
+        """An array of structs or unions."""
         items: list[Any] = []
         if tao and uses_tao(t):
             while r.remaining() >= 8:
@@ -327,7 +333,7 @@ class Serializer:
                     raise DecodeError(
                         self.name, f"more than {t.max_size} items ({t.dsdl})", r.data, path
                     )
-                items.append(self._get_struct(r, item, f"{path}[{len(items)}].", False))
+                items.append(self._get(r, item, None, f"{path}[{len(items)}]", False))
             return tuple(items)
         count = r.take(t.prefix_bits, path) if t.dynamic else t.max_size
         if count > t.max_size:
@@ -335,5 +341,5 @@ class Serializer:
                 self.name, f"{count} items, more than {t.max_size} ({t.dsdl})", r.data, path
             )
         for i in range(count):
-            items.append(self._get_struct(r, item, f"{path}[{i}].", tao and i == count - 1))
+            items.append(self._get(r, item, None, f"{path}[{i}]", tao and i == count - 1))
         return tuple(items)

@@ -26,7 +26,14 @@ import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
-from veronte4x.capture.columnar.schema import scalar_type, struct_type, value_type
+from veronte4x.capture.columnar.schema import (
+    scalar_type,
+    spread,
+    struct_array,
+    union_array,
+    value_type,
+    valued_members,
+)
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union, max_bits, min_bits, uses_tao
 
 Ints: TypeAlias = npt.NDArray[np.int64]
@@ -160,7 +167,7 @@ class _Reader:
     def array(self, t: Array, row: Ints, pos: Ints, tao: bool) -> tuple[pa.Array, Ints]:
         """An array's values (an Arrow list, or binary for uint8 items) over a group."""
         item = t.item
-        if isinstance(item, Struct) and tao and uses_tao(t):
+        if not isinstance(item, Scalar) and tao and uses_tao(t):
             return self.tail_structs(t, item, row, pos)
         if tao and uses_tao(t):
             assert isinstance(item, Scalar)
@@ -178,7 +185,7 @@ class _Reader:
             count = np.minimum(count, t.max_size)
         offsets = np.zeros(len(row) + 1, np.int64)
         np.cumsum(count, out=offsets[1:])
-        if isinstance(item, Struct):
+        if not isinstance(item, Scalar):
             return self.structs(t, item, row, pos, count, offsets, tao)
         within = np.arange(offsets[-1]) - np.repeat(offsets[:-1], count)
         item_pos = np.repeat(pos, count) + within * item.bits
@@ -189,21 +196,21 @@ class _Reader:
     def structs(
         self,
         t: Array,
-        item: Struct,
+        item: Struct | Union,
         row: Ints,
         pos: Ints,
         count: Ints,
         offsets: Ints,
         tao: bool,
     ) -> tuple[pa.Array, Ints]:
-        """An array of structs with a known number of items per element. Items of one
+        """An array of structs or unions with a known number of items per element. Items of one
         fixed size are read together; others one item index at a time (the last item of
         an element inherits its tail position)."""
         size = min_bits(item)
         if size == max_bits(item) and not (tao and _tail_array(item)):
             within = np.arange(offsets[-1]) - np.repeat(offsets[:-1], count)
             item_pos = np.repeat(pos, count) + within * size
-            values, _ = self.struct(item, np.repeat(row, count), item_pos, False)
+            values, _ = self.value(item, np.repeat(row, count), item_pos, False)
             self.check(row, pos + count * size)
             items = _arrow(item, values, int(offsets[-1]))
             return _list(t, offsets, items), pos + count * size
@@ -216,14 +223,16 @@ class _Reader:
                 chosen = np.flatnonzero(mask)
                 if not len(chosen):
                     continue
-                values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], tail)
+                values, pos[chosen] = self.value(item, row[chosen], pos[chosen], tail)
                 pieces.append(_arrow(item, values, len(chosen)))
                 places.append(offsets[chosen] + k)
         return _list(t, offsets, _ordered(item, pieces, places, int(offsets[-1]))), pos
 
-    def tail_structs(self, t: Array, item: Struct, row: Ints, pos: Ints) -> tuple[pa.Array, Ints]:
-        """An array of structs under the tail array optimisation: items while a whole byte
-        remains, one item index at a time."""
+    def tail_structs(
+        self, t: Array, item: Struct | Union, row: Ints, pos: Ints
+    ) -> tuple[pa.Array, Ints]:
+        """An array of structs or unions under the tail array optimisation: items while a
+        whole byte remains, one item index at a time."""
         pos = pos.copy()
         count = np.zeros(len(row), np.int64)
         going = np.ones(len(row), np.bool_)
@@ -236,7 +245,7 @@ class _Reader:
             if k == t.max_size:
                 self.bad[row[chosen]] = True
                 break
-            values, pos[chosen] = self.struct(item, row[chosen], pos[chosen], False)
+            values, pos[chosen] = self.value(item, row[chosen], pos[chosen], False)
             count[chosen] += 1
             found.append((chosen, _arrow(item, values, len(chosen))))
         offsets = np.zeros(len(row) + 1, np.int64)
@@ -246,9 +255,11 @@ class _Reader:
         return _list(t, offsets, items), pos
 
 
-def _tail_array(struct: Struct) -> bool:
+def _tail_array(struct: Struct | Union) -> bool:
     """Whether the tail position changes how a struct reads: its last field ends in a
-    dynamic array the tail array optimisation applies to."""
+    dynamic array the tail array optimisation applies to (or may, for a union)."""
+    if isinstance(struct, Union):
+        return True
     if not struct.fields:
         return False
     t = struct.fields[-1].type
@@ -278,17 +289,28 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Arra
         assert isinstance(value, pa.Array)
         return value
     if isinstance(t, Union):
-        raise TypeError(f"{t.name}: a union inside an array has no column type")
+        return union_array(t, value.tag, _members(t, value, size))
     children = [_arrow(f.type, value[f.name], size) for f in t.fields if f.name]
-    if not children:  # a struct without named fields: its items are empty
-        return pa.StructArray.from_buffers(struct_type(t), size, [None], children=[])
-    return pa.StructArray.from_arrays(children, fields=list(struct_type(t)))
+    return struct_array(t, children, size)
 
 
-def _ordered(item: Struct, pieces: list[pa.Array], places: list[Ints], size: int) -> pa.Array:
+def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:
+    """The array of each valued member of ``size`` union values (null where another
+    member is set)."""
+    valued = [member for _, member in valued_members(t)]
+    return [
+        spread(_arrow(member.type, member_values, len(chosen)), chosen, size)
+        for member, (chosen, member_values) in zip(t.members, value.members, strict=True)
+        if member in valued
+    ]
+
+
+def _ordered(
+    item: Struct | Union, pieces: list[pa.Array], places: list[Ints], size: int
+) -> pa.Array:
     """Items decoded in pieces, put at their places."""
     if not pieces:
-        return pa.array([], struct_type(item))
+        return pa.array([], value_type(item))
     joined = pa.concat_arrays(pieces)
     where = np.concatenate(places)
     order = np.empty(size, np.int64)
@@ -330,13 +352,8 @@ def _flatten(struct: Struct, values: dict[str, Any], prefix: str, out: dict[str,
             _flatten(t, value, name + ".", out)
         elif isinstance(t, Union):
             out[f"{name}.type"] = value.tag
-            size = len(value.tag)
-            for member, (chosen, member_values) in zip(t.members, value.members, strict=True):
-                if isinstance(member.type, Struct):
-                    continue
-                index = np.full(size, -1, np.int64)
-                index[chosen] = np.arange(len(chosen))
-                arrow = _arrow(member.type, member_values, len(chosen))
-                out[f"{name}.{member.name}"] = arrow.take(pa.array(index, mask=index < 0))
+            members = _members(t, value, len(value.tag))
+            for (field, _), arrow in zip(valued_members(t), members, strict=True):
+                out[f"{name}.{field}"] = arrow
         else:
             out[name] = value

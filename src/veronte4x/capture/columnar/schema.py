@@ -13,7 +13,10 @@ lists every wire value (a value without a member is named by its number).
 A DSDL union (param ``Value``, ``NumericValue``) becomes ``name.type``, the member's
 name, and one nullable column per member with a value: ``name.integer_value`` (int64),
 ``name.real_value`` (float32), ``name.boolean_value`` (uint8), ``name.string_value``
-(string); ``empty`` has no column.
+(string); ``empty``, a struct without named fields, has no column. A member's column holds
+its value as a list's struct holds a field (`value_type`): a struct member as an Arrow
+struct, an array member as a list (binary for ``uint8``). Inside a list's struct a union
+is a struct of those columns (`union_type`): ``type`` and a field per member.
 
 Every DroneCAN type of a type set (standard or vendor) has its table, by the same rules:
 nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists
@@ -25,14 +28,15 @@ for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule o
 ``debug.LogMessage``, the union member ``string_value``), applied here to every type set,
 vendor namespaces included. With the text form ``string`` (`TextForm`, the default) those
 columns are Arrow ``string``, checked by `veronte4x.capture.columnar.text`; with
-``binary`` they keep their exact bytes. Text fields inside lists of structs stay binary
-(the standard set has none). A field named as a head column (``HEAD_NAMES``:
-``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``, ``destination_node_id``)
-or as a column a Parquet dataset adds (``DATASET_NAMES``: ``source``, ``capture``) becomes
-``message.`` and its name (``message.node_id`` of ``dynamic_node_id.Allocation``,
-``message.source`` of ``debug.LogMessage``, a vendor type's ``message.channel``); fields
-inside lists of structs, and those named ``error``, ``detail`` or ``data`` (columns of the
-``errors`` and ``unknown`` tables only), keep their names.
+``binary`` they keep their exact bytes. Text fields inside lists of structs and inside a
+union's struct member stay binary (the standard set has none). A field named as a head
+column (``HEAD_NAMES``: ``timestamp``, ``channel``, ``can_id``, ``sender``, ``node_id``,
+``destination_node_id``) or as a column a Parquet dataset adds (``DATASET_NAMES``:
+``source``, ``capture``) becomes ``message.`` and its name (``message.node_id`` of
+``dynamic_node_id.Allocation``, ``message.source`` of ``debug.LogMessage``, a vendor type's
+``message.channel``); fields inside lists of structs, and those named ``error``,
+``detail`` or ``data`` (columns of the ``errors`` and ``unknown`` tables only), keep their
+names.
 """
 
 from __future__ import annotations
@@ -40,11 +44,13 @@ from __future__ import annotations
 import dataclasses
 import functools
 import weakref
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from operator import attrgetter
 from typing import Any, cast
 
+import numpy as np
+import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES, TextForm
@@ -53,7 +59,7 @@ from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import Field, FieldKind
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
+from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, Union
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.units import unit
@@ -115,6 +121,8 @@ class Column:
         names: The dictionary of a dictionary column.
         text: A DroneCAN text field as ``string``: its values are bytes, made strings
             (and checked) as the table is built.
+        dsdl: The DSDL type of the values ``get`` gives (None standing for null), where
+            they hold structs or unions: made Arrow by `arrow_values`.
     """
 
     name: str
@@ -122,6 +130,13 @@ class Column:
     get: Callable[[Any], Any]
     names: tuple[str, ...] | None = None
     text: bool = False
+    dsdl: Scalar | Array | Struct | Union | None = None
+
+    def values(self, messages: Sequence[Any]) -> Any:
+        """The column's values of ``messages`` as a table takes them: a list, or an Arrow
+        array (`arrow_values`) where they hold structs or unions."""
+        values = [self.get(message) for message in messages]
+        return values if self.dsdl is None else arrow_values(self.dsdl, values)
 
 
 @dataclass(frozen=True)
@@ -272,8 +287,8 @@ def _struct_columns(
             columns += _struct_columns(t, name + ".", where, texts)
         elif isinstance(t, Union):
             columns += _union_columns(t, name, where, texts)
-        elif isinstance(t, Array) and isinstance(t.item, Struct):
-            columns.append(Column(name, pa.list_(struct_type(t.item)), _items(where)))
+        elif isinstance(t, Array) and not isinstance(t.item, Scalar):
+            columns.append(Column(name, value_type(t), _path(where), dsdl=t))
         elif f.name in texts.get(struct.cls, ()):
             columns.append(Column(name, pa.string(), _path(where), text=True))
         elif isinstance(t, Array):
@@ -294,11 +309,37 @@ def field_column(name: str) -> str:
 
 
 def struct_type(struct: Struct) -> pa.DataType:
-    """The Arrow struct of the items of an array of structs (enums as their integers)."""
+    """The Arrow struct of a struct inside a list or a union (enums as their integers,
+    unions as `union_type`)."""
     return pa.struct([pa.field(f.name, value_type(f.type)) for f in struct.fields if f.name])
 
 
+def union_type(union: Union) -> pa.DataType:
+    """The Arrow struct of a union inside a list's struct: ``type``, the member's name
+    (dictionary-encoded, indexed by the tag), and a field per member with a value
+    (`valued_members`), null but for the member set: the top-level columns
+    ``name.type``, ``name.<member>`` as the fields of a struct ``name``."""
+    names = tuple(member.name for member in union.members)
+    fields = [pa.field(field, value_type(m.type)) for field, m in valued_members(union)]
+    return pa.struct([pa.field("type", enum_type(names)), *fields])
+
+
+def valued_members(union: Union) -> tuple[tuple[str, Member], ...]:
+    """The members of a union that hold a value, each with the name of its field or
+    column: all but structs without named fields (``Empty``), whose name says it all. The
+    name is the member's, but ``type_`` for a member named ``type``, the tag's name (no
+    other member is named ``type_``: their classes would take one name, which
+    `veronte4x.dronecan.load_dsdl` refuses)."""
+    return tuple(
+        ("type_" if m.name == "type" else m.name, m)
+        for m in union.members
+        if not (isinstance(m.type, Struct) and not any(f.name for f in m.type.fields))
+    )
+
+
 def value_type(t: Scalar | Array | Struct | Union) -> pa.DataType:
+    """The Arrow type of a DSDL type's values inside a list or a union: structs and unions
+    as Arrow structs, ``uint8`` arrays as binary, other arrays as lists."""
     if isinstance(t, Struct):
         return struct_type(t)
     if isinstance(t, Array):
@@ -306,22 +347,73 @@ def value_type(t: Scalar | Array | Struct | Union) -> pa.DataType:
             return pa.binary()
         return pa.list_(value_type(t.item))
     if isinstance(t, Union):
-        raise TypeError(f"{t.name}: a union inside an array has no column type")
+        return union_type(t)
     return scalar_type(t)
 
 
-def _plain(value: Any) -> Any:
-    """A struct instance as a dict of its fields, recursively (for Arrow struct values)."""
-    if dataclasses.is_dataclass(value):
-        return {f.name: _plain(getattr(value, f.name)) for f in dataclasses.fields(value)}
-    if isinstance(value, tuple):
-        return [_plain(item) for item in value]
-    return value
+def struct_array(struct: Struct, children: list[pa.Array], size: int) -> pa.Array:
+    """``size`` values of a struct from its named fields' arrays (`struct_type`)."""
+    if not children:  # a struct without named fields: its values are empty
+        return pa.StructArray.from_buffers(struct_type(struct), size, [None], children=[])
+    return pa.StructArray.from_arrays(children, fields=list(struct_type(struct)))
 
 
-def _items(where: tuple[str, ...]) -> Callable[[Any], Any]:
-    get = _path(where)
-    return lambda message: [_plain(item) for item in get(message)]
+def union_array(union: Union, tag: npt.NDArray[np.int64], members: list[pa.Array]) -> pa.Array:
+    """A union's values (`union_type`) from each element's tag and an array per valued
+    member (null where another member is set). A tag without a member (a refused
+    transfer's) counts as the first member's."""
+    index_type = union_type(union).field("type").type.index_type
+    indices = pa.array(np.where(tag < len(union.members), tag, 0), index_type)
+    names = pa.array([member.name for member in union.members], pa.string())
+    children = [pa.DictionaryArray.from_arrays(indices, names), *members]
+    return pa.StructArray.from_arrays(children, fields=list(union_type(union)))
+
+
+def spread(values: pa.Array, chosen: npt.NDArray[np.int64], size: int) -> pa.Array:
+    """``size`` values: ``values`` at the positions ``chosen``, null elsewhere."""
+    index = np.full(size, -1, np.int64)
+    index[chosen] = np.arange(len(chosen))
+    return values.take(pa.array(index, mask=index < 0))
+
+
+def arrow_values(t: Scalar | Array | Struct | Union, values: Sequence[Any]) -> pa.Array:
+    """Decoded values of a DSDL type (None: null) as an Arrow array of `value_type`, the
+    form the column-wise decoder gives them: how the per-frame path makes its columns of
+    structs and unions."""
+    present = np.array([i for i, value in enumerate(values) if value is not None], np.int64)
+    if len(present) < len(values):
+        return spread(arrow_values(t, [values[i] for i in present]), present, len(values))
+    if isinstance(t, Struct):
+        children = [
+            arrow_values(f.type, [getattr(value, f.name) for value in values])
+            for f in t.fields
+            if f.name
+        ]
+        return struct_array(t, children, len(values))
+    if isinstance(t, Union):
+        classes = {member.cls: index for index, member in enumerate(t.members)}
+        tag = np.array([classes[type(value)] for value in values], np.int64)
+        valued = [member for _, member in valued_members(t)]
+        members = []
+        for index, member in enumerate(t.members):
+            if member not in valued:
+                continue
+            chosen = np.flatnonzero(tag == index)
+            inner = [_member_value(member, values[i]) for i in chosen.tolist()]
+            members.append(spread(arrow_values(member.type, inner), chosen, len(values)))
+        return union_array(t, tag, members)
+    if isinstance(t, Array) and not t.is_bytes:
+        offsets = np.zeros(len(values) + 1, np.int32)
+        np.cumsum([len(value) for value in values], out=offsets[1:])
+        items = arrow_values(t.item, [item for value in values for item in value])
+        return pa.ListArray.from_arrays(pa.array(offsets), items)
+    return pa.array(list(values), value_type(t))
+
+
+def _member_value(member: Member, value: Any) -> Any:
+    """The value of a union member from the object that holds it (a struct member's
+    object is its value)."""
+    return value if isinstance(member.type, Struct) else value.value
 
 
 def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts) -> list[Column]:
@@ -331,22 +423,22 @@ def _union_columns(union: Union, name: str, where: tuple[str, ...], texts: Texts
     columns = [
         Column(f"{name}.type", enum_type(members), lambda m: classes[type(get_value(m))], members)
     ]
-    for member in union.members:
-        if isinstance(member.type, Struct):
-            continue  # Empty: the type says it all
-        get = _member(get_value, member.cls)
+    for field, member in valued_members(union):
+        get = _member(get_value, member)
         if "value" in texts.get(member.cls, ()):
-            columns.append(Column(f"{name}.{member.name}", pa.string(), get, text=True))
+            columns.append(Column(f"{name}.{field}", pa.string(), get, text=True))
             continue
-        t = pa.binary() if isinstance(member.type, Array) else scalar_type(member.type)
-        columns.append(Column(f"{name}.{member.name}", t, get))
+        t = member.type
+        nested = isinstance(t, Struct) or (isinstance(t, Array) and not isinstance(t.item, Scalar))
+        dsdl = t if nested else None
+        columns.append(Column(f"{name}.{field}", value_type(t), get, dsdl=dsdl))
     return columns
 
 
-def _member(get_value: Callable[[Any], Any], cls: type) -> Callable[[Any], Any]:
+def _member(get_value: Callable[[Any], Any], member: Member) -> Callable[[Any], Any]:
     def get(message: Any) -> Any:
         value = get_value(message)
-        return getattr(value, "value", None) if type(value) is cls else None
+        return _member_value(member, value) if type(value) is member.cls else None
 
     return get
 

@@ -134,7 +134,8 @@ class Tables:
             "detail": [r.detail for r in records],
             "data": [r.data for r in records],
         }
-        fields = {c.name: [c.get(r.message) for r in records] for c in spec.columns}
+        messages = [r.message for r in records]
+        fields = {c.name: c.values(messages) for c in spec.columns}
         self.add_columns(kind, np.array([key for key, _ in rows], np.int64), head, fields)
 
     def _channel(self, name: str) -> int:
