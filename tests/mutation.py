@@ -64,7 +64,7 @@ SEED = 4792
 SIZE = 300
 PACKAGES: tuple[str, ...] = ("codec", "dronecan", "arbiter", "capture", "client", "node")
 PACKAGES += ("simulator", "cli", "variables", "core")
-COMMON_TESTS = ("tests/test_argument_types.py", "tests/test_errors.py")
+COMMON_TESTS: tuple[str, ...] = ("tests/test_argument_types.py", "tests/test_errors.py")
 COMMON_TESTS += ("tests/test_frozen_records.py", "tests/test_mutation_survivors.py")
 """Tests of every package, run with each package's tests (a record's ``frozen`` flag is
 run at import, so its mutants run their package's tests)."""
