@@ -371,10 +371,33 @@ def import_time_lines(tree: ast.Module) -> set[int]:
     return set(range(1, last + 1)) - inside
 
 
+def node_id_of(context: str, known: set[str]) -> str:
+    """The test node id of a coverage context.
+
+    A process a test starts records the test's node id as its static context; if that
+    process runs tests of its own, coverage joins the two as ``static|dynamic``. A node id
+    may hold a ``|`` itself (a parameter such as a shell pipeline), so the context is cut at
+    a ``|`` only where what is left is a test of the run (``known``), the longest first.
+    """
+    if context in known:
+        return context
+    head = context
+    while "|" in head:
+        head = head.rsplit("|", 1)[0]
+        if head in known:
+            return head
+    return context.split("|")[0]
+
+
 def map_from_coverage(measured: str, data: Path = COVERAGE, maps: Path = MAPS) -> Path:
     """Write the test map of the coverage data in ``COVERAGE``: for each module, the tests
     that ran each line (as indices into a list of node ids), the lines run outside any test
     (imports, the code generated at import), the lines run at import; and each test's time."""
+    durations: dict[str, float] = {}
+    for times in data.glob("durations.*.json"):
+        for name, seconds in json.loads(times.read_text()).items():
+            durations[name] = max(seconds, durations.get(name, 0.0))
+    known = set(durations)
     lines_run = coverage.CoverageData(str(data / "data"))
     lines_run.read()
     tests: dict[str, int] = {}
@@ -386,7 +409,7 @@ def map_from_coverage(measured: str, data: Path = COVERAGE, maps: Path = MAPS) -
         lines: dict[str, list[int]] = {}
         outside: list[int] = []
         for line, contexts in sorted((lines_run.contexts_by_lineno(measured_file) or {}).items()):
-            named = sorted(c.split("|")[0] for c in contexts if c)
+            named = sorted({node_id_of(c, known) for c in contexts if c})
             if "" in contexts:
                 outside.append(line)
             if named:
@@ -394,10 +417,6 @@ def map_from_coverage(measured: str, data: Path = COVERAGE, maps: Path = MAPS) -
         import_time = sorted(import_time_lines(ast.parse(path.read_text())))
         module = path.relative_to(PACKAGE).as_posix()
         modules[module] = {"lines": lines, "outside": outside, "import_time": import_time}
-    durations: dict[str, float] = {}
-    for times in data.glob("durations.*.json"):
-        for name, seconds in json.loads(times.read_text()).items():
-            durations[name] = max(seconds, durations.get(name, 0.0))
     maps.mkdir(parents=True, exist_ok=True)
     target = maps / f"{measured}.json"
     content = {"tests": list(tests), "durations": durations, "modules": modules}
@@ -693,6 +712,7 @@ def main() -> None:
 
         def run(mutant: Mutant) -> str:
             plan = plans[mutant]
+            how = plan.how
             start = time.monotonic()
             if not plan.tests:
                 outcome = "not covered"
@@ -707,13 +727,14 @@ def main() -> None:
                         package = package_of(mutant.module)
                         tests = in_copy([str(target), *package_tests(package)], copy)
                         outcome = _run(copy, tests, max(plan.limit, 3600))
+                        how = f"package: one of its {plan.how} not found"
                 finally:
                     target.write_text(original)
                     copies.put(copy)
             seconds = time.monotonic() - start
             print(
                 f"{outcome:11}  {mutant.name}  line {mutant.line}  {mutant.change}"
-                f"  ({plan.how}, {seconds:.0f} s)",
+                f"  ({how}, {seconds:.0f} s)",
                 flush=True,
             )
             return outcome

@@ -10,6 +10,7 @@ from tests.mutation import (
     Mutant,
     import_time_lines,
     in_copy,
+    node_id_of,
     statement_span,
 )
 
@@ -83,3 +84,15 @@ def test_a_doctest_of_the_package_runs_from_the_copy(tmp_path: Path) -> None:
     copied = str(tmp_path / "veronte4x" / "codec" / "core.py")
     assert in_copy(names, tmp_path) == ["tests/t.py::test_quick", copied]
     assert PACKAGE.name == "veronte4x"
+
+
+def test_a_context_is_its_test_even_with_a_pipe_in_the_node_id() -> None:
+    """A node id holding ``|`` (a shell pipeline as a parameter) was cut there: the map
+    named a test that does not exist, and its mutants ran another folder's tests."""
+    piped = "tests/test_readme.py::test_runs[cat flight.log | veronte4x decode -]"
+    outer = "tests/test_m.py::test_runner"
+    known = {piped, outer, "tests/t.py::test_quick"}
+    assert node_id_of(piped, known) == piped
+    assert node_id_of(f"{outer}|tests/t.py::test_quick", known) == outer
+    assert node_id_of(f"{piped}|tests/t.py::test_quick", known) == piped
+    assert node_id_of("tests/gone.py::test_x|inner", known) == "tests/gone.py::test_x"
