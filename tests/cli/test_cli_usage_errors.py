@@ -14,7 +14,14 @@ from pathlib import Path
 import can
 import pytest
 
-from tests.client.cli_support import GROUP, HANG_GUARD, bus_args, free_port, veronte4x
+from tests.client.cli_support import (
+    GROUP,
+    HANG_GUARD,
+    bus_args,
+    free_port,
+    simulator,
+    veronte4x,
+)
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 
@@ -100,11 +107,23 @@ def test_simulate_arguments(args: list[str], line: str) -> None:
     assert result.stderr.splitlines()[-1] == f"veronte4x simulate esc: error: {line}"
 
 
+def test_simulate_takes_a_delay_and_no_command_timeout() -> None:
+    port = free_port()
+    options = ["--nodes", "23", "--command-timeout", "0", "--response-delay", "0.05"]
+    with simulator(port, *options):
+        result = veronte4x("esc", "get", "23", "esc_index", *bus_args(port))
+    assert (result.returncode, result.stdout, result.stderr) == (
+        0,
+        "esc_index = 0 (default 0, range 0..19)\n",
+        "",
+    )
+
+
 def test_plot_without_a_display() -> None:
     """No ``--output`` and no display (matplotlib's Agg backend): say how to get a file.
 
-    A window (``plot.py``: ``plt.figure``/``plt.show``, the last lines of ``run``) needs a
-    display, which the test machines have not: that branch is left unmeasured.
+    Not reached here: ``cli/plot.py:67`` (``plt.figure``/``plt.show``, a window), which needs
+    a display that the test machines have not.
     """
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     result = subprocess.run(

@@ -691,6 +691,8 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
         _print_json({"nodes": rows, "total": len(rows), "failed": failed_ids})
     else:
         print(total(len(rows), failed_ids))
+    if failed_ids:  # on standard error too, as every fleet action says it
+        _error(total(len(rows), failed_ids))
     return code
 
 
