@@ -64,7 +64,10 @@ def test_the_filter_edited_and_cleared_with_keys() -> None:
         )
         _keys(tmux, "c")
         wait_for(tmux, lambda s: "filter:" not in s and "Temperature" in s)
-        _keys(tmux, "Escape")  # Esc alone, then a function key: neither scrolls
+        # Esc alone, then a function key: neither scrolls. Whether the Esc is read alone
+        # (cli/monitor.py:308, no byte within 0.05 s) or with the next key's bytes depends on
+        # when tmux delivers them: both leave the table where it is, which is all asserted.
+        _keys(tmux, "Escape")
         _keys(tmux, "F5")
         _keys(tmux, "j")
         _keys(tmux, "k")
