@@ -1,7 +1,12 @@
 """``veronte4x monitor`` in a terminal (tmux), the keys a person presses: the filter edited
 (Backspace, a control key, Esc), cleared with ``c``, keys that scroll nothing (Esc alone, a
 function key), a paced capture that ends by itself, and ``--rates`` over a capture whose
-bit rate cannot be told from its timestamps."""
+bit rate cannot be told from its timestamps.
+
+Not asserted: ``cli/monitor.py:110``, the reader thread stopping between two records once
+``q`` is pressed; whether a record comes between ``q`` and the end of the source is a race
+that no key sequence decides, and either way the command exits with 0 and the last table.
+"""
 
 from __future__ import annotations
 
