@@ -149,7 +149,7 @@ def test_play_with_a_channel_map_sends_onto_the_mapped_channel() -> None:
         assert result.returncode == 0, result.stderr
         assert result.stderr.startswith("veronte4x: sent 39 frames in ")
         received: list[int] = []
-        while (message := listener.recv(5.0)) is not None and len(received) < 39:
+        while len(received) < 39 and (message := listener.recv(5.0)) is not None:
             received.append(message.arbitration_id)
     sent = [int(line.split()[2].split("#")[0], 16) for line in CAPTURE.read_text().splitlines()]
     assert received == sent[: len(received)]
