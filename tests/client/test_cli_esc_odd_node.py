@@ -114,10 +114,10 @@ def test_a_parameter_with_no_default_and_no_range(bus: list[str]) -> None:
     assert (result.returncode, result.stderr) == (0, ""), result.stderr
     assert result.stdout.splitlines() == [
         "index  name            value     default  range",
-        "    0  esc_index         1.5        None  -",
+        "    0  esc_index         1.5           -  -",
     ]
     result = veronte4x("esc", "get", str(ODD), "esc_index", *bus)
-    assert result.stdout == "esc_index = 1.5 (default None, range -)\n"
+    assert result.stdout == "esc_index = 1.5 (default -, range -)\n"  # it said 'None'
 
 
 def test_spin_refuses_an_esc_index_that_is_not_a_whole_number(bus: list[str]) -> None:
