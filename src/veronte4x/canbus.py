@@ -73,7 +73,7 @@ def open_bus(
     where = ", ".join(f"{k} {settings[k]}" for k in ("interface", "channel") if k in settings)
     try:
         bus = can.Bus(**settings)
-    except (can.CanError, ValueError, TypeError, OSError, ImportError) as error:
+    except Exception as error:  # an interface may raise anything: struct.error for hop_limit=x
         reason = str(error) or type(error).__name__
         raise BusOpenError(
             f"cannot open the CAN bus ({where or 'python-can defaults'}): {reason}"

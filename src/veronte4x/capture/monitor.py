@@ -171,12 +171,15 @@ class MonitorState:
             entry.errors += 1
             return
         message = record.message
-        key = (sender, type(message).__name__)
+        if message is None:  # foreign traffic: a row per what it is, its bytes as decode shows
+            key = (sender, record.detail or "undecoded")
+        else:
+            key = (sender, type(message).__name__)
         entry = self._rows.setdefault(key, _Entry(record.can_id))
         self._by_id[(sender, record.can_id)] = key
         entry.can_id = record.can_id
         entry.count += 1
-        entry.fields = fields_text(message)
+        entry.fields = f"[{record.data.hex(' ')}]" if message is None else fields_text(message)
         entry.last_seen = stamp
         if stamp is not None:
             if not entry.timing.count or stamp >= entry.timing.last:

@@ -414,8 +414,14 @@ def _range(p: ParameterInfo) -> str:
     return f"{'' if low is None else low}..{'' if high is None else high}"
 
 
+def _text(value: Any) -> str:
+    """A parameter's value or default for people: ``-`` when the node reports none."""
+    shown = plain(value)
+    return "-" if shown is None else str(shown)
+
+
 def _show(p: ParameterInfo) -> str:
-    return f"{p.name} = {plain(p.value)} (default {plain(p.default)}, range {_range(p)})"
+    return f"{p.name} = {_text(p.value)} (default {_text(p.default)}, range {_range(p)})"
 
 
 def _params(client: BusClient, args: argparse.Namespace) -> int:
@@ -440,8 +446,8 @@ def _table(found: list[ParameterInfo], node: int | None) -> str:
     lines.append(f"{'index':>5}  {'name':<{width}}  {'value':>10}  {'default':>10}  range")
     for p in found:
         lines.append(
-            f"{p.index:>5}  {p.name:<{width}}  {plain(p.value)!s:>10}  "
-            f"{plain(p.default)!s:>10}  {_range(p)}"
+            f"{p.index:>5}  {p.name:<{width}}  {_text(p.value):>10}  "
+            f"{_text(p.default):>10}  {_range(p)}"
         )
     return "\n".join(lines)
 
@@ -691,6 +697,8 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
         _print_json({"nodes": rows, "total": len(rows), "failed": failed_ids})
     else:
         print(total(len(rows), failed_ids))
+    if failed_ids:  # on standard error too, as every fleet action says it
+        _error(total(len(rows), failed_ids))
     return code
 
 

@@ -1,0 +1,165 @@
+"""Usage errors and plain output of the commands that share the bus and capture options,
+as a person meets them: a bad ``--bus-option``, a value python-can cannot take, a command
+with no source, ``simulate``'s arguments, ``plot`` with no display, ``play --channel-map``,
+and the rates report over remote frames. Each command runs as a subprocess: its exit code,
+its exact lines on standard error, no traceback."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import can
+import pytest
+
+from tests.client.cli_support import (
+    GROUP,
+    HANG_GUARD,
+    bus_args,
+    free_port,
+    simulator,
+    veronte4x,
+)
+
+CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
+
+
+@pytest.mark.parametrize("option", ["port", "=43113"])
+def test_a_bus_option_that_is_not_key_value(option: str) -> None:
+    result = veronte4x("esc", "nodes", "--interface", "udp_multicast", "--bus-option", option)
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        f"veronte4x: --bus-option {option!r} is not KEY=VALUE\n",
+    )
+
+
+def test_a_bus_option_true_or_false_reaches_the_bus() -> None:
+    """``fd=false`` is python-can's ``fd=False``: the bus opens, and no node answers."""
+    result = veronte4x("esc", "nodes", *bus_args(free_port()), "--bus-option", "fd=false",
+                       "--timeout", "0.3")  # fmt: skip
+    assert (result.returncode, result.stdout, result.stderr) == (
+        3,
+        "",
+        "veronte4x: no node on the bus within 0.3 s; check --interface, --channel and --bitrate\n",
+    )
+
+
+def test_a_bus_option_the_interface_cannot_take_is_one_line() -> None:
+    """``hop_limit=x`` stays text (not a number), which udp_multicast packs as an integer:
+    python-can's ``struct.error`` was a traceback with exit code 1."""
+    result = veronte4x("esc", "nodes", *bus_args(free_port()), "--bus-option", "hop_limit=x")
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr.splitlines()[0] == (
+        f"veronte4x: cannot open the CAN bus (interface udp_multicast, channel {GROUP}): "
+        "required argument is not an integer"
+    )
+    assert "Traceback" not in result.stderr
+    # python-can logs "UdpMulticastBus was not properly shut down" for its half-built bus.
+
+
+@pytest.mark.parametrize("rates", [[], ["--rates"]])
+def test_monitor_with_no_source(rates: list[str]) -> None:
+    result = veronte4x("monitor", *rates)
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        "veronte4x: give a capture file, or a live bus with --interface\n",
+    )
+
+
+def test_the_rates_report_leaves_out_remote_frames(tmp_path: Path) -> None:
+    capture = tmp_path / "remote.log"
+    capture.write_text(
+        "(1.000000) can0 123#R\n(1.010000) can0 123#0102\n(1.020000) can0 123#0102\n",
+        encoding="utf-8",
+    )
+    result = veronte4x("stats", str(capture), "--rates")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[-4:] == [
+        "rates:",
+        "  can0 0x123: 2 at 100 Hz, jitter -, longest gap 10 ms",
+        "bus load (worst-case bit stuffing):",
+        "  can0: 2 frames, 12 % of 125 kbit/s (detected: the lowest that fits)",
+    ]
+
+
+@pytest.mark.parametrize(
+    ("args", "line"),
+    [
+        (["--nodes", "all"], "argument --nodes: name the simulated nodes, e.g. 21,22 or 21-28"),
+        (["--command-timeout", "x"], "argument --command-timeout: 'x' is not a number"),
+        (
+            ["--command-timeout", "inf"],
+            "argument --command-timeout: inf must be a finite number, 0 or above",
+        ),
+        (
+            ["--response-delay", "nan"],
+            "argument --response-delay: nan must be a finite number, 0 or above",
+        ),
+    ],
+)
+def test_simulate_arguments(args: list[str], line: str) -> None:
+    result = veronte4x("simulate", "esc", *args, "--interface", "virtual")
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr.splitlines()[-1] == f"veronte4x simulate esc: error: {line}"
+
+
+def test_simulate_takes_a_delay_and_no_command_timeout() -> None:
+    port = free_port()
+    options = ["--nodes", "23", "--command-timeout", "0", "--response-delay", "0.05"]
+    with simulator(port, *options):
+        result = veronte4x("esc", "get", "23", "esc_index", *bus_args(port))
+    assert (result.returncode, result.stdout, result.stderr) == (
+        0,
+        "esc_index = 0 (default 0, range 0..19)\n",
+        "",
+    )
+
+
+def test_plot_without_a_display() -> None:
+    """No ``--output`` and no display (matplotlib's Agg backend): say how to get a file.
+
+    Not reached here: ``cli/plot.py:67`` (``plt.figure``/``plt.show``, a window), which needs
+    a display that the test machines have not.
+    """
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    result = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "plot", str(CAPTURE)],
+        capture_output=True,
+        text=True,
+        timeout=HANG_GUARD,
+        check=False,
+        env={**env, "MPLBACKEND": "Agg"},
+    )
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        "veronte4x: no display for a window; give --output FILE.png\n",
+    )
+
+
+def test_play_with_a_channel_map_sends_onto_the_mapped_channel() -> None:
+    port = free_port()
+    with can.Bus(interface="udp_multicast", channel=GROUP, port=port) as listener:
+        options = ["--bus-option", f"port={port}", "--channel-map", f"can0={GROUP}"]
+        result = veronte4x("play", str(CAPTURE), "udp_multicast:", *options, "--speed", "10")
+        assert result.returncode == 0, result.stderr
+        assert result.stderr.startswith("veronte4x: sent 39 frames in ")
+        received: list[int] = []
+        while len(received) < 39 and (message := listener.recv(5.0)) is not None:
+            received.append(message.arbitration_id)
+    sent = [int(line.split()[2].split("#")[0], 16) for line in CAPTURE.read_text().splitlines()]
+    assert received == sent[: len(received)]
+    assert len(received) == 39
+
+
+def test_play_with_a_channel_map_that_is_not_captured_equals_sent() -> None:
+    result = veronte4x("play", str(CAPTURE), "udp_multicast:", "--channel-map", "can0")
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        "veronte4x: --channel-map 'can0': expected CAPTURED=SENT, e.g. can0=vcan1\n",
+    )
