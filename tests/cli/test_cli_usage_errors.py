@@ -119,8 +119,10 @@ def test_simulate_takes_a_delay_and_no_command_timeout() -> None:
     )
 
 
-def test_plot_without_a_display() -> None:
-    """No ``--output`` and no display (matplotlib's Agg backend): say how to get a file.
+@pytest.mark.parametrize("backend", ["Agg", "pdf", "svg"])
+def test_plot_without_a_display(backend: str) -> None:
+    """No ``--output`` and no window (a non-interactive matplotlib backend, Agg or a file
+    format's): say how to get a file. With ``pdf`` the command said nothing and exited 0.
 
     Not reached here: ``cli/plot.py:67`` (``plt.figure``/``plt.show``, a window), which needs
     a display that the test machines have not.
@@ -132,7 +134,7 @@ def test_plot_without_a_display() -> None:
         text=True,
         timeout=HANG_GUARD,
         check=False,
-        env={**env, "MPLBACKEND": "Agg"},
+        env={**env, "MPLBACKEND": backend},
     )
     assert (result.returncode, result.stdout, result.stderr) == (
         2,

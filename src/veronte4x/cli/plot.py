@@ -60,8 +60,10 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         print(f"veronte4x: wrote {args.output}", file=sys.stderr)
         return EXIT_OK
     import matplotlib.pyplot as plt
+    from matplotlib.backends.registry import BackendFilter, backend_registry
 
-    if plt.get_backend().lower() == "agg":
+    batch = backend_registry.list_builtin(BackendFilter.NON_INTERACTIVE)  # type: ignore[no-untyped-call]
+    if plt.get_backend().lower() in batch:
         print("veronte4x: no display for a window; give --output FILE.png", file=sys.stderr)
         return EXIT_USAGE
     plt.figure(figure)
