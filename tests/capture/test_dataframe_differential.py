@@ -235,3 +235,29 @@ def test_a_field_named_like_a_tuple_item_wins_in_place() -> None:
     frame = capture.to_dataframe(collisions)
     assert list(frame.columns[8:]) == ["a", "b_0", "b_1"]
     assert frame["b_1"].tolist() == [4, 8]
+
+
+def test_messages_of_one_nested_shape_are_flattened_column_wise(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A mutation survivor: nested dataclasses no longer taken column-wise, every message
+    flattened one by one instead (same frame, slower): here no message is."""
+    from veronte4x.capture import dataframe
+
+    def record(message: Any) -> Record:
+        return Record(2.0, "can0", 9, Role.ARBITER, None, None, message, None, "", b"")
+
+    nested = [record(Odd(Inner(i), Inner(-i))) for i in range(5)]
+    expected = capture.to_dataframe(nested)
+    flattened: list[object] = []
+
+    def one_by_one(message: Any) -> dict[str, Any]:
+        flattened.append(message)
+        return capture.fields(message)
+
+    monkeypatch.setattr(dataframe, "fields", one_by_one)
+    frame = capture.to_dataframe(nested)
+    assert frame.equals(expected) and flattened == []
+    assert list(frame.columns[8:]) == ["a.x", "a.mode", "b.x", "b.mode", "b_1"]
+    assert frame["b.x"].tolist() == [0, -1, -2, -3, -4]
+    assert frame["b.mode"].tolist() == [0] * 5  # Mode.OFF by its value
