@@ -11,45 +11,13 @@ import dataclasses
 import enum
 from typing import Any
 
-from veronte4x.dronecan import definitions as _dronecan
-from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
-from veronte4x.dronecan.typeset import TypeSet, text_fields
+from veronte4x.dronecan.typeset import TypeSet, float16_fields, text_fields
 from veronte4x.numbers import shortest
 from veronte4x.times import format_time
 from veronte4x.units import unit
 
 __all__ = ["format_message", "format_time", "readable", "readable_fields", "shortest"]
 
-
-def _float16_fields() -> frozenset[tuple[type, str]]:
-    """(class, attribute) of every DroneCAN float16 field, from the type definitions."""
-    found: set[tuple[type, str]] = set()
-
-    def walk(node: Struct | Union) -> None:
-        if isinstance(node, Union):
-            for member in node.members:
-                if isinstance(member.type, Struct):
-                    walk(member.type)
-                elif member.type == Scalar("float", 16):
-                    found.add((member.cls, "value"))
-            return
-        for field in node.fields:
-            if isinstance(field.type, (Struct, Union)):
-                walk(field.type)
-            else:
-                item = field.type.item if isinstance(field.type, Array) else field.type
-                if isinstance(item, Struct):
-                    walk(item)
-                elif item == Scalar("float", 16):
-                    found.add((node.cls, field.name))
-
-    for data_type in _dronecan.DATA_TYPES:
-        walk(data_type.schema)
-    return frozenset(found)
-
-
-FLOAT16_FIELDS = _float16_fields()
-"""(class, attribute) of the half-precision fields (DroneCAN ``float16``)."""
 
 TEXT_FIELDS = frozenset(
     (cls.__name__, attr) for cls, attrs in TypeSet.standard().text_fields.items() for attr in attrs
@@ -61,7 +29,7 @@ vendor types follow the same rule). Every other byte field is data, shown in hex
 
 
 def _float_bits(owner: type, attr: str) -> int:
-    return 16 if (owner, attr) in FLOAT16_FIELDS else 32
+    return 16 if attr in float16_fields(owner) else 32
 
 
 def readable(owner: type, attr: str, value: Any) -> Any:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
@@ -206,19 +206,28 @@ def is_text(attribute: Attribute) -> bool:
     return not TEXT_WORDS.isdisjoint(words)
 
 
+def is_float16(attribute: Attribute) -> bool:
+    """Whether a field holds half-precision floats: ``float16``, or an array of them."""
+    t = attribute.type
+    item = t.item if isinstance(t, ArrayType) else t
+    return isinstance(item, PrimitiveType) and item.kind == "float" and item.bits == 16
+
+
 def text_attributes(
     definitions: Mapping[str, Definition],
     classes: Mapping[str, type],
     members: Mapping[str, tuple[type, ...]],
+    test: Callable[[Attribute], bool] = is_text,
 ) -> dict[type, frozenset[str]]:
-    """The attributes of each class that hold text (`is_text`); a union member's ``value``."""
+    """The attributes of each class whose field passes ``test`` (by default `is_text`: those
+    that hold text); of a union's member, its ``value``."""
     found: dict[type, set[str]] = {}
     for d in definitions.values():
         for key, section in zip(keys(d), d.sections, strict=True):
             if key not in classes:
                 continue
             for index, a in enumerate(section.fields):
-                if not is_text(a):
+                if not test(a):
                     continue
                 if section.union:
                     found.setdefault(members[key][index], set()).add("value")

@@ -28,16 +28,27 @@ from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
 from veronte4x.dronecan.generate import keys, module_source, plan
 from veronte4x.dronecan.parser import Definition, DsdlError, check_references, parse_namespaces
-from veronte4x.dronecan.types import data_types, standard_definitions, text_attributes
+from veronte4x.dronecan.types import (
+    data_types,
+    is_float16,
+    standard_definitions,
+    text_attributes,
+)
 from veronte4x.errors import argument_type_error
 
 _serial = itertools.count(1)
 _TEXT: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
+_FLOAT16: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
 
 
 def text_fields(cls: type) -> frozenset[str]:
     """The attributes of a DroneCAN class (of any type set) that hold text."""
     return _TEXT.get(cls, frozenset())
+
+
+def float16_fields(cls: type) -> frozenset[str]:
+    """The attributes of a DroneCAN class (of any type set) that hold ``float16`` values."""
+    return _FLOAT16.get(cls, frozenset())
 
 
 class TypeSet:
@@ -85,6 +96,7 @@ class TypeSet:
             text_attributes(definitions, classes, members)
         )
         _TEXT.update(self.text_fields)
+        _FLOAT16.update(text_attributes(definitions, classes, members, is_float16))
 
     @classmethod
     def standard(cls) -> TypeSet:

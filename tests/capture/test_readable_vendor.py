@@ -1,0 +1,40 @@
+"""Readable values of vendor types: their half-precision floats in 16-bit shortest form."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from veronte4x.capture.readable import readable_fields
+from veronte4x.dronecan import TypeSet, decode_frames, encode, from_builtin
+
+
+def test_a_vendor_float16_reads_as_its_shortest_half_precision_form(tmp_path: Path) -> None:
+    """0.1 as float16 is 0.0999755859375: '0.1' in 16 bits; its 32-bit shortest form,
+    '0.099975586', was shown for every float16 outside the standard set."""
+    root = tmp_path / "half"
+    root.mkdir()
+    (root / "Inner.uavcan").write_text("float16 h\n")
+    (root / "Choice.uavcan").write_text("@union\nfloat16 half\nfloat32 single\n")
+    (root / "20900.Half.uavcan").write_text(
+        "float16 x\nfloat16[<=2] xs\nfloat32 y\nInner inner\nChoice choice\n"
+    )
+    types = TypeSet.standard().with_dsdl(root)
+    fields = {
+        "x": 0.1,
+        "xs": [0.1, 65504.0],
+        "y": 0.1,
+        "inner": {"h": 0.3},
+        "choice": {"half": 0.1},
+    }
+    sent = from_builtin(types["half.Half"], fields, types=types)
+    frames = [(f.can_id, f.data) for f in encode(sent, source_node_id=9, transfer_id=0, types=types)]
+    message = decode_frames(frames, types=types).message
+    assert message.x == 0.0999755859375  # what the wire holds
+    assert readable_fields(message) == {
+        "x": 0.1,
+        "xs_0": 0.1,
+        "xs_1": 65500.0,  # 65504, the largest float16: 65500 reads back as it
+        "y": 0.1,
+        "inner.h": 0.3,
+        "choice.value": 0.1,  # the union's member ``half``
+    }
