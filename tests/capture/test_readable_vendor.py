@@ -27,7 +27,8 @@ def test_a_vendor_float16_reads_as_its_shortest_half_precision_form(tmp_path: Pa
         "choice": {"half": 0.1},
     }
     sent = from_builtin(types["half.Half"], fields, types=types)
-    frames = [(f.can_id, f.data) for f in encode(sent, source_node_id=9, transfer_id=0, types=types)]
+    sent_frames = encode(sent, source_node_id=9, transfer_id=0, types=types)
+    frames = [(f.can_id, f.data) for f in sent_frames]
     message = decode_frames(frames, types=types).message
     assert message.x == 0.0999755859375  # what the wire holds
     assert readable_fields(message) == {
