@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 from veronte4x.capture.readable import readable_fields
 from veronte4x.dronecan import TypeSet, decode_frames, encode, from_builtin
@@ -26,7 +27,7 @@ def test_a_vendor_float16_reads_as_its_shortest_half_precision_form(tmp_path: Pa
         "inner": {"h": 0.3},
         "choice": {"half": 0.1},
     }
-    sent = from_builtin(types["half.Half"], fields, types=types)
+    sent: Any = from_builtin(types["half.Half"], fields, types=types)
     sent_frames = encode(sent, source_node_id=9, transfer_id=0, types=types)
     frames = [(f.can_id, f.data) for f in sent_frames]
     message = decode_frames(frames, types=types).message
