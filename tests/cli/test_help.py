@@ -1,4 +1,5 @@
-"""``--help`` as a person reads it: every command and ``esc`` action listed with its line."""
+"""``--help`` as a person reads it: every command and ``esc`` action listed with its line,
+the options named by what they take."""
 
 from __future__ import annotations
 
@@ -78,3 +79,10 @@ def test_each_esc_action_describes_itself(action: str) -> None:
     text = _help("esc", action)
     assert text.startswith(f"usage: veronte4x esc {action} ")
     assert f"\n\n{ESC_ACTIONS[action]}\n\n" in text
+
+
+@pytest.mark.parametrize("command", ["decode", "stats", "replay", "monitor", "plot"])
+def test_capture_options_name_what_they_take(command: str) -> None:
+    """A mutation survivor: ``--bus-map``'s metavar made None (``--bus-map BUS_MAP``)."""
+    usage = _help(command).split("\n\n")[0]
+    assert "[--bus-map FILE]" in usage and "[--dbc FILE]" in usage
