@@ -86,3 +86,13 @@ def test_capture_options_name_what_they_take(command: str) -> None:
     """A mutation survivor: ``--bus-map``'s metavar made None (``--bus-map BUS_MAP``)."""
     usage = _help(command).split("\n\n")[0]
     assert "[--bus-map FILE]" in usage and "[--dbc FILE]" in usage
+
+
+@pytest.mark.parametrize("action", ["get", "set"])
+def test_by_index_says_what_name_becomes(action: str) -> None:
+    """A mutation survivor: ``--by-index``'s help made None."""
+    text = _help("esc", action)
+    assert (
+        "--by-index            NAME is the parameter's index (discovery order; may change with "
+        "the firmware)\n" in text
+    )
