@@ -6,11 +6,13 @@ import math
 from pathlib import Path
 from typing import Any
 
+import pytest
 from hypothesis import strategies as st
 
 from veronte4x import codec, dronecan
 from veronte4x.capture import BusMap
 from veronte4x.capture.busmap import TEXT_FORMS
+from veronte4x.capture.columnar import engine
 from veronte4x.codec import Linear
 from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
 from veronte4x.dronecan.crc import crc16
@@ -457,3 +459,17 @@ def many_sessions(
             stamp += step
             lines.append(f"({stamp:.6f}) can0 {can_id:08X}#{data.hex().upper()}")
     return lines
+
+
+def frames_left_to_per_frame(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """The number of frames of each call to the per-frame fallback from now on (an empty
+    list, or zeros, when every frame was decoded column-wise)."""
+    taken: list[int] = []
+    original = engine.per_frame
+
+    def per_frame(frames: Any, rows: Any, decoder: Any) -> Any:
+        taken.append(len(rows))
+        return original(frames, rows, decoder)
+
+    monkeypatch.setattr(engine, "per_frame", per_frame)
+    return taken

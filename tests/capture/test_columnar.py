@@ -13,9 +13,8 @@ import can
 import pyarrow as pa
 import pytest
 
-from tests.capture.columnar_support import assert_same_tables, rows
+from tests.capture.columnar_support import assert_same_tables, frames_left_to_per_frame, rows
 from veronte4x import capture
-from veronte4x.capture.columnar import engine
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "capture.log"
@@ -87,14 +86,7 @@ def test_flight_agrees_and_takes_the_fast_paths(
     flight: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     expected = capture.tables_from_records(capture.read(flight))
-    taken = []
-
-    def per_frame(frames: object, rows: object, decoder: object) -> object:
-        taken.append(len(rows))  # type: ignore[arg-type]
-        return original(frames, rows, decoder)  # type: ignore[arg-type]
-
-    original = engine.per_frame
-    monkeypatch.setattr(engine, "per_frame", per_frame)
+    taken = frames_left_to_per_frame(monkeypatch)
     assert_same_tables(capture.read_tables(flight), expected)
     assert taken == [0]  # every frame of a clean flight decoded column-wise
 
@@ -111,14 +103,7 @@ def test_human_view_is_parsed_column_wise(
             data = " ".join(f"{byte:02X}" for byte in message.data)
             out.write(f"{stamp}can0  {ident}   [{len(message.data)}]  {data}\n")
     expected = capture.tables_from_records(capture.read(human))
-    taken = []
-    original = engine.per_frame
-
-    def per_frame(frames: object, rows: object, decoder: object) -> object:
-        taken.append(len(rows))  # type: ignore[arg-type]
-        return original(frames, rows, decoder)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(engine, "per_frame", per_frame)
+    taken = frames_left_to_per_frame(monkeypatch)
     assert_same_tables(capture.read_tables(human), expected)
     ready = expected["Ready"]
     assert ready.column("timestamp").null_count == (0 if stamped else ready.num_rows)

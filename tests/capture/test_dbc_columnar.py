@@ -20,11 +20,16 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.capture.columnar_support import DECLARED, assert_same_tables, write
+from tests.capture.columnar_support import (
+    DECLARED,
+    assert_same_tables,
+    frames_left_to_per_frame,
+    write,
+)
 from tests.capture.test_dataset import read_back
 from veronte4x import capture
 from veronte4x.capture import BusMap
-from veronte4x.capture.columnar import dataset, engine
+from veronte4x.capture.columnar import dataset
 from veronte4x.errors import SourceError
 
 BUS_MAP = BusMap(dronecan=False)
@@ -326,14 +331,7 @@ def test_dbc_frames_take_the_column_wise_path(
         with open(written, "wb") as pipe:  # 20 lines: less than a pipe holds
             pipe.write(path.read_bytes())
         monkeypatch.setattr(sys, "stdin", open(read, encoding="utf-8"))  # noqa: SIM115
-    taken = []
-    original = engine.per_frame
-
-    def per_frame(frames: object, rows: object, decoder: object) -> object:
-        taken.append(len(rows))  # type: ignore[arg-type]
-        return original(frames, rows, decoder)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(engine, "per_frame", per_frame)
+    taken = frames_left_to_per_frame(monkeypatch)
     tables = capture.read_tables(path if source == "file" else "-", BUS_MAP, dbc=[dbc])
     if source == "stdin":
         sys.stdin.close()
