@@ -7,9 +7,9 @@ Branches of `veronte4x.capture.columnar.dataset` no test reaches:
 - ``dataset.py:356`` (``_flush`` of a table with nothing buffered): every caller names a
   table with rows buffered (``write`` the one it just buffered or the one holding the most
   bytes, ``commit`` those in ``_buffers``), and the buffers are dropped together.
-- ``dataset.py:425-429`` (``_discard`` when closing a writer fails): only a disk that fills
+- ``dataset.py:450-454`` (``_discard`` when closing a writer fails): only a disk that fills
   (or fails) while a run is aborted makes ``ParquetWriter.close`` raise; and a writer given
-  a path, as every one here is, always has a file handle (``dataset.py:427``, its None side).
+  a path, as every one here is, always has a file handle (``dataset.py:452``, its None side).
 """
 
 from __future__ import annotations

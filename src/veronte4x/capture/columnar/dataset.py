@@ -372,7 +372,11 @@ class _Writer:
         writer = self._writers.get(kind)
         if writer is None:
             self.new.mkdir(parents=True, exist_ok=True)
-            writer = pq.ParquetWriter(self.new / table_file(kind), table.schema)
+            writer = pq.ParquetWriter(
+                self.new / table_file(kind),
+                table.schema,
+                use_dictionary=text_columns(table.schema),
+            )
             self._writers[kind] = writer
         writer.write_table(table, row_group_size=max(len(table), 1))
 
@@ -415,6 +419,27 @@ class _Writer:
             with contextlib.suppress(OSError):
                 _rename_new(self.old, self.final)
         shutil.rmtree(self.home, ignore_errors=True)
+
+
+def text_columns(schema: pa.Schema) -> list[str]:
+    """The Parquet column paths of ``schema``'s text leaves (strings and dictionaries),
+    the only columns worth dictionary encoding: numbers written plainly take about half
+    the CPU time and, compressed, no more room (docs/performance.md, "Parquet datasets")."""
+    paths: list[str] = []
+
+    def walk(path: str, kind: pa.DataType) -> None:
+        if pa.types.is_struct(kind):
+            for index in range(kind.num_fields):
+                child = kind.field(index)
+                walk(f"{path}.{child.name}", child.type)
+        elif pa.types.is_list(kind):
+            walk(f"{path}.list.element", kind.value_type)
+        elif pa.types.is_dictionary(kind) or pa.types.is_string(kind):
+            paths.append(path)
+
+    for column in schema:
+        walk(column.name, column.type)
+    return paths
 
 
 def _discard(writer: pq.ParquetWriter) -> None:
