@@ -48,8 +48,11 @@ RUNS = [
             "20000",
             "--vehicle-frames",
             "2000",
+            "--hour-frames",
+            "3000",
         ],
         [
+            "to_parquet of 3,000 frames",
             "asammdf",
             "1,500 sessions",
             "vehicle bus",
