@@ -341,7 +341,7 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
         width = max(len(n or "?") for n in names.values())
         print(
             f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  {'uptime':>9}  "
-            f"{'seen':>10}  vendor"
+            f"{'seen':>11}  vendor"
         )
         for e in found:
             print(
