@@ -16,7 +16,14 @@ from veronte4x.numbers import shortest
 from veronte4x.times import format_time
 from veronte4x.units import unit
 
-__all__ = ["format_message", "format_time", "readable", "readable_fields", "shortest"]
+__all__ = [
+    "format_message",
+    "format_time",
+    "hex_bytes",
+    "readable",
+    "readable_fields",
+    "shortest",
+]
 
 
 TEXT_FIELDS = frozenset(
@@ -45,6 +52,16 @@ def readable(owner: type, attr: str, value: Any) -> Any:
             return value.decode("utf-8", "backslashreplace")
         return value.hex()
     return value
+
+
+def hex_bytes(data: bytes) -> str:
+    """Bytes no codec decoded, as ``decode`` and ``monitor`` show them: hex in brackets.
+
+    Examples:
+        >>> hex_bytes(bytes([1, 0xC0])), hex_bytes(b"")
+        ('[01 c0]', '[]')
+    """
+    return f"[{data.hex(' ')}]"
 
 
 _FIELD_NAMES: dict[type, tuple[str, ...]] = {}
