@@ -654,6 +654,18 @@ def test_decode_frames_names_what_is_wrong() -> None:
         "(data: 54 22 03 00 00 00 20 4e 20 4a d8 5c e1 10 1b 88)"
     )
     assert _decode_error([(first_id, bytes(8))] * 64) == "frame: 64 frames, not 1..63 (data: empty)"
+    assert _decode_error([(first_id, first[-1:]), *rest]) == (
+        f"{name}: frame 0 has 1 byte (data: {first[-1]:02x})"
+    )
+
+
+def test_one_byte_too_many_is_one_byte() -> None:
+    with pytest.raises(dronecan.DecodeError) as error:
+        dronecan.decode_payload(TransferKind.MESSAGE, 341, bytes(8))
+    assert str(error.value) == (
+        "uavcan.protocol.NodeStatus: 1 byte left after the last field "
+        "(data: 00 00 00 00 00 00 00 00)"
+    )
 
 
 def test_a_bool_field_takes_the_ints_0_and_1_only() -> None:

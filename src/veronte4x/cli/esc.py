@@ -59,6 +59,7 @@ from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError
 from veronte4x.extras import require
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+from veronte4x.words import counted
 
 if TYPE_CHECKING:
     from veronte4x.client.bus import BusClient
@@ -578,7 +579,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
         if shown.get(p.node_id) != (p.phase, tenth) or tty:
             end = "\r" if tty and p.phase is Phase.READING else "\n"
             print(
-                f"node {p.node_id}: {p.phase.value}, {p.sent} of {p.size} bytes",
+                f"node {p.node_id}: {p.phase.value}, {p.sent} of {counted(p.size, 'byte')}",
                 end=end,
                 file=sys.stderr,
                 flush=True,
@@ -616,7 +617,8 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
                 "--force updates anyway"
             )
         reported = data(node, outcome)["software_version"]["image_crc"]
-        return f"node {node}: updated with {path} ({len(image)} bytes, CRC-64-WE {crc:#018x}); " + (
+        size = counted(len(image), "byte")
+        return f"node {node}: updated with {path} ({size}, CRC-64-WE {crc:#018x}); " + (
             "the node reports the same CRC" if reported else "the node reports no image CRC"
         )
 
