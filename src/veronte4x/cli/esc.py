@@ -556,8 +556,8 @@ def read_image(file: str, max_size: int) -> bytes:
         image = stream.read(max_size + 1)
     if len(image) > max_size:
         raise InvalidRequestError(
-            f"{file} has more than {max_size} bytes, the firmware image limit; nothing was "
-            "sent (raise --max-image-size if the image is right)"
+            f"{file} has more than {counted(max_size, 'byte')}, the firmware image limit; "
+            "nothing was sent (raise --max-image-size if the image is right)"
         )
     check_image(image, max_size)
     return image
