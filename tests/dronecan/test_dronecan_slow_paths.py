@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 from binascii import crc_hqx
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -657,6 +658,19 @@ def test_decode_frames_names_what_is_wrong() -> None:
     assert _decode_error([(first_id, first[-1:]), *rest]) == (
         f"{name}: frame 0 has 1 byte (data: {first[-1]:02x})"
     )
+
+
+def test_a_tail_array_of_at_most_one_struct_counts_one_item(tmp_path: Path) -> None:
+    root = tmp_path / "tao"
+    root.mkdir()
+    (root / "P.uavcan").write_text("uint8 k\n")
+    (root / "20950.One.uavcan").write_text("P[<=1] ps\n")
+    types = dronecan.TypeSet.standard().with_dsdl(root)
+    codec = types.by_class[types["tao.One"]]
+    assert codec.decode(b"\x01") == types["tao.One"](ps=(types["tao.P"](k=1),))
+    with pytest.raises(dronecan.DecodeError) as error:
+        codec.decode(b"\x01\x02")
+    assert str(error.value) == "tao.One.ps: more than 1 item (tao.P[<=1]) (data: 01 02)"
 
 
 def test_one_byte_too_many_is_one_byte() -> None:

@@ -345,7 +345,10 @@ class Serializer:
             while r.remaining() >= 8:
                 if len(items) == t.max_size:
                     raise DecodeError(
-                        self.name, f"more than {t.max_size} items ({t.dsdl})", r.data, path
+                        self.name,
+                        f"more than {counted(t.max_size, 'item')} ({t.dsdl})",
+                        r.data,
+                        path,
                     )
                 items.append(self._get(r, item, None, f"{path}[{len(items)}]", False))
             return tuple(items)
