@@ -102,6 +102,9 @@ def test_bad_inputs_raise_input_error() -> None:
         compute_scores({0: [1.0, 2.0], 1: [1.0]}, [VariableConfig(), VariableConfig()])
     with pytest.raises(InputError, match="mean_of = 5"):
         compute_scores({0: [1.0]}, [VariableConfig()], mean_of=[5])
+    with pytest.raises(InputError) as one:
+        compute_scores({0: [1.0, 2.0]}, [VariableConfig()])
+    assert str(one.value) == "values[0] = 2: expected 1 value, one per variable"
 
 
 @pytest.mark.parametrize(

@@ -160,6 +160,32 @@ def test_jsonl_non_finite_floats_are_strings() -> None:
     assert [row["value"] for row in rows] == ["nan", "inf"]
 
 
+def test_an_array_of_structs_is_written_field_by_field() -> None:
+    """actuator.ArrayCommand: each command's fields, as ``commands_0.actuator_id``...; JSON
+    lines ended in a TypeError traceback (a struct object is no JSON), CSV gave its repr."""
+    stdin = "(1.000000) can0 1003F205#01000038C0\n"  # actuator 1, UNITLESS, 0.5
+    expected = {"commands_0.actuator_id": 1, "commands_0.command_type": "UNITLESS",
+                "commands_0.command_value": 0.5}  # fmt: skip
+    jsonl = run("decode", "-", "--output", "jsonl", stdin=stdin)
+    assert (jsonl.returncode, jsonl.stderr) == (
+        0,
+        "veronte4x: 1 record, 0 undecoded, 0 bad (skip)\n",
+    )
+    row = json.loads(jsonl.stdout)
+    assert {key: row[key] for key in row if key.startswith("commands")} == expected
+    table = list(
+        csv.DictReader(io.StringIO(run("decode", "-", "--output", "csv", stdin=stdin).stdout))
+    )
+    assert [{key: row[key] for key in row if key.startswith("commands")} for row in table] == [
+        {key: str(value) for key, value in expected.items()}
+    ]
+    text = run("decode", "-", stdin=stdin).stdout
+    assert text.endswith(
+        " ArrayCommand(commands=(ActuatorCommand(actuator_id=1, command_type=UNITLESS, "
+        "command_value=0.5)))\n"
+    )
+
+
 def test_version() -> None:
     result = run("--version")
     assert (result.returncode, result.stdout, result.stderr) == (0, "veronte4x 0.1.0\n", "")

@@ -4,15 +4,9 @@ whose NodeStatus falls silent flagged STOPPED while the others run on."""
 
 from __future__ import annotations
 
-import os
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
-import pytest
-
-from tests.tmux_support import wait_for
+from tests.tmux_support import keys, needs_tmux, terminal, wait_for
 
 START = 1_763_737_000.0
 
@@ -41,20 +35,11 @@ def _node_20_stopped_alone(screen: str) -> bool:
     return "STOPPED" in _row(screen, "node 20") and "STOPPED" not in _row(screen, "node 21")
 
 
-@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+@needs_tmux
 def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
     path = capture(tmp_path / "silent.log")
-    tmux = ["tmux", "-L", f"veronte4x-rates-{os.getpid()}"]
-    # The terminal's size is the pane's, not that of the environment pytest runs in.
-    command = (
-        f"env -u COLUMNS -u LINES {sys.executable} -m veronte4x monitor {path} --rates --speed 1"
-    )
-    subprocess.run(
-        [*tmux, "new-session", "-d", "-s", "monitor", "-x", "160", "-y", "12",
-         f"{command}; echo exit=$?; sleep 30"],
-        check=True,
-    )  # fmt: skip
-    try:
+    args = ("monitor", str(path), "--rates", "--speed", "1")
+    with terminal(*args, width=160, height=12, pane_size=True) as tmux:
         screen = wait_for(tmux, lambda s: "node 21" in s and "period" in s)
         head = _row(screen, "sender").split()
         assert head[:12] == [
@@ -69,8 +54,6 @@ def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
         assert node[5] == "100 ms"  # period
         assert node[8] == "STOPPED"
         assert "STOPPED" not in _row(screen, "AP2")
-        subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
+        keys(tmux, "q")
         screen = wait_for(tmux, lambda s: "exit=" in s)
         assert "exit=0" in screen
-    finally:
-        subprocess.run([*tmux, "kill-server"], check=False)

@@ -9,7 +9,14 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from veronte4x import capture, codec, dronecan
-from veronte4x.capture.readable import format_message, format_time, readable_fields, shortest
+from veronte4x.capture.monitor import MonitorState
+from veronte4x.capture.readable import (
+    format_message,
+    format_time,
+    hex_bytes,
+    readable_fields,
+    shortest,
+)
 from veronte4x.units import UNIT_NAMES, UNITS
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
@@ -66,3 +73,22 @@ def test_times() -> None:
     assert format_time(12.5) == "12.500000"
     assert format_time(1436509052.249713) == "2015-07-10T06:17:32.249713Z"
     assert format_time(1436509052.249713, 1436509052.0) == "0.249713"
+
+
+def test_undecoded_bytes_are_hex_in_brackets_in_one_place(tmp_path: Path) -> None:
+    assert (hex_bytes(b""), hex_bytes(b"\x01"), hex_bytes(bytes([0, 0xC0, 0xFF]))) == (
+        "[]",
+        "[01]",
+        "[00 c0 ff]",
+    )
+    log = tmp_path / "foreign.log"
+    log.write_text("(1763737200.100000) can0 123#00C0FF\n", encoding="utf-8")
+    state = MonitorState()
+    for record in capture.read(log):
+        state.add(record)
+    assert [row.fields for row in state.rows()] == ["[00 c0 ff]"]
+
+
+@given(st.binary(max_size=64))
+def test_hex_bytes_reads_back(data: bytes) -> None:
+    assert bytes.fromhex(hex_bytes(data)[1:-1]) == data

@@ -111,6 +111,25 @@ def test_parameters_saved_reviewed_and_restored(bus: list[str], tmp_path: Path) 
     assert "= 10 (default" in veronte4x("esc", "get", "22", "telem_frequency", *bus).stdout
 
 
+def test_an_entry_that_names_no_parameter_is_never_applied(bus: list[str], tmp_path: Path) -> None:
+    """A GetSet answer with an empty value names no parameter: such an entry (``type =
+    "empty"``, as files written before could hold) loads, and apply leaves it alone."""
+    saved = tmp_path / "esc24.toml"
+    assert veronte4x("esc", "params", "24", "--save", str(saved), *bus).returncode == 0
+    assert "empty" not in saved.read_text()
+    with saved.open("a", encoding="utf-8") as file:
+        file.write('ghost = { type = "empty", value = "" }\n')
+    assert veronte4x("esc", "set", "24", "telem_frequency", "25", *bus).returncode == 0
+    applied = veronte4x("esc", "apply", str(saved), "24", *bus)
+    assert (applied.returncode, applied.stderr) == (0, "")
+    assert applied.stdout.splitlines() == [
+        "node 24: telem_frequency 25 -> 10",
+        "node 24: 1 set, read back and saved",
+        "1 node: succeeded",
+    ]
+    assert "= 10 (default" in veronte4x("esc", "get", "24", "telem_frequency", *bus).stdout
+
+
 def test_a_value_out_of_range_is_refused_before_anything_is_set(
     bus: list[str], tmp_path: Path
 ) -> None:

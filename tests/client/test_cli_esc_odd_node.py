@@ -101,12 +101,16 @@ def test_a_node_that_does_not_tell_its_name(bus: list[str]) -> None:
     assert (result.returncode, result.stderr) == (0, ""), result.stderr
     lines = result.stdout.splitlines()
     assert lines[0] == (
-        "node  name          health    mode                uptime        seen  vendor"
+        "node  name          health    mode                uptime         seen  vendor"
     )
-    rest = r"  OK        OPERATIONAL      +\d+ s  +\d+\.\d s ago  0x0000"
+    rest = (
+        r"  OK        OPERATIONAL      (?= *\d+ s)[ \d]{7} s  "
+        r"(?= *\d+\.\d s)[ \d.]{5} s ago  0x0000"
+    )
     assert re.fullmatch(r"  30  \?           " + rest, lines[1]), lines
     assert re.fullmatch(r"  31  stubborn\.esc" + rest, lines[2]), lines
     assert len(lines) == 3
+    assert {len(line) for line in lines} == {len(lines[0])}, lines
 
 
 def test_a_parameter_with_no_default_and_no_range(bus: list[str]) -> None:

@@ -123,6 +123,12 @@ def test_empty_oversized_and_missing_images_are_refused(bus: list[str], tmp_path
         f"veronte4x: {image} has more than 100 bytes, the firmware image limit; nothing was "
         "sent (raise --max-image-size if the image is right)\n",
     )
+    one = veronte4x("esc", "update", "21", str(image), "--max-image-size", "1", *bus)
+    assert (one.returncode, one.stderr) == (
+        2,
+        f"veronte4x: {image} has more than 1 byte, the firmware image limit; nothing was "
+        "sent (raise --max-image-size if the image is right)\n",
+    )
     missing = veronte4x("esc", "update", "21", str(tmp_path / "none.bin"), *bus)
     assert (missing.returncode, missing.stderr) == (
         2,

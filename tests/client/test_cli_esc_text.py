@@ -52,12 +52,17 @@ def test_nodes_as_a_table(bus: list[str]) -> None:
     assert (result.returncode, result.stderr) == (0, ""), result.stderr
     lines = result.stdout.splitlines()
     assert lines[0] == (
-        "node  name           health    mode                uptime        seen  vendor"
+        "node  name           health    mode                uptime         seen  vendor"
     )
-    row = r"  {}  iq_motion\.esc  OK        OPERATIONAL      +\d+ s  +\d+\.\d s ago  0x0000"
+    # Each number fills its column exactly, so the rows line up with the header.
+    row = (
+        r"  {}  iq_motion\.esc  OK        OPERATIONAL      (?= *\d+ s)[ \d]{{7}} s  "
+        r"(?= *\d+\.\d s)[ \d.]{{5}} s ago  0x0000"
+    )
     assert all(
         re.fullmatch(row.format(n), line) for n, line in zip((21, 22), lines[1:], strict=True)
-    )
+    ), lines
+    assert {len(line) for line in lines} == {len(lines[0])}, lines
 
 
 def test_params_as_tables(bus: list[str]) -> None:

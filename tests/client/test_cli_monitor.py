@@ -2,16 +2,11 @@
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-import sys
 import time
 from pathlib import Path
 
-import pytest
-
+from tests.tmux_support import keys, needs_tmux, terminal, wait_for
 from tests.tmux_support import screen as shown_now
-from tests.tmux_support import wait_for
 
 from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 
@@ -46,41 +41,34 @@ def test_plain_filter_and_live_bus() -> None:
     assert rows == ["EscStatus", "NodeStatus", "Temperature"]
 
 
-@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+@needs_tmux
 def test_interactive_in_a_terminal() -> None:
     port = free_port()
-    tmux = ["tmux", "-L", f"veronte4x-test-{port}"]
-    command = " ".join([sys.executable, "-m", "veronte4x", "monitor", *bus_args(port)])
-    with simulator(port, "--nodes", "21,22"):
-        subprocess.run(
-            [*tmux, "new-session", "-d", "-s", "monitor", "-x", "150", "-y", "30",
-             f"{command}; echo exit=$?; sleep 30"],
-            check=True,
-        )  # fmt: skip
-        try:
-            screen = wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
-            assert "p pause · f filter · c clear filter · q quit" in screen
-            subprocess.run([*tmux, "send-keys", "-t", "monitor", "f"], check=True)
-            subprocess.run([*tmux, "send-keys", "-t", "monitor", "-l", "nodestat"], check=True)
-            subprocess.run([*tmux, "send-keys", "-t", "monitor", "Enter"], check=True)
-            wait_for(
-                tmux,
-                lambda s: (
-                    "filter: nodestat " in s
-                    and s.count("NodeStatus") == 2
-                    and "EscStatus" not in s
-                    and "Temperature" not in s
-                ),
-            )
-            subprocess.run([*tmux, "send-keys", "-t", "monitor", "p"], check=True)
-            paused = wait_for(tmux, lambda s: "PAUSED" in s)
-            time.sleep(1.2)
-            assert shown_now(tmux) == paused  # frozen while paused
-            subprocess.run([*tmux, "send-keys", "-t", "monitor", "q"], check=True)
-            screen = wait_for(tmux, lambda s: "exit=0" in s)
-            assert "veronte4x: " in screen and " records, 0 bad" in screen
-        finally:
-            subprocess.run([*tmux, "kill-server"], check=False)
+    with (
+        simulator(port, "--nodes", "21,22"),
+        terminal("monitor", *bus_args(port)) as tmux,
+    ):
+        screen = wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
+        assert "p pause · f filter · c clear filter · q quit" in screen
+        keys(tmux, "f")
+        keys(tmux, "nodestat", literal=True)
+        keys(tmux, "Enter")
+        wait_for(
+            tmux,
+            lambda s: (
+                "filter: nodestat " in s
+                and s.count("NodeStatus") == 2
+                and "EscStatus" not in s
+                and "Temperature" not in s
+            ),
+        )
+        keys(tmux, "p")
+        paused = wait_for(tmux, lambda s: "PAUSED" in s)
+        time.sleep(1.2)
+        assert shown_now(tmux) == paused  # frozen while paused
+        keys(tmux, "q")
+        screen = wait_for(tmux, lambda s: "exit=0" in s)
+        assert "veronte4x: " in screen and " records, 0 bad" in screen
 
 
 def test_stats_and_replay_read_a_live_bus() -> None:

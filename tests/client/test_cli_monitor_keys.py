@@ -10,73 +10,45 @@ that no key sequence decides, and either way the command exits with 0 and the la
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
-import pytest
-
-from tests.tmux_support import wait_for
+from tests.tmux_support import keys, needs_tmux, terminal, wait_for
 
 from .cli_support import bus_args, free_port, simulator
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 
-pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
-
-
-@contextmanager
-def terminal(*args: str) -> Iterator[list[str]]:
-    """``veronte4x ARGS`` in a 150x30 tmux pane; its exit code shows as ``exit=N``."""
-    tmux = ["tmux", "-L", f"veronte4x-keys-{free_port()}"]
-    command = " ".join([sys.executable, "-m", "veronte4x", *args])
-    subprocess.run(
-        [*tmux, "new-session", "-d", "-s", "monitor", "-x", "150", "-y", "30",
-         f"{command}; echo exit=$?; sleep 60"],
-        check=True,
-    )  # fmt: skip
-    try:
-        yield tmux
-    finally:
-        subprocess.run([*tmux, "kill-server"], check=False)
-
-
-def _keys(tmux: list[str], *keys: str, literal: bool = False) -> None:
-    flags = ["-l"] if literal else []
-    subprocess.run([*tmux, "send-keys", "-t", "monitor", *flags, *keys], check=True)
+pytestmark = needs_tmux
 
 
 def test_the_filter_edited_and_cleared_with_keys() -> None:
     port = free_port()
     with simulator(port, "--nodes", "21,22"), terminal("monitor", *bus_args(port)) as tmux:
         wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
-        _keys(tmux, "f")
-        _keys(tmux, "nodexy", literal=True)
-        _keys(tmux, "BSpace")
+        keys(tmux, "f")
+        keys(tmux, "nodexy", literal=True)
+        keys(tmux, "BSpace")
         wait_for(tmux, lambda s: "filter: nodex_" in s)
-        _keys(tmux, "Escape")  # while editing: the filter is dropped
+        keys(tmux, "Escape")  # while editing: the filter is dropped
         wait_for(tmux, lambda s: "filter:" not in s and "EscStatus" in s)
-        _keys(tmux, "f")
-        _keys(tmux, "status", literal=True)
-        _keys(tmux, "C-a")  # a control key is not text: ignored
-        _keys(tmux, "Enter")
+        keys(tmux, "f")
+        keys(tmux, "status", literal=True)
+        keys(tmux, "C-a")  # a control key is not text: ignored
+        keys(tmux, "Enter")
         wait_for(
             tmux,
             lambda s: "filter: status " in s and "NodeStatus" in s and "Temperature" not in s,
         )
-        _keys(tmux, "c")
+        keys(tmux, "c")
         wait_for(tmux, lambda s: "filter:" not in s and "Temperature" in s)
         # Esc alone, then a function key: neither scrolls. Whether the Esc is read alone
         # (cli/monitor.py:308, no byte within 0.05 s) or with the next key's bytes depends on
         # when tmux delivers them: both leave the table where it is, which is all asserted.
-        _keys(tmux, "Escape")
-        _keys(tmux, "F5")
-        _keys(tmux, "j")
-        _keys(tmux, "k")
-        _keys(tmux, "q")
+        keys(tmux, "Escape")
+        keys(tmux, "F5")
+        keys(tmux, "j")
+        keys(tmux, "k")
+        keys(tmux, "q")
         screen = wait_for(tmux, lambda s: "exit=0" in s)
     assert "node 21" in screen and "node 22" in screen  # the last table, every row
 

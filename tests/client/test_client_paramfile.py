@@ -51,12 +51,14 @@ def test_the_written_text() -> None:
     )
 
 
-values = st.one_of(
-    st.integers(-(2**63), 2**63 - 1).map(IntegerValue),
-    st.floats(allow_nan=False, width=32).map(RealValue),
-    st.booleans().map(lambda b: BooleanValue(int(b))),
-    st.text(max_size=20).map(lambda t: StringValue(t.encode("utf-8"))),
-)
+KINDS: dict[type, st.SearchStrategy[Value]] = {
+    IntegerValue: st.integers(-(2**63), 2**63 - 1).map(IntegerValue),
+    RealValue: st.floats(allow_nan=False, width=32).map(RealValue),
+    BooleanValue: st.booleans().map(lambda b: BooleanValue(int(b))),
+    StringValue: st.text(max_size=20).map(lambda t: StringValue(t.encode("utf-8"))),
+    Empty: st.just(Empty()),
+}
+values = st.one_of(*(KINDS[kind] for kind in (IntegerValue, RealValue, BooleanValue, StringValue)))
 
 
 @given(st.dictionaries(st.text(min_size=1, max_size=12), values, max_size=6))
@@ -69,6 +71,37 @@ def test_any_parameters_round_trip(parameters: dict[str, Value]) -> None:
     )
     (back,) = loads(dumps([node]))
     assert back == node
+
+
+@st.composite
+def parameters(draw: st.DrawFn) -> ParameterInfo:
+    """A parameter of any value type, Empty included (a name the node has no value for),
+    with a default and a range of its type or Empty, as GetSet gives them."""
+    name = draw(st.text(max_size=12))
+    value = draw(st.one_of(*KINDS.values()))
+    like = st.one_of(st.just(Empty()), KINDS[type(value)])
+    numeric = isinstance(value, (IntegerValue, RealValue))
+    low, high = (draw(like) if numeric else Empty() for _ in range(2))
+    return ParameterInfo(name, value, draw(like), low, high)  # type: ignore[arg-type]
+
+
+@given(st.lists(parameters(), max_size=6, unique_by=lambda p: p.name))
+def test_a_saved_file_always_loads_without_the_parameters_that_do_not_exist(
+    saved: list[ParameterInfo],
+) -> None:
+    """An empty value or name names no parameter (DSDL param.GetSet): left out of the file;
+    every other parameter reads back as it was. It was written as type "empty", which
+    `loads` refused."""
+    (back,) = loads(dumps([_node(*saved)]))
+    assert back == _node(*(p for p in saved if p.exists))
+
+
+def test_an_entry_of_type_empty_names_no_parameter() -> None:
+    ghost = ParameterInfo("ghost", Empty(), IntegerValue(3), Empty(), Empty())
+    text = dumps([_node(_int("esc_index", 2), ghost)])
+    assert "ghost" not in text
+    old = text + 'ghost = { type = "empty", value = "" }\n'  # as a file written before
+    assert loads(old) == loads(text) == [_node(_int("esc_index", 2))]
 
 
 @pytest.mark.parametrize(

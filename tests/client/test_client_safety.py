@@ -150,6 +150,8 @@ def test_empty_and_oversized_images_are_refused_before_anything_is_sent(
             client.update_firmware(21, b"")
         with pytest.raises(InvalidRequestError, match=r"^the firmware image has 101 bytes, more"):
             client.update_firmware(21, bytes(101), max_image_size=100)
+        with pytest.raises(InvalidRequestError, match=r"^the firmware image has 1 byte, more"):
+            client.update_firmware(21, bytes(1), max_image_size=0)
         with pytest.raises(InvalidRequestError, match=f"more than the limit of {MAX_IMAGE_SIZE}"):
             client.update_firmware(21, bytes(MAX_IMAGE_SIZE + 1))
         assert spy.recv(0.0) is None

@@ -114,6 +114,7 @@ def test_public_commands_cannot_be_redeclared(args: tuple, message: str) -> None
         ([codec.unsigned("a", 8), codec.unsigned("a", 8)], "declared twice"),
         ([codec.unsigned("class", 8)], "not a valid field name"),
         ([codec.constant(256, 8)], "does not fit 8 bits"),
+        ([codec.constant(2, 1)], "constant 2 does not fit 1 bit$"),
         ([codec.unsigned("a", 0)], "has 0 bits"),
     ],
 )

@@ -38,6 +38,7 @@ ARB, AP = Sender.ARBITER, Sender.AUTOPILOT
             "PwmSet: 8 bytes; the layout has 7 (data: 02 00 00 00 00 00 00 ff)",
         ),
         ("0200", AP, "PwmSet: 2 bytes; the layout has 7 (data: 02 00)"),
+        ("02", AP, "PwmSet: 1 byte; the layout has 7 (data: 02)"),
         (
             "050102030405060708",
             AP,

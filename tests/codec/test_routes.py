@@ -104,6 +104,8 @@ def test_new_routes_decode_and_encode(extended: codec.Codec) -> None:
     assert type(extended.decode(b"\x16\x01\x02\x00", sender=AP)).__name__ == "Long"
     with pytest.raises(codec.DecodeError, match=r"Long: 3 bytes; 2 \(short form\) or 4"):
         extended.decode(b"\x16\x01\x02", sender=AP)
+    with pytest.raises(codec.DecodeError, match=r"^Long: 1 byte; 2 \(short form\) or 4"):
+        extended.decode(b"\x16", sender=AP)
     assert type(extended.decode(b"\x16\x01\x02", sender=AP, allow_excess=True)).__name__ == (
         "Short"
     )

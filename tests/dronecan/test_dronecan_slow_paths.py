@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 from binascii import crc_hqx
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -654,6 +655,31 @@ def test_decode_frames_names_what_is_wrong() -> None:
         "(data: 54 22 03 00 00 00 20 4e 20 4a d8 5c e1 10 1b 88)"
     )
     assert _decode_error([(first_id, bytes(8))] * 64) == "frame: 64 frames, not 1..63 (data: empty)"
+    assert _decode_error([(first_id, first[-1:]), *rest]) == (
+        f"{name}: frame 0 has 1 byte (data: {first[-1]:02x})"
+    )
+
+
+def test_a_tail_array_of_at_most_one_struct_counts_one_item(tmp_path: Path) -> None:
+    root = tmp_path / "tao"
+    root.mkdir()
+    (root / "P.uavcan").write_text("uint8 k\n")
+    (root / "20950.One.uavcan").write_text("P[<=1] ps\n")
+    types = dronecan.TypeSet.standard().with_dsdl(root)
+    codec = types.by_class[types["tao.One"]]
+    assert codec.decode(b"\x01") == types["tao.One"](ps=(types["tao.P"](k=1),))
+    with pytest.raises(dronecan.DecodeError) as error:
+        codec.decode(b"\x01\x02")
+    assert str(error.value) == "tao.One.ps: more than 1 item (tao.P[<=1]) (data: 01 02)"
+
+
+def test_one_byte_too_many_is_one_byte() -> None:
+    with pytest.raises(dronecan.DecodeError) as error:
+        dronecan.decode_payload(TransferKind.MESSAGE, 341, bytes(8))
+    assert str(error.value) == (
+        "uavcan.protocol.NodeStatus: 1 byte left after the last field "
+        "(data: 00 00 00 00 00 00 00 00)"
+    )
 
 
 def test_a_bool_field_takes_the_ints_0_and_1_only() -> None:

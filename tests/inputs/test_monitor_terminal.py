@@ -3,58 +3,44 @@
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import subprocess
 import sys
 import time
 from pathlib import Path
 
-import pytest
-
 from tests.client.cli_support import bus_args, free_port, simulator
 from tests.inputs.support import candump
-from tests.tmux_support import wait_for
+from tests.tmux_support import keys, needs_tmux, terminal, wait_for
 
 NODES = [str(node) for node in range(20, 28)]  # 8 ESCs: 24 rows, more than the screen holds
 
 
-def _keys(tmux: list[str], *keys: str) -> None:
-    subprocess.run([*tmux, "send-keys", "-t", "monitor", *keys], check=True)
-
-
-@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+@needs_tmux
 def test_an_80x24_terminal_shows_what_does_not_fit_and_scrolls() -> None:
     port = free_port()
-    tmux = ["tmux", "-L", f"veronte4x-inputs-{port}"]
-    command = " ".join([sys.executable, "-m", "veronte4x", "monitor", *bus_args(port)])
-    with simulator(port, "--nodes", ",".join(NODES)):
-        subprocess.run(
-            [*tmux, "new-session", "-d", "-s", "monitor", "-x", "80", "-y", "24",
-             f"{command}; echo exit=$?; sleep 30"],
-            check=True,
-        )  # fmt: skip
-        try:
-            screen = wait_for(tmux, lambda s: "more rows (↓)" in s and "20 │ Temperature" in s)
-            lines = screen.rstrip("\n").split("\n")
-            assert len(lines) <= 24
-            rows = [line for line in lines if "│" in line]
-            # One line per row: no row wraps onto a second line, none cut mid-word.
-            assert all(not line.startswith(" ") for line in rows), screen
-            assert all(line.startswith("node ") for line in rows), screen
-            [more] = [line for line in lines if "more rows" in line]
-            hidden = int(more.split()[0].lstrip("+"))
-            assert len(rows) + hidden == 24, screen
-            assert "node 27" not in screen
-            _keys(tmux, *["Down"] * 30)
-            screen = wait_for(tmux, lambda s: "node 27 │ Temperature" in s and "above (↑)" in s)
-            assert "more rows" not in screen
-            _keys(tmux, "C-c")
-            screen = wait_for(tmux, lambda s: "exit=" in s)
-            assert "exit=130" in screen
-            assert "veronte4x: interrupted after " in screen
-        finally:
-            subprocess.run([*tmux, "kill-server"], check=False)
+    with (
+        simulator(port, "--nodes", ",".join(NODES)),
+        terminal("monitor", *bus_args(port), width=80, height=24) as tmux,
+    ):
+        screen = wait_for(tmux, lambda s: "more rows (↓)" in s and "20 │ Temperature" in s)
+        lines = screen.rstrip("\n").split("\n")
+        assert len(lines) <= 24
+        rows = [line for line in lines if "│" in line]
+        # One line per row: no row wraps onto a second line, none cut mid-word.
+        assert all(not line.startswith(" ") for line in rows), screen
+        assert all(line.startswith("node ") for line in rows), screen
+        [more] = [line for line in lines if "more rows" in line]
+        hidden = int(more.split()[0].lstrip("+"))
+        assert len(rows) + hidden == 24, screen
+        assert "node 27" not in screen
+        keys(tmux, *["Down"] * 30)
+        screen = wait_for(tmux, lambda s: "node 27 │ Temperature" in s and "above (↑)" in s)
+        assert "more rows" not in screen
+        keys(tmux, "C-c")
+        screen = wait_for(tmux, lambda s: "exit=" in s)
+        assert "exit=130" in screen
+        assert "veronte4x: interrupted after " in screen
 
 
 def test_ctrl_c_on_a_capture_file_exits_130(tmp_path: Path) -> None:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from veronte4x.arbiter.config import MaxErrorMode, VariableConfig
 from veronte4x.arbiter.errors import InputError
+from veronte4x.words import counted
 
 #: Relative variables need at least this many alive autopilots (4x Software Manual, section 4,
 #: "Alive status").
@@ -61,7 +62,9 @@ def _rows(
     for autopilot, row in values.items():
         if len(row) != len(variables):
             raise InputError(
-                f"values[{autopilot}]", len(row), f"{len(variables)} values, one per variable"
+                f"values[{autopilot}]",
+                len(row),
+                f"{counted(len(variables), 'value')}, one per variable",
             )
     pool = list(values) if mean_of is None else list(mean_of)
     for autopilot in pool:

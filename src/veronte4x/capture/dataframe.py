@@ -23,7 +23,9 @@ if TYPE_CHECKING:
 def fields(message: Any) -> dict[str, Any]:
     """A message's fields as a flat dict: tuples become ``name_0``, ``name_1``, enums values.
 
-    Nested dataclasses (DroneCAN) flatten with dots: ``status.uptime_sec``.
+    Nested dataclasses (DroneCAN) flatten with dots: ``status.uptime_sec``; a union as its
+    member's value, ``value.value``; an array of structs or unions item by item,
+    ``choices_0.value``.
     """
     out: dict[str, Any] = {}
     if dataclasses.is_dataclass(message) and not isinstance(message, type):
@@ -51,7 +53,10 @@ def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
             out[name] = value
         elif isinstance(value, tuple):
             for index, item in enumerate(value):
-                out[f"{name}_{index}"] = item
+                if type(item) not in _SCALARS and dataclasses.is_dataclass(item):
+                    _flatten(item, f"{name}_{index}.", out)  # an array of structs or unions
+                else:
+                    out[f"{name}_{index}"] = item
         elif isinstance(value, enum.Enum):
             out[name] = value.value
         elif dataclasses.is_dataclass(value) and not isinstance(value, type):

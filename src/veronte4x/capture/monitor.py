@@ -22,7 +22,7 @@ from typing import Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.rates import Stream
-from veronte4x.capture.readable import format_message
+from veronte4x.capture.readable import format_message, hex_bytes
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
 from veronte4x.numbers import shortest
@@ -179,7 +179,7 @@ class MonitorState:
         self._by_id[(sender, record.can_id)] = key
         entry.can_id = record.can_id
         entry.count += 1
-        entry.fields = f"[{record.data.hex(' ')}]" if message is None else fields_text(message)
+        entry.fields = hex_bytes(record.data) if message is None else fields_text(message)
         entry.last_seen = stamp
         if stamp is not None:
             if not entry.timing.count or stamp >= entry.timing.last:

@@ -16,7 +16,14 @@ from veronte4x.numbers import shortest
 from veronte4x.times import format_time
 from veronte4x.units import unit
 
-__all__ = ["format_message", "format_time", "readable", "readable_fields", "shortest"]
+__all__ = [
+    "format_message",
+    "format_time",
+    "hex_bytes",
+    "readable",
+    "readable_fields",
+    "shortest",
+]
 
 
 TEXT_FIELDS = frozenset(
@@ -45,6 +52,16 @@ def readable(owner: type, attr: str, value: Any) -> Any:
             return value.decode("utf-8", "backslashreplace")
         return value.hex()
     return value
+
+
+def hex_bytes(data: bytes) -> str:
+    """Bytes no codec decoded, as ``decode`` and ``monitor`` show them: hex in brackets.
+
+    Examples:
+        >>> hex_bytes(bytes([1, 0xC0])), hex_bytes(b"")
+        ('[01 c0]', '[]')
+    """
+    return f"[{data.hex(' ')}]"
 
 
 _FIELD_NAMES: dict[type, tuple[str, ...]] = {}
@@ -90,7 +107,10 @@ def _fill(message: Any, prefix: str, out: dict[str, Any]) -> None:
             out[prefix + attr] = value
         elif kind is tuple:
             for index, item in enumerate(value):
-                out[f"{prefix}{attr}_{index}"] = readable(owner, attr, item)
+                if hasattr(type(item), "__dataclass_fields__"):  # an array of structs or unions
+                    _fill(item, f"{prefix}{attr}_{index}.", out)
+                else:
+                    out[f"{prefix}{attr}_{index}"] = readable(owner, attr, item)
         elif hasattr(kind, "__dataclass_fields__"):
             _fill(value, f"{prefix}{attr}.", out)
         else:
@@ -117,7 +137,7 @@ def _format(message: Any, top: str, prefix: str) -> str:
         if _is_message(value):
             text = _format(value, top, f"{prefix}{attr}.")
         elif type(value) is tuple:
-            text = "(" + ", ".join(_scalar(owner, attr, item) for item in value) + ")"
+            text = "(" + ", ".join(_item(owner, attr, item, top, prefix) for item in value) + ")"
         else:
             text = _scalar(owner, attr, value)
             symbol = unit(top, prefix + attr)
@@ -127,8 +147,14 @@ def _format(message: Any, top: str, prefix: str) -> str:
     return f"{owner.__name__}({', '.join(parts)})"
 
 
+def _item(owner: type, attr: str, item: Any, top: str, prefix: str) -> str:
+    if _is_message(item):  # an array of structs or unions
+        return _format(item, top, f"{prefix}{attr}.")
+    return _scalar(owner, attr, item)
+
+
 def _scalar(owner: type, attr: str, value: Any) -> str:
     shown = readable(owner, attr, value)
-    if type(value) is bytes and (owner.__name__, attr) in TEXT_FIELDS:
+    if type(value) is bytes and attr in text_fields(owner):
         return repr(shown)
     return str(shown)

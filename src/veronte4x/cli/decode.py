@@ -16,7 +16,7 @@ from typing import Any, TextIO
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.readable import format_message, readable_fields
+from veronte4x.capture.readable import format_message, hex_bytes, readable_fields
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
@@ -148,12 +148,12 @@ def _nothing() -> None:
 def _text_writer(out: TextIO, clock: _Clock) -> Writer:
     def write(record: Record) -> None:
         if record.error is not None:
-            out.write(f"{_describe(record, clock)} [{record.data.hex(' ')}]\n")
+            out.write(f"{_describe(record, clock)} {hex_bytes(record.data)}\n")
             return
         stamp = clock.text(record.timestamp)
         head = f"{stamp} {record.channel} {record.can_id:03X} {record.sender:<9}"
         if record.message is None:
-            out.write(f"{head} unknown: {record.detail} [{record.data.hex(' ')}]\n")
+            out.write(f"{head} unknown: {record.detail} {hex_bytes(record.data)}\n")
         else:
             out.write(f"{head} {format_message(record.message)}\n")
 

@@ -59,6 +59,7 @@ from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError
 from veronte4x.extras import require
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
+from veronte4x.words import counted
 
 if TYPE_CHECKING:
     from veronte4x.client.bus import BusClient
@@ -341,7 +342,7 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
         width = max(len(n or "?") for n in names.values())
         print(
             f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  {'uptime':>9}  "
-            f"{'seen':>10}  vendor"
+            f"{'seen':>11}  vendor"
         )
         for e in found:
             print(
@@ -555,8 +556,8 @@ def read_image(file: str, max_size: int) -> bytes:
         image = stream.read(max_size + 1)
     if len(image) > max_size:
         raise InvalidRequestError(
-            f"{file} has more than {max_size} bytes, the firmware image limit; nothing was "
-            "sent (raise --max-image-size if the image is right)"
+            f"{file} has more than {counted(max_size, 'byte')}, the firmware image limit; "
+            "nothing was sent (raise --max-image-size if the image is right)"
         )
     check_image(image, max_size)
     return image
@@ -578,7 +579,7 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
         if shown.get(p.node_id) != (p.phase, tenth) or tty:
             end = "\r" if tty and p.phase is Phase.READING else "\n"
             print(
-                f"node {p.node_id}: {p.phase.value}, {p.sent} of {p.size} bytes",
+                f"node {p.node_id}: {p.phase.value}, {p.sent} of {counted(p.size, 'byte')}",
                 end=end,
                 file=sys.stderr,
                 flush=True,
@@ -616,7 +617,8 @@ def _update(client: BusClient, args: argparse.Namespace) -> int:
                 "--force updates anyway"
             )
         reported = data(node, outcome)["software_version"]["image_crc"]
-        return f"node {node}: updated with {path} ({len(image)} bytes, CRC-64-WE {crc:#018x}); " + (
+        size = counted(len(image), "byte")
+        return f"node {node}: updated with {path} ({size}, CRC-64-WE {crc:#018x}); " + (
             "the node reports the same CRC" if reported else "the node reports no image CRC"
         )
 

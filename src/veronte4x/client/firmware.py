@@ -21,6 +21,7 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.dronecan.messages import BeginFirmwareUpdateResponse, FirmwareUpdateError, Mode
 from veronte4x.errors import real
+from veronte4x.words import counted
 
 START_TIMEOUT = 10.0
 """Seconds a node may take from accepting the update to its first read (erasing flash)."""
@@ -97,8 +98,8 @@ def check_image(image: bytes, max_size: int = MAX_IMAGE_SIZE) -> None:
         raise InvalidRequestError("the firmware image is empty (0 bytes); nothing was sent")
     if len(image) > max_size:
         raise InvalidRequestError(
-            f"the firmware image has {len(image)} bytes, more than the limit of {max_size}; "
-            "nothing was sent (raise the limit if the image is right)"
+            f"the firmware image has {counted(len(image), 'byte')}, more than the limit of "
+            f"{max_size}; nothing was sent (raise the limit if the image is right)"
         )
 
 

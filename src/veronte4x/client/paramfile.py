@@ -8,6 +8,11 @@ library (``tomllib``, 3.11 and later; ``tomli``, the ``toml`` extra, on 3.10), a
 bus maps, and its few types (integers, floats, booleans, strings) are those of a parameter
 value. The writer is this module's own: the core has no runtime dependency.
 
+A GetSet answer with an empty value (or an empty name) names no parameter (the DSDL of
+``uavcan.protocol.param.GetSet``): `dumps` leaves such an entry out, and `loads` skips an
+entry of ``type = "empty"`` (as files written before did hold), so a saved file always loads
+and nothing is ever applied from an empty value.
+
 Nothing here touches a bus: `plan` compares a saved set with what a node reports now and
 says what would change, or why it cannot be applied, before anything is sent.
 """
@@ -43,8 +48,10 @@ _TYPES: dict[type, str] = {
     RealValue: "real",
     BooleanValue: "boolean",
     StringValue: "string",
-    Empty: "empty",
 }
+
+_NO_PARAMETER_TYPE = "empty"
+"""The ``type`` of an entry that names no parameter: skipped when read, never written."""
 
 
 class ParameterFileError(SourceError):
@@ -111,7 +118,11 @@ def _key(name: str) -> str:
 
 
 def dumps(nodes: list[NodeParameters], comment: str = "") -> str:
-    """The TOML text of ``nodes`` (``comment`` as its first line, after ``#``)."""
+    """The TOML text of ``nodes`` (``comment`` as its first line, after ``#``).
+
+    A parameter that does not exist (`ParameterInfo.exists`: an empty value or name) is left
+    out.
+    """
     lines = [f"# {comment}"] if comment else []
     lines += [f"format = {_toml(FORMAT)}", ""]
     for node in nodes:
@@ -126,6 +137,8 @@ def dumps(nodes: list[NodeParameters], comment: str = "") -> str:
             lines.append(f"image_crc = {_toml(node.image_crc)}")
         lines += ["", "[node.parameters]"]
         for p in node.parameters:
+            if not p.exists:
+                continue
             fields = [f"type = {_toml(_TYPES[type(p.value)])}", f"value = {_toml(plain(p.value))}"]
             for key, member in (("default", p.default), ("min", p.minimum), ("max", p.maximum)):
                 if not isinstance(member, Empty):
@@ -152,7 +165,7 @@ def _value(kind: str, value: Any, where: str) -> Value:
 
 
 def loads(text: str) -> list[NodeParameters]:
-    """The parameter sets in a file's text.
+    """The parameter sets in a file's text; an entry of ``type = "empty"`` is left out.
 
     Raises:
         ParameterFileError: Not TOML, not this format, or a value that is not of its type.
@@ -183,6 +196,8 @@ def loads(text: str) -> list[NodeParameters]:
             if not isinstance(entry, dict) or "type" not in entry or "value" not in entry:
                 raise ParameterFileError(f"{where}, {name}: a table with type and value expected")
             kind = entry["type"]
+            if kind == _NO_PARAMETER_TYPE:
+                continue
             value = _value(kind, entry["value"], f"{where}, {name}")
             bounds = {
                 key: _value(kind, entry[key], f"{where}, {name}, {key}")

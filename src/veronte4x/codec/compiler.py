@@ -23,6 +23,7 @@ from veronte4x.codec.float32 import bits_from_float, float_from_bits
 from veronte4x.codec.messages import Message
 from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.errors import DecodeError, EncodeError, LayoutError, boolean, integer, real
+from veronte4x.words import counted
 
 FrameDecoder = Callable[[bytes, bool], Message]
 """A layout's decoder: ``decode(data, allow_excess)`` of one frame's bytes."""
@@ -129,7 +130,9 @@ class FrameLayout:
             if f.kind is FieldKind.MAPPED and not all(0 <= w < 1 << f.bits for w, _ in f.mapping):
                 raise LayoutError(f"{self.name}: a wire value of {f.label} does not fit")
             if f.kind is FieldKind.CONSTANT and not 0 <= f.value < 1 << f.bits:
-                raise LayoutError(f"{self.name}: constant {f.value} does not fit {f.bits} bits")
+                raise LayoutError(
+                    f"{self.name}: constant {f.value} does not fit {counted(f.bits, 'bit')}"
+                )
             if f.scale is not None and f.scale.encoded_min == f.scale.encoded_max:
                 raise LayoutError(f"{self.name}: field {f.label} has an empty compression")
         if self.fixed_size > MAX_FRAME_BYTES:
@@ -182,6 +185,7 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         "_new": object.__new__,
         "_BITS": _BITS,
         "_derr": decode_error,
+        "_counted": counted,
         "_eerr": encode_error,
         "_from_bytes": int.from_bytes,
         "_f32": _F32[layout.byte_order].unpack_from,
@@ -375,14 +379,14 @@ def _decode_source(
         lines += [
             f"    if n != {size}:",
             f"        if n < {size} or not excess:",
-            f"            raise _derr('{{}} bytes; the layout has {size}'.format(n), data)",
+            f"            raise _derr(_counted(n, 'byte') + '; the layout has {size}', data)",
             f"        data = data[:{size}]",
         ]
     else:
         most = size + layout.tail.bits // 8
         lines += [
             f"    if n < {size} or (n > {most} and not excess):",
-            f"        raise _derr('{{}} bytes; the layout has {size} to {most}'.format(n), data)",
+            f"        raise _derr(_counted(n, 'byte') + '; the layout has {size} to {most}', data)",
             f"    if n > {most}:",
             f"        data = data[:{most}]",
         ]

@@ -39,6 +39,7 @@ from veronte4x.errors import (
     UnknownCommandError,
     argument_type_error,
 )
+from veronte4x.words import counted
 
 
 def _as_bytes(data: object) -> bytes:
@@ -88,7 +89,7 @@ def _lengths(forms: list[Route]) -> Callable[[int, bytes], DecodeError]:
     name, expected = forms[0].frame.name, routes_module.length_error(forms)
 
     def error(n: int, data: bytes) -> DecodeError:
-        return DecodeError(name, f"{n} bytes; {expected} expected", data)
+        return DecodeError(name, f"{counted(n, 'byte')}; {expected} expected", data)
 
     return error
 

@@ -28,6 +28,7 @@ from veronte4x.dronecan.float16 import (
 )
 from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union, uses_tao
 from veronte4x.errors import DecodeError, EncodeError, boolean, integer, real
+from veronte4x.words import counted
 
 
 class _Writer:
@@ -83,7 +84,7 @@ class _Reader:
         if end > self.total:
             raise DecodeError(
                 self.name,
-                f"payload ends before {bits} bits at bit {self.pos} ({self.total} bits)",
+                f"payload ends before {counted(bits, 'bit')} at bit {self.pos} ({self.total} bits)",
                 self.data,
                 field or None,
             )
@@ -202,7 +203,12 @@ class Serializer:
         count = len(items)
         if count > t.max_size or (not t.dynamic and count != t.max_size):
             size = f"at most {t.max_size}" if t.dynamic else f"exactly {t.max_size}"
-            raise EncodeError(self.name, path, value, f"{size} items ({t.dsdl})")
+            raise EncodeError(
+                self.name,
+                path,
+                value,
+                f"{size} {'item' if t.max_size == 1 else 'items'} ({t.dsdl})",
+            )
         if t.dynamic and not (tao and uses_tao(t)):
             w.put(count, t.prefix_bits)
         if t.is_bytes:
@@ -247,7 +253,9 @@ class Serializer:
         obj = self._get_struct(r, self.schema, "", True)
         if r.remaining() >= 8:
             raise DecodeError(
-                self.name, f"{r.remaining() // 8} bytes left after the last field", payload
+                self.name,
+                f"{counted(r.remaining() // 8, 'byte')} left after the last field",
+                payload,
             )
         return obj
 
@@ -306,7 +314,10 @@ class Serializer:
                 count += 1
             if count * item_type.bits > remaining:
                 raise DecodeError(
-                    self.name, f"{remaining} bits left, not a whole {item_type.dsdl}", r.data, path
+                    self.name,
+                    f"{counted(remaining, 'bit')} left, not a whole {item_type.dsdl}",
+                    r.data,
+                    path,
                 )
         elif t.dynamic:
             count = r.take(t.prefix_bits, path)
@@ -314,7 +325,10 @@ class Serializer:
             count = t.max_size
         if count > t.max_size:
             raise DecodeError(
-                self.name, f"{count} items, more than {t.max_size} ({t.dsdl})", r.data, path
+                self.name,
+                f"{counted(count, 'item')}, more than {t.max_size} ({t.dsdl})",
+                r.data,
+                path,
             )
         if t.is_bytes:
             return r.take(8 * count, path).to_bytes(count, "big") if count else b""
@@ -331,14 +345,20 @@ class Serializer:
             while r.remaining() >= 8:
                 if len(items) == t.max_size:
                     raise DecodeError(
-                        self.name, f"more than {t.max_size} items ({t.dsdl})", r.data, path
+                        self.name,
+                        f"more than {counted(t.max_size, 'item')} ({t.dsdl})",
+                        r.data,
+                        path,
                     )
                 items.append(self._get(r, item, None, f"{path}[{len(items)}]", False))
             return tuple(items)
         count = r.take(t.prefix_bits, path) if t.dynamic else t.max_size
         if count > t.max_size:
             raise DecodeError(
-                self.name, f"{count} items, more than {t.max_size} ({t.dsdl})", r.data, path
+                self.name,
+                f"{counted(count, 'item')}, more than {t.max_size} ({t.dsdl})",
+                r.data,
+                path,
             )
         for i in range(count):
             items.append(self._get(r, item, None, f"{path}[{i}]", tao and i == count - 1))

@@ -27,6 +27,7 @@ from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
+from veronte4x.words import counted
 
 DEFAULT_PRIORITY = 16
 """Priority used when none is given: the middle of 0 (highest) to 31, libcanard's
@@ -450,7 +451,7 @@ def _decode_frames_checked(
         if frame_id != can_id:
             raise DecodeError(name, f"frame {index} has CAN ID {frame_id:#x}", data, "can_id")
         if not 1 <= len(data) <= 8 or (not last and len(data) != 8):
-            raise DecodeError(name, f"frame {index} has {len(data)} bytes", data)
+            raise DecodeError(name, f"frame {index} has {counted(len(data), 'byte')}", data)
         expected = MULTI_FRAME_TAILS[tid][len(items)][index] if len(items) > 1 else 0xC0 | tid
         if data[-1] != expected:
             raise DecodeError(
