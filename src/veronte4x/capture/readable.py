@@ -11,7 +11,7 @@ import dataclasses
 import enum
 from typing import Any
 
-from veronte4x.dronecan.typeset import TypeSet, float16_fields, text_fields
+from veronte4x.dronecan.typeset import float16_fields, text_fields
 from veronte4x.numbers import shortest
 from veronte4x.times import format_time
 from veronte4x.units import unit
@@ -24,15 +24,6 @@ __all__ = [
     "readable_fields",
     "shortest",
 ]
-
-
-TEXT_FIELDS = frozenset(
-    (cls.__name__, attr) for cls, attrs in TypeSet.standard().text_fields.items() for attr in attrs
-)
-"""(class name, attribute) of the byte fields of the standard types that hold text: the
-``uint8[<=N]`` arrays whose DSDL name or comment says name, path, text, string, message,
-key, description, reason, label, source, ASCII or UTF (`veronte4x.dronecan.types.is_text`;
-vendor types follow the same rule). Every other byte field is data, shown in hex."""
 
 
 def _float_bits(owner: type, attr: str) -> int:
