@@ -25,18 +25,17 @@ _servers = itertools.count()
 
 
 @contextmanager
-def terminal(
-    *args: str, width: int = 150, height: int = 30, pane_size: bool = False
-) -> Iterator[list[str]]:
+def terminal(*args: str, width: int = 150, height: int = 30) -> Iterator[list[str]]:
     """``veronte4x ARGS`` in a ``width`` x ``height`` pane ``monitor`` of a tmux server of
     its own (the command prefix to give `screen`, `wait_for` and `keys`); its exit code
     shows as ``exit=N`` after it. The server is killed on leaving.
 
-    With ``pane_size``, the program sees the pane's size only: ``COLUMNS`` and ``LINES``
-    are unset (a pane started from pytest has them, at 80 and 24, whatever its size)."""
+    The program sees the pane's size, as in a person's terminal: ``COLUMNS`` and ``LINES``
+    are unset (a pane started from pytest inherits them, at 80 and 24, whatever its size)."""
     tmux = ["tmux", "-L", f"veronte4x-{os.getpid()}-{next(_servers)}"]
-    unset = ["env", "-u", "COLUMNS", "-u", "LINES"] if pane_size else []
-    command = shlex.join([*unset, sys.executable, "-m", "veronte4x", *args])
+    command = shlex.join(
+        ["env", "-u", "COLUMNS", "-u", "LINES", sys.executable, "-m", "veronte4x", *args]
+    )
     subprocess.run(
         [*tmux, "new-session", "-d", "-s", "monitor", "-x", str(width), "-y", str(height),
          f"{command}; echo exit=$?; sleep 60"],

@@ -39,7 +39,7 @@ def _node_20_stopped_alone(screen: str) -> bool:
 def test_live_rates_flag_the_node_that_falls_silent(tmp_path: Path) -> None:
     path = capture(tmp_path / "silent.log")
     args = ("monitor", str(path), "--rates", "--speed", "1")
-    with terminal(*args, width=160, height=12, pane_size=True) as tmux:
+    with terminal(*args, width=160, height=12) as tmux:
         screen = wait_for(tmux, lambda s: "node 21" in s and "period" in s)
         head = _row(screen, "sender").split()
         assert head[:12] == [

@@ -58,7 +58,8 @@ def test_a_paced_capture_ends_by_itself() -> None:
         screen = wait_for(tmux, lambda s: "exit=" in s)
     assert "exit=0" in screen
     assert "veronte4x: 39 records, 1 bad, 0.501 s" in screen
-    assert "│ value=2.0" in screen  # the last row of the last table: the external autopilot's
+    # The last row of the last table, whole on one line of the 150-column pane.
+    assert "│ number=2, value=2.0\n" in screen
 
 
 def test_rates_of_frames_too_close_for_any_bit_rate(tmp_path: Path) -> None:
