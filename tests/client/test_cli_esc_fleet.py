@@ -48,7 +48,7 @@ def test_a_node_that_does_not_answer_fails_alone(bus: list[str]) -> None:
     assert result.returncode == 3
     assert result.stdout.splitlines() == [
         "node 21: esc_index = 0 (default 0, range 0..19)",
-        "node 99: failed: node 99 did not answer uavcan.protocol.param.GetSet (sent once, "
+        "node 99: failed: did not answer uavcan.protocol.param.GetSet (sent once, "
         "0.3 s each); check the node id, the bus and the bit rate",
         "node 22: esc_index = 1 (default 1, range 0..19)",
         "3 nodes: 2 succeeded, 1 failed (99)",

@@ -146,8 +146,7 @@ def test_apply_onto_a_node_that_does_not_take_the_value(bus: list[str], tmp_path
         4,
         [
             "node 31: esc_index 1 -> 2",
-            "node 31: failed after setting nothing: node 31 kept esc_index at 1 instead of 2; "
-            "not saved",
+            "node 31: failed after setting nothing: kept esc_index at 1 instead of 2; not saved",
             "1 node: failed (31)",
         ],
         "veronte4x: 1 node: failed (31)\n",  # it said nothing there before

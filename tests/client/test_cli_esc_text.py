@@ -96,7 +96,7 @@ def test_params_saved_as_text_and_a_node_that_does_not_answer(
     )
     assert (failed.returncode, failed.stdout) == (3, "")
     assert failed.stderr.splitlines() == [
-        "veronte4x: node 99: node 99 did not answer uavcan.protocol.GetNodeInfo (sent once, "
+        "veronte4x: node 99: did not answer uavcan.protocol.GetNodeInfo (sent once, "
         "0.2 s each); check the node id, the bus and the bit rate",
         f"veronte4x: nothing written to {saved}: 2 nodes: 1 succeeded, 1 failed (99)",
     ]

@@ -26,7 +26,7 @@ from veronte4x.cli.exit_codes import (
     EXIT_OK,
     EXIT_USAGE,
 )
-from veronte4x.cli.fleet import each, exit_code, node_list, resolve, total
+from veronte4x.cli.fleet import each, error_text, exit_code, node_list, resolve, total
 from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
 from veronte4x.client import operations, paramfile, parmfile
 from veronte4x.client.errors import (
@@ -458,7 +458,7 @@ def _save_file(client: BusClient, args: argparse.Namespace) -> int:
     tasks = client.run_all([operations.read_node(node) for node in nodes])
     failed = [(node, t.error) for node, t in zip(nodes, tasks, strict=True) if t.error]
     for node, error in failed:
-        _error(f"node {node}: {error}")
+        _error(f"node {node}: {error_text(node, error)}")
     if failed:
         _error(f"nothing written to {args.save}: {total(len(nodes), [n for n, _ in failed])}")
         return exit_code(failed[0][1])
@@ -645,7 +645,7 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
     failed = [(node, t.error) for node, t in zip(nodes, reads, strict=True) if t.error]
     if failed:
         for node, error in failed:
-            _error(f"node {node}: {error}")
+            _error(f"node {node}: {error_text(node, error)}")
         _error("nothing was set: every node must answer before any is changed")
         return exit_code(failed[0][1])
     plans: dict[int, list[paramfile.Change]] = {}
@@ -689,7 +689,7 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
             code = code or exit_code(task.error)
             line = (
                 f"node {node}: failed after setting {', '.join(done) or 'nothing'}: "
-                f"{task.error}; not saved"
+                f"{error_text(node, task.error)}; not saved"
             )
             rows.append({"node_id": node, "ok": False, "set": done, "error": str(task.error)})
         if not args.json:

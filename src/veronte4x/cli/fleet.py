@@ -147,7 +147,7 @@ def each(
             code = code or failed
             rows.append({"node_id": node, "ok": False, "error": str(task.error)})
             if not args.json:
-                print(f"node {node}: failed: {task.error}")
+                print(f"node {node}: failed: {error_text(node, task.error)}")
     failed_ids = [row["node_id"] for row in rows if not row["ok"]]
     if args.json:
         print(json.dumps({"nodes": rows, "total": len(rows), "failed": failed_ids}))
@@ -156,6 +156,12 @@ def each(
     if failed_ids:
         print(f"veronte4x: {total(len(rows), failed_ids)}", file=sys.stderr)
     return code
+
+
+def error_text(node: int, error: BaseException) -> str:
+    """What went wrong with ``node``, to follow ``node N:`` in a line: the error's text
+    without its own leading ``node N`` (``stopped reading the image at byte 512 ...``)."""
+    return str(error).removeprefix(f"node {node} ")
 
 
 def total(count: int, failed: list[int]) -> str:
