@@ -202,12 +202,9 @@ class Serializer:
             raise EncodeError(self.name, path, value, f"a tuple of ints for {t.dsdl}")
         count = len(items)
         if count > t.max_size or (not t.dynamic and count != t.max_size):
-            size = f"at most {t.max_size}" if t.dynamic else f"exactly {t.max_size}"
+            bound = "at most" if t.dynamic else "exactly"
             raise EncodeError(
-                self.name,
-                path,
-                value,
-                f"{size} {'item' if t.max_size == 1 else 'items'} ({t.dsdl})",
+                self.name, path, value, f"{bound} {counted(t.max_size, 'item')} ({t.dsdl})"
             )
         if t.dynamic and not (tao and uses_tao(t)):
             w.put(count, t.prefix_bits)
