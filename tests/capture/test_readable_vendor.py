@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from tests.dsdl_support import write_namespace
 from veronte4x.capture.readable import readable_fields
 from veronte4x.dronecan import TypeSet, decode_frames, encode, from_builtin
 
@@ -12,12 +13,14 @@ from veronte4x.dronecan import TypeSet, decode_frames, encode, from_builtin
 def test_a_vendor_float16_reads_as_its_shortest_half_precision_form(tmp_path: Path) -> None:
     """0.1 as float16 is 0.0999755859375: '0.1' in 16 bits; its 32-bit shortest form,
     '0.099975586', was shown for every float16 outside the standard set."""
-    root = tmp_path / "half"
-    root.mkdir()
-    (root / "Inner.uavcan").write_text("float16 h\n")
-    (root / "Choice.uavcan").write_text("@union\nfloat16 half\nfloat32 single\n")
-    (root / "20900.Half.uavcan").write_text(
-        "float16 x\nfloat16[<=2] xs\nfloat32 y\nInner inner\nChoice choice\n"
+    root = write_namespace(
+        tmp_path,
+        "half",
+        {
+            "Inner": "float16 h\n",
+            "Choice": "@union\nfloat16 half\nfloat32 single\n",
+            "20900.Half": "float16 x\nfloat16[<=2] xs\nfloat32 y\nInner inner\nChoice choice\n",
+        },
     )
     types = TypeSet.standard().with_dsdl(root)
     fields = {

@@ -14,6 +14,7 @@ from typing import Any
 
 import pytest
 
+from tests.dsdl_support import write_namespace
 from veronte4x import capture
 from veronte4x import dronecan as v4
 from veronte4x.capture.readable import format_message, readable_fields
@@ -35,10 +36,7 @@ VALUES = {
 @pytest.fixture
 def root(tmp_path: Path) -> Iterator[Path]:
     """The namespace ``acme``, loaded into the default type set for the test only."""
-    root = tmp_path / "acme"
-    root.mkdir()
-    for name, text in NAMESPACE.items():
-        (root / f"{name}.uavcan").write_text(text)
+    root = write_namespace(tmp_path, "acme", NAMESPACE)
     v4.load_dsdl(root)
     yield root
     v4.set_default_types(TypeSet.standard())

@@ -18,6 +18,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from tests.dsdl_support import write_namespace
 
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
@@ -285,10 +286,11 @@ def test_float16_fields_in_array_items_keep_the_array(tmp_path: Path) -> None:
     # The float16 temporaries of an item once took the names of the encoder's array
     # variables (a1, ...): the array became an int before its last item, the generated
     # encoder raised TypeError and every such message took the generic serializer.
-    root = tmp_path / "acme"
-    root.mkdir()
-    (root / "Item.uavcan").write_text("uint8 x\nfloat16 f\nuint8[<=3] tail\n")
-    (root / "20000.Pack.uavcan").write_text("Item[2] items\n")
+    root = write_namespace(
+        tmp_path,
+        "acme",
+        {"Item": "uint8 x\nfloat16 f\nuint8[<=3] tail\n", "20000.Pack": "Item[2] items\n"},
+    )
     types = dronecan.TypeSet.standard().with_dsdl(root)
     (codec,) = (c for c in types.codecs if c.data_type.full_name == "acme.Pack")
     items = [{"x": 1, "f": 1.5, "tail": [1, 2]}, {"x": 2, "f": -2.0, "tail": [3]}]

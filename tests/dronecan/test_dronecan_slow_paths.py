@@ -11,6 +11,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from tests.dsdl_support import write_namespace
 
 import dronecan as reference
 from veronte4x import dronecan
@@ -661,10 +662,7 @@ def test_decode_frames_names_what_is_wrong() -> None:
 
 
 def test_a_tail_array_of_at_most_one_struct_counts_one_item(tmp_path: Path) -> None:
-    root = tmp_path / "tao"
-    root.mkdir()
-    (root / "P.uavcan").write_text("uint8 k\n")
-    (root / "20950.One.uavcan").write_text("P[<=1] ps\n")
+    root = write_namespace(tmp_path, "tao", {"P": "uint8 k\n", "20950.One": "P[<=1] ps\n"})
     types = dronecan.TypeSet.standard().with_dsdl(root)
     codec = types.by_class[types["tao.One"]]
     assert codec.decode(b"\x01") == types["tao.One"](ps=(types["tao.P"](k=1),))
