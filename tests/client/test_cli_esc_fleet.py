@@ -43,13 +43,13 @@ def test_a_range_read_at_once(bus: list[str]) -> None:
 
 def test_a_node_that_does_not_answer_fails_alone(bus: list[str]) -> None:
     result = veronte4x(
-        "esc", "get", "21,99,22", "esc_index", *bus, "--timeout", "0.3", "--retries", "0"
+        "esc", "get", "21,99,22", "esc_index", *bus, "--timeout", "2", "--retries", "0"
     )
     assert result.returncode == 3
     assert result.stdout.splitlines() == [
         "node 21: esc_index = 0 (default 0, range 0..19)",
         "node 99: failed: did not answer uavcan.protocol.param.GetSet (sent once, "
-        "0.3 s each); check the node id, the bus and the bit rate",
+        "2 s each); check the node id, the bus and the bit rate",
         "node 22: esc_index = 1 (default 1, range 0..19)",
         "3 nodes: 2 succeeded, 1 failed (99)",
     ]
@@ -146,7 +146,7 @@ def test_a_value_out_of_range_is_refused_before_anything_is_set(
     assert result.stderr == "veronte4x: node 26: 99 is out of range for esc_index: 0..19\n"
     after = veronte4x("esc", "get", "25", "zero_behavior", *bus)
     assert after.stdout == "zero_behavior = 0 (default 0, range 0..2)\n"  # 25 was not set either
-    result = veronte4x("esc", "apply", str(saved), "25,99", *bus, "--timeout", "0.3",
+    result = veronte4x("esc", "apply", str(saved), "25,99", *bus, "--timeout", "2",
                        "--retries", "0")  # fmt: skip
     assert result.returncode == 3
     assert result.stderr.splitlines()[-1] == (
