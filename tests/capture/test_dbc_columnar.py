@@ -283,6 +283,51 @@ def test_a_bad_dbc_fails_before_decoding(tmp_path: Path) -> None:
     assert not (tmp_path / "out").exists()
 
 
+def test_64_bit_signals_keep_every_value(tmp_path: Path) -> None:
+    """Integer signals past int64 (a 64-bit unsigned one, one scaled by 1000) get uint64
+    and decimal columns, exact in the tables and read back with DuckDB."""
+    dbc = tmp_path / "wide.dbc"
+    dbc.write_text(
+        'VERSION ""\nNS_ :\nBS_:\nBU_: X\n'
+        'BO_ 256 Counter: 8 X\n SG_ count : 0|64@1+ (1,0) [0|0] "" X\n'
+        'BO_ 257 Signed: 8 X\n SG_ delta : 0|64@1- (1,0) [0|0] "" X\n'
+        'BO_ 258 Energy: 8 X\n SG_ energy : 0|64@1+ (1000,0) [0|0] "mJ" X\n'
+    )
+    top = "(1.0) can0 {:03X}#FFFFFFFFFFFFFFFF"
+    path = write(tmp_path / "x.log", [top.format(256), top.format(257), top.format(258),
+                                      "(2.0) can0 100#0000000000000080"])  # fmt: skip
+    tables = capture.read_tables(path, BUS_MAP, dbc=[dbc])
+    assert tables["Counter"].column("count").to_pylist() == [(1 << 64) - 1, 1 << 63]
+    assert tables["Counter"].schema.field("count").type == "uint64"
+    assert tables["Signed"].column("delta").to_pylist() == [-1]
+    assert tables["Signed"].schema.field("delta").type == "int64"
+    assert tables["Energy"].column("energy").to_pylist() == [((1 << 64) - 1) * 1000]
+    assert str(tables["Energy"].schema.field("energy").type) == "decimal128(38, 0)"
+    assert_same_tables(tables, capture.tables_from_records(capture.read(path, BUS_MAP, dbc=[dbc])))
+    capture.to_parquet(path, tmp_path / "out", BusMap(dronecan=False, dbc=(str(dbc),)))
+    counter = f"{tmp_path / 'out'}/capture=*/Counter.parquet"
+    assert duckdb.connect().execute(f"SELECT count FROM read_parquet('{counter}')").fetchall() == [
+        ((1 << 64) - 1,),
+        (1 << 63,),
+    ]
+
+
+def test_a_signal_no_column_holds_is_refused(tmp_path: Path) -> None:
+    dbc = tmp_path / "huge.dbc"
+    scale = 10**70
+    dbc.write_text(
+        f'VERSION ""\nNS_ :\nBS_:\nBU_: X\nBO_ 256 Huge: 8 X\n'
+        f' SG_ x : 0|64@1+ ({scale},0) [0|0] "" X\n'
+    )
+    path = write(tmp_path / "x.log", ["(1.0) can0 100#0000000000000001"])
+    with pytest.raises(SourceError) as error:
+        capture.read_tables(path, BUS_MAP, dbc=[dbc])
+    assert str(error.value) == (
+        f"{dbc}: signal x of Huge: its values have more than 76 digits, more than a table "
+        "column holds"
+    )
+
+
 def test_names_that_veronte4x_takes_get_an_underscore(tmp_path: Path) -> None:
     dbc = tmp_path / "clash.dbc"
     dbc.write_text(

@@ -42,6 +42,7 @@ class DbcMessage:
         UNITS: Field name to unit, for the fields that have one.
         SIGNALS: The DBC names of the signals, in the order of the fields.
         CHOICES: Positions of the signals that have a value table.
+        RANGES: Field name to the lowest and highest value, for the integer fields.
     """
 
     __slots__ = ()
@@ -49,6 +50,7 @@ class DbcMessage:
     UNITS: dict[str, str] = {}  # noqa: RUF012 - set once per generated class
     SIGNALS: tuple[str, ...] = ()
     CHOICES: tuple[int, ...] = ()
+    RANGES: dict[str, tuple[int, int]] = {}  # noqa: RUF012 - set once per generated class
 
 
 class DbcDecoder:
@@ -78,7 +80,10 @@ class DbcDecoder:
             for message in database.messages:
                 key = (message.frame_id, bool(message.is_extended_frame))
                 if key not in self._messages:
-                    cls = _message_class(message)
+                    try:
+                        cls = _message_class(message)
+                    except ValueError as error:
+                        raise SourceError(f"{os.fspath(path)}: {error}") from None
                     self._messages[key] = (message, cls)
                     self._builders[key] = (message.decode, _builder(cls))
 
@@ -190,6 +195,7 @@ def _identifier(name: str, taken: frozenset[str] = frozenset()) -> str:
 def _message_class(message: Any) -> type[Any]:
     fields: list[tuple[str, Any]] = []
     units: dict[str, str] = {}
+    ranges: dict[str, tuple[int, int]] = {}
     for signal in message.signals:
         attr = _identifier(signal.name, RECORD_COLUMNS)
         if signal.choices:
@@ -202,6 +208,7 @@ def _message_class(message: Any) -> type[Any]:
             kind = float
         else:
             kind = int
+            ranges[attr] = _integer_range(signal, message.name)
         fields.append((attr, kind | None))
         if signal.unit:
             units[attr] = signal.unit
@@ -212,6 +219,7 @@ def _message_class(message: Any) -> type[Any]:
         namespace={
             "DBC_NAME": message.name,
             "UNITS": units,
+            "RANGES": ranges,
             "SIGNALS": tuple(signal.name for signal in message.signals),
             "CHOICES": tuple(i for i, signal in enumerate(message.signals) if signal.choices),
             "__module__": __name__,
@@ -220,3 +228,25 @@ def _message_class(message: Any) -> type[Any]:
         slots=True,
     )
     return cls
+
+
+def _integer_range(signal: Any, message: str) -> tuple[int, int]:
+    """The lowest and highest value of an integer signal (integer scale and offset) of the
+    message named ``message``.
+
+    Raises:
+        ValueError: Values of more than `MAX_DIGITS` digits.
+    """
+    half = 1 << (signal.length - 1)
+    raw = (-half, half - 1) if signal.is_signed else (0, 2 * half - 1)
+    ends = [value * signal.scale + signal.offset for value in raw]
+    if max(len(str(abs(end))) for end in ends) > MAX_DIGITS:
+        raise ValueError(
+            f"signal {signal.name} of {message}: its values have more than "
+            f"{MAX_DIGITS} digits, more than a table column holds"
+        )
+    return min(ends), max(ends)
+
+
+MAX_DIGITS = 76
+"""The most decimal digits of an integer signal's values (Arrow's ``decimal256``)."""

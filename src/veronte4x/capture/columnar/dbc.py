@@ -21,7 +21,7 @@ from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns
 from veronte4x.capture.columnar.schema import HEAD, SENDER_INDEX, Column, TableSpec
 from veronte4x.capture.columnar.tables import SUB, Tables
-from veronte4x.capture.dbc_in import decoder_of, failure
+from veronte4x.capture.dbc_in import MAX_DIGITS, decoder_of, failure
 from veronte4x.capture.records import Record, error_record
 from veronte4x.errors import SourceError
 
@@ -205,7 +205,8 @@ class DbcTableSpec(TableSpec):
 
 def table_spec(cls: type[Any]) -> TableSpec:
     """The table of a DBC message class: the record columns, then a column per signal
-    (int64, float64, or the value table's names), its unit in the field's metadata."""
+    (int64, float64, or the value table's names; an integer signal past int64 uint64 or a
+    decimal), its unit in the field's metadata."""
     spec = _SPECS.get(cls)
     if spec is None:
         spec = _SPECS[cls] = _spec(cls)
@@ -218,9 +219,22 @@ _SPECS: weakref.WeakKeyDictionary[type[Any], TableSpec] = weakref.WeakKeyDiction
 def _spec(cls: type[Any]) -> TableSpec:
     columns = []
     for item in dataclasses.fields(cls):
-        kind = {str: _CHOICE, float: pa.float64()}.get(_base(item.type), pa.int64())
+        kind = {str: _CHOICE, float: pa.float64()}.get(_base(item.type))
+        if kind is None:
+            kind = _integer_type(*cls.RANGES.get(item.name, (0, 0)))
         columns.append(Column(item.name, kind, _getter(item.name)))
     return DbcTableSpec(cls.__name__, HEAD, tuple(columns), tuple(cls.UNITS.items()))
+
+
+def _integer_type(low: int, high: int) -> pa.DataType:
+    """The column of an integer signal: int64, else uint64, else an integer decimal (a
+    64-bit signal scaled by a large integer factor)."""
+    if low >= -(1 << 63) and high < 1 << 63:
+        return pa.int64()
+    if low >= 0 and high < 1 << 64:
+        return pa.uint64()
+    digits = len(str(max(-low, high)))
+    return pa.decimal128(38, 0) if digits <= 38 else pa.decimal256(MAX_DIGITS, 0)
 
 
 def _getter(name: str) -> Any:
