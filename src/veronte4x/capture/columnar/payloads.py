@@ -27,6 +27,8 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.columnar.schema import (
+    enum_array,
+    enum_names,
     scalar_type,
     spread,
     struct_array,
@@ -290,7 +292,13 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Arra
         return value
     if isinstance(t, Union):
         return union_array(t, value.tag, _members(t, value, size))
-    children = [_arrow(f.type, value[f.name], size) for f in t.fields if f.name]
+    children = [
+        enum_array(enum_names(f.enum, f.type.bits), value[f.name])
+        if f.enum is not None and isinstance(f.type, Scalar)
+        else _arrow(f.type, value[f.name], size)
+        for f in t.fields
+        if f.name
+    ]
     return struct_array(t, children, size)
 
 

@@ -20,8 +20,8 @@ is a struct of those columns (`union_type`): ``type`` and a field per member.
 
 Every DroneCAN type of a type set (standard or vendor) has its table, by the same rules:
 nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists
-of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there as their
-integers), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``, but
+of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there by name as
+at the top level), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``, but
 for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule of
 `veronte4x.dronecan.types.is_text` (its name or its comment says so: ``name`` of
 ``GetNodeInfoResponse``, ``path`` of ``file.Path``, ``text`` and ``source`` of
@@ -59,7 +59,7 @@ from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import Field, FieldKind
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, Union
+from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union
 from veronte4x.dronecan.serializer import enum_table
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.units import unit
@@ -309,9 +309,17 @@ def field_column(name: str) -> str:
 
 
 def struct_type(struct: Struct) -> pa.DataType:
-    """The Arrow struct of a struct inside a list or a union (enums as their integers,
-    unions as `union_type`)."""
-    return pa.struct([pa.field(f.name, value_type(f.type)) for f in struct.fields if f.name])
+    """The Arrow struct of a struct inside a list or a union (enums as their names, as at
+    the top level; unions as `union_type`)."""
+    return pa.struct([pa.field(f.name, field_type(f)) for f in struct.fields if f.name])
+
+
+def field_type(f: StructField) -> pa.DataType:
+    """The Arrow type of a field of a struct inside a list or a union: `enum_type` for an
+    enum field, else `value_type`."""
+    if f.enum is not None and isinstance(f.type, Scalar):
+        return enum_type(enum_names(f.enum, f.type.bits))
+    return value_type(f.type)
 
 
 def union_type(union: Union) -> pa.DataType:
@@ -362,11 +370,23 @@ def union_array(union: Union, tag: npt.NDArray[np.int64], members: list[pa.Array
     """A union's values (`union_type`) from each element's tag and an array per valued
     member (null where another member is set). A tag without a member (a refused
     transfer's) counts as the first member's."""
-    index_type = union_type(union).field("type").type.index_type
-    indices = pa.array(np.where(tag < len(union.members), tag, 0), index_type)
-    names = pa.array([member.name for member in union.members], pa.string())
-    children = [pa.DictionaryArray.from_arrays(indices, names), *members]
+    names = tuple(member.name for member in union.members)
+    children = [enum_array(names, np.where(tag < len(names), tag, 0)), *members]
     return pa.StructArray.from_arrays(children, fields=list(union_type(union)))
+
+
+def enum_array(names: tuple[str, ...], indices: npt.ArrayLike) -> pa.Array:
+    """Values of an enum column (`enum_type` of ``names``) from their wire values."""
+    index = pa.array(indices, enum_type(names).index_type)
+    return pa.DictionaryArray.from_arrays(index, pa.array(names, pa.string()))
+
+
+def field_values(f: StructField, values: Sequence[Any]) -> pa.Array:
+    """Decoded values of a struct's field (`field_type`), as `arrow_values` makes them."""
+    if f.enum is not None and isinstance(f.type, Scalar):
+        wire = np.array([int(value) for value in values], np.int64)
+        return enum_array(enum_names(f.enum, f.type.bits), wire)
+    return arrow_values(f.type, values)
 
 
 def spread(values: pa.Array, chosen: npt.NDArray[np.int64], size: int) -> pa.Array:
@@ -385,7 +405,7 @@ def arrow_values(t: Scalar | Array | Struct | Union, values: Sequence[Any]) -> p
         return spread(arrow_values(t, [values[i] for i in present]), present, len(values))
     if isinstance(t, Struct):
         children = [
-            arrow_values(f.type, [getattr(value, f.name) for value in values])
+            field_values(f, [getattr(value, f.name) for value in values])
             for f in t.fields
             if f.name
         ]
