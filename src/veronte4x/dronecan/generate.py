@@ -22,6 +22,11 @@ Naming rules (documented in the DroneCAN types page):
   field ``p_flags`` become an ``enum.IntFlag`` and the field stays an int. Members drop
   the prefix unless a name would then start with a digit. Every constant also stays a
   class attribute of its DSDL name.
+- An enumeration type, whose one field ``p`` is an integer and whose constants (two or
+  more, distinct) all have ``p``'s type without such a prefix (``debug.LogLevel``,
+  ``DataTypeKind``, ``tunnel.Protocol``), gets an ``enum.IntEnum`` of them named as
+  above with ``p`` for the prefix (``LogLevelValue``, ``DataTypeKindValue``,
+  ``ProtocolProtocol``), members named as the constants; ``p`` decodes to it.
 - A union (only ``param.Value`` and ``param.NumericValue`` in the standard set) holds one
   member class: the nested type's own class, or a class with one field ``value`` named
   ``<Union><Member>`` in CamelCase.
@@ -205,6 +210,17 @@ def _enum_candidates(
             if len(members) >= 2:
                 found.append(((key, a.name), "IntFlag" if flag else "IntEnum", members, prefix))
                 break
+    named = [a for a in section.fields if a.name]
+    constants = section.constants
+    if not found and len(named) == 1 and len(constants) >= 2:  # an enumeration type
+        a = named[0]
+        if (
+            isinstance(a.type, PrimitiveType)
+            and a.type.kind in ("uint", "int")
+            and all(c.type == a.type for c in constants)
+            and len({c.value for c in constants}) == len(constants)
+        ):
+            found.append(((key, a.name), "IntEnum", list(constants), ""))
     return found
 
 
@@ -236,10 +252,11 @@ def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
             if section.union:
                 result.members[key] = _member_names(key, d, section, definitions, result, taken)
     counts: dict[str, int] = {}
-    for *_, prefix in candidates:
-        counts[_camel(prefix.lower())] = counts.get(_camel(prefix.lower()), 0) + 1
+    for where, *_, prefix in candidates:
+        stem = _camel(prefix.lower() or where[1])
+        counts[stem] = counts.get(stem, 0) + 1
     for where, kind, constants, prefix in candidates:
-        name = _camel(prefix.lower())
+        name = _camel(prefix.lower() or where[1])
         if counts[name] > 1 or name in taken:
             name = result.names[where[0]] + name
         result.enums[where] = (name, kind, constants, prefix)
@@ -382,15 +399,18 @@ def attribute_name(name: str) -> str:
     return f"{name}_" if keyword.iskeyword(name) else name
 
 
-def _enum_source(name: str, kind: str, constants: list[Constant], prefix_len: int) -> list[str]:
+def _enum_source(
+    name: str, kind: str, constants: list[Constant], prefix_len: int, owner: str
+) -> list[str]:
     stripped = [c.name[prefix_len:] for c in constants]
     if any(not s.isidentifier() or keyword.iskeyword(s) for s in stripped):
         stripped = [c.name for c in constants]
+    which = f"``{constants[0].name[:prefix_len]}*``" if prefix_len else f"of ``{owner}``"
     lines = [
         "",
         "",
         f"class {name}(enum.{kind}):",
-        f'    """DSDL constants ``{constants[0].name[:prefix_len]}*``."""',
+        f'    """DSDL constants {which}."""',
         "",
     ]
     for member, c in zip(stripped, constants, strict=True):
@@ -453,10 +473,10 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
     body: list[str] = []
     for (key, _), (name, kind, constants, prefix) in p.enums.items():
         if key in generated:
-            body += _enum_source(name, kind, constants, len(prefix))
+            body += _enum_source(name, kind, constants, len(prefix), p.sections[key][0].full_name)
     for key, (name, constants) in p.constant_enums.items():
         if key in generated:
-            body += _enum_source(name, "IntEnum", constants, 0)
+            body += _enum_source(name, "IntEnum", constants, 0, p.sections[key][0].full_name)
     done: set[str] = set()
     for key in generated:
         if key in p.members:

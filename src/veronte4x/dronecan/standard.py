@@ -365,6 +365,22 @@ class AccessCommandShellResponseFlag(enum.IntFlag):
     """There is more stderr to read"""
 
 
+class DataTypeKindValue(enum.IntEnum):
+    """DSDL constants of ``uavcan.protocol.DataTypeKind``."""
+
+    SERVICE = 0
+    MESSAGE = 1
+
+
+class LogLevelValue(enum.IntEnum):
+    """DSDL constants of ``uavcan.protocol.debug.LogLevel``."""
+
+    DEBUG = 0
+    INFO = 1
+    WARNING = 2
+    ERROR = 3
+
+
 class Error(enum.IntEnum):
     """DSDL constants ``ERROR_*``."""
 
@@ -380,8 +396,21 @@ class Error(enum.IntEnum):
     """Generic error"""
 
 
+class ProtocolProtocol(enum.IntEnum):
+    """DSDL constants of ``uavcan.tunnel.Protocol``."""
+
+    MAVLINK = 0
+    """MAVLink"""
+    MAVLINK2 = 1
+    """MAVLink2"""
+    GPS_GENERIC = 2
+    """GPS in any protocol (e.g. UBX, NMEA, etc.)"""
+    UNDEFINED = 255
+    """Undefined"""
+
+
 class FileError(enum.IntEnum):
-    """DSDL constants ``*``."""
+    """DSDL constants of ``uavcan.protocol.file.Error``."""
 
     OK = 0
     UNKNOWN_ERROR = 32767
@@ -1453,7 +1482,7 @@ class DataTypeKind(HtmlDisplay):
     SERVICE: ClassVar[int] = 0
     MESSAGE: ClassVar[int] = 1
 
-    value: int = 0
+    value: DataTypeKindValue | int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -1673,7 +1702,7 @@ class LogLevel(HtmlDisplay):
     WARNING: ClassVar[int] = 2
     ERROR: ClassVar[int] = 3
 
-    value: int = 0
+    value: LogLevelValue | int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -2261,7 +2290,7 @@ class Protocol(HtmlDisplay):
     UNDEFINED: ClassVar[int] = 255
     """Undefined"""
 
-    protocol: int = 0
+    protocol: ProtocolProtocol | int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -2374,6 +2403,7 @@ __all__ = [
     'CommandType',
     'CylinderStatus',
     'DataTypeKind',
+    'DataTypeKindValue',
     'DeleteRequest',
     'DeleteResponse',
     'Discovery',
@@ -2428,6 +2458,7 @@ __all__ = [
     'LightId',
     'LightsCommand',
     'LogLevel',
+    'LogLevelValue',
     'LogMessage',
     'MagneticFieldStrength',
     'MagneticFieldStrength2',
@@ -2441,6 +2472,7 @@ __all__ = [
     'PrimaryPowerSupplyStatus',
     'Protocol',
     'ProtocolId',
+    'ProtocolProtocol',
     'RGB565',
     'RPMCommand',
     'RTCMStream',
@@ -2609,7 +2641,10 @@ ENUMS: dict[tuple[str, str], type] = {
     ('uavcan.equipment.range_sensor.Measurement', 'sensor_type'): SensorType,
     ('uavcan.equipment.range_sensor.Measurement', 'reading_type'): ReadingType,
     ('uavcan.equipment.safety.ArmingStatus', 'status'): ArmingStatusStatus,
+    ('uavcan.protocol.DataTypeKind', 'value'): DataTypeKindValue,
+    ('uavcan.protocol.debug.LogLevel', 'value'): LogLevelValue,
     ('uavcan.protocol.enumeration.Begin.Response', 'error'): Error,
+    ('uavcan.tunnel.Protocol', 'protocol'): ProtocolProtocol,
 }
 """The enum a field decodes to, by (key, field name)."""
 
