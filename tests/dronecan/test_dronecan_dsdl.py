@@ -83,6 +83,19 @@ def test_enum_fields_decode_to_their_enum() -> None:
     assert decoded.commands[0].command_type is dronecan.CommandType.PWM
 
 
+def test_an_enumeration_type_decodes_to_its_enum() -> None:
+    message = dronecan.LogMessage(level=dronecan.LogLevel(2), source=b"GPS", text=b"no fix")
+    frames = dronecan.encode(message, source_node_id=70, transfer_id=0)
+    decoded = dronecan.decode_frames([(f.can_id, f.data) for f in frames]).message
+    assert decoded == message
+    assert decoded.level.value is dronecan.LogLevelValue.WARNING
+    assert [m.name for m in dronecan.LogLevelValue] == ["DEBUG", "INFO", "WARNING", "ERROR"]
+    assert dronecan.LogLevel.WARNING == dronecan.LogLevelValue.WARNING  # the constant stays
+    assert dronecan.DataTypeKind(1).value == dronecan.DataTypeKindValue.MESSAGE
+    assert dronecan.ProtocolProtocol.UNDEFINED == 255
+    assert dronecan.FileErrorCode(2).value.__class__ is int  # a type of before: unchanged
+
+
 def test_numpy_scalars_are_accepted_never_narrowed() -> None:
     message = dronecan.BatteryInfo(
         voltage=np.float32(12.5),
