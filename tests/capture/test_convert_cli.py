@@ -50,7 +50,10 @@ def test_usage_errors_exit_2_with_one_line(tmp_path: Path) -> None:
     )
     missing = tmp_path / "missing.log"
     result = convert(str(FLIGHT), str(missing), "--to", "parquet", str(tmp_path / "out"))
-    assert (result.returncode, result.stderr) == (2, f"veronte4x: {missing}: no such file\n")
+    assert (result.returncode, result.stderr) == (
+        2,
+        f"veronte4x: {missing}: No such file or directory\n",
+    )
     assert not (tmp_path / "out").exists()
     result = convert("-", "--to", "parquet", str(tmp_path / "out"))
     assert result.returncode == 2

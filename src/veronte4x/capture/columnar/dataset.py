@@ -520,5 +520,5 @@ def sources(source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -
         if name == STDIN:
             raise SourceError("a dataset is written from files: give a capture file, not -")
         if not os.path.exists(name):
-            raise FileNotFoundError(f"{name}: no such file")
+            raise FileNotFoundError(f"{name}: {os.strerror(errno.ENOENT)}")  # as `decode` says
     return names
