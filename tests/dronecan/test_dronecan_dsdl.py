@@ -92,7 +92,7 @@ def test_an_enumeration_type_decodes_to_its_enum() -> None:
     assert [m.name for m in dronecan.LogLevelValue] == ["DEBUG", "INFO", "WARNING", "ERROR"]
     assert dronecan.LogLevel.WARNING == dronecan.LogLevelValue.WARNING  # the constant stays
     assert dronecan.DataTypeKind(1).value == dronecan.DataTypeKindValue.MESSAGE
-    assert dronecan.ProtocolProtocol.UNDEFINED == 255
+    assert int(dronecan.ProtocolProtocol.UNDEFINED) == 255
     assert dronecan.FileErrorCode(2).value.__class__ is int  # a type of before: unchanged
 
 
