@@ -22,6 +22,7 @@ from dronecan_oracle import reference_builtin, reference_decode, reference_frame
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_dronecan_differential import _same, schema_strategy
+from tests.dsdl_support import write_namespace
 
 import dronecan as dc
 from veronte4x import capture
@@ -428,3 +429,25 @@ def test_a_union_in_a_union_names_its_line(tmp_path: Path, default_types: None) 
         v4.load_dsdl(root)
     assert str(error.value) == f"{root}/V.uavcan:3: a union in a union is not supported"
     assert v4.default_types() is TypeSet.standard()  # unchanged
+
+
+def test_a_vendor_enumeration_type_decodes_to_its_enum(tmp_path: Path) -> None:
+    """The generator's rule for vendor types too: one integer field taking one of the
+    type's constants (none with the field's prefix) decodes to an enum of them."""
+    root = write_namespace(
+        tmp_path,
+        "acme",
+        {
+            "Mode": "uint2 IDLE = 0\nuint2 RUN = 1\nuint2 FAULT = 3\nuint2 mode\n",
+            "20901.Report": "Mode mode\nuint8 LIMIT = 7\nuint8 count\n",
+        },
+    )
+    types = TypeSet.standard().with_dsdl(root)
+    report = types["acme.Report"](types["acme.Mode"](3), 4)
+    frames = v4.encode(report, source_node_id=5, transfer_id=0, types=types)
+    decoded = v4.decode_frames([(f.can_id, f.data) for f in frames], 0.0, types).message
+    assert decoded == report
+    assert type(decoded.mode).__name__ == "AcmeMode"  # "Mode" is the standard's enum
+    assert type(decoded.mode.mode).__name__ == "AcmeModeMode"  # the class name in front
+    assert decoded.mode.mode.name == "FAULT"
+    assert type(decoded.count) is int  # LIMIT is no value of count: a constant only
