@@ -451,3 +451,29 @@ def test_a_vendor_enumeration_type_decodes_to_its_enum(tmp_path: Path) -> None:
     assert type(decoded.mode.mode).__name__ == "AcmeModeMode"  # the class name in front
     assert decoded.mode.mode.name == "FAULT"
     assert type(decoded.count) is int  # LIMIT is no value of count: a constant only
+
+
+def test_a_signed_field_keeps_its_constants_as_attributes(tmp_path: Path) -> None:
+    """``int8 TREND_DOWN = -1``: no enum (its members would not be the wire values); the
+    field is an int, in its table an int8 column."""
+    root = write_namespace(
+        tmp_path,
+        "acme",
+        {
+            "20902.Trend": "int8 TREND_DOWN = -1\nint8 TREND_FLAT = 0\nint8 TREND_UP = 1\n"
+            "int8 trend\n"
+        },
+    )
+    types = TypeSet.standard().with_dsdl(root)
+    cls: Any = types["acme.Trend"]
+    assert cls.TREND_DOWN == -1
+    lines = []
+    for tid, value in enumerate((-1, 0, 1, 5)):
+        (frame,) = v4.encode(cls(value), source_node_id=9, transfer_id=tid, types=types)
+        lines.append(f"({tid}.000000) can0 {frame.can_id:08X}#{frame.data.hex().upper()}")
+    path = tmp_path / "trend.log"
+    path.write_text("\n".join(lines) + "\n")
+    assert [r.message.trend for r in capture.read(path, types=types)] == [-1, 0, 1, 5]
+    table = capture.read_tables(path, types=types)["Trend"]
+    assert table.column("trend").to_pylist() == [-1, 0, 1, 5]
+    assert table.schema.field("trend").type == "int8"

@@ -13,20 +13,22 @@ Naming rules (documented in the DroneCAN types page):
   component in front (``ActuatorStatus``, ``CameraGimbalStatus``, ``HardpointCommand``),
   and more components while a clash remains.
 - The types that veronte4x named before keep their names (`HAND_NAMES`).
-- Constants sharing the prefix ``P_`` where ``p`` is an integer field of the same type
-  become an ``enum.IntEnum`` named ``CamelCase(P)`` (``ActuatorCommand.command_type``:
-  ``CommandType``); where two types would give the same name, or the name is taken, the
-  class name goes in front (``FixStatus``, ``Fix2Status``, ``ArmingStatusStatus``). The
-  field decodes to it (an int where the value has no member; annotated with the enum alone
-  where every value has one). Constants ``P_FLAG_*`` for a
-  field ``p_flags`` become an ``enum.IntFlag`` and the field stays an int. Members drop
-  the prefix unless a name would then start with a digit. Every constant also stays a
-  class attribute of its DSDL name.
-- An enumeration type, whose one field ``p`` is an integer and whose constants (two or
-  more, distinct) all have ``p``'s type without such a prefix (``debug.LogLevel``,
-  ``DataTypeKind``, ``tunnel.Protocol``), gets an ``enum.IntEnum`` of them named as
-  above with ``p`` for the prefix (``LogLevelValue``, ``DataTypeKindValue``,
-  ``ProtocolProtocol``), members named as the constants; ``p`` decodes to it.
+- Constants sharing the prefix ``P_`` where ``p`` is an unsigned integer field of the
+  same type become an ``enum.IntEnum`` named ``CamelCase(P)``
+  (``ActuatorCommand.command_type``: ``CommandType``); where two types would give the same
+  name, or the name is taken, the class name goes in front (``FixStatus``,
+  ``Fix2Status``, ``ArmingStatusStatus``). The field decodes to it (an int where the value
+  has no member; annotated with the enum alone where every value has one). Constants
+  ``P_FLAG_*`` for a field ``p_flags`` become an ``enum.IntFlag`` and the field stays an
+  int. Members drop the prefix unless a name would then start with a digit. Every
+  constant also stays a class attribute of its DSDL name; a signed field's constants are
+  only that (the field stays an int).
+- An enumeration type, whose one field ``p`` is an unsigned integer and whose constants
+  (two or more, distinct) all have ``p``'s type without such a prefix
+  (``debug.LogLevel``, ``DataTypeKind``, ``tunnel.Protocol``), gets an ``enum.IntEnum``
+  of them named as above with ``p`` for the prefix (``LogLevelValue``,
+  ``DataTypeKindValue``, ``ProtocolProtocol``), members named as the constants; ``p``
+  decodes to it.
 - A union (only ``param.Value`` and ``param.NumericValue`` in the standard set) holds one
   member class: the nested type's own class, or a class with one field ``value`` named
   ``<Union><Member>`` in CamelCase.
@@ -201,7 +203,7 @@ def _enum_candidates(
     found = []
     for a in section.fields:
         t = a.type
-        if not a.name or not isinstance(t, PrimitiveType) or t.kind not in ("uint", "int"):
+        if not a.name or not isinstance(t, PrimitiveType) or t.kind != "uint":
             continue
         for prefix, flag in ((a.name.upper() + "_", False), (a.name.upper()[:-1] + "_", True)):
             if flag and not a.name.endswith("s"):
@@ -216,7 +218,7 @@ def _enum_candidates(
         a = named[0]
         if (
             isinstance(a.type, PrimitiveType)
-            and a.type.kind in ("uint", "int")
+            and a.type.kind == "uint"
             and all(c.type == a.type for c in constants)
             and len({c.value for c in constants}) == len(constants)
         ):
