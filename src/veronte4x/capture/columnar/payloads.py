@@ -28,7 +28,7 @@ import pyarrow as pa
 
 from veronte4x.capture.columnar.schema import (
     enum_array,
-    enum_names,
+    field_enum_names,
     scalar_type,
     spread,
     struct_array,
@@ -36,7 +36,16 @@ from veronte4x.capture.columnar.schema import (
     value_type,
     valued_members,
 )
-from veronte4x.dronecan.schema import Array, Scalar, Struct, Union, max_bits, min_bits, uses_tao
+from veronte4x.dronecan.schema import (
+    Array,
+    Scalar,
+    Struct,
+    StructField,
+    Union,
+    max_bits,
+    min_bits,
+    uses_tao,
+)
 
 Ints: TypeAlias = npt.NDArray[np.int64]
 
@@ -292,14 +301,14 @@ def _arrow(t: Scalar | Array | Struct | Union, value: Any, size: int) -> pa.Arra
         return value
     if isinstance(t, Union):
         return union_array(t, value.tag, _members(t, value, size))
-    children = [
-        enum_array(enum_names(f.enum, f.type.bits), value[f.name])
-        if f.enum is not None and isinstance(f.type, Scalar)
-        else _arrow(f.type, value[f.name], size)
-        for f in t.fields
-        if f.name
-    ]
+    children = [_field(f, value[f.name], size) for f in t.fields if f.name]
     return struct_array(t, children, size)
+
+
+def _field(f: StructField, value: Any, size: int) -> pa.Array:
+    """``size`` values of a struct's field (an enum field's wire values by name)."""
+    names = field_enum_names(f)
+    return _arrow(f.type, value, size) if names is None else enum_array(names, value)
 
 
 def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:

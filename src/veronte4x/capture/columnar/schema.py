@@ -20,9 +20,9 @@ is a struct of those columns (`union_type`): ``type`` and a field per member.
 
 Every DroneCAN type of a type set (standard or vendor) has its table, by the same rules:
 nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of structs as lists
-of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there by name as
-at the top level), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``, but
-for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule of
+of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there by name as at
+the top level), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``,
+but for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule of
 `veronte4x.dronecan.types.is_text` (its name or its comment says so: ``name`` of
 ``GetNodeInfoResponse``, ``path`` of ``file.Path``, ``text`` and ``source`` of
 ``debug.LogMessage``, the union member ``string_value``), applied here to every type set,
@@ -293,8 +293,7 @@ def _struct_columns(
             columns.append(Column(name, pa.string(), _path(where), text=True))
         elif isinstance(t, Array):
             columns.append(Column(name, value_type(t), _path(where)))
-        elif f.enum is not None:
-            names = enum_names(f.enum, t.bits)
+        elif (names := field_enum_names(f)) is not None:
             columns.append(Column(name, enum_type(names), _enum_index(where), names))
         else:
             columns.append(Column(name, scalar_type(t), _path(where)))
@@ -317,9 +316,15 @@ def struct_type(struct: Struct) -> pa.DataType:
 def field_type(f: StructField) -> pa.DataType:
     """The Arrow type of a field of a struct inside a list or a union: `enum_type` for an
     enum field, else `value_type`."""
-    if f.enum is not None and isinstance(f.type, Scalar):
-        return enum_type(enum_names(f.enum, f.type.bits))
-    return value_type(f.type)
+    names = field_enum_names(f)
+    return value_type(f.type) if names is None else enum_type(names)
+
+
+def field_enum_names(f: StructField) -> tuple[str, ...] | None:
+    """The `enum_names` of an enum field; None for another field."""
+    if f.enum is None or not isinstance(f.type, Scalar):
+        return None
+    return enum_names(f.enum, f.type.bits)
 
 
 def union_type(union: Union) -> pa.DataType:
@@ -383,10 +388,10 @@ def enum_array(names: tuple[str, ...], indices: npt.ArrayLike) -> pa.Array:
 
 def field_values(f: StructField, values: Sequence[Any]) -> pa.Array:
     """Decoded values of a struct's field (`field_type`), as `arrow_values` makes them."""
-    if f.enum is not None and isinstance(f.type, Scalar):
-        wire = np.array([int(value) for value in values], np.int64)
-        return enum_array(enum_names(f.enum, f.type.bits), wire)
-    return arrow_values(f.type, values)
+    names = field_enum_names(f)
+    if names is None:
+        return arrow_values(f.type, values)
+    return enum_array(names, np.array([int(value) for value in values], np.int64))
 
 
 def spread(values: pa.Array, chosen: npt.NDArray[np.int64], size: int) -> pa.Array:
