@@ -23,6 +23,8 @@ from .cli_support import GROUP, bus_args, free_port, veronte4x
 
 ODD = 30
 STUBBORN = 31
+LONG_UP = 4_000_000_000
+"""Node 30's uptime at the start, seconds: near the end of its uint32 counter."""
 
 
 def _parameter(node: int, request: dronecan.GetSetRequest, kept: int) -> object:
@@ -55,7 +57,8 @@ def _serve(port: int, stop: threading.Event) -> None:
         uptime = 0.0
         while not stop.is_set():
             for node in (ODD, STUBBORN):
-                send(dronecan.NodeStatus(uptime_sec=int(uptime)), node, transfer_id % 32)
+                since = int(uptime) + (LONG_UP if node == ODD else 0)
+                send(dronecan.NodeStatus(uptime_sec=since), node, transfer_id % 32)
             transfer_id += 1
             uptime += 0.1
             while (frame := bus.recv(0.1)) is not None:
@@ -101,14 +104,15 @@ def test_a_node_that_does_not_tell_its_name(bus: list[str]) -> None:
     assert (result.returncode, result.stderr) == (0, ""), result.stderr
     lines = result.stdout.splitlines()
     assert lines[0] == (
-        "node  name          health    mode                uptime         seen  vendor"
-    )
-    rest = (
-        r"  OK        OPERATIONAL      (?= *\d+ s)[ \d]{7} s  "
-        r"(?= *\d+\.\d s)[ \d.]{5} s ago  0x0000"
-    )
-    assert re.fullmatch(r"  30  \?           " + rest, lines[1]), lines
-    assert re.fullmatch(r"  31  stubborn\.esc" + rest, lines[2]), lines
+        "node  name          health    mode                   uptime         seen  vendor"
+    )  # the uptime column as wide as node 30's ten digits
+    rest = r"  (?= *\d+\.\d s)[ \d.]{5} s ago  0x0000"
+    assert re.fullmatch(
+        r"  30  \?             OK        OPERATIONAL      4000\d{6} s" + rest, lines[1]
+    ), lines
+    assert re.fullmatch(
+        r"  31  stubborn\.esc  OK        OPERATIONAL      (?= *\d+ s)[ \d]{10} s" + rest, lines[2]
+    ), lines
     assert len(lines) == 3
     assert {len(line) for line in lines} == {len(lines[0])}, lines
 

@@ -340,15 +340,16 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
         return EXIT_NO_ANSWER
     if not args.json:
         width = max(len(n or "?") for n in names.values())
+        digits = max(7, *(len(str(e.uptime_sec)) for e in found))  # uint32: up to 10
         print(
-            f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  {'uptime':>9}  "
-            f"{'seen':>11}  vendor"
+            f"{'node':>4}  {'name':<{width}}  {'health':<8}  {'mode':<15}  "
+            f"{'uptime':>{digits + 2}}  {'seen':>11}  vendor"
         )
         for e in found:
             print(
                 f"{e.node_id:>4}  {names[e.node_id] or '?':<{width}}  {_name(e.health):<8}  "
-                f"{_name(e.mode):<15}  {e.uptime_sec:>7} s  {now - e.last_seen:>5.1f} s ago  "
-                f"{e.vendor_specific_status_code:#06x}"
+                f"{_name(e.mode):<15}  {e.uptime_sec:>{digits}} s  "
+                f"{now - e.last_seen:>5.1f} s ago  {e.vendor_specific_status_code:#06x}"
             )
     return EXIT_OK
 
