@@ -133,6 +133,13 @@ anything: st.SearchStrategy[Any] = st.deferred(
         st.sampled_from(Mode),
         st.lists(st.integers(0, 3), max_size=2),
         st.lists(st.booleans() | st.integers(0, 3), max_size=3).map(tuple),
+        # Arrays of structs, of enums, of tuples (ArrayCommand's commands and the like).
+        st.lists(
+            st.builds(Inner, st.integers(0, 3))
+            | st.sampled_from(Mode)
+            | st.tuples(st.integers(0, 1)),
+            max_size=3,
+        ).map(tuple),
         st.builds(Inner, anything, st.sampled_from(Mode) | st.none()),
         st.builds(Other, st.integers(0, 3) | st.floats(0, 1)),
     )

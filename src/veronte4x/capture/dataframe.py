@@ -11,6 +11,7 @@ from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.flat import field_names, flatten
 from veronte4x.capture.records import Record
 from veronte4x.times import TimeForm, check_time_form
 from veronte4x.units import unit
@@ -27,42 +28,15 @@ def fields(message: Any) -> dict[str, Any]:
     member's value, ``value.value``; an array of structs or unions item by item,
     ``choices_0.value``.
     """
-    out: dict[str, Any] = {}
-    if dataclasses.is_dataclass(message) and not isinstance(message, type):
-        _flatten(message, "", out)
-    return out
+    return flatten(message, _value)
+
+
+def _value(owner: type, attr: str, value: Any) -> Any:
+    """A leaf of `fields`: its value, an enum's as its int."""
+    return value.value if isinstance(value, enum.Enum) else value
 
 
 _SCALARS = frozenset({int, float, bool, str, bytes, type(None)})
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
-
-
-def _field_names(cls: type) -> tuple[str, ...]:
-    """A dataclass's field names, in order."""
-    names = _FIELD_NAMES.get(cls)
-    if names is None:  # dataclasses.fields() is slow: once per class
-        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(cls))
-    return names
-
-
-def _flatten(message: Any, prefix: str, out: dict[str, Any]) -> None:
-    for field in _field_names(type(message)):
-        value = getattr(message, field)
-        name = prefix + field
-        if type(value) in _SCALARS:
-            out[name] = value
-        elif isinstance(value, tuple):
-            for index, item in enumerate(value):
-                if type(item) not in _SCALARS and dataclasses.is_dataclass(item):
-                    _flatten(item, f"{name}_{index}.", out)  # an array of structs or unions
-                else:
-                    out[f"{name}_{index}"] = item
-        elif isinstance(value, enum.Enum):
-            out[name] = value.value
-        elif dataclasses.is_dataclass(value) and not isinstance(value, type):
-            _flatten(value, name + ".", out)
-        else:
-            out[name] = value
 
 
 def to_dataframe(
@@ -257,35 +231,49 @@ def _class_columns(
     """The columns `fields` gives every instance of one class, field by field; None when
     the instances differ in shape or two columns share a name."""
     columns: list[tuple[str, list[Any]]] = []
-    for field in _field_names(cls):
-        name = prefix + field
-        values = list(map(attrgetter(field), instances))
-        kinds = set(map(type, values))
-        shapes = set(map(_shape, kinds))
-        if shapes == {"value"}:
-            columns.append((name, values))
-        elif shapes <= {"value", "enum"}:
-            columns.append((name, [v.value if isinstance(v, enum.Enum) else v for v in values]))
-        elif shapes == {"tuple"} and len(lengths := set(map(len, values))) == 1:
-            items = range(lengths.pop())  # by itemgetter: zip(*values) makes a tracked iterator
-            columns += [(f"{name}_{i}", list(map(itemgetter(i), values))) for i in items]
-        elif shapes == {"dataclass"} and len(kinds) == 1:
-            nested = _class_columns(name + ".", kinds.pop(), values)
-            if nested is None:
-                return None
-            columns += nested
-        else:
+    for field in field_names(cls):
+        found = _columns(prefix + field, list(map(attrgetter(field), instances)))
+        if found is None:
             return None
+        columns += found
     if len({name for name, _ in columns}) < len(columns):
         return None
     return columns
 
 
+def _columns(name: str, values: list[Any], item: bool = False) -> _Columns | None:
+    """The columns `fields` gives one field's ``values`` (of an array's items if ``item``:
+    a tuple there is a value); None when they differ in shape."""
+    kinds = set(map(type, values))
+    shapes = set(map(_shape, kinds))
+    if item:
+        shapes = {"value" if shape == "tuple" else shape for shape in shapes}
+    if shapes == {"value"}:
+        return [(name, values)]
+    if shapes <= {"value", "enum"}:
+        return [(name, [v.value if isinstance(v, enum.Enum) else v for v in values])]
+    if shapes == {"dataclass"} and len(kinds) == 1:
+        return _class_columns(name + ".", kinds.pop(), values)
+    if shapes == {"tuple"} and len(lengths := set(map(len, values))) == 1:
+        columns: _Columns = []
+        for i in range(lengths.pop()):  # by itemgetter: zip(*values) makes a tracked iterator
+            found = _columns(f"{name}_{i}", list(map(itemgetter(i), values)), item=True)
+            if found is None:
+                return None
+            columns += found
+        return columns
+    return None
+
+
+_Columns = list[tuple[str, list[Any]]]
+"""Columns by name, each a list of values."""
+
+
 def _shape(kind: type) -> str:
-    """How `_flatten` flattens a value of this type."""
+    """How `fields` flattens a value of this type (`veronte4x.capture.flat`)."""
     if kind in _SCALARS:
         return "value"
-    if issubclass(kind, tuple):
+    if kind is tuple:
         return "tuple"
     if issubclass(kind, enum.Enum):
         return "enum"

@@ -7,10 +7,10 @@ The command line's text, JSON lines and CSV outputs are written through these fu
 
 from __future__ import annotations
 
-import dataclasses
 import enum
 from typing import Any
 
+from veronte4x.capture.flat import field_names, flatten, is_message
 from veronte4x.dronecan.typeset import float16_fields, text_fields
 from veronte4x.numbers import shortest
 from veronte4x.times import format_time
@@ -55,20 +55,6 @@ def hex_bytes(data: bytes) -> str:
     return f"[{data.hex(' ')}]"
 
 
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
-
-
-def _names(cls: type) -> tuple[str, ...]:
-    names = _FIELD_NAMES.get(cls)
-    if names is None:  # dataclasses.fields() is slow: once per class
-        names = _FIELD_NAMES[cls] = tuple(f.name for f in dataclasses.fields(cls))
-    return names
-
-
-def _is_message(value: Any) -> bool:
-    return dataclasses.is_dataclass(value) and not isinstance(value, type)
-
-
 def readable_fields(message: Any) -> dict[str, Any]:
     """A message's fields as a flat dict with readable values.
 
@@ -83,29 +69,7 @@ def readable_fields(message: Any) -> dict[str, Any]:
         >>> readable_fields(status)["health"]
         'OK'
     """
-    out: dict[str, Any] = {}
-    if _is_message(message):
-        _fill(message, "", out)
-    return out
-
-
-def _fill(message: Any, prefix: str, out: dict[str, Any]) -> None:
-    owner = type(message)
-    for attr in _names(owner):
-        value = getattr(message, attr)
-        kind = type(value)
-        if kind is int or kind is bool or value is None:
-            out[prefix + attr] = value
-        elif kind is tuple:
-            for index, item in enumerate(value):
-                if hasattr(type(item), "__dataclass_fields__"):  # an array of structs or unions
-                    _fill(item, f"{prefix}{attr}_{index}.", out)
-                else:
-                    out[f"{prefix}{attr}_{index}"] = readable(owner, attr, item)
-        elif hasattr(kind, "__dataclass_fields__"):
-            _fill(value, f"{prefix}{attr}.", out)
-        else:
-            out[prefix + attr] = readable(owner, attr, value)
+    return flatten(message, readable)
 
 
 def format_message(message: Any) -> str:
@@ -123,9 +87,9 @@ rpm=1200 rpm, power_rating_pct=40 %, esc_index=2)'
 def _format(message: Any, top: str, prefix: str) -> str:
     owner = type(message)
     parts = []
-    for attr in _names(owner):
+    for attr in field_names(owner):
         value = getattr(message, attr)
-        if _is_message(value):
+        if is_message(value):
             text = _format(value, top, f"{prefix}{attr}.")
         elif type(value) is tuple:
             text = "(" + ", ".join(_item(owner, attr, item, top, prefix) for item in value) + ")"
@@ -139,7 +103,7 @@ def _format(message: Any, top: str, prefix: str) -> str:
 
 
 def _item(owner: type, attr: str, item: Any, top: str, prefix: str) -> str:
-    if _is_message(item):  # an array of structs or unions
+    if is_message(item):  # an array of structs or unions
         return _format(item, top, f"{prefix}{attr}.")
     return _scalar(owner, attr, item)
 
