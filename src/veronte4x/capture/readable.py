@@ -34,6 +34,8 @@ def readable(owner: type, attr: str, value: Any) -> Any:
     """One field's value as people read it: an enum's name, text as ``str``, other bytes in
     hex, a float in its shortest round-trip form; ints, bools and None unchanged."""
     kind = type(value)
+    if kind is int or kind is bool or value is None:  # most fields: nothing to do
+        return value
     if kind is float:
         return shortest(value, _float_bits(owner, attr))
     if isinstance(value, enum.Enum):
