@@ -91,7 +91,11 @@ def test_an_enumeration_type_decodes_to_its_enum() -> None:
     assert decoded.level.value is dronecan.LogLevelValue.WARNING
     assert [m.name for m in dronecan.LogLevelValue] == ["DEBUG", "INFO", "WARNING", "ERROR"]
     assert dronecan.LogLevel.WARNING == dronecan.LogLevelValue.WARNING  # the constant stays
-    assert dronecan.DataTypeKind(1).value == dronecan.DataTypeKindValue.MESSAGE
+    request = dronecan.GetDataTypeInfoRequest(id=341, kind=dronecan.DataTypeKind(1))
+    frames = dronecan.encode(request, source_node_id=1, destination_node_id=2, transfer_id=0)
+    asked = dronecan.decode_frames([(f.can_id, f.data) for f in frames]).message
+    assert asked.kind.value == dronecan.DataTypeKindValue.MESSAGE
+    assert asked.kind.value is dronecan.DataTypeKindValue.MESSAGE  # decoded: the enum itself
     assert int(dronecan.ProtocolProtocol.UNDEFINED) == 255
     assert dronecan.FileErrorCode(2).value.__class__ is int  # a type of before: unchanged
 
