@@ -35,9 +35,10 @@ lint: $(VENV)/.installed-dev
 types: $(VENV)/.installed-dev
 	$(BIN)/mypy
 
-# On one worker per CPU, four at most (each Dask test starts a cluster of its own).
+# On one worker per CPU, four at most (each Dask test starts a cluster of its own), where the
+# udp_multicast test buses stay on this machine (tests/on_loopback).
 test: $(VENV)/.installed-dev
-	$(BIN)/python -m pytest --numprocesses auto --maxprocesses 4
+	tests/on_loopback $(BIN)/python -m pytest --numprocesses auto --maxprocesses 4
 
 # Not --quiet: it hides the warnings that --strict should count (mkdocstrings' broken
 # cross-references among them). Every WARNING line of the build fails it, whichever plugin

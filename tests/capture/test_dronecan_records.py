@@ -1,6 +1,9 @@
 """DroneCAN frames in a capture: one record per transfer, one per reassembly problem."""
 
+import pytest
+
 from veronte4x import dronecan
+from veronte4x.capture import decoder
 from veronte4x.capture.busmap import Role
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import Frame
@@ -42,7 +45,18 @@ def test_problems_are_records_and_the_stream_goes_on() -> None:
     assert records[-1].message == STATUS
 
 
-def test_fused_candump_path_reassembles_too() -> None:
-    lines = [f"({f.timestamp:.6f}) can0 {f.can_id:08X}#{f.data.hex()}" for f in _frames(1.0, 9, 1)]
-    records = list(CaptureDecoder().decode_candump(lines))
-    assert [r.message for r in records] == [STATUS]
+def test_fused_candump_path_reassembles_too(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`decode_chunks` reads plain log-form lines itself: the exact line parser, which the
+    other lines take, is never called, and the records equal `decode_candump`'s."""
+    frames = _frames(1.0, 9, 1)
+    lines = [f"({f.timestamp:.6f}) can0 {f.can_id:08X}#{f.data.hex()}\n" for f in frames]
+    exact = list(CaptureDecoder().decode_candump(lines))
+    assert [r.message for r in exact] == [STATUS]
+
+    def not_fused(*args: object) -> None:
+        raise AssertionError("a plain line left the fused path")
+
+    monkeypatch.setattr(decoder, "parse_line", not_fused)
+    monkeypatch.setattr(decoder, "parse_candump", not_fused)
+    fused = list(CaptureDecoder().decode_chunks([line.encode() for line in lines]))
+    assert fused == exact

@@ -6,6 +6,7 @@ its exact lines on standard error, no traceback."""
 
 from __future__ import annotations
 
+import argparse
 import os
 import subprocess
 import sys
@@ -22,6 +23,8 @@ from tests.client.cli_support import (
     simulator,
     veronte4x,
 )
+from veronte4x.canbus import open_bus
+from veronte4x.cli.options import add_bus_options, bus_settings
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 
@@ -45,6 +48,18 @@ def test_a_bus_option_true_or_false_reaches_the_bus() -> None:
         "",
         "veronte4x: no node on the bus within 0.3 s; check --interface, --channel and --bitrate\n",
     )
+
+
+@pytest.mark.parametrize(("text", "fd"), [("false", False), ("TRUE", True)])
+def test_a_bus_option_true_or_false_reaches_the_bus_as_a_bool(text: str, fd: bool) -> None:
+    """The command line's ``fd=...`` opens a udp_multicast bus of that protocol."""
+    parser = argparse.ArgumentParser()
+    add_bus_options(parser)
+    args = parser.parse_args([*bus_args(free_port()), "--bus-option", f"fd={text}"])
+    settings = bus_settings(args)
+    assert settings["options"]["fd"] is fd
+    with open_bus(**settings) as bus:
+        assert bus.protocol == (can.CanProtocol.CAN_FD if fd else can.CanProtocol.CAN_20)
 
 
 def test_a_bus_option_the_interface_cannot_take_is_one_line() -> None:

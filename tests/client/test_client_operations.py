@@ -15,10 +15,21 @@ from veronte4x.simulator import SimulatedEsc
 
 
 def _exchange(
-    protocol: ClientProtocol, runner: ops.Runner, escs: list[SimulatedEsc], now: float
+    protocol: ClientProtocol,
+    runner: ops.Runner,
+    escs: list[SimulatedEsc],
+    now: float,
+    sent: tuple[dronecan.Reassembler, list[Any]] | None = None,
 ) -> None:
-    """One round trip: the client's frames to every ESC, the ESCs' frames back."""
+    """One round trip: the client's frames to every ESC, the ESCs' frames back; with
+    ``sent``, each message the client sent is added to its list."""
     frames = protocol.take_frames()
+    if sent is not None:
+        reassembler, messages = sent
+        for frame in frames:
+            transfer = reassembler.feed(frame.can_id, frame.data, now)
+            if transfer is not None:
+                messages.append(transfer.message)
     for esc in escs:
         for frame in frames:
             esc.receive(frame.can_id, frame.data, now)
@@ -154,7 +165,11 @@ def test_a_refused_value_stops_the_apply_before_the_save() -> None:
     esc = SimulatedEsc(21)
     out_of_range = paramfile.Change("esc_index", 0, dronecan.IntegerValue(30))
     task = runner.start(ops.apply_changes(21, [out_of_range]), 0.0)
+    sent: list[Any] = []
+    tap = (dronecan.Reassembler(), sent)
     for step in range(1, 5):
-        _exchange(protocol, runner, [esc], 0.01 * step)
+        _exchange(protocol, runner, [esc], 0.01 * step, tap)
     with pytest.raises(ParameterError, match=r"^node 21: 30 is out of range for esc_index"):
         task.result()
+    assert [type(m) for m in sent] == [dronecan.GetSetRequest]  # the set, and no SAVE
+    assert esc.state.parameters["esc_index"] == 0
