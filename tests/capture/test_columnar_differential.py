@@ -20,6 +20,9 @@ from tests.capture.columnar_support import (
 from veronte4x import capture
 from veronte4x.capture import BusMap
 from veronte4x.capture.columnar import batches
+from veronte4x.capture.columnar.candump import parse_text
+from veronte4x.capture.frames import Frame, micros
+from veronte4x.capture.readers.candump import parse_line
 
 
 @settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
@@ -129,3 +132,29 @@ def test_batch_boundaries_anywhere_agree(
         with mock.patch.object(batches, "BATCH_BYTES", batch_bytes):
             got = capture.read_tables(path, bus_map)
     assert_same_tables(got, expected)
+
+
+extreme_stamps = st.one_of(
+    stamps,
+    st.sampled_from(["253402300799.999999", "253402300800.5", "99999999999999.25", "-62135596801"]),
+    st.floats(allow_nan=False, allow_infinity=False).map(repr),
+)
+
+
+@settings(max_examples=200)
+@given(st.lists(extreme_stamps, min_size=1, max_size=6))
+def test_the_column_path_gives_each_frame_the_readers_time(texts: list[str]) -> None:
+    """Per frame, as the per-frame fallback rows and multi-frame transfers are fed: the
+    reader's timestamp, a plain float where the reader's is one (a `Seconds` only where the
+    float cannot give the microseconds back), and the same microseconds, past the year 9999
+    and before the year 1 included."""
+    lines = [f"({text}) can0 0FF#00FF01" for text in texts]
+    columns = parse_text("".join(f"{line}\n" for line in lines).encode())
+    expected = [f for n, line in enumerate(lines, 1) if isinstance(f := parse_line(line, n), Frame)]
+    got = [] if columns is None else [columns.frame(row) for row in range(len(columns.length))]
+    assert got == expected
+    for mine, theirs in zip(got, expected, strict=True):
+        assert mine.timestamp is not None and theirs.timestamp is not None
+        assert micros(mine.timestamp) == micros(theirs.timestamp)
+        if type(theirs.timestamp) is float:
+            assert type(mine.timestamp) is float

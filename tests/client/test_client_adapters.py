@@ -95,6 +95,8 @@ def test_a_stream_stopped_without_its_thread_still_sends_zero_throttle(
     stream.stop()
     assert _commands(spy) == ZEROS
     assert stream.sent == 2 * STOP_REPEATS
+    # What `esc spin` reports ("zero throttle sent ... (3 times)"), as the docs say.
+    assert stream.STOP_REPEATS == STOP_REPEATS == 3
 
 
 def test_a_bus_that_dies_in_a_quiet_block_is_raised_at_its_end(
