@@ -238,12 +238,14 @@ def to_parquet(
     as in one piece, so that the rows read back equal those of `read_tables`, in capture
     order. A capture's directory is written under a hidden name and put in place by one
     rename once whole: a reader sees all of its tables or none, never a part; converting
-    it again replaces the directory, in one step on Linux. Needs the ``parquet`` extra
+    it again replaces the directory, in one step on Linux. The directory is named after
+    the capture's resolved path: ``flight.log``, ``./flight.log``, its absolute path and a
+    link to it are one capture, in one directory. Needs the ``parquet`` extra
     (the ``dask`` extra with ``client``).
 
     Args:
-        source: A capture file or a list of them (not standard input; a path given twice
-            is converted once).
+        source: A capture file or a list of them (not standard input; a capture given
+            twice, by any spelling of its path, is converted once).
         out_dir: The dataset's directory (created if missing).
         bus_map: CAN IDs and codec choices; defaults to Embention's template IDs.
         client: A ``dask.distributed.Client``: the files are converted on its workers,

@@ -42,11 +42,19 @@ take."""
 def capture_directory(source: str) -> str:
     """The name of a capture's directory: ``capture=``, its base name (characters other
     than letters, digits, ``.``, ``_`` and ``-`` replaced, leading ``.`` and ``_``
-    dropped, cut to ``STEM`` characters) and a digest of its path as given."""
-    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(source)).lstrip("._")[:STEM]
+    dropped, cut to ``STEM`` characters) and a digest of its path, both of the path
+    resolved (`resolved`): every spelling of one file names one directory."""
+    path = resolved(source)
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(path)).lstrip("._")[:STEM]
     stem = stem or "capture"
-    digest = hashlib.sha256(source.encode("utf-8", "surrogateescape")).hexdigest()[:12]
+    digest = hashlib.sha256(path.encode("utf-8", "surrogateescape")).hexdigest()[:12]
     return f"{CAPTURE}{stem}-{digest}"
+
+
+def resolved(source: str) -> str:
+    """A capture's path made absolute, with symbolic links, ``.`` and ``..`` resolved:
+    ``flight.log``, ``./flight.log``, its absolute path and a link to it are one capture."""
+    return os.path.realpath(source)
 
 
 def table_file(table: str) -> str:

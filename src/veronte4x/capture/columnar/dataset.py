@@ -50,7 +50,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import Clock
-from veronte4x.capture.datasets import CAPTURE, capture_directory, table_file
+from veronte4x.capture.datasets import CAPTURE, capture_directory, resolved, table_file
 from veronte4x.capture.source import STDIN
 from veronte4x.errors import SourceError
 from veronte4x.progress import Bar
@@ -513,9 +513,14 @@ def _convert_here(
 
 
 def sources(source: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -> list[str]:
-    """The capture paths of a `to_parquet` call, checked to exist, each once."""
+    """The capture paths of a `to_parquet` call, checked to exist, each capture once (by
+    its resolved path: the first of its spellings is kept)."""
     paths = [source] if isinstance(source, (str, os.PathLike)) else list(source)
-    names = list(dict.fromkeys(os.fspath(p) for p in paths))  # each capture once
+    firsts: dict[str, str] = {}
+    for given in paths:
+        path = os.fspath(given)
+        firsts.setdefault(path if path == STDIN else resolved(path), path)
+    names = list(firsts.values())
     for name in names:
         if name == STDIN:
             raise SourceError("a dataset is written from files: give a capture file, not -")
