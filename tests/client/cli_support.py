@@ -5,8 +5,14 @@ from __future__ import annotations
 import socket
 import subprocess
 import sys
-from collections.abc import Iterator
+import time
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+
+import can
+
+from veronte4x import dronecan
+from veronte4x.dronecan import EscStatus
 
 GROUP = "239.74.163.2"
 """python-can's default IPv4 multicast group; each test bus gets a port of its own."""
@@ -77,3 +83,52 @@ def simulator(port: int, *options: str) -> Iterator[subprocess.Popen[str]]:
     finally:
         process.terminate()
         process.wait(timeout=HANG_GUARD)
+
+
+@contextmanager
+def listening(bus: list[str]) -> Iterator[can.BusABC]:
+    """A python-can bus on the test bus ``bus`` (`bus_args`'s options), in this process."""
+    port = int(bus[bus.index("--bus-option") + 1].removeprefix("port="))
+    with can.Bus(interface="udp_multicast", channel=GROUP, port=port) as listener:
+        yield listener
+
+
+def _statuses(listener: can.BusABC) -> Iterator[tuple[int, EscStatus]]:
+    """The esc.Status transfers on the bus with their senders; fails after `HANG_GUARD` s
+    of waiting, a guard for telemetry that should come, not a timed assertion."""
+    reassembler = dronecan.Reassembler()
+    end = time.monotonic() + HANG_GUARD
+    while True:
+        assert time.monotonic() < end, "no esc.Status came"
+        message = listener.recv(1.0)
+        if message is None:
+            continue
+        transfer = reassembler.feed(message.arbitration_id, bytes(message.data), 0.0)
+        if transfer is not None and isinstance(transfer.message, EscStatus):
+            yield transfer.source_node_id, transfer.message
+
+
+def wait_for_status(
+    listener: can.BusABC, nodes: set[int], done: Callable[[EscStatus], bool]
+) -> None:
+    """Read the bus until each of ``nodes`` has sent an esc.Status that is ``done``."""
+    waiting = set(nodes)
+    statuses = _statuses(listener)
+    while waiting:
+        node, status = next(statuses)
+        if node in waiting and done(status):
+            waiting.discard(node)
+
+
+def stopped_for_good(bus: list[str], nodes: set[int], count: int = 3) -> None:
+    """Each of ``nodes`` reports no drive (power_rating_pct 0), then ``count`` more times in
+    a row: a motor that stops and stays stopped, whatever the machine's load."""
+    with listening(bus) as listener:
+        wait_for_status(listener, nodes, lambda status: status.power_rating_pct == 0)
+        after: dict[int, list[int]] = {node: [] for node in nodes}
+        statuses = _statuses(listener)
+        while any(len(duties) < count for duties in after.values()):
+            node, status = next(statuses)
+            if node in after:
+                after[node].append(status.power_rating_pct)
+    assert all(set(duties) == {0} for duties in after.values()), after

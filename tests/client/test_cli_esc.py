@@ -12,25 +12,23 @@ import re
 import signal
 import subprocess
 import sys
-import time
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from pathlib import Path
 
-import can
 import pytest
 
-from veronte4x import dronecan
-from veronte4x.dronecan import EscStatus
 from veronte4x.dronecan.image_crc import crc64we
 
 from .cli_support import (
-    GROUP,
     HANG_GUARD,
     bus_args,
     free_port,
+    listening,
     simulator,
+    stopped_for_good,
     veronte4x,
     veronte4x_all,
+    wait_for_status,
 )
 
 
@@ -117,38 +115,19 @@ def test_update_then_info_reports_the_image_crc(bus: list[str], tmp_path: Path) 
     assert info["software_version"]["image_crc"] == crc
 
 
-def _statuses(listener: can.BusABC, nodes: set[int], done: Callable[[EscStatus], bool]) -> None:
-    """Read the bus until every node of ``nodes`` has sent an esc.Status that is ``done``;
-    fails after `HANG_GUARD` s (a guard, not a timed assertion)."""
-    reassembler = dronecan.Reassembler()
-    waiting = set(nodes)
-    end = time.monotonic() + HANG_GUARD
-    while waiting:
-        assert time.monotonic() < end, f"nodes {sorted(waiting)} never reported it"
-        message = listener.recv(1.0)
-        if message is None:
-            continue
-        transfer = reassembler.feed(message.arbitration_id, bytes(message.data), 0.0)
-        if transfer is None:
-            continue
-        if isinstance(transfer.message, EscStatus) and done(transfer.message):
-            waiting.discard(transfer.source_node_id)
-
-
 def test_spin_then_the_motors_stop(bus: list[str]) -> None:
     """Both motors turn at their commanded speed (seen on the bus), SIGTERM stops the spin
     with zero throttle, and both report no drive after it."""
-    with can.Bus(interface="udp_multicast", channel=GROUP, port=int(bus[-1][5:])) as listener:
+    with listening(bus) as listener:
         process = subprocess.Popen(
             [sys.executable, "-m", "veronte4x", "esc", "spin", "21", "22", "--throttle", "0.4",
              "--duration", "600", "--yes", *bus],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
         )  # fmt: skip
         try:
-            _statuses(listener, {21, 22}, lambda status: status.rpm > 1000)
+            wait_for_status(listener, {21, 22}, lambda status: status.rpm > 1000)
             process.send_signal(signal.SIGTERM)
             out, err = process.communicate(timeout=HANG_GUARD)
-            _statuses(listener, {21, 22}, lambda status: status.power_rating_pct == 0)
         finally:
             process.kill()
             process.wait()
@@ -157,6 +136,7 @@ def test_spin_then_the_motors_stop(bus: list[str]) -> None:
         "",
         "veronte4x: interrupted; zero throttle sent to esc_index 0, 1 (3 times)\n",
     )
+    stopped_for_good(bus, {21, 22})
 
 
 def test_a_spin_that_ends_says_what_it_did(bus: list[str]) -> None:
@@ -209,28 +189,19 @@ def test_bus_that_cannot_be_opened() -> None:
 def test_a_killed_spin_stops_the_motors(bus: list[str]) -> None:
     spin = subprocess.Popen(
         [sys.executable, "-m", "veronte4x", "esc", "spin", "21", "--throttle", "0.5",
-         "--duration", "30", "--yes", *bus],
+         "--duration", "600", "--yes", *bus],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
     )  # fmt: skip
-    for _ in range(20):  # until the spin has started (the machine may be busy)
-        running = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
-        if set(_duty(running.stdout, 21)) == {50}:
-            break
-    spin.send_signal(signal.SIGTERM)
-    _, stderr = spin.communicate(timeout=HANG_GUARD)
+    try:
+        with listening(bus) as listener:  # until the spin has started
+            wait_for_status(listener, {21}, lambda status: status.power_rating_pct == 50)
+        spin.send_signal(signal.SIGTERM)
+        _, stderr = spin.communicate(timeout=HANG_GUARD)
+    finally:
+        spin.kill()
+        spin.wait()
     assert spin.returncode == 130
     assert stderr == "veronte4x: interrupted; zero throttle sent to esc_index 0 (3 times)\n"
-    assert set(_duty(running.stdout, 21)) == {50}
-    stopped = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
-    assert _duty(stopped.stdout, 21) and set(_duty(stopped.stdout, 21)) == {0}
-
-
-def _duty(jsonl: str, node: int) -> list[int]:
-    """The duty cycles (power_rating_pct) node ``node`` reported in decoded JSON lines."""
-    return [
-        r["power_rating_pct"]
-        for r in map(json.loads, jsonl.splitlines())
-        if r["message"] == "EscStatus" and r["sender"] == f"node {node}"
-    ]
+    stopped_for_good(bus, {21})

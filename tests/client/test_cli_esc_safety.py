@@ -13,7 +13,15 @@ from pathlib import Path
 
 import pytest
 
-from .cli_support import bus_args, free_port, simulator, veronte4x
+from .cli_support import (
+    bus_args,
+    free_port,
+    listening,
+    simulator,
+    stopped_for_good,
+    veronte4x,
+    wait_for_status,
+)
 
 
 @pytest.fixture(scope="module")
@@ -23,20 +31,9 @@ def bus() -> Iterator[list[str]]:
         yield bus_args(port)
 
 
-def _duty(jsonl: str, node: int) -> list[int]:
-    return [
-        r["power_rating_pct"]
-        for r in map(json.loads, jsonl.splitlines())
-        if r["message"] == "EscStatus" and r["sender"] == f"node {node}"
-    ]
-
-
 def _until_spinning(bus: list[str], node: int) -> None:
-    for _ in range(40):  # until the spin has started (the machine may be busy)
-        running = veronte4x("decode", *bus, "--duration", "0.3", "--output", "jsonl")
-        if set(_duty(running.stdout, node)) == {50}:
-            return
-    raise AssertionError("the spin did not start")
+    with listening(bus) as listener:
+        wait_for_status(listener, {node}, lambda status: status.power_rating_pct == 50)
 
 
 def _spin(*args: str) -> subprocess.Popen[str]:
@@ -145,9 +142,7 @@ def test_a_killed_spin_leaves_no_motor_turning(bus: list[str]) -> None:
     spin.send_signal(signal.SIGKILL)
     spin.communicate(timeout=10)
     assert spin.returncode == -signal.SIGKILL
-    stopped = veronte4x("decode", *bus, "--duration", "0.5", "--output", "jsonl")
-    duty = _duty(stopped.stdout, 21)
-    assert duty and set(duty) == {0}
+    stopped_for_good(bus, {21})
 
 
 def test_a_node_that_falls_silent_stops_every_motor() -> None:
@@ -165,9 +160,7 @@ def test_a_node_that_falls_silent_stops_every_motor() -> None:
             "veronte4x: node 22 fell silent: no esc.Status or NodeStatus for 2 s; every "
             "motor stopped: zero throttle sent to esc_index 0 (3 times)\n"
         )
-        after = veronte4x("decode", *bus, "--duration", "0.5", "--output", "jsonl")
-        duty = _duty(after.stdout, 21)
-        assert duty and set(duty) == {0}
+        stopped_for_good(bus, {21})
 
 
 def test_over_current_stops_every_motor(bus: list[str]) -> None:
@@ -181,8 +174,7 @@ def test_over_current_stops_every_motor(bus: list[str]) -> None:
         r"stopped: zero throttle sent to esc_index 0, 1 \(3 times\)\n",
         stderr,
     ), stderr
-    after = veronte4x("decode", *bus, "--duration", "0.5", "--output", "jsonl")
-    assert set(_duty(after.stdout, 21) + _duty(after.stdout, 22)) == {0}
+    stopped_for_good(bus, {21, 22})
 
 
 def test_a_spin_confirms_the_zeros_on_exit(bus: list[str]) -> None:
