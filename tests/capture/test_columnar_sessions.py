@@ -34,7 +34,9 @@ def _decoded(path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[dict[str, Any
     return capture.read_tables(path), sum(sent)
 
 
-@pytest.mark.parametrize("count", [10, 1_000, 1_025, 10_000, 100_000])
+# No 100,000-session cases: 10,000 already pass the session table tenfold, and a sampled
+# mutation run of the session code (docs/mutation.md) killed every mutant without them.
+@pytest.mark.parametrize("count", [10, 1_000, 1_025, 10_000])
 def test_one_session_after_another_stays_column_wise(
     count: int, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -57,7 +59,6 @@ def test_one_session_after_another_stays_column_wise(
         (2_000, False, 0.05),
         (10_000, False, 0.02),
         (10_000, True, 0.01),
-        (100_000, False, 0.001),
     ],
 )
 def test_many_sessions_agree(count: int, concurrent: bool, faults: float, tmp_path: Path) -> None:
