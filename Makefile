@@ -49,7 +49,15 @@ docs: $(VENV)/.installed-dev
 	if [ $$status -ne 0 ] || grep -q '^WARNING' $(VENV)/docs-build.log; then \
 		echo "docs: the build above has warnings or errors"; exit 1; fi
 
-check: lint types test docs
+# Every step runs, whichever failed before it; the last line names the steps that failed.
+CHECK_STEPS := lint types test docs
+check: $(VENV)/.installed-dev
+	@failed=""; \
+	for step in $(CHECK_STEPS); do \
+		$(MAKE) --no-print-directory $$step || failed="$$failed $$step"; \
+	done; \
+	if [ -n "$$failed" ]; then echo "make check: failed:$$failed"; exit 1; fi; \
+	echo "make check: $(CHECK_STEPS) passed"
 
 bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_codec.py
