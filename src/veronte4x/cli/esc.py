@@ -26,9 +26,17 @@ from veronte4x.cli.exit_codes import (
     EXIT_OK,
     EXIT_USAGE,
 )
-from veronte4x.cli.fleet import each, error_text, exit_code, node_list, resolve, total
+from veronte4x.cli.fleet import (
+    OWN_ID_ADVICE,
+    each,
+    error_text,
+    exit_code,
+    node_list,
+    resolve,
+    total,
+)
 from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
-from veronte4x.client import operations, paramfile, parmfile
+from veronte4x.client import indices, operations, paramfile, parmfile
 from veronte4x.client.errors import (
     ClientError,
     InvalidRequestError,
@@ -42,12 +50,12 @@ from veronte4x.client.firmware import (
     check_image,
     image_crc,
 )
+from veronte4x.client.indices import EscIndexError, OwnNodeIdError
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation
 from veronte4x.client.params import ParameterInfo, plain
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
-from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
-from veronte4x.dronecan import vertiq
+from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor, spin_indices
 from veronte4x.dronecan.messages import (
     EscStatus,
     GetNodeInfoResponse,
@@ -116,6 +124,8 @@ def add_parser(commands: Any) -> None:
         metavar="NODE",
         help="apply the file's parameters of NODE (e.g. onto a replacement with another id)",
     )
+    _allow_shared(apply)
+    _allow_unknown(apply, "apply an esc_index")
     _options(apply)
 
     get = action("get", "read one parameter by name (or by index with --by-index)", _get)
@@ -128,6 +138,8 @@ def add_parser(commands: Any) -> None:
     set_.add_argument("name", help="parameter name (an index with --by-index)")
     set_.add_argument("value", help="new value, of the parameter's type")
     _by_index(set_)
+    _allow_shared(set_)
+    _allow_unknown(set_, "set esc_index")
 
     save = action("save", "save the parameters to non-volatile storage (ExecuteOpcode)", _save)
     _node(save)
@@ -193,6 +205,7 @@ def add_parser(commands: Any) -> None:
         help="stop every motor when an esc.Status current exceeds this, in amperes",
     )
     spin.add_argument("--yes", action="store_true", help="confirm: this moves motors")
+    _allow_unknown(spin, "spin")
     _options(spin)
 
 
@@ -309,7 +322,7 @@ def _print_json(data: Any) -> None:
 # -- nodes and info ------------------------------------------------------------------------
 
 
-def _entry(entry: NodeEntry, now: float, name: str | None) -> dict[str, Any]:
+def _entry(entry: NodeEntry, now: float, name: str | None, own: int) -> dict[str, Any]:
     return {
         "node_id": entry.node_id,
         "name": name,
@@ -319,7 +332,12 @@ def _entry(entry: NodeEntry, now: float, name: str | None) -> dict[str, Any]:
         "vendor_specific_status_code": entry.vendor_specific_status_code,
         "uptime_sec": entry.uptime_sec,
         "last_seen_sec_ago": round(now - entry.last_seen, 3),
+        "conflict": _CONFLICT if entry.node_id == own else None,
     }
+
+
+_CONFLICT = "uses this tool's node id"
+"""What ``esc nodes`` says of a node that uses the tool's own node id."""
 
 
 def _name(value: Any) -> Any:
@@ -329,9 +347,10 @@ def _name(value: Any) -> Any:
 def _nodes(client: BusClient, args: argparse.Namespace) -> int:
     found = client.discover(args.timeout)
     now = client.clock()
-    names = {e.node_id: _node_name(client, e.node_id) for e in found}
+    own = client.protocol.node_id
+    names = {e.node_id: None if e.node_id == own else _node_name(client, e.node_id) for e in found}
     if args.json:
-        _print_json([_entry(e, now, names[e.node_id]) for e in found])
+        _print_json([_entry(e, now, names[e.node_id], own) for e in found])
     if not found:
         _error(
             f"no node on the bus within {args.timeout:g} s; "
@@ -350,7 +369,10 @@ def _nodes(client: BusClient, args: argparse.Namespace) -> int:
                 f"{e.node_id:>4}  {names[e.node_id] or '?':<{width}}  {_name(e.health):<8}  "
                 f"{_name(e.mode):<15}  {e.uptime_sec:>{digits}} s  "
                 f"{now - e.last_seen:>5.1f} s ago  {e.vendor_specific_status_code:#06x}"
+                + (f"  conflict: {_CONFLICT}" if e.node_id == own else "")
             )
+    if any(e.node_id == own for e in found):
+        _error(f"{OwnNodeIdError(own)}; {OWN_ID_ADVICE}")
     return EXIT_OK
 
 
@@ -496,12 +518,66 @@ def _get(client: BusClient, args: argparse.Namespace) -> int:
 def _set(client: BusClient, args: argparse.Namespace) -> int:
     name, index = _parameter(args)
     prefix = _one_node(args)
+    nodes = resolve(client, args.nodes)
+    if _names_esc_index(client, nodes, name, index):
+        try:
+            wanted = int(args.value, 0)  # as ParameterInfo.parse reads an integer
+        except ValueError:
+            pass  # not a whole number: the set refuses it, naming the node
+        else:
+            survey = client.run(indices.survey(client.protocol, nodes))
+            changes = {n: wanted for n in nodes if survey.indices.get(n) != wanted}
+            _check_indices(args, changes, survey)
     return each(
         client,
         args,
         lambda node: operations.set_param(node, name, args.value, index=index),
         lambda node, p: prefix.format(node=node) + _show(p),
         lambda node, p: p.as_dict(),
+        nodes,
+    )
+
+
+def _names_esc_index(
+    client: BusClient, nodes: list[int], name: str | None, index: int | None
+) -> bool:
+    """Whether the parameter set is ``esc_index``: by its name, or by what the nodes call
+    the parameter at ``index``."""
+    if name is not None:
+        return name == indices.ESC_INDEX
+    reads = client.run_all([operations.get_param(node, index=index) for node in nodes])
+    return any(t.error is None and t.result().name == indices.ESC_INDEX for t in reads)
+
+
+def _check_indices(
+    args: argparse.Namespace, changes: dict[int, int], survey: indices.IndexSurvey
+) -> None:
+    """Refuse ``changes`` of esc_index that another node's index forbids (`check_changes`),
+    unless the options allow it.
+
+    Raises:
+        InvalidRequestError: One line with what to add to do it anyway.
+    """
+    try:
+        indices.check_changes(
+            changes,
+            survey,
+            allow_shared=args.allow_shared_index,
+            allow_unknown=_unknown_allowed(args, survey),
+        )
+    except EscIndexError as error:
+        advice = _unknown_advice(error, survey)
+        if error.shared:
+            advice.append("add --allow-shared-index to give it anyway")
+        raise InvalidRequestError(error.line(*advice)) from None
+
+
+def _allow_shared(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--allow-shared-index",
+        action="store_true",
+        help="give a node an esc_index that another node on the bus has too (RawCommand "
+        "then turns both); by default it is refused",
     )
 
 
@@ -663,6 +739,14 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
                 print(f"node {node}: {change.name} {change.current} -> {plain(change.wanted)}")
             if entry.node_id != node:
                 print(f"node {node}: the file's parameters of node {entry.node_id}")
+    given = {
+        node: change.wanted.value
+        for node in nodes
+        for change in plans[node]
+        if change.name == indices.ESC_INDEX and isinstance(change.wanted, IntegerValue)
+    }
+    if given:
+        _check_indices(args, given, client.run(indices.survey(client.protocol, nodes)))
     if args.dry_run:
         if args.json:
             _print_json({str(n): [_change(c) for c in plans[n]] for n in nodes})
@@ -758,6 +842,36 @@ def _entry_for(
 # -- spin -----------------------------------------------------------------------------------------
 
 
+def _allow_unknown(parser: argparse.ArgumentParser, what: str) -> None:
+    parser.add_argument(
+        "--allow-unknown-index",
+        type=node_list,
+        metavar="NODES",
+        help=f"{what} although these nodes' esc_index cannot be read (nodes known to drive "
+        "no motor: no answer, no such parameter, not a number); by default such a node "
+        "refuses it",
+    )
+
+
+def _unknown_allowed(args: argparse.Namespace, survey: indices.IndexSurvey) -> list[int]:
+    """The nodes ``--allow-unknown-index`` names (``all``: every node not read)."""
+    given = args.allow_unknown_index
+    if given is None:
+        return []
+    return list(survey.unread) if given.every else list(given.ids)
+
+
+def _unknown_advice(error: EscIndexError, survey: indices.IndexSurvey) -> list[str]:
+    """What to do about the nodes of ``error`` whose esc_index cannot be read: another
+    ``--node-id`` for one that uses the tool's, the option that accepts them."""
+    if not error.unread:
+        return []
+    ids = ",".join(map(str, error.unread))
+    drive = "it drives" if len(error.unread) == 1 else "they drive"
+    own = any(isinstance(survey.unread[n], OwnNodeIdError) for n in error.unread)
+    return [OWN_ID_ADVICE] * own + [f"add --allow-unknown-index {ids} if {drive} no motor"]
+
+
 def _interrupt(signum: int, frame: object) -> None:
     raise KeyboardInterrupt
 
@@ -780,15 +894,12 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
     nodes: list[int] = []
     for given in args.nodes:
         nodes += [n for n in given.ids if n not in nodes]
-    indices = {}
-    for node in nodes:
-        value = client.get_param(node, vertiq.Parameter.ESC_INDEX.value).value
-        if not isinstance(value, IntegerValue):
-            raise InvalidRequestError(
-                f"node {node} reports esc_index {plain(value)!r}, not a number"
-            )
-        indices[node] = value.value
-    setpoint = {index: args.throttle for index in indices.values()}
+    survey = client.run(indices.survey(client.protocol, nodes))
+    try:
+        escs = spin_indices(nodes, survey, _unknown_allowed(args, survey))
+    except EscIndexError as error:
+        raise InvalidRequestError(error.line(*_unknown_advice(error, survey))) from None
+    setpoint = {index: args.throttle for index in escs.values()}
     signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
     rpm: dict[int, list[int]] = {node: [] for node in nodes}
     monitor = SpinMonitor(
@@ -829,7 +940,7 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
     summary = [
         {
             "node_id": node,
-            "esc_index": indices[node],
+            "esc_index": escs[node],
             "throttle": args.throttle,
             "peak_rpm": max(rpm[node], key=abs, default=None),
             "telemetry": len(rpm[node]),

@@ -17,6 +17,7 @@ from veronte4x.client.errors import (
     InvalidRequestError,
     NoResponseError,
 )
+from veronte4x.client.indices import OwnNodeIdError
 from veronte4x.client.operations import Operation
 from veronte4x.errors import EncodeError
 from veronte4x.words import counted
@@ -75,13 +76,22 @@ def resolve(client: BusClient, nodes: NodeList) -> list[int]:
 
     Raises:
         NoNodeError: ``all`` heard no node.
+        InvalidRequestError: ``all`` heard a node that uses this tool's node id.
     """
     if not nodes.every:
         return list(nodes.ids)
     found = [e.node_id for e in client.discover(DISCOVERY)]
     if not found:
         raise NoNodeError(DISCOVERY)
+    if client.protocol.node_id in found:
+        raise InvalidRequestError(
+            f"{OwnNodeIdError(client.protocol.node_id)}; {OWN_ID_ADVICE}; nothing was sent"
+        )
     return found
+
+
+OWN_ID_ADVICE = "give this tool another --node-id, one that esc nodes does not list"
+"""What to do when a node uses the tool's node id."""
 
 
 class NoNodeError(ClientError):
@@ -116,8 +126,10 @@ def each(
     make: Callable[[int], Operation[Any]],
     text: Callable[[int, Any], str],
     data: Callable[[int, Any], Any],
+    nodes: list[int] | None = None,
 ) -> int:
-    """Run ``make(node)`` on every node of ``args.nodes`` at once; print per node and a total.
+    """Run ``make(node)`` on every node of ``args.nodes`` (or of ``nodes``, resolved
+    already) at once; print per node and a total.
 
     One node given alone prints ``text`` (or ``data`` as JSON) and lets its error reach the
     caller. Several print ``text`` per node that succeeded and ``node N: error`` per node
@@ -126,7 +138,8 @@ def each(
     Returns:
         0 when every node succeeded, else the exit code of the first node that failed.
     """
-    nodes = resolve(client, args.nodes)
+    if nodes is None:
+        nodes = resolve(client, args.nodes)
     if args.nodes.single:
         result = client.run(make(nodes[0]))
         if args.json:

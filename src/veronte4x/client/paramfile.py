@@ -20,6 +20,7 @@ says what would change, or why it cannot be applied, before anything is sent.
 from __future__ import annotations
 
 import math
+import re
 import sys
 from dataclasses import dataclass
 from typing import Any
@@ -220,7 +221,43 @@ def loads(text: str) -> list[NodeParameters]:
         )
     if not nodes:
         raise ParameterFileError("the file holds no [[node]] table")
+    _refuse_twice(nodes, _table_lines(text, len(nodes)))
     return nodes
+
+
+_TABLE_HEADER = re.compile(r"\s*\[\[\s*node\s*\]\]\s*(?:#.*)?")
+
+
+def _table_lines(text: str, count: int) -> list[int] | None:
+    """The line (from 1) of each ``[[node]]`` header, or None when they do not match the
+    ``count`` tables read (tables written as an inline array)."""
+    lines = [n for n, line in enumerate(text.splitlines(), 1) if _TABLE_HEADER.fullmatch(line)]
+    return lines if len(lines) == count else None
+
+
+def _refuse_twice(nodes: list[NodeParameters], lines: list[int] | None) -> None:
+    """Refuse a node id, or a unique id, given by two tables: one would be ignored.
+
+    Raises:
+        ParameterFileError: Naming both tables, by line where the headers show them.
+    """
+    first: dict[tuple[str, object], int] = {}
+    for position, node in enumerate(nodes):
+        for key in (("node_id", node.node_id), ("unique_id", node.unique_id)):
+            if key == ("unique_id", ""):
+                continue
+            if key in first:
+                earlier = first[key]
+                where = (
+                    f"lines {lines[earlier]} and {lines[position]}"
+                    if lines is not None
+                    else f"node tables {earlier + 1} and {position + 1}"
+                )
+                raise ParameterFileError(
+                    f"{key[0]} {key[1]} is given twice ({where}): one would be ignored; "
+                    "keep one table per node"
+                )
+            first[key] = position
 
 
 def plan(node_id: int, saved: NodeParameters, current: list[ParameterInfo]) -> list[Change]:

@@ -15,9 +15,9 @@ from typing import Any
 from veronte4x.client.files import FileRead, FileServer
 from veronte4x.client.nodes import NodeEntry, NodeTable
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import BY_CLASS
+from veronte4x.dronecan.codec import BY_CLASS, can_id_base
 from veronte4x.dronecan.frame import TransferFrame
-from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest
+from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest, NodeStatus
 from veronte4x.dronecan.reassembler import Reassembler
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.errors import EncodeError, check_seconds
@@ -29,6 +29,12 @@ from veronte4x.node.requests import (
     TimedOut,
 )
 from veronte4x.node.transfer_ids import TransferIds
+
+_TYPE_BITS = 0xFFFF80
+"""The CAN ID bits of a message's data type id and the service bit (spec 4.1)."""
+
+_NODE_STATUS = can_id_base(BY_CLASS[NodeStatus].data_type)
+"""Those bits in a NodeStatus frame."""
 
 DEFAULT_NODE_ID = 127
 """The client's node id unless told otherwise: the DroneCAN GUI tool's default."""
@@ -105,10 +111,12 @@ class ClientProtocol:
         A frame whose source node id (CAN ID bits 0-6, DroneCAN specification, "CAN bus
         transport layer") is this node's own is its own frame echoed back, as buses that
         loop frames back to the sender do (python-can's ``udp_multicast``): it is dropped
-        unread, as a CAN controller does not receive what it sends.
+        unread, as a CAN controller does not receive what it sends. But this node sends no
+        NodeStatus, so one from its own id is another node's: it goes into the node table,
+        where the conflict shows.
         """
         timestamp = check_seconds("receive", "timestamp", timestamp)
-        if can_id & 0x7F == self.node_id:
+        if can_id & 0x7F == self.node_id and can_id & _TYPE_BITS != _NODE_STATUS:
             return []
         transfer = self.reassembler.feed(can_id, data, timestamp)
         if transfer is None:

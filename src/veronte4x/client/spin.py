@@ -1,16 +1,21 @@
-"""When to stop spinning motors: a node gone silent, or over a limit (sans-IO).
+"""Which motors a spin may drive, and when to stop it: a node gone silent, or over a limit
+(sans-IO).
 
-A tool that drives motors listens to the nodes it drives: a node that stops publishing
-esc.Status and NodeStatus may have lost power, the bus or its firmware, and an ESC that
-reports too hot or too much current is a rig to stop. `SpinMonitor` takes the transfers
-seen and the time, and says why to stop; the tool then sends zero throttle to every ESC.
+RawCommand turns every node whose ``esc_index`` is commanded, so before anything is sent
+`spin_indices` checks, from an `IndexSurvey` of the whole bus, that no node outside those
+named shares a named node's index or has one that cannot be read. A tool that drives motors
+then listens to the nodes it drives: a node that stops publishing esc.Status and NodeStatus
+may have lost power, the bus or its firmware, and an ESC that reports too hot or too much
+current is a rig to stop. `SpinMonitor` takes the transfers seen and the time, and says why
+to stop; the tool then sends zero throttle to every ESC.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable, Sequence
 
+from veronte4x.client.indices import EscIndexError, IndexSurvey, nodes_text, reason
 from veronte4x.dronecan.messages import EscStatus, NodeStatus
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError, check_seconds
@@ -23,6 +28,63 @@ a node publishing no telemetry is not taken for gone; half the 3 s a node table 
 
 KELVIN = 273.15
 """0 °C in kelvin: esc.Status reports its temperature in kelvin (DSDL esc.Status)."""
+
+
+def spin_indices(
+    nodes: Sequence[int], survey: IndexSurvey, allow_unknown: Collection[int] = ()
+) -> dict[int, int]:
+    """The ``esc_index`` of each node to spin, when spinning them turns no other motor.
+
+    Args:
+        nodes: The nodes to spin.
+        survey: Every node's ``esc_index`` (`veronte4x.client.indices.survey` with
+            ``also=nodes``).
+        allow_unknown: Nodes whose ``esc_index`` cannot be read that are known to drive no
+            motor (a node that is no ESC); any other such node refuses the spin.
+
+    Raises:
+        ClientError: A node to spin whose ``esc_index`` cannot be read (its own error:
+            `NoResponseError`, `ParameterError`, `InvalidRequestError`).
+        EscIndexError: A node not named shares a named node's ``esc_index``, or has one that
+            cannot be read and is not in ``allow_unknown``.
+
+    Examples:
+        >>> spin_indices([21], IndexSurvey({21: 0, 22: 1}, {}))
+        {21: 0}
+        >>> spin_indices([21], IndexSurvey({21: 0, 22: 0}, {}))
+        Traceback (most recent call last):
+        ...
+        veronte4x.client.indices.EscIndexError: node 22 has esc_index 0 too: RawCommand \
+would turn it with node 21; name it as well to spin both, or give it an esc_index of its \
+own; nothing was sent
+    """
+    for node in nodes:
+        if node in survey.unread:
+            raise survey.unread[node]
+    indices = {node: survey.indices[node] for node in nodes}
+    problems = []
+    for other in survey.nodes():
+        if other in indices:
+            continue
+        if other in survey.indices:
+            index = survey.indices[other]
+            with_it = sorted(n for n, i in indices.items() if i == index)
+            if with_it:
+                problems.append(
+                    f"node {other} has esc_index {index} too: RawCommand would turn it with "
+                    f"{nodes_text(with_it)}; name it as well to spin both, or give it an "
+                    "esc_index of its own"
+                )
+    shared = bool(problems)
+    unread = [n for n in survey.unread if n not in indices and n not in allow_unknown]
+    for other in unread:
+        problems.append(
+            f"node {other}'s esc_index cannot be read, so it may turn too "
+            f"({reason(other, survey.unread[other])})"
+        )
+    if problems:
+        raise EscIndexError(problems, unread, shared)
+    return indices
 
 
 def _positive(name: str, value: float | None) -> float | None:
