@@ -1,7 +1,9 @@
 """The one home of generated code: compile it under a readable name, and build slotted objects.
 
 Every function the package generates at run time (the Veronte decoders and encoders of
-`veronte4x.codec`, the DroneCAN fast paths) is compiled by `compile_source`. As attrs does
+`veronte4x.codec`, the DroneCAN fast paths) is compiled by `compile_source`. What comes
+from data reaches the source as a quoted literal (`repr`) or, where it must be a name, held
+to `attribute`; never as raw text. As attrs does
 for its generated methods, the source is registered with `linecache` under a unique file
 name such as ``<veronte4x generated decode Codec fast #3>``: a traceback through generated
 code shows the generated line, and `inspect.getsource` returns the function's text.
@@ -10,10 +12,23 @@ code shows the generated line, and `inspect.getsource` returns the function's te
 from __future__ import annotations
 
 import itertools
+import keyword
 import linecache
 from typing import Any
 
 _COUNTER = itertools.count(1)
+
+
+def attribute(name: str) -> str:
+    """``name``, where generated code writes ``obj.<name>``: an ASCII Python identifier that
+    is not a keyword (the DSDL and DBC parsers hold names to that grammar).
+
+    Raises:
+        ValueError: Any other text, which must not reach the source.
+    """
+    if not (name.isascii() and name.isidentifier()) or keyword.iskeyword(name):
+        raise ValueError(f"{name!r} cannot be an attribute of generated code")
+    return name
 
 
 def compile_source(source: str, namespace: dict[str, Any], title: str) -> dict[str, Any]:

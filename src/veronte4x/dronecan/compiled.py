@@ -38,7 +38,7 @@ from binascii import crc_hqx
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
-from veronte4x.codegen import compile_source, slot_builder
+from veronte4x.codegen import attribute, compile_source, slot_builder
 from veronte4x.dronecan.scalar_code import NAMES, pack_scalars, unpack_scalars
 from veronte4x.dronecan.schema import Array, Scalar, Struct, StructField
 from veronte4x.dronecan.serializer import Serializer
@@ -210,7 +210,7 @@ def _emit_decoders(src: _Source, schema: Struct, fields: list[StructField], size
     cls = src.name("C", schema.cls)
     unpacking = unpack_scalars(
         [f.type for f in fields if isinstance(f.type, Scalar)],
-        [f"o.{f.name}" if f.name else None for f in fields],
+        [f"o.{attribute(f.name)}" if f.name else None for f in fields],
         [f.enum for f in fields],
         src.name,
     )
@@ -258,7 +258,8 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
     if len(fields) != len(schema.fields):
         return None
     scalars = [f.type for f in fields if isinstance(f.type, Scalar)]
-    unpack = " ".join(f"v{i} = m.{f.name};" for i, f in enumerate(fields) if f.name) or "pass"
+    unpack = " ".join(f"v{i} = m.{attribute(f.name)};" for i, f in enumerate(fields) if f.name)
+    unpack = unpack or "pass"
     size = (sum(t.bits for t in scalars) + 7) // 8
     src = _Source()
     packing = pack_scalars(scalars, src.name)
@@ -297,7 +298,7 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
     """
     if len(schema.fields) != 1 or not isinstance(schema.fields[0].type, Array):
         return None
-    name, array = schema.fields[0].name, schema.fields[0].type
+    name, array = attribute(schema.fields[0].name), schema.fields[0].type
     item = array.item
     if not isinstance(item, Scalar) or item.kind != "int" or not 8 < item.bits <= 16:
         return None

@@ -33,6 +33,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import NamedTuple
 
+from veronte4x.codegen import attribute
 from veronte4x.dronecan.compiled import (
     FastPaths,
     Transport,
@@ -180,12 +181,13 @@ def _chunks(fields: tuple[StructField, ...]) -> Iterator[_Chunk | tuple[int, Str
     for i, f in enumerate(fields):
         if isinstance(f.type, Scalar):
             run.scalars.append(f.type)
-            run.names.append(f.name or None)
+            run.names.append(attribute(f.name) if f.name else None)
             run.enums.append(f.enum)
             continue
         if run.scalars:
             yield run
             run = _Chunk([], [], [])
+        attribute(f.name)  # generated code reads and writes it
         yield i, f
     if run.scalars:
         yield run

@@ -36,6 +36,7 @@ Naming rules (documented in the DroneCAN types page):
 
 from __future__ import annotations
 
+import ast
 import keyword
 import re
 from collections.abc import Iterable
@@ -296,7 +297,13 @@ def _member_names(
 
 
 def _doc(text: str, indent: str) -> list[str]:
-    text = text.replace("\\", "\\\\").replace('"""', "'''").strip()
+    """The lines of a docstring of ``text`` (a comment, a name: data): triple-quoted where
+    every character is printable (backslashes doubled, ``\"""`` as ``'''``), else the quoted
+    literal of `repr`; never source."""
+    text = text.strip()
+    if not all(char == "\n" or char.isprintable() for char in text):
+        return [f"{indent}{text!r}"]
+    text = text.replace("\\", "\\\\").replace('"""', "'''")
     if text.endswith('"'):
         text += " "
     lines = text.splitlines() or [""]
@@ -373,27 +380,49 @@ def _class_source(key: str, p: Plan) -> list[str]:
     lines += _doc(doc, "    ")
     if section.constants or key in HAND_CONSTANTS:
         lines.append("")
+    body: dict[str, str] = {}  # each name of the class body, to its DSDL name
+
+    def claim(attribute: str, dsdl: str, line: int | None) -> str:
+        other = body.setdefault(attribute, dsdl)
+        if other != dsdl:
+            raise DsdlError(d.path, line, f"{other} and {dsdl} would both be attribute {attribute}")
+        return attribute
+
     for c in section.constants:
         kind = "float" if c.type.kind == "float" else "bool" if c.type.kind == "bool" else "int"
-        lines.append(f"    {c.name}: ClassVar[{kind}] = {_literal(c.value)}")
+        constant = claim(attribute_name(c.name), c.name, c.line)
+        lines.append(f"    {constant}: ClassVar[{kind}] = {_literal(c.value)}")
         if c.comment:
             lines += _doc(c.comment, "    ")
     for constant, value, comment in HAND_CONSTANTS.get(key, ()):
-        lines.append(f"    {constant}: ClassVar[int] = {value}")
+        lines.append(f"    {claim(constant, constant, None)}: ClassVar[int] = {value}")
         lines += _doc(comment, "    ")
     fields = [a for a in section.fields if a.name]
     if fields:
         lines.append("")
+    hidden: dict[str, str] = {}
     for a in fields:
         enum = p.enums.get((key, a.name))
         enum_name = enum[0] if enum is not None and enum[1] == "IntEnum" else None
         annotation, default = _python_type(a.type, p, enum_name)
         if enum is not None and enum_name is not None and _covers(a.type, enum[2]):
             annotation, default = enum_name, f"{enum_name}(0)"  # every value has a member
-        lines.append(f"    {attribute_name(a.name)}: {annotation} = {default}")
+        if _names(default) & body.keys():  # an attribute above hides a class the default calls
+            hidden[a.name] = default
+            default = f"_defaults[{a.name!r}]"
+        attribute = claim(attribute_name(a.name), a.name, a.line)
+        lines.append(f"    {attribute}: {annotation} = {default}")
         if a.comment:
             lines += _doc(a.comment, "    ")
+    if hidden:  # made before the class, where the names are the module's
+        lines[2:2] = ["_defaults = {", *(f"    {f!r}: {v}," for f, v in hidden.items()), "}"]
     return lines
+
+
+def _names(expression: str) -> set[str]:
+    """The names a generated expression (a field's default) refers to."""
+    tree = ast.parse(expression, mode="eval")
+    return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name)}
 
 
 def attribute_name(name: str) -> str:
@@ -401,21 +430,37 @@ def attribute_name(name: str) -> str:
     return f"{name}_" if keyword.iskeyword(name) else name
 
 
-def _enum_source(
-    name: str, kind: str, constants: list[Constant], prefix_len: int, owner: str
-) -> list[str]:
+_MEMBER = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+"""An enum member name: no ``_`` in front (``_sunder_`` names are the enum module's)."""
+
+
+def _member(name: str) -> bool:
+    return bool(_MEMBER.match(name)) and not keyword.iskeyword(name) and name != "mro"
+
+
+def _enum_members(d: Definition, constants: list[Constant], prefix_len: int) -> list[str]:
+    """The members of an enum of ``constants``: their names without the prefix, else whole
+    (``_`` after a Python keyword or ``mro``); `DsdlError` if two would be one."""
     stripped = [c.name[prefix_len:] for c in constants]
-    if any(not s.isidentifier() or keyword.iskeyword(s) for s in stripped):
-        stripped = [c.name for c in constants]
-    which = f"``{constants[0].name[:prefix_len]}*``" if prefix_len else f"of ``{owner}``"
-    lines = [
-        "",
-        "",
-        f"class {name}(enum.{kind}):",
-        f'    """DSDL constants {which}."""',
-        "",
-    ]
-    for member, c in zip(stripped, constants, strict=True):
+    if all(_member(s) for s in stripped):
+        return stripped
+    members = [c.name if _member(c.name) else f"{c.name}_" for c in constants]
+    seen: dict[str, Constant] = {}
+    for member, c in zip(members, constants, strict=True):
+        other = seen.setdefault(member, c)
+        if other is not c:
+            raise DsdlError(
+                d.path, c.line, f"constants {other.name} and {c.name} would both be {member}"
+            )
+    return members
+
+
+def _enum_source(
+    name: str, kind: str, constants: list[Constant], prefix_len: int, d: Definition
+) -> list[str]:
+    which = f"``{constants[0].name[:prefix_len]}*``" if prefix_len else f"of ``{d.full_name}``"
+    lines = ["", "", f"class {name}(enum.{kind}):", *_doc(f"DSDL constants {which}.", "    "), ""]
+    for member, c in zip(_enum_members(d, constants, prefix_len), constants, strict=True):
         lines.append(f"    {member} = {_literal(c.value)}")
         if c.comment:
             lines += _doc(c.comment, "    ")
@@ -475,10 +520,10 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
     body: list[str] = []
     for (key, _), (name, kind, constants, prefix) in p.enums.items():
         if key in generated:
-            body += _enum_source(name, kind, constants, len(prefix), p.sections[key][0].full_name)
+            body += _enum_source(name, kind, constants, len(prefix), p.sections[key][0])
     for key, (name, constants) in p.constant_enums.items():
         if key in generated:
-            body += _enum_source(name, "IntEnum", constants, 0, p.sections[key][0].full_name)
+            body += _enum_source(name, "IntEnum", constants, 0, p.sections[key][0])
     done: set[str] = set()
     for key in generated:
         if key in p.members:

@@ -11,14 +11,22 @@ CRC-64-WE of the normalized definition (full name, then each field as ``[cast] t
 constants and comments left out, ``---`` between the halves of a service), extended with
 the signature of each nested type in field order.
 
-Errors name the file and the line (`DsdlError`).
+What may reach the generated classes is held to a strict grammar, that of the
+``dronecan`` package's parser: namespace (directory) names ``[a-z][a-z0-9_]*``, type names
+``[A-Z][A-Za-z0-9_]*``, field and constant names ``[a-zA-Z][a-zA-Z0-9_]*``, full names of
+at most 80 characters, constants of finite values in range for their type. Comments are
+free text (the generated code quotes them).
+
+Errors name the file and the line (`DsdlError`), in one line of printable characters.
 """
 
 from __future__ import annotations
 
+import math
 import os
 import re
-from collections.abc import Iterable
+import sys
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -40,7 +48,22 @@ class DsdlError(Veronte4xError, ValueError):
         self.line = line
         self.problem = problem
         where = self.path if line is None else f"{self.path}:{line}"
-        super().__init__(f"{where}: {problem}")
+        super().__init__(printable(f"{where}: {problem}"))
+
+
+def printable(text: str) -> str:
+    """``text`` with each unprintable character escaped (``\\n``, ``\\x00``; a byte of a
+    name that is not UTF-8, kept by Python as a lone surrogate, as ``\\xff``): one line."""
+    if text.isprintable():
+        return text
+    return "".join(
+        char
+        if char.isprintable()
+        else f"\\x{ord(char) - 0xDC00:02x}"
+        if 0xDC80 <= ord(char) <= 0xDCFF
+        else repr(char)[1:-1]
+        for char in text
+    )
 
 
 CAST_MODES = ("saturated", "truncated")
@@ -165,11 +188,16 @@ class Definition:
 
 
 _NAME = re.compile(r"[a-zA-Z][a-zA-Z0-9_]*\Z")
-_FILE = re.compile(r"(?:(\d+)\.)?([A-Z][A-Za-z0-9_]*)\.uavcan\Z")
-_PRIMITIVE = re.compile(r"(uint|int|float|void)(\d+)\Z|bool\Z")
-_ARRAY = re.compile(r"(.+?)\[(<=|<)?(\d+)\]\Z")
+_NAMESPACE = re.compile(r"[a-z][a-z0-9_]*\Z")
+_FILE = re.compile(r"(?:([0-9]+)\.)?([A-Z][A-Za-z0-9_]*)\.uavcan\Z")
+_PRIMITIVE = re.compile(r"(uint|int|float|void)([0-9]+)\Z|bool\Z")
+_ARRAY = re.compile(r"(.+?)\[(<=|<)?([0-9]+)\]\Z")
 _COMPOUND = re.compile(r"[A-Za-z][A-Za-z0-9_]*(\.[A-Za-z][A-Za-z0-9_]*)*\Z")
 _CONSTANT = re.compile(r"(\S+) +(\S+?) *= *(.+)\Z")
+_MAX_FULL_NAME = 80
+"""Longest full name (the specification's limit, which the ``dronecan`` package enforces)."""
+_FLOAT_MAX = {16: 65504.0, 32: 3.4028234663852886e38, 64: sys.float_info.max}
+"""Largest finite value of each float type: a constant's value must lie within it."""
 _MAX_ID = {False: 65535, True: 255}
 """Largest default data type id of a message and of a service (CAN ID fields of v0)."""
 
@@ -227,14 +255,11 @@ def _value(text: str, t: PrimitiveType, path: str, line: int) -> int | float | b
     elif text.lower() in ("true", "false"):
         value = text.lower() == "true"
     else:
-        try:
-            value = int(text, 0)
-        except ValueError:
-            try:
-                value = float(text)
-            except ValueError:
-                raise DsdlError(path, line, f"{text}: not a constant value") from None
+        value = _number(text, path, line)
     if t.kind == "float":
+        limit = _FLOAT_MAX[t.bits]
+        if not -limit <= value <= limit:
+            raise DsdlError(path, line, f"{text}: out of range for {t.name}")
         return float(value)
     if t.kind == "bool":
         if value not in (0, 1):
@@ -247,6 +272,24 @@ def _value(text: str, t: PrimitiveType, path: str, line: int) -> int | float | b
     if not low <= value <= high:
         raise DsdlError(path, line, f"{text}: out of range for {t.name}")
     return value
+
+
+def _number(text: str, path: str, line: int) -> int | float:
+    """An integer (decimal, ``0x``, ``0o``, ``0b``) or a finite float written in ASCII."""
+    if text.isascii():
+        try:
+            return int(text, 0)
+        except ValueError:
+            pass
+        try:
+            value = float(text)
+        except ValueError:
+            pass
+        else:
+            if math.isfinite(value):
+                return value
+            raise DsdlError(path, line, f"{text}: not a finite number")
+    raise DsdlError(path, line, f"{text}: not a constant value")
 
 
 def _split_comment(raw: str) -> tuple[str, str]:
@@ -353,12 +396,17 @@ def parse_file(path: Path, full_name_prefix: str) -> Definition:
     found = _FILE.match(path.name)
     if found is None:
         raise DsdlError(path, None, "not a DSDL file name ([ID.]Name.uavcan)")
+    full_name = f"{full_name_prefix}.{found.group(2)}"
+    if len(full_name) > _MAX_FULL_NAME:
+        raise DsdlError(
+            path, None, f"full name {full_name} longer than {_MAX_FULL_NAME} characters"
+        )
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as error:
         raise DsdlError(path, None, f"cannot read: {error}") from None
     default_id = int(found.group(1)) if found.group(1) else None
-    return parse_text(text, f"{full_name_prefix}.{found.group(2)}", default_id, str(path))
+    return parse_text(text, full_name, default_id, str(path))
 
 
 def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Definition]:
@@ -373,8 +421,11 @@ def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Defin
         base = Path(root)
         if not base.is_dir():
             raise DsdlError(base, None, "not a directory of DSDL definitions")
+        _check_namespace(base.name, base)
         for path in sorted(base.rglob("*.uavcan")):
             parts = path.relative_to(base).parent.parts
+            for part in parts:
+                _check_namespace(part, path)
             prefix = ".".join((base.name, *parts))
             definition = parse_file(path, prefix)
             other = found.get(definition.full_name)
@@ -384,8 +435,23 @@ def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Defin
     return found
 
 
+def _check_namespace(name: str, path: Path) -> None:
+    if _NAMESPACE.match(name) is None:
+        raise DsdlError(
+            path,
+            None,
+            f"directory name '{name}' is not a namespace name "
+            "(a lowercase ASCII letter, then lowercase letters, digits or _)",
+        )
+
+
+MAX_DEPTH = 100
+"""Most levels of nested types below a definition (the standard set has 4)."""
+
+
 def check_references(definitions: dict[str, Definition]) -> None:
-    """Raise `DsdlError` for a nested type defined nowhere, or one that nests itself."""
+    """Raise `DsdlError` for a nested type defined nowhere, one that nests itself, or
+    nesting deeper than `MAX_DEPTH`; in time linear in the definitions (each visited once)."""
     for d in definitions.values():
         for section in d.sections:
             for a in section.fields:
@@ -396,19 +462,34 @@ def check_references(definitions: dict[str, Definition]) -> None:
                     raise DsdlError(d.path, a.line, f"unknown type {target}")
                 if definitions[target].service:
                     raise DsdlError(d.path, a.line, f"{target} is a service, not a nested type")
+    depths: dict[str, int] = {}
     for name in definitions:
-        _cycle(name, definitions, ())
+        _depth(name, definitions, depths, ())
 
 
-def _cycle(name: str, definitions: dict[str, Definition], trail: tuple[str, ...]) -> None:
+def _depth(
+    name: str, definitions: dict[str, Definition], depths: dict[str, int], trail: tuple[str, ...]
+) -> int:
+    """Levels of nested types below ``name`` (0 for none), stored in ``depths``."""
+    found = depths.get(name)
+    if found is not None:
+        return found
     d = definitions[name]
     if name in trail:
         raise DsdlError(d.path, None, f"{name} contains itself")
+    if len(trail) == MAX_DEPTH:
+        top = definitions[trail[0]]
+        raise DsdlError(
+            top.path, None, f"{top.full_name} nests types more than {MAX_DEPTH} levels deep"
+        )
+    depth = 0
     for section in d.sections:
         for a in section.fields:
             target = nested_name(a.type)
             if target is not None:
-                _cycle(target, definitions, (*trail, name))
+                depth = max(depth, 1 + _depth(target, definitions, depths, (*trail, name)))
+    depths[name] = depth
+    return depth
 
 
 def nested_name(t: FieldType) -> str | None:
@@ -423,15 +504,29 @@ def nested_name(t: FieldType) -> str | None:
 # -- signatures -------------------------------------------------------------------------
 
 
-def signature(name: str, definitions: dict[str, Definition]) -> int:
+def signature(
+    name: str, definitions: Mapping[str, Definition], known: dict[str, int] | None = None
+) -> int:
     """The data type signature of ``name``: that of its normalized definition, extended by
-    each nested type's signature (then the running value itself) in field order."""
+    each nested type's signature (then the running value itself) in field order.
+
+    Args:
+        name: A full name of ``definitions`` (checked by `check_references`).
+        definitions: Every definition, by full name.
+        known: Signatures computed before, by full name; each one computed here is added
+            (pass one dictionary to many calls: every type is then computed once).
+    """
+    known = {} if known is None else known
+    found = known.get(name)
+    if found is not None:
+        return found
     d = definitions[name]
     value = crc64we(d.normalized().encode())
     for section in d.sections:
         for a in section.fields:
             target = nested_name(a.type)
             if target is not None:
-                nested = signature(target, definitions)
+                nested = signature(target, definitions, known)
                 value = crc64we(nested.to_bytes(8, "little") + value.to_bytes(8, "little"), value)
+    known[name] = value
     return value

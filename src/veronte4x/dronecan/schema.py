@@ -125,26 +125,56 @@ class Union:
 
 def min_bits(t: Scalar | Array | Struct | Union) -> int:
     """Minimum serialized bit length of a type (dynamic arrays empty, with their prefix)."""
-    if isinstance(t, Scalar):
-        return t.bits
-    if isinstance(t, Array):
-        return t.prefix_bits if t.dynamic else t.max_size * min_bits(t.item)
-    if isinstance(t, Struct):
-        return sum(min_bits(f.type) for f in t.fields)
-    return t.tag_bits + min(min_bits(m.type) for m in t.members)
+    return _least_bits(t, True)
+
+
+def _least_bits(t: Scalar | Array | Struct | Union, prefixes: bool) -> int:
+    """The least bit length of ``t``, a dynamic array counting its prefix (``prefixes``)
+    or 0; each nested type shared by many fields is counted once (by id)."""
+    memo: dict[int, int] = {}
+
+    def walk(t: Scalar | Array | Struct | Union) -> int:
+        found = memo.get(id(t))
+        if found is not None:
+            return found
+        if isinstance(t, Scalar):
+            found = t.bits
+        elif isinstance(t, Array) and t.dynamic:
+            found = t.prefix_bits if prefixes else 0
+        elif isinstance(t, Array):
+            found = t.max_size * walk(t.item)
+        elif isinstance(t, Struct):
+            found = sum(walk(f.type) for f in t.fields)
+        else:
+            found = t.tag_bits + min(walk(m.type) for m in t.members)
+        memo[id(t)] = found
+        return found
+
+    return walk(t)
 
 
 def max_bits(t: Scalar | Array | Struct | Union, tao: bool = False) -> int:
     """Maximum serialized bit length, without the length prefix dropped by TAO when ``tao``."""
-    if isinstance(t, Scalar):
-        return t.bits
-    if isinstance(t, Array):
-        prefix = 0 if tao and uses_tao(t) else t.prefix_bits
-        return prefix + t.max_size * max_bits(t.item)
-    if isinstance(t, Struct):
-        last = len(t.fields) - 1
-        return sum(max_bits(f.type, tao and i == last) for i, f in enumerate(t.fields))
-    return t.tag_bits + max(max_bits(m.type, tao) for m in t.members)
+    memo: dict[tuple[int, bool], int] = {}  # by id, as in `_least_bits`
+
+    def walk(t: Scalar | Array | Struct | Union, tao: bool) -> int:
+        found = memo.get((id(t), tao))
+        if found is not None:
+            return found
+        if isinstance(t, Scalar):
+            found = t.bits
+        elif isinstance(t, Array):
+            prefix = 0 if tao and uses_tao(t) else t.prefix_bits
+            found = prefix + t.max_size * walk(t.item, False)
+        elif isinstance(t, Struct):
+            last = len(t.fields) - 1
+            found = sum(walk(f.type, tao and i == last) for i, f in enumerate(t.fields))
+        else:
+            found = t.tag_bits + max(walk(m.type, tao) for m in t.members)
+        memo[(id(t), tao)] = found
+        return found
+
+    return walk(t, tao)
 
 
 def uses_tao(array: Array) -> bool:
@@ -155,10 +185,4 @@ def uses_tao(array: Array) -> bool:
 
 def tao_min_bits(t: Scalar | Array | Struct | Union) -> int:
     """The least bit length of a type as the TAO rule counts it: dynamic arrays count 0."""
-    if isinstance(t, Scalar):
-        return t.bits
-    if isinstance(t, Array):
-        return 0 if t.dynamic else t.max_size * tao_min_bits(t.item)
-    if isinstance(t, Struct):
-        return sum(tao_min_bits(f.type) for f in t.fields)
-    return t.tag_bits + min(tao_min_bits(m.type) for m in t.members)
+    return _least_bits(t, False)

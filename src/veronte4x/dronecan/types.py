@@ -155,10 +155,11 @@ def data_types(
     builder = _Builder(definitions, classes, enums, members)
     found = []
     kinds = (TransferKind.REQUEST, TransferKind.RESPONSE)
+    signatures: dict[str, int] = {}
     for d in new.values():
         if d.default_id is None:
             continue
-        value = signature(d.full_name, dict(definitions))
+        value = signature(d.full_name, definitions, signatures)
         for i, key in enumerate(keys(d)):
             schema = builder.build(key)
             assert isinstance(schema, Struct)  # `generate.plan` refuses top-level unions
@@ -238,8 +239,9 @@ def text_attributes(
 
 def nested_signatures(definitions: Mapping[str, Definition]) -> dict[str, int]:
     """The signature of each nested type (documentation only: never on the wire)."""
+    signatures: dict[str, int] = {}
     return {
-        name: signature(name, dict(definitions))
+        name: signature(name, definitions, signatures)
         for name, d in definitions.items()
         if d.default_id is None
     }
