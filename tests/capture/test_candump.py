@@ -21,14 +21,14 @@ def test_every_line_of_the_odd_capture() -> None:
         Frame(T + 0.249713, "can0", 0xFF, bytes.fromhex("00ff8177ffff")),
         Frame(T + 0.25, "can0", 0x1004D42A, b"\xc0", extended=True),
         Frame(T + 0.2501, "can1", 0x123, b"", remote=True),
-        Frame(T + 0.2502, "can0", 0x123, b"", remote=True),
-        Frame(T + 0.2503, "can0", 0x123, bytes.fromhex("deadbeef"), fd=True),
+        Frame(T + 0.2502, "can0", 0x123, b"", remote=True, dlc=3),
+        Frame(T + 0.2503, "can0", 0x123, bytes.fromhex("deadbeef"), fd=True, brs=True),
         Frame(T + 0.2504, "can0", 0x80, bytes(8), extended=True, error=True),
         Frame(T + 0.2505, "can0", 0x008, bytes.fromhex("00ff01")),
         Frame(T + 0.2506, "can0", 0x123, b""),
         Frame(T + 0.250700, "can0", 0xFF, bytes.fromhex("00ff8177ffff")),
         Frame(None, "can0", 0x009, bytes.fromhex("00ff01")),
-        Frame(None, "can0", 0x123, b"", remote=True),
+        Frame(None, "can0", 0x123, b"", remote=True, dlc=2),
         Frame(None, "can0", 0x4, bytes.fromhex("0004000000000000"), extended=True, error=True),
         Frame(1436516252.249713, "can0", 0x00A, bytes.fromhex("00ff00")),
         BadLine(14, "garbage here", "expected 'interface ID [length] data'"),
@@ -166,11 +166,11 @@ def test_every_candump_form_with_11_and_29_bit_ids(
         ),
         "remote_dlc": (
             f"{stamp} {channel} {text}#R{len(data)}",
-            Frame(T1, channel, can_id, b"", extended, remote=True),
+            Frame(T1, channel, can_id, b"", extended, remote=True, dlc=len(data)),
         ),
         "fd": (
             f"{stamp} {channel} {text}##1{hexbytes}",
-            Frame(T1, channel, can_id, data, extended, fd=True),
+            Frame(T1, channel, can_id, data, extended, fd=True, brs=True),
         ),
         "raw_dlc": (
             f"{stamp} {channel} {text}#{hexbytes}_{len(data) or 9:X}",
@@ -186,7 +186,7 @@ def test_every_candump_form_with_11_and_29_bit_ids(
         ),
         "human_remote": (
             f"  {channel}  {text}   [{len(data)}]  remote request",
-            Frame(None, channel, can_id, b"", extended, remote=True),
+            Frame(None, channel, can_id, b"", extended, remote=True, dlc=len(data)),
         ),
         "human_error": (
             f"  {channel}  {error_text}   [{len(data)}]  {spaced}   ERRORFRAME",

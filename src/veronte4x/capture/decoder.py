@@ -62,7 +62,7 @@ class CaptureDecoder:
         last_channel, reassembler = None, None
         for item in items:
             if type(item) is Frame:
-                timestamp, channel, can_id, data, extended, remote, fd, error = item
+                timestamp, channel, can_id, data, extended, remote, fd, error, _, _, _ = item
                 if not (remote or fd or error):
                     route = routes.get(can_id) if extended == veronte_extended else None
                     if route is not None:

@@ -23,6 +23,10 @@ class Frame(NamedTuple):
         remote: Remote transmission request.
         fd: CAN FD frame.
         error: Error frame (its ``data`` holds the error details).
+        brs: CAN FD bit rate switch: the data phase at the data bit rate.
+        esi: CAN FD error state indicator: the sender is error passive.
+        dlc: A remote frame's DLC as given (the length it asks for); 0 for other frames,
+            whose length is their data's.
     """
 
     timestamp: float | None
@@ -33,6 +37,9 @@ class Frame(NamedTuple):
     remote: bool = False
     fd: bool = False
     error: bool = False
+    brs: bool = False
+    esi: bool = False
+    dlc: int = 0
 
 
 class BadLine(NamedTuple):

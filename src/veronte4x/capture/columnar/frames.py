@@ -24,6 +24,8 @@ from veronte4x.capture.frames import (
 
 MAX_DATA = 8
 """Data bytes a row of `FrameColumns.data` holds; longer (CAN FD) data lives in `long_data`."""
+_NO_FLAGS = (False, False, 0)
+"""`FrameColumns.flags` of a row that has none."""
 NO_TIME = np.iinfo(np.int64).min
 """`FrameColumns.time` of a frame whose time has no table value (none, not finite, or
 outside the years 1 to 9999)."""
@@ -48,6 +50,8 @@ class FrameColumns:
         length: Number of data bytes.
         data: The first eight data bytes of each frame, zero-padded.
         long_data: The data of frames with more than eight bytes, by row.
+        flags: ``(brs, esi, dlc)`` as in `Frame`, by row, for the rows where one is set (the
+            CAN FD flags, a remote frame's DLC).
         bad_lines: Lines that are no frame, with their position in the capture order.
         time: The log's time in whole microseconds since the epoch (UTC), exact where
             ``timestamp`` is rounded, `NO_TIME` where it has no table value; None when
@@ -67,6 +71,7 @@ class FrameColumns:
     length: npt.NDArray[np.int64]
     data: npt.NDArray[np.uint8]
     long_data: dict[int, bytes] = field(default_factory=dict)
+    flags: dict[int, tuple[bool, bool, int]] = field(default_factory=dict)
     bad_lines: list[tuple[int, BadLine]] = field(default_factory=list)
     time: npt.NDArray[np.int64] = None  # type: ignore[assignment]
 
@@ -81,7 +86,8 @@ class FrameColumns:
         self, rows: npt.NDArray[np.int64], order: npt.NDArray[np.int64] | None = None
     ) -> FrameColumns:
         """The frames of ``rows``, in that order (numbered ``order`` if given)."""
-        where = {int(old): new for new, old in enumerate(rows)} if self.long_data else {}
+        odd = self.long_data or self.flags
+        where = {int(old): new for new, old in enumerate(rows)} if odd else {}
         return FrameColumns(
             order=self.order[rows] if order is None else order,
             timestamp=self.timestamp[rows],
@@ -96,6 +102,7 @@ class FrameColumns:
             length=self.length[rows],
             data=self.data[rows],
             long_data={where[r]: d for r, d in self.long_data.items() if r in where},
+            flags={where[r]: f for r, f in self.flags.items() if r in where},
             bad_lines=self.bad_lines,
             time=self.time[rows],
         )
@@ -105,6 +112,7 @@ class FrameColumns:
         data = self.long_data.get(row)
         if data is None:
             data = self.data[row, : self.length[row]].tobytes()
+        brs, esi, dlc = self.flags.get(row, _NO_FLAGS)
         return Frame(
             self.seconds(row),
             self.channels[self.channel[row]],
@@ -114,6 +122,9 @@ class FrameColumns:
             bool(self.remote[row]),
             bool(self.fd[row]),
             bool(self.error[row]),
+            brs,
+            esi,
+            dlc,
         )
 
     def seconds(self, row: int) -> float | None:
@@ -142,7 +153,7 @@ class FrameColumns:
             stamps[at] = Seconds(stamps[at], int(exact[at]))
         lengths = self.length[rows].tolist()
         blob = self.data[rows].tobytes()
-        long_data = self.long_data
+        long_data, flags = self.long_data, self.flags
         new = tuple.__new__
         out = []
         for at, (row, stamp, channel, can_id, size, extended, remote, fd, error) in enumerate(
@@ -163,9 +174,9 @@ class FrameColumns:
             if data is None:
                 data = blob[at * MAX_DATA : at * MAX_DATA + size]
             time = None if stamp != stamp else stamp  # NaN: no timestamp
-            out.append(
-                new(Frame, (time, names[channel], can_id, data, extended, remote, fd, error))
-            )
+            row_frame = (time, names[channel], can_id, data, extended, remote, fd, error)
+            extra = flags.get(row, _NO_FLAGS) if flags else _NO_FLAGS
+            out.append(new(Frame, (*row_frame, *extra)))
         return out
 
 
@@ -180,8 +191,11 @@ def from_frames(items: list[tuple[int, Frame | BadLine]]) -> FrameColumns:
     n = len(frames)
     data = np.zeros((n, MAX_DATA), np.uint8)
     long_data: dict[int, bytes] = {}
+    flags: dict[int, tuple[bool, bool, int]] = {}
     lengths = np.zeros(n, np.int64)
     for row, (_, frame) in enumerate(frames):
+        if frame.brs or frame.esi or frame.dlc:
+            flags[row] = (frame.brs, frame.esi, frame.dlc)
         size = len(frame.data)
         lengths[row] = size
         if size > MAX_DATA:
@@ -206,6 +220,7 @@ def from_frames(items: list[tuple[int, Frame | BadLine]]) -> FrameColumns:
         length=lengths,
         data=data,
         long_data=long_data,
+        flags=flags,
         bad_lines=[(o, b) for o, b in items if isinstance(b, BadLine)],
     )
 
@@ -226,7 +241,8 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
     in_sequence = all(a.order[-1] < b.order[0] for a, b in itertools.pairwise(filled))
     sort = order if in_sequence else np.argsort(order, kind="stable")
     long_data: dict[int, bytes] = {}
-    if any(p.long_data for p in parts):
+    flags: dict[int, tuple[bool, bool, int]] = {}
+    if any(p.long_data or p.flags for p in parts):
         offsets = np.cumsum([0] + [len(p) for p in parts])
         rank = np.arange(len(order))
         if not in_sequence:
@@ -235,6 +251,11 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
             int(rank[offsets[i] + row]): data
             for i, p in enumerate(parts)
             for row, data in p.long_data.items()
+        }
+        flags = {
+            int(rank[offsets[i] + row]): odd
+            for i, p in enumerate(parts)
+            for row, odd in p.flags.items()
         }
 
     def joined(name: str) -> np.ndarray:
@@ -255,6 +276,7 @@ def concat(parts: list[FrameColumns]) -> FrameColumns:
         length=joined("length"),
         data=joined("data"),
         long_data=long_data,
+        flags=flags,
         bad_lines=sorted((b for p in parts for b in p.bad_lines), key=lambda b: b[0]),
         time=joined("time"),
     )

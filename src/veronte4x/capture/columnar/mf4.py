@@ -159,6 +159,12 @@ def _chunk(
     else:
         codes, channels = np.zeros(n, np.int64), [""]
     flag = np.zeros(n, np.bool_)
+    brs = get("BRS").astype(np.bool_) if f"{kind}.BRS" in names else flag
+    esi = get("ESI").astype(np.bool_) if f"{kind}.ESI" in names else flag
+    dlc = get("DLC").astype(np.int64) if remote and f"{kind}.DLC" in names else length
+    dlc = dlc if remote else np.zeros(n, np.int64)
+    odd = np.flatnonzero(brs | esi | (dlc != 0)).tolist()
+    flags = {row: (bool(brs[row]), bool(esi[row]), int(dlc[row])) for row in odd}
     return FrameColumns(
         order=np.arange(n, dtype=np.int64),
         timestamp=stamps.astype(np.float64),
@@ -173,6 +179,7 @@ def _chunk(
         length=length,
         data=data,
         long_data=long_data,
+        flags=flags,
     )
 
 

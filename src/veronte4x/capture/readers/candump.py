@@ -36,6 +36,10 @@ if TYPE_CHECKING:
 
 CAN_ERR_FLAG = 0x2000_0000
 """Error-frame flag of a SocketCAN identifier (linux/can.h)."""
+CANFD_BRS = 0x01
+"""Bit rate switch in a CAN FD frame's flags nibble (linux/can.h)."""
+CANFD_ESI = 0x02
+"""Error state indicator in a CAN FD frame's flags nibble (linux/can.h)."""
 
 _ID_MASK = 0x1FFF_FFFF
 _SAFE = 8_589_934_592.0
@@ -135,7 +139,7 @@ def parse_candump(
                     # frame[0] - frame[0] is 0.0 for a finite time only (not nan or inf).
                     if not can_id & CAN_ERR_FLAG and frame[0] - frame[0] == 0.0:
                         if channel is None or interface == channel:
-                            yield new(Frame, (*frame, False, False, False))
+                            yield new(Frame, (*frame, False, False, False, False, False, 0))
                         continue
         if parts:
             result = parse_line(line, number, parts)
@@ -187,13 +191,23 @@ def _log_line(parts: list[str]) -> Frame | str:
     if data.startswith("#"):
         if len(data) < 2:
             return "CAN FD frame without its flags nibble"
-        int(data[1], 16)
+        flags = int(data[1], 16)
         payload = bytes.fromhex(data[2:])
-        return Frame(timestamp, interface, raw_id & _ID_MASK, payload, extended, fd=True)
+        return Frame(
+            timestamp,
+            interface,
+            raw_id & _ID_MASK,
+            payload,
+            extended,
+            fd=True,
+            brs=bool(flags & CANFD_BRS),
+            esi=bool(flags & CANFD_ESI),
+        )
     if data[:1] in ("R", "r"):
         if data[1:] and not data[1:].isdigit():
             return f"remote frame with a bad length {data[1:]!r}"
-        return Frame(timestamp, interface, raw_id & _ID_MASK, b"", extended, remote=True)
+        asked = int(data[1:] or "0")
+        return Frame(timestamp, interface, raw_id & _ID_MASK, b"", extended, remote=True, dlc=asked)
     if "_" in data:
         data, _, dlc = data.partition("_")
         int(dlc, 16)
@@ -228,7 +242,7 @@ def _human_line(parts: list[str], line: str) -> Frame | str:
     extended = len(ident) == 8
     tokens = parts[3:]
     if tokens[:2] == ["remote", "request"]:
-        return Frame(timestamp, interface, raw_id & _ID_MASK, b"", extended, remote=True)
+        return Frame(timestamp, interface, raw_id & _ID_MASK, b"", extended, remote=True, dlc=size)
     error = bool(raw_id & CAN_ERR_FLAG)
     hexbytes = []
     for token in tokens:

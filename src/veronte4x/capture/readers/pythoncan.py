@@ -40,6 +40,9 @@ def frame_from_message(message: Any) -> Frame:
         message.is_remote_frame,
         message.is_fd,
         message.is_error_frame,
+        message.bitrate_switch,
+        message.error_state_indicator,
+        message.dlc if message.is_remote_frame else 0,
     )
 
 
@@ -66,7 +69,10 @@ def read_with_python_can(
     can = require("can", "can", f"reading {name}")
     with quiet_parsers():
         try:
-            return _read(can.LogReader(name), name, channel)
+            # ASC: times from the file's date (and triggerblock) line, as ASCReader gives
+            # them with relative_timestamp=False; the other readers ignore the option.
+            reader = can.LogReader(name, relative_timestamp=False)
+            return _read(reader, name, channel)
         except _NOT_DAMAGE:
             raise
         except Exception as error:
