@@ -26,6 +26,7 @@ from tests.capture.columnar_support import (
     frames_left_to_per_frame,
     write,
 )
+from tests.capture.dbc_reference import cantools_fields
 from tests.capture.test_dataset import read_back
 from veronte4x import capture
 from veronte4x.capture import BusMap
@@ -143,18 +144,10 @@ def expected_rows(database: Any, frames: list[tuple[int, bool, bytes]]) -> dict[
         except KeyError:
             continue
         try:
-            values = database.decode_message(
-                can_id, data, decode_choices=True, force_extended_id=extended
-            )
+            values = cantools_fields(message, data)
         except Exception:
             continue
-        out.setdefault(message.name, []).append(
-            {
-                s.name: None if s.name not in values
-                else str(values[s.name]) if s.choices else values[s.name]
-                for s in message.signals
-            }
-        )  # fmt: skip
+        out.setdefault(message.name, []).append(values)
     return out
 
 
@@ -244,8 +237,8 @@ def test_parquet_read_back_with_duckdb(tmp_path: Path) -> None:
     ]  # fmt: skip
     bms = f"{out}/capture=*/BmsStatus.parquet"
     assert duckdb.connect().execute(
-        f"SELECT voltage, current, state, temperature FROM read_parquet('{bms}')"
-    ).fetchall() == [(10.0, -6.0, "charging", 25)]
+        f"SELECT voltage, current, state, state_name, temperature FROM read_parquet('{bms}')"
+    ).fetchall() == [(10.0, -6.0, 1, "charging", 25)]
     gimbal = f"{out}/capture=*/Gimbal.parquet"
     assert duckdb.connect().execute(
         f"SELECT can_id, mode, pitch, yaw FROM read_parquet('{gimbal}')"

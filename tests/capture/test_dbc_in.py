@@ -14,8 +14,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.capture.columnar_support import write
+from tests.capture.dbc_reference import cantools_fields
 from veronte4x import capture
 from veronte4x.capture import BusMap, DbcDecoder, Role
+from veronte4x.capture.dbc_in import DbcWarning
 
 DBC = Path(__file__).with_name("data") / "payload.dbc"
 ROOT = Path(__file__).resolve().parents[2]
@@ -24,19 +26,13 @@ DATABASE: Any = cantools.database.load_file(str(DBC))
 
 
 def want(can_id: int, extended: bool, data: bytes) -> dict[str, Any] | str:
-    """What cantools itself says of a frame: its signals (names for value tables), or the
-    error text."""
+    """What cantools itself says of a frame: its signals' numbers (``decode_choices=False``)
+    and a value table's names (``<signal>_name``), or the error text."""
     message = DATABASE.get_message_by_frame_id(can_id | (0x80000000 if extended else 0))
     try:
-        values = message.decode(data, decode_choices=True)
+        return cantools_fields(message, data)
     except Exception as error:
         return f"{message.name}: {error}"
-    return {
-        s.name: None
-        if s.name not in values
-        else (str(values[s.name]) if s.choices else values[s.name])
-        for s in message.signals
-    }
 
 
 def same(got: Any, expected: Any) -> bool:
@@ -104,7 +100,8 @@ def DATABASE_KNOWS(can_id: int, extended: bool) -> bool:
 def test_units_choices_and_multiplexing() -> None:
     decoder = DbcDecoder([DBC])
     bms = decoder.decode(0x123, False, bytes.fromhex("E803F6FF01190000"))
-    assert (bms.voltage, bms.current, bms.state, bms.temperature) == (10.0, -6.0, "charging", 25)
+    assert (bms.voltage, bms.current, bms.state, bms.temperature) == (10.0, -6.0, 1, 25)
+    assert bms.state_name == "charging"
     assert type(bms).UNITS == {"voltage": "V", "current": "A", "temperature": "degC"}
     gimbal = decoder.decode(0x18FF1234, True, bytes.fromhex("02ECFF00"))
     assert (gimbal.mode, gimbal.pitch, gimbal.yaw) == (2, None, -0.2)
@@ -130,9 +127,16 @@ def test_cli_decode_and_stats_with_a_dbc(tmp_path: Path) -> None:
     )
     done = run("decode", str(path), "--dbc", str(DBC))
     assert done.returncode == 0
-    assert done.stderr.startswith("veronte4x: 2 records, 0 undecoded")
+    warning, summary = done.stderr.splitlines()
+    assert warning == (
+        f"veronte4x: warning: {DBC}: 1 DBC message(s) on CAN IDs the bus map decodes "
+        "otherwise, not decoded by the DBC: Gimbal (18FF1234: DroneCAN); give --dbc-first "
+        "(BusMap(dbc_first=True), [dbc] first = true) to let the DBC decode them; or "
+        "[dronecan] enabled = false"
+    )
+    assert summary.startswith("veronte4x: 2 records, 0 undecoded")
     assert done.stdout.splitlines()[0].endswith(
-        "BmsStatus(voltage=10.0, current=-6.0, state=charging, temperature=25)"
+        "BmsStatus(voltage=10.0, current=-6.0, state=1, state_name=charging, temperature=25)"
     )
     done = run("stats", str(path), "--dbc", str(DBC))
     assert "  BmsStatus                             1" in done.stdout.splitlines()
@@ -181,5 +185,6 @@ def test_a_dbc_never_takes_a_veronte_id(extended: bool, tmp_path: Path) -> None:
     bus_map = BusMap(extended=extended)
     ident = "000000FF" if extended else "0FF"
     path = write(tmp_path / "x.log", [f"(1.0) can0 {ident}#00FF8177FFFF"])
-    (record,) = capture.read(path, bus_map, dbc=[dbc])
+    with pytest.warns(DbcWarning, match=rf"Clash \({ident}: the Veronte arbiter\)"):
+        (record,) = capture.read(path, bus_map, dbc=[dbc])
     assert record.kind == "Status"

@@ -100,7 +100,7 @@ def read(
         OSError: The file cannot be opened.
     """
     bus_map = with_dbc(bus_map, dbc).with_types(types)
-    dbc_decoder = decoder_of(bus_map.dbc) if bus_map.dbc else None
+    dbc_decoder = decoder_of(bus_map.dbc, bus_map.dbc_lax) if bus_map.dbc else None
     source = resolve(path)
     records = source.reader.read_records(source, CaptureDecoder(bus_map), channel)
     return records if dbc_decoder is None else dbc_decoder.records(records)
@@ -190,7 +190,7 @@ def read_tables(
     """
     bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
     if bus_map.dbc:
-        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any decoding
+        decoder_of(bus_map.dbc, bus_map.dbc_lax)  # a bad DBC fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
         source, bus_map, channel, time, progress
     )
@@ -285,7 +285,7 @@ def to_parquet(
 
     bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
     if bus_map.dbc:
-        decoder_of(bus_map.dbc)  # a DBC that cannot be read fails before any file
+        decoder_of(bus_map.dbc, bus_map.dbc_lax)  # a bad DBC fails before any file
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel, time_form=time)
     return summary
 

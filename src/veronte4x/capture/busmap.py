@@ -25,6 +25,11 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 
     [dronecan]
     enabled = true                   # 29-bit frames that are not Veronte go to DroneCAN
+
+    [dbc]                            # the DBC files given with --dbc (or BusMap.dbc)
+    lax = false                      # read files cantools reads only with strict=False
+    first = false                    # a CAN ID a DBC knows is the DBC's, even a Veronte
+                                     # ID or a 29-bit ID DroneCAN would decode
 """
 
 from __future__ import annotations
@@ -35,6 +40,7 @@ import functools
 import math
 import os
 import sys
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -102,6 +108,12 @@ class BusMap:
         dbc: DBC files for the frames outside the bus map (see `veronte4x.capture.dbc_in`).
         dronecan_text: How tables give DroneCAN text fields (`TextForm`): ``string`` or
             ``binary``. Records keep their bytes either way.
+        dbc_lax: Read the DBC files cantools reads only with ``strict=False`` (overlapping
+            signals, a signal past its message) that way, with a
+            `veronte4x.capture.dbc_in.DbcWarning` saying what the strict reading found.
+        dbc_first: A frame on a CAN ID a DBC file knows is the DBC's, even on a Veronte
+            ID or a 29-bit ID DroneCAN would decode. Without it such a DBC message is
+            reported once (a ``DbcWarning``) and its frames stay the bus map's.
     """
 
     arbiter_id: int = 255
@@ -114,9 +126,12 @@ class BusMap:
     dronecan_types: TypeSet | None = None
     dbc: tuple[str, ...] = ()
     dronecan_text: TextForm = "string"
+    dbc_lax: bool = False
+    dbc_first: bool = False
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )
+    _dbc_ids: frozenset[int] = field(init=False, repr=False, compare=False, default=frozenset())
 
     def __post_init__(self) -> None:
         check_text_form(self.dronecan_text)
@@ -126,11 +141,34 @@ class BusMap:
             if can_id in roles:
                 raise BusMapError(f"CAN ID {can_id} is given to two Veronte roles")
             roles[can_id] = (Role.AUTOPILOT, index)
+        if self.dbc:
+            self._take_dbc()
+
+    def _take_dbc(self) -> None:
+        """Read the DBC files (once, `veronte4x.capture.dbc_in.decoder_of`): with
+        ``dbc_first``, give their CAN IDs to them; else report the messages shadowed."""
+        from veronte4x.capture import dbc_in
+
+        object.__setattr__(self, "dbc", tuple(dict.fromkeys(map(os.fspath, self.dbc))))
+        if not self.dbc_first:
+            for line in dbc_in.shadowed(self):
+                warnings.warn(line, dbc_in.DbcWarning, stacklevel=4)
+            return
+        claimed = dbc_in.claimed(self)
+        for can_id, extended in claimed:
+            if extended == self.extended:
+                self._roles.pop(can_id, None)
+        object.__setattr__(self, "_dbc_ids", frozenset(i for i, extended in claimed if extended))
 
     @property
     def veronte_roles(self) -> Mapping[int, tuple[Role, int | None]]:
         """CAN ID to (role, autopilot index) for the Veronte IDs."""
         return MappingProxyType(self._roles)
+
+    @property
+    def dbc_ids(self) -> frozenset[int]:
+        """The 29-bit CAN IDs DroneCAN leaves to the DBC files (``dbc_first``)."""
+        return self._dbc_ids
 
     def role(self, can_id: int, extended: bool) -> tuple[Role, int | None]:
         """The role of a frame and, for an autopilot, its index (0 = AP1 .. 3 = external)."""
@@ -138,7 +176,7 @@ class BusMap:
             found = self._roles.get(can_id)
             if found is not None:
                 return found
-        if extended and self.dronecan:
+        if extended and self.dronecan and can_id not in self._dbc_ids:
             return Role.DRONECAN, None
         return Role.UNKNOWN, None
 
@@ -182,6 +220,11 @@ class BusMap:
                 document = tomllib.load(file)
             except tomllib.TOMLDecodeError as error:
                 raise BusMapError(f"{os.fspath(path)}: {error}") from None
+            except UnicodeDecodeError as error:
+                raise BusMapError(
+                    f"{os.fspath(path)}: not UTF-8 text (byte {error.start}): save the bus "
+                    "map as UTF-8, as TOML requires"
+                ) from None
         return cls.from_dict(document)
 
     @classmethod
@@ -192,7 +235,7 @@ class BusMap:
             BusMapError: Unknown keys, wrong types or bad layouts; the message names the key.
         """
         top = _table(document, "the bus map")
-        _only(top, {"veronte", "dronecan"}, "top level")
+        _only(top, {"veronte", "dronecan", "dbc"}, "top level")
         veronte = _table(top.get("veronte", {}), "[veronte]")
         _only(
             veronte,
@@ -201,6 +244,8 @@ class BusMap:
         )
         dronecan = _table(top.get("dronecan", {}), "[dronecan]")
         _only(dronecan, {"enabled", "text"}, "[dronecan]")
+        dbc = _table(top.get("dbc", {}), "[dbc]")
+        _only(dbc, {"lax", "first"}, "[dbc]")
         default = cls()
         ids = tuple(
             _int(i, "[veronte] autopilot_ids")
@@ -233,6 +278,8 @@ class BusMap:
                 layouts=layouts,
                 dronecan=decode_dronecan,
                 dronecan_text=text,
+                dbc_lax=_bool(dbc.get("lax", False), "[dbc] lax"),
+                dbc_first=_bool(dbc.get("first", False), "[dbc] first"),
             )
             bus_map.codec()  # declared layouts are checked against the built-in ones here
         except (ValueError, TypeError) as error:

@@ -56,6 +56,7 @@ class CaptureDecoder:
         routes = self._routes
         veronte_extended = self.bus_map.extended
         dronecan = self.bus_map.dronecan
+        dbc_ids = self.bus_map.dbc_ids  # 29-bit IDs DroneCAN leaves to a DBC
         excess = self.bus_map.allow_excess
         decoded, delivered = veronte_record, transfer_record
         # The reassembler of the latest DroneCAN frame's channel (one lookup per change).
@@ -74,7 +75,7 @@ class CaptureDecoder:
                         else:
                             yield decoded(timestamp, channel, can_id, role, index, message, data)
                         continue
-                    if extended and dronecan:
+                    if extended and dronecan and can_id not in dbc_ids:
                         # _dronecan, inlined: no generator per frame.
                         if channel != last_channel or reassembler is None:
                             reassembler = self._reassembler(channel)
@@ -124,6 +125,7 @@ class CaptureDecoder:
         # replaces int() and the error-flag check (3 hex digits cannot hold the flag).
         veronte = {} if self.bus_map.extended else _routes_by_text(self._routes)
         dronecan = self.bus_map.dronecan and not self.bus_map.extended
+        dbc_ids = self.bus_map.dbc_ids
         excess = self.bus_map.allow_excess
         unhexlify = binascii.unhexlify
         identifiers = Identifiers()
@@ -191,7 +193,11 @@ class CaptureDecoder:
                                 data = unhexlify(text)
                             except ValueError:
                                 seconds = math.nan
-                            if seconds - seconds == 0.0 and not can_id & CAN_ERR_FLAG:
+                            if (
+                                seconds - seconds == 0.0
+                                and not can_id & CAN_ERR_FLAG
+                                and can_id not in dbc_ids
+                            ):
                                 if channel is not None and interface != channel:
                                     continue
                                 # _dronecan, inlined: no Frame, no generator per frame.

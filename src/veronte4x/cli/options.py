@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 import argparse
+import dataclasses
+import sys
 import threading
+import warnings
 from collections.abc import Iterator
 from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.dbc_in import DbcWarning, decoder_of
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
@@ -28,7 +32,42 @@ def add_capture_options(parser: argparse.ArgumentParser) -> None:
         help="decode the frames outside the bus map that this DBC knows (repeatable; "
         "needs veronte4x[dbc])",
     )
+    parser.add_argument(
+        "--dbc-lax",
+        action="store_true",
+        help="read DBC files that cantools reads only with strict=False (overlapping "
+        "signals) that way, saying what the strict reading found",
+    )
+    parser.add_argument(
+        "--dbc-first",
+        action="store_true",
+        help="a CAN ID a --dbc file knows is the DBC's, even a Veronte ID or a 29-bit ID "
+        "DroneCAN would decode",
+    )
     add_dsdl_option(parser)
+
+
+def with_dbc_options(args: argparse.Namespace, bus_map: BusMap) -> BusMap:
+    """``bus_map`` with the ``--dbc`` files and ``--dbc-lax``/``--dbc-first``; reading
+    them prints each `veronte4x.capture.dbc_in.DbcWarning` once on standard error.
+
+    Raises:
+        SourceError: A DBC file that cannot be read.
+    """
+    changes: dict[str, Any] = {"dbc": (*bus_map.dbc, *getattr(args, "dbc", ()))}
+    if getattr(args, "dbc_lax", False):
+        changes["dbc_lax"] = True
+    if getattr(args, "dbc_first", False):
+        changes["dbc_first"] = True
+    if not changes["dbc"]:
+        return dataclasses.replace(bus_map, **changes)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", DbcWarning)
+        bus_map = dataclasses.replace(bus_map, **changes)
+    for warning in caught:
+        print(f"veronte4x: warning: {warning.message}", file=sys.stderr)
+    warnings.simplefilter("ignore", DbcWarning)  # reported: not again when read again
+    return bus_map
 
 
 def add_dsdl_option(parser: argparse.ArgumentParser) -> None:
@@ -141,7 +180,7 @@ def open_records(
 def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Record]:
     """``records`` with the frames a ``--dbc`` file knows decoded (`capture.DbcDecoder`)."""
     paths = getattr(args, "dbc", ())
-    return capture.DbcDecoder(paths).records(records) if paths else records
+    return decoder_of(paths, getattr(args, "dbc_lax", False)).records(records) if paths else records
 
 
 def open_frame_source(

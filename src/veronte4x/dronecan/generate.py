@@ -37,9 +37,11 @@ Naming rules (documented in the DroneCAN types page):
 from __future__ import annotations
 
 import ast
+import builtins
 import keyword
 import re
-from collections.abc import Iterable
+from collections import Counter
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from veronte4x.dronecan.parser import (
@@ -143,6 +145,20 @@ _RESERVED = {
 }
 """Names of the public API other than the message classes."""
 
+_MODULE_NAMES = {
+    "annotations",
+    "enum",
+    "dataclass",
+    "Any",
+    "ClassVar",
+    "TypeAlias",
+    "HtmlDisplay",
+    "CLASSES",
+    "ENUMS",
+    "UNION_MEMBERS",
+}
+"""Names the generated module imports or defines besides its classes."""
+
 
 @dataclass
 class Plan:
@@ -172,29 +188,73 @@ def _prefix(namespace: str, depth: int) -> str:
     return "".join(_camel(p) for p in parts[len(parts) - depth :]) if depth else ""
 
 
-def _class_names(definitions: dict[str, Definition], taken: set[str]) -> dict[str, str]:
-    """Class name of every key, by the rules of the module docstring."""
+def usable(name: str) -> bool:
+    """Whether a generated name can be a module-level class: an identifier, no keyword
+    (``None``, ``True``), no ``__`` in front (mangled inside class bodies)."""
+    return name.isidentifier() and not keyword.iskeyword(name) and not name.startswith("__")
+
+
+def _ladder(d: Definition, half: str) -> list[str]:
+    """The names a key may take, in order: its short name, then with ever more components
+    of its namespace in front (the root last), then its full name with ``_`` for ``.``."""
+    base = d.short_name + half
+    depth = d.namespace.count(".") + 1
+    return [
+        *(_prefix(d.namespace, n) + base for n in range(depth + 1)),
+        d.full_name.replace(".", "_") + half,
+    ]
+
+
+def _class_names(
+    definitions: dict[str, Definition], taken: set[str], named: dict[str, str]
+) -> dict[str, str]:
+    """Class name of every key, by the rules of the module docstring.
+
+    Every key not in ``named`` climbs its `_ladder` while its name is taken, or is the short
+    name of a type in ``named``, or is the name of another key; all keys of a clash climb
+    together, so the result does not depend on the order of the definitions. A clash left
+    at the top of the ladders gives ``_2``, ``_3``, ... (keys in order of their names).
+    """
     suffixes = ("Request", "Response")
-    bases: dict[str, list[tuple[str, Definition]]] = {}
+    ladders: dict[str, list[str]] = {}
+    claimed = set(taken) | set(named.values())
     for d in definitions.values():
         for i, key in enumerate(keys(d)):
-            bases.setdefault(d.short_name + (suffixes[i] if d.service else ""), []).append((key, d))
-    names: dict[str, str] = {}
-    for base, group in bases.items():
-        clash = len(group) > 1 or base in taken
-        for key, d in group:
-            if key in HAND_NAMES:
-                names[key] = HAND_NAMES[key]
-                continue
-            name, depth = base, 0
-            while clash and depth < d.namespace.count(".") + 1:
-                depth += 1
-                name = _prefix(d.namespace, depth) + base
-                others = {_prefix(o.namespace, depth) + base for k, o in group if k != key}
-                if name not in others and name not in taken:
-                    break
-            names[key] = name
-    return names
+            half = suffixes[i] if d.service else ""
+            if key in named:
+                claimed.add(d.short_name + half)
+            else:
+                ladders[key] = _ladder(d, half)
+    level = dict.fromkeys(ladders, 0)
+    while True:
+        names = {key: ladder[level[key]] for key, ladder in ladders.items()}
+        counts = Counter(names.values())
+        clashes = [
+            key
+            for key, name in names.items()
+            if name in claimed or counts[name] > 1 or not usable(name)
+        ]
+        climbing = [key for key in clashes if level[key] + 1 < len(ladders[key])]
+        if not climbing:
+            break
+        for key in climbing:
+            level[key] += 1
+    result = dict(named)
+    result.update((key, name) for key, name in names.items() if key not in clashes)
+    used = claimed | set(result.values())
+    for key in sorted(clashes):
+        top = next(n for n in reversed(ladders[key]) if usable(n))
+        result[key] = _numbered(top, used)
+        used.add(result[key])
+    return result
+
+
+def _numbered(name: str, used: set[str]) -> str:
+    """``name_2``, ``name_3``, ...: the first that is not in ``used``."""
+    number = 2
+    while f"{name}_{number}" in used:
+        number += 1
+    return f"{name}_{number}"
 
 
 def _enum_candidates(
@@ -227,18 +287,26 @@ def _enum_candidates(
     return found
 
 
-def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
+def plan(
+    definitions: dict[str, Definition],
+    known: Iterable[str] = (),
+    named: Mapping[str, str] | None = None,
+) -> Plan:
     """Names of the classes, enums and union members of ``definitions``.
 
     Args:
         definitions: Every definition the classes may refer to.
-        known: Class names taken already (by another set of types).
+        known: Names taken already (the classes and enums of another set of types).
+        named: The class name of each key named already (the set the definitions are
+            added to): those keys keep it, and get no enums or union members here.
     """
     result = Plan()
-    taken = set(_RESERVED) | set(known) | set(HAND_NAMES.values())
-    result.names = _class_names(definitions, taken)
+    fixed = {**HAND_NAMES, **(named or {})}
+    taken = set(_RESERVED) | _MODULE_NAMES | set(dir(builtins)) | set(known)
+    result.names = _class_names(definitions, taken, fixed)
     taken |= set(result.names.values())
     candidates = []
+    mine = []
     for d in definitions.values():
         for key, section in zip(keys(d), d.sections, strict=True):
             result.sections[key] = (d, section)
@@ -251,19 +319,25 @@ def plan(definitions: dict[str, Definition], known: Iterable[str] = ()) -> Plan:
                 continue
             if section.union and d.default_id is not None:
                 raise DsdlError(d.path, None, "a union as a top-level type is not supported")
-            candidates += _enum_candidates(key, section)
+            found = _enum_candidates(key, section)
+            candidates += found
+            if key in fixed:
+                continue
+            mine += found
             if section.union:
                 result.members[key] = _member_names(key, d, section, definitions, result, taken)
     counts: dict[str, int] = {}
     for where, *_, prefix in candidates:
         stem = _camel(prefix.lower() or where[1])
         counts[stem] = counts.get(stem, 0) + 1
-    for where, kind, constants, prefix in candidates:
+    for where, kind, constants, prefix in mine:
         name = _camel(prefix.lower() or where[1])
         if counts[name] > 1 or name in taken:
             name = result.names[where[0]] + name
+        if name in taken or not usable(name):
+            name = _numbered(name, taken)
+        taken.add(name)
         result.enums[where] = (name, kind, constants, prefix)
-    taken |= {e[0] for e in result.enums.values()}
     for key, hand in HAND_UNION_MEMBERS.items():
         if key in result.names:
             result.members[key] = hand
@@ -284,10 +358,14 @@ def _member_names(
         inner = definitions.get(target) if target is not None else None
         if inner is not None and inner.sections[0].union:
             raise DsdlError(d.path, a.line, "a union in a union is not supported")
-        name = result.names[target] if target is not None else result.names[key] + _camel(a.name)
-        if name in members:
-            raise DsdlError(d.path, a.line, f"two members of the union hold a {name}")
-        if target is None:
+        if target is not None:
+            name = result.names[target]
+            if name in members:
+                raise DsdlError(d.path, a.line, f"two members of the union hold a {name}")
+        else:
+            name = result.names[key] + _camel(a.name)
+            if name in taken or not usable(name):
+                name = _numbered(name, taken)
             taken.add(name)
         members.append(name)
     return tuple(members)
@@ -358,11 +436,12 @@ def _python_type(t: FieldType, p: Plan, enum: str | None) -> tuple[str, str]:
 
 def _covers(t: FieldType, constants: list[Constant]) -> bool:
     """Whether the constants name every value of an unsigned field (it always decodes to
-    the enum: ``NodeStatus.health``)."""
-    return (
-        isinstance(t, PrimitiveType)
-        and t.kind == "uint"
-        and {c.value for c in constants} == set(range(1 << t.bits))
+    the enum: ``NodeStatus.health``). Counted, not listed: a ``uint23`` has 8 M values."""
+    if not isinstance(t, PrimitiveType) or t.kind != "uint":
+        return False
+    values = {c.value for c in constants}
+    return len(values) == 1 << t.bits and all(
+        isinstance(v, int) and 0 <= v < 1 << t.bits for v in values
     )
 
 

@@ -136,12 +136,16 @@ class TypeSet:
 
         Raises:
             DsdlError: A malformed definition (file and line), an unknown nested type, a
-                type defined twice, or a data type id claimed twice (naming both files).
+                type defined twice, a data type id claimed twice (naming both files), or a
+                root named ``uavcan`` (the standard one cannot be replaced or extended).
         """
         roots = [Path(d).resolve() for d in root_namespace_dirs]
         new_roots = [r for r in dict.fromkeys(roots) if r not in self.roots]
         if not new_roots:
             return self
+        for root in new_roots:
+            if root.name == "uavcan":
+                raise DsdlError(root, None, _STANDARD_ROOT)
         new = parse_namespaces(new_roots)
         for name, d in new.items():
             other = self.definitions.get(name)
@@ -155,6 +159,13 @@ class TypeSet:
         codecs = self.codecs + tuple(TypeCodec(t) for t in found)
         all_roots = (*self.roots, *new_roots)
         return TypeSet(codecs, classes, enums, members, definitions, all_roots, names)
+
+
+_STANDARD_ROOT = (
+    "uavcan is the standard root namespace, built into veronte4x: "
+    "a vendor namespace needs a root of its own"
+)
+"""Why a root namespace directory named ``uavcan`` is refused."""
 
 
 def _check_ids(old: Iterable[DataType], new: Iterable[DataType]) -> None:
@@ -193,8 +204,7 @@ def _compile(
             known.setdefault(cls.__name__, cls)
     for enum in base._enums.values():
         known.setdefault(enum.__name__, enum)
-    p = plan(definitions, known)
-    p.names.update(base._names)
+    p = plan(definitions, known, base._names)
     for key, member_classes in base._members.items():
         p.members[key] = tuple(c.__name__ for c in member_classes)
     generate = [k for d in new.values() for k in keys(d)]

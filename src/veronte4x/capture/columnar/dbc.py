@@ -21,12 +21,13 @@ from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns
 from veronte4x.capture.columnar.schema import HEAD, SENDER_INDEX, Column, TableSpec
 from veronte4x.capture.columnar.tables import SUB, Tables
-from veronte4x.capture.dbc_in import MAX_DIGITS, decoder_of, failure
+from veronte4x.capture.dbc_in import MAX_DIGITS, DbcEntry, decoder_of, failure
 from veronte4x.capture.records import Record, error_record
 from veronte4x.errors import SourceError
 
 _UNKNOWN = SENDER_INDEX["unknown"]
-_CHOICE = pa.dictionary(pa.int16(), pa.string())
+_CHOICE = pa.dictionary(pa.int32(), pa.string())
+"""A value table's names: int32 indexes, more than any value table holds."""
 
 
 def decode_dbc_frames(
@@ -36,21 +37,22 @@ def decode_dbc_frames(
     mark them done."""
     if not bus_map.dbc:
         return
-    entries = decoder_of(bus_map.dbc).entries()
+    entries = decoder_of(bus_map.dbc, bus_map.dbc_lax).entries()
     keys = frames.can_id.astype(np.int64) | (frames.extended.astype(np.int64) << 32)
     known = np.array([can_id | (int(ext) << 32) for can_id, ext in entries], np.int64)
     rows = np.flatnonzero(~done & np.isin(keys, known) & ~(frames.error | frames.remote))
     veronte = frames.extended[rows] == bus_map.extended
     veronte &= np.isin(frames.can_id[rows], list(bus_map.veronte_roles))
     dronecan = frames.extended[rows] & bus_map.dronecan
+    if bus_map.dbc_ids:
+        dronecan &= ~np.isin(frames.can_id[rows], list(bus_map.dbc_ids))
     rows = rows[~(veronte | dronecan)]
     if not len(rows):
         return
     errors: list[tuple[int, Record]] = []
     for key in np.unique(keys[rows]).tolist():
         group = rows[keys[rows] == key]
-        message, cls = entries[(key & 0xFFFFFFFF, bool(key >> 32))]
-        errors += _decode_group(frames, group, message, cls, tables)
+        errors += _decode_group(frames, group, entries[(key & 0xFFFFFFFF, bool(key >> 32))], tables)
     done[rows] = True
     tables.add_records(errors)
 
@@ -60,13 +62,10 @@ decode_frames = decode_dbc_frames  # old name, kept as an alias
 
 
 def _decode_group(
-    frames: FrameColumns,
-    rows: npt.NDArray[np.int64],
-    message: Any,
-    cls: type[Any],
-    tables: Tables,
+    frames: FrameColumns, rows: npt.NDArray[np.int64], entry: DbcEntry, tables: Tables
 ) -> list[tuple[int, Record]]:
     """Decode one CAN ID's frames; return the records of those cantools refuses."""
+    message, cls = entry.message, entry.cls
     spec = table_spec(cls)
     if tables.specs.setdefault(spec.kind, spec) is not spec:
         raise SourceError(
@@ -74,13 +73,13 @@ def _decode_group(
         )
     if _simple(message):
         whole = (frames.length[rows] >= message.length) & (frames.length[rows] <= MAX_DATA)
-        fields = _vectorised(message, spec, frames.data[rows[whole]])
+        fields = _vectorised(message, cls, frames.data[rows[whole]])
         _add(frames, rows[whole], spec, fields, tables)
         rows = rows[~whole]
-    decode = message.decode
+    build = entry.build
     blob = frames.data[rows].tobytes()
     long_data = frames.long_data
-    values: list[dict[str, Any]] = []
+    values: list[Any] = []
     good: list[int] = []
     bad: list[tuple[int, str]] = []
     for at, (row, size) in enumerate(zip(rows.tolist(), frames.length[rows].tolist(), strict=True)):
@@ -88,15 +87,12 @@ def _decode_group(
         if data is None:
             data = blob[at * MAX_DATA : at * MAX_DATA + size]
         try:
-            values.append(decode(data, True, True))  # decode_choices, scaling
+            values.append(build(data))
         except Exception as error:  # as `DbcDecoder.decode` takes them
             bad.append((row, failure(message, error)))
         else:
             good.append(at)
-    found: dict[str, list[Any]] = {}
-    for column, name, choice in zip(spec.columns, cls.SIGNALS, _choices(cls), strict=True):
-        got = [value.get(name) for value in values]
-        found[column.name] = [None if v is None else str(v) for v in got] if choice else got
+    found = {c.name: [getattr(value, c.name) for value in values] for c in spec.columns}
     _add(frames, rows[good], spec, found, tables)
     return [(int(frames.order[row]) * SUB, _error(frames, row, detail)) for row, detail in bad]
 
@@ -126,8 +122,14 @@ _LIMIT = 1 << 62
 
 def _simple(message: Any) -> bool:
     """Whether NumPy decodes every signal of ``message`` exactly as cantools does: no
-    multiplexing, integers of up to 62 bits within 8 bytes, integer results that fit int64."""
+    multiplexing, integers of up to 62 bits within 8 bytes, integer results that fit int64,
+    and a layout cantools decodes (a file read with ``strict=False`` may hold overlapping
+    signals, which cantools refuses to unpack whatever the data)."""
     if message.is_multiplexed() or message.length > MAX_DATA:
+        return False
+    try:
+        message.decode(bytes(message.length))
+    except Exception:  # as `DbcDecoder.decode` takes them
         return False
     for signal in message.signals:
         if signal.is_float or signal.length > 62:
@@ -142,13 +144,17 @@ def _simple(message: Any) -> bool:
     return True
 
 
-def _vectorised(message: Any, spec: TableSpec, data: npt.NDArray[np.uint8]) -> dict[str, Any]:
-    """The signal columns of whole frames (``data``: a row of 8 bytes each) of a `_simple`
-    message, as cantools' ``decode`` (choices and scaling) gives them."""
+def _vectorised(message: Any, cls: type[Any], data: npt.NDArray[np.uint8]) -> dict[str, Any]:
+    """The columns of whole frames (``data``: a row of 8 bytes each) of a `_simple`
+    message, as cantools' ``decode`` gives them: the numbers scaled (``decode_choices=False``),
+    a value table's names as ``decode_choices=True`` gives them (None where it gives a
+    number)."""
     little = np.ascontiguousarray(data).view("<u8")[:, 0]
     big = np.ascontiguousarray(data).view(">u8")[:, 0]
+    named = set(cls.CHOICES.values())
+    numbers = [f.name for f in dataclasses.fields(cls) if f.name not in named]
     out: dict[str, Any] = {}
-    for signal, column in zip(message.signals, [c.name for c in spec.columns], strict=True):
+    for signal, column in zip(message.signals, numbers, strict=True):
         length = signal.length
         if signal.byte_order == "little_endian":
             word, shift = little, signal.start
@@ -161,9 +167,9 @@ def _vectorised(message: Any, spec: TableSpec, data: npt.NDArray[np.uint8]) -> d
         scale, offset = conversion.scale, conversion.offset
         if conversion.choices:
             unique, where = np.unique(raw, return_inverse=True)
-            names = [str(conversion.raw_to_scaled(value, True)) for value in unique.tolist()]
-            out[column] = np.array(names, object)[where.reshape(-1)]
-        elif isinstance(scale, int) and isinstance(offset, int):
+            names = [_name(conversion.raw_to_scaled(value, True)) for value in unique.tolist()]
+            out[cls.CHOICES[column]] = np.array(names, object)[where.reshape(-1)]
+        if isinstance(scale, int) and isinstance(offset, int):
             out[column] = raw * scale + offset
         elif isinstance(scale, int):  # Python: the exact product, then the float sum
             out[column] = (raw * scale).astype(np.float64) + offset
@@ -178,35 +184,46 @@ def _error(frames: FrameColumns, row: int, detail: str) -> Record:
                         "decode error", detail, frame.data)  # fmt: skip
 
 
-def _choices(cls: type[Any]) -> list[bool]:
-    return [i in cls.CHOICES for i in range(len(cls.SIGNALS))]
+def _name(value: Any) -> str | None:
+    """A value table's name, None for a number (``raw_to_scaled`` with choices)."""
+    return None if isinstance(value, (int, float)) else str(value)
 
 
 @dataclasses.dataclass(frozen=True)
 class DbcTableSpec(TableSpec):
-    """A DBC message's table, its units taken from the DBC.
+    """A DBC message's table, its units and names taken from the DBC.
 
     Attributes:
         units: Column name to unit, for the signals that have one.
+        signals: The DBC name of each column's signal, in column order.
+        message: The message's DBC name.
     """
 
     units: tuple[tuple[str, str], ...] = ()
+    signals: tuple[str, ...] = ()
+    message: str = ""
 
     @property
     def schema(self) -> pa.Schema:
-        """The record columns, then the signals', a unit in the metadata of each that has one."""
+        """The record columns, then the signals', each with its signal's DBC name
+        (``dbc_signal``) and unit (``unit``, where it has one) in its metadata; the
+        message's DBC name in the schema's (``dbc_message``)."""
         units = dict(self.units)
         fields = [
-            pa.field(c.name, c.type, metadata={"unit": units[c.name]} if c.name in units else None)
-            for c in self.columns
+            pa.field(c.name, c.type, metadata=_metadata(signal, units.get(c.name)))
+            for c, signal in zip(self.columns, self.signals, strict=True)
         ]
-        return pa.schema([*self.head, *fields])
+        return pa.schema([*self.head, *fields], metadata={"dbc_message": self.message})
+
+
+def _metadata(signal: str, unit: str | None) -> dict[str, str]:
+    return {"dbc_signal": signal} if unit is None else {"unit": unit, "dbc_signal": signal}
 
 
 def table_spec(cls: type[Any]) -> TableSpec:
-    """The table of a DBC message class: the record columns, then a column per signal
-    (int64, float64, or the value table's names; an integer signal past int64 uint64 or a
-    decimal), its unit in the field's metadata."""
+    """The table of a DBC message class: the record columns, then a column per field
+    (int64, float64, or a value table's names; an integer signal past int64 uint64 or a
+    decimal), its signal's DBC name and unit in the field's metadata."""
     spec = _SPECS.get(cls)
     if spec is None:
         spec = _SPECS[cls] = _spec(cls)
@@ -223,7 +240,9 @@ def _spec(cls: type[Any]) -> TableSpec:
         if kind is None:
             kind = _integer_type(*cls.RANGES.get(item.name, (0, 0)))
         columns.append(Column(item.name, kind, _getter(item.name)))
-    return DbcTableSpec(cls.__name__, HEAD, tuple(columns), tuple(cls.UNITS.items()))
+    return DbcTableSpec(
+        cls.__name__, HEAD, tuple(columns), tuple(cls.UNITS.items()), cls.SIGNALS, cls.DBC_NAME
+    )
 
 
 def _integer_type(low: int, high: int) -> pa.DataType:

@@ -116,6 +116,8 @@ def _routes(
     plain = ~(frames.remote | frames.fd | frames.error) & (frames.length <= 8)
     if frames.long_data:
         plain[list(frames.long_data)] = False
+    if bus_map.dbc_ids:  # 29-bit IDs DroneCAN leaves to a DBC (`BusMap.dbc_first`)
+        plain &= ~(frames.extended & np.isin(frames.can_id, list(bus_map.dbc_ids)))
     sender_code = np.full(len(frames), -1, np.int16)
     veronte_ids = plain & (frames.extended == bus_map.extended)
     for can_id, (_, index) in bus_map.veronte_roles.items():
