@@ -30,6 +30,7 @@ Examples:
 from __future__ import annotations
 
 import asyncio
+import contextlib
 from collections.abc import Iterator, Sequence
 from typing import Any, TypeVar
 
@@ -44,6 +45,7 @@ from veronte4x.client.adapter import (
     progress_callback,
 )
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
+from veronte4x.client.errors import OperationCancelledError
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
     READ_TIMEOUT,
@@ -77,24 +79,35 @@ class AsyncBusClient(BusAdapter):
 
     _reader: can.AsyncBufferedReader | None = None
     _notifier: can.Notifier | None = None
+    _reading: asyncio.Lock
+    _streams: tuple[AsyncCommandStream, ...] = ()
 
     async def __aenter__(self) -> AsyncBusClient:
         self.start()
         return self
 
     async def __aexit__(self, *exc: object) -> None:
+        for stream in self._streams:
+            with contextlib.suppress(Exception):  # its error was the stream user's to see
+                await stream.stop()
         self.stop()
 
     def start(self) -> None:
         """Start receiving frames on the running event loop."""
+        self._reading = asyncio.Lock()
         self._reader = can.AsyncBufferedReader()
         self._notifier = can.Notifier(self.bus, [self._reader], loop=asyncio.get_running_loop())
 
     def stop(self) -> None:
-        """Stop receiving frames."""
+        """Stop receiving frames, and every command stream of this client still running:
+        each sends zero throttle and sends nothing more (no stream outlives its client)."""
+        for stream in self._streams:
+            stream.close()
+        self._streams = ()
         if self._notifier is not None:
             self._notifier.stop()
             self._notifier = None
+        self._reader = None
 
     def _started(self) -> can.AsyncBufferedReader:
         """The reader, or a RuntimeError when the client was not started."""
@@ -113,16 +126,23 @@ class AsyncBusClient(BusAdapter):
     async def spin_once(self, max_wait: float = MAX_WAIT) -> list[Event]:
         """Wait for frames (at most ``max_wait`` s), feed them in, send what is due.
 
+        Operations awaited at once (``asyncio.gather``) take turns: one waits on the bus and
+        feeds in what came, for all of them (each waiting alone could take frames in one
+        order and feed them in another, which loses multi-frame responses).
+
         Returns:
             The events of the frames received and of the requests timed out.
         """
         reader = self._started()
-        message: can.Message | None
-        try:
-            message = await asyncio.wait_for(reader.buffer.get(), timeout=self.wait_time(max_wait))
-        except asyncio.TimeoutError:
-            message = None
-        return self.receive(self._waiting(message))
+        async with self._reading:  # one reader at a time: frames are fed in bus order
+            message: can.Message | None
+            try:
+                message = await asyncio.wait_for(
+                    reader.buffer.get(), timeout=self.wait_time(max_wait)
+                )
+            except asyncio.TimeoutError:
+                message = None
+            return self.receive(self._waiting(message))
 
     async def run(self, operation: Operation[T]) -> T:
         """Run one operation of `veronte4x.client.operations` to its end; return its result."""
@@ -229,8 +249,13 @@ class AsyncCommandStream(StreamBase):
     refresh the throttles with `set` more often than the watchdog period; when refreshes
     stop, zero throttle is sent. Leaving the ``async with`` block, normally, by an exception
     or by a cancellation, stops the task and sends zero throttle `STOP_REPEATS` times
-    before anything else can run on the loop. If sending fails in the task, it sends zero
-    throttle if it can and stops; `set` and the end of the block raise that error.
+    before anything else can run on the loop. From the moment the task that started the
+    stream is cancelled (``asyncio.wait_for``, ``asyncio.timeout``, ``Task.cancel``) the
+    stream sends no throttle: zero if it runs before the block ends, then nothing, even
+    when the cancellation is caught (`set` then raises `OperationCancelledError`). The
+    client's end stops its streams the same way, started with ``async with`` or not. If
+    sending fails in the task, it sends zero throttle if it can and stops; `set` and the
+    end of the block raise that error.
 
     Args:
         client: The client whose bus and node id it uses.
@@ -251,29 +276,69 @@ class AsyncCommandStream(StreamBase):
 
     def __init__(self, client: AsyncBusClient, commander: Commander) -> None:
         super().__init__(client, commander)
+        self._client = client
         self._task: asyncio.Task[None] | None = None
+        self._owner: asyncio.Task[Any] | None = None
+        self._closed = False
 
     async def _run(self) -> None:
+        wait = 0.0
         try:
             while True:
-                await asyncio.sleep(self._send_due())
+                await asyncio.sleep(wait)
+                if self._owner_cancelled():
+                    self._failed(
+                        OperationCancelledError(
+                            "the command stream stopped when its task was cancelled: zero "
+                            "throttle was sent; start a new stream to drive again"
+                        )
+                    )
+                    return
+                wait = self._send_due()
         except Exception as error:  # a failing bus
             self._failed(error)
 
+    def _owner_cancelled(self) -> bool:
+        """Whether the task that started the stream has a cancellation pending: it may be
+        about to leave the block, so no throttle may go out (Python 3.10 cannot tell)."""
+        cancelling = getattr(self._owner, "cancelling", None)
+        return cancelling is not None and cancelling() > 0
+
     def start(self) -> None:
-        """Start sending on the running loop (nothing goes out before the first `set`)."""
+        """Start sending on the running loop (nothing goes out before the first `set`),
+        until `stop`, or until its client stops (`AsyncBusClient.stop`)."""
+        self._owner = asyncio.current_task()
         self._task = asyncio.get_running_loop().create_task(self._run())
+        self._client._streams = (*self._client._streams, self)
+
+    def close(self) -> None:
+        """Stop at once, from synchronous code (its client does this when it stops): the
+        task is cancelled before it can send again, then zero throttle `STOP_REPEATS` times
+        unless the stream had stopped already; `set` then raises `OperationCancelledError`."""
+        task, self._task = self._task, None
+        if task is not None:
+            task.cancel()  # it sends nothing more: it only sends between its awaits
+        if self.failure is None:
+            self._failed(
+                OperationCancelledError(
+                    "the command stream stopped with its client: zero throttle was sent"
+                )
+            )
+        self._closed = True
 
     async def stop(self) -> None:
         """Stop the task and send zero throttle `STOP_REPEATS` times, at once.
 
         Raises:
-            Exception: The error that stopped the stream's task.
+            Exception: The error that stopped the stream's task (not when its client
+                stopped it: `close`).
         """
         task, self._task = self._task, None
         if task is not None:
             task.cancel()  # it sends nothing more: it only sends between its awaits
-        self._stop_motors()
+        self._client._streams = tuple(s for s in self._client._streams if s is not self)
+        if not self._closed:
+            self._stop_motors()
         if task is not None:
             await asyncio.wait([task])  # a cancellation of ours still ends this wait
 

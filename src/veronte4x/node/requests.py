@@ -3,7 +3,10 @@
 `Requester` never reads a clock: every method takes the current time. The frames it wants
 sent collect in its outbox (`Requester.take_frames`); responses are given to it as
 reassembled transfers (`Requester.receive`), and `Requester.poll` reports the requests
-whose time is up after their last retry.
+whose time is up after their last retry. One node's requests of one type to one node go
+out one at a time: a transfer id then names one pending request, so that no response is
+taken for another request's (many requests at once, e.g. from an asyncio program, would
+otherwise reuse the 32 transfer ids while their predecessors still wait).
 """
 
 from __future__ import annotations
@@ -132,6 +135,9 @@ class Requester:
         self.priority = priority
         self.transfer_ids = transfer_ids or TransferIds()
         self._pending: dict[int, Pending] = {}
+        self._queued: dict[int, Pending] = {}
+        """Requests waiting for an earlier one of their node and type, in order; a queued
+        request's ``deadline`` is when it was queued (sent at the first `poll` it is free)."""
         self._outbox: list[TransferFrame] = []
         self._handles = 0
         self.mismatched = 0
@@ -172,8 +178,29 @@ class Requester:
             timeout,
             retries,
         )
-        self._pending[pending.handle] = self._send(pending, now)
+        if self._busy(pending):
+            self._queued[pending.handle] = pending
+        else:
+            self._pending[pending.handle] = self._send(pending, now)
         return pending.handle
+
+    def _busy(self, request: Pending) -> bool:
+        """Whether a request to the same node, of the same type, is pending."""
+        return any(
+            p.destination == request.destination and p.data_type_id == request.data_type_id
+            for p in self._pending.values()
+        )
+
+    def _free(self) -> list[Pending]:
+        """The queued requests that may go out now: the first of each node and type."""
+        free: list[Pending] = []
+        for queued in self._queued.values():
+            if not self._busy(queued) and not any(
+                q.destination == queued.destination and q.data_type_id == queued.data_type_id
+                for q in free
+            ):
+                free.append(queued)
+        return free
 
     def _send(self, pending: Pending, now: float) -> Pending:
         transfer_id = self.transfer_ids.next(
@@ -218,6 +245,7 @@ class Requester:
             ):
                 if answers(pending.message, transfer.message):
                     del self._pending[handle]
+                    self._send_free(transfer.timestamp)
                     return Answered(pending, transfer)
                 mismatched = True
         self.mismatched += mismatched
@@ -236,16 +264,24 @@ class Requester:
             else:
                 del self._pending[handle]
                 failed.append(TimedOut(pending))
+        self._send_free(now)
         return failed
 
+    def _send_free(self, now: float) -> None:
+        """Send the queued requests whose predecessors have ended."""
+        for queued in self._free():
+            del self._queued[queued.handle]
+            self._pending[queued.handle] = self._send(queued, now)
+
     def cancel(self, handle: int) -> None:
-        """Forget a pending request (its response, if any, is then ignored)."""
+        """Forget a pending or queued request (its response, if any, is then ignored)."""
         self._pending.pop(handle, None)
+        self._queued.pop(handle, None)
 
     def pending(self, handle: int) -> Pending | None:
-        """The request of ``handle`` if it still waits, else None."""
-        return self._pending.get(handle)
+        """The request of ``handle`` if it still waits (sent or queued), else None."""
+        return self._pending.get(handle) or self._queued.get(handle)
 
     def next_deadline(self) -> float | None:
         """When `poll` next has something to do, or None with nothing pending."""
-        return min((p.deadline for p in self._pending.values()), default=None)
+        return min((p.deadline for p in (*self._pending.values(), *self._free())), default=None)
