@@ -3,9 +3,10 @@
 A class gets Jupyter's ``_repr_html_`` by deriving from `HtmlDisplay` (a mixin with no
 slots, so frozen slotted dataclasses keep their layout); named tuples, which take no mixin,
 call `to_html` from a method of their own. Plain ``repr`` is unchanged. Values are shown as
-the command line shows them (`veronte4x.capture.readable`): enums by name, floats in their
-shortest round-trip form, text as text, other bytes in hex, times in ISO 8601 (UTC), and a
-column of units where the protocol gives them. Everything is HTML-escaped.
+the command line's text shows them (`veronte4x.capture.readable.shown`): enums by name,
+floats in their shortest form at the field's declared width, text as text, other bytes in
+hex, times in ISO 8601 (UTC), and a column of units where the protocol gives them.
+Everything is HTML-escaped.
 
 This module imports nothing of the library at import time: the codecs import it.
 
@@ -67,7 +68,7 @@ def message_html(message: Any, caption: str | None = None) -> str:
 
 
 def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cells]:
-    from veronte4x.capture.readable import readable
+    from veronte4x.capture.readable import shown
     from veronte4x.units import unit
 
     owner = type(message)
@@ -79,10 +80,10 @@ def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cell
         if dataclasses.is_dataclass(value) and not isinstance(value, type):
             rows += _fields(value, top, name + ".")
         elif type(value) is tuple:
-            shown = ", ".join(str(readable(owner, field.name, item)) for item in value)
-            rows.append((name, f"({shown})", unit(top, name)))
+            items = ", ".join(str(shown(owner, field.name, item)) for item in value)
+            rows.append((name, f"({items})", unit(top, name)))
         else:
-            rows.append((name, readable(owner, field.name, value), unit(top, name)))
+            rows.append((name, shown(owner, field.name, value), unit(top, name)))
     return rows
 
 
@@ -154,7 +155,7 @@ def _stats(stats: Any) -> str:
 
 
 def _nodes(entries: Iterable[Any], caption: str) -> str:
-    from veronte4x.capture.readable import readable
+    from veronte4x.capture.readable import shown
     from veronte4x.times import format_time
 
     columns = (
@@ -171,8 +172,8 @@ def _nodes(entries: Iterable[Any], caption: str) -> str:
     rows = [
         (
             entry.node_id,
-            readable(type(entry), "health", entry.health),
-            readable(type(entry), "mode", entry.mode),
+            shown(type(entry), "health", entry.health),
+            shown(type(entry), "mode", entry.mode),
             entry.sub_mode,
             entry.vendor_specific_status_code,
             entry.uptime_sec,

@@ -53,7 +53,7 @@ def test_decode_jsonl_keeps_bad_frames() -> None:
         "sender": "AP1",
         "message": "ArbitrationVariable",
         "number": 0,
-        "value": 0.12,
+        "value": 0.11999999731779099,  # the exact float32; text shows 0.12
     }
     assert rows[-2] == {
         "timestamp": 1763737200.5,
@@ -86,7 +86,7 @@ def test_decode_csv() -> None:
     assert (variable["message"], variable["number"], variable["value"]) == (
         "ArbitrationVariable",
         "0",
-        "0.12",
+        "0.11999999731779099",
     )
     status = next(row for row in rows if row["message"] == "Status")
     assert (status["alive_0"], status["alive_3"], status["selected"]) == ("True", "False", "1")
@@ -111,7 +111,7 @@ def test_decode_csv_from_stdin_has_the_columns_of_what_came() -> None:
     assert result.stdout.splitlines() == [
         "timestamp,channel,can_id,sender,message,error,detail,data,ready,number,value",
         "1.0,can0,9,AP2,Ready,,,,True,,",
-        "2.0,can0,8,AP1,ArbitrationVariable,,,,,0,0.1",
+        "2.0,can0,8,AP1,ArbitrationVariable,,,,,0,0.10000000149011612",
         "3.0,can0,291,unknown,,,11-bit CAN ID 0x123,01,,,",
     ]
     assert result.stderr == "veronte4x: 3 records, 1 undecoded, 0 bad (skip)\n"
@@ -157,7 +157,7 @@ def test_jsonl_non_finite_floats_are_strings() -> None:
         json.loads(line)
         for line in run("decode", "-", "--output", "jsonl", stdin=stdin).stdout.splitlines()
     ]
-    assert [row["value"] for row in rows] == ["nan", "inf"]
+    assert [row["value"] for row in rows] == ["NaN", "Infinity"]
 
 
 def test_an_array_of_structs_is_written_field_by_field() -> None:

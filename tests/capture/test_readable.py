@@ -15,8 +15,8 @@ from veronte4x.capture.readable import (
     format_time,
     hex_bytes,
     readable_fields,
-    shortest,
 )
+from veronte4x.numbers import shortest
 from veronte4x.units import UNIT_NAMES, UNITS
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"

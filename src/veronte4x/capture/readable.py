@@ -1,8 +1,10 @@
-"""Values as people read them: shortest round-trip numbers, enums by name, text as text,
-units, and times in ISO 8601.
+"""Values as machines and people read them: exact numbers or numbers for people (the rule of
+`veronte4x.numbers`), enums by name, text as text, units, and times in ISO 8601.
 
-The command line's text, JSON lines and CSV outputs are written through these functions;
-`readable_fields` has the same keys as `veronte4x.capture.fields`, with readable values.
+The command line's JSON lines and CSV are written through `readable` (`readable_fields`:
+the keys of `veronte4x.capture.fields`, exact values); its text, the monitor and the HTML
+views through `shown`, which shows a float in its shortest form at the field's declared
+width (`float_bits`).
 """
 
 from __future__ import annotations
@@ -11,33 +13,49 @@ import enum
 from typing import Any
 
 from veronte4x.capture.flat import field_names, flatten, is_message
-from veronte4x.dronecan.typeset import float16_fields, text_fields
-from veronte4x.numbers import shortest
+from veronte4x.codec.compiler import float32_fields as veronte_float32_fields
+from veronte4x.dronecan.typeset import float16_fields, float32_fields, text_fields
+from veronte4x.numbers import exact, for_people
 from veronte4x.times import format_time
 from veronte4x.units import unit
 
 __all__ = [
+    "float_bits",
     "format_message",
     "format_time",
     "hex_bytes",
     "readable",
     "readable_fields",
-    "shortest",
+    "shown",
 ]
 
 
-def _float_bits(owner: type, attr: str) -> int:
-    return 16 if attr in float16_fields(owner) else 32
+def float_bits(owner: type, attr: str) -> int:
+    """The declared width of a float field, 16, 32 or 64 bits: float16 and float32 as the
+    DroneCAN DSDL or the Veronte layout declares them; anything else (DBC signals, scaled
+    Veronte fields) is a float64.
+
+    Examples:
+        >>> from veronte4x import codec, dronecan
+        >>> float_bits(codec.Score, "score"), float_bits(dronecan.EscStatus, "temperature")
+        (32, 16)
+    """
+    if attr in float16_fields(owner):
+        return 16
+    if attr in float32_fields(owner) or attr in veronte_float32_fields(owner):
+        return 32
+    return 64
 
 
 def readable(owner: type, attr: str, value: Any) -> Any:
-    """One field's value as people read it: an enum's name, text as ``str``, other bytes in
-    hex, a float in its shortest round-trip form; ints, bools and None unchanged."""
+    """One field's value as machine formats write it: an enum's name, text as ``str``, other
+    bytes in hex, a float exact (`veronte4x.numbers.exact`: non-finite ones as ``"NaN"``,
+    ``"Infinity"``, ``"-Infinity"``); ints, bools and None unchanged."""
     kind = type(value)
     if kind is int or kind is bool or value is None:  # most fields: nothing to do
         return value
     if kind is float:
-        return shortest(value, _float_bits(owner, attr))
+        return exact(value)
     if isinstance(value, enum.Enum):
         return value.name
     if kind is bytes:
@@ -45,6 +63,14 @@ def readable(owner: type, attr: str, value: Any) -> Any:
             return value.decode("utf-8", "backslashreplace")
         return value.hex()
     return value
+
+
+def shown(owner: type, attr: str, value: Any) -> Any:
+    """One field's value as people read it: as `readable`, but a float in its shortest form
+    at the field's declared width (`float_bits`, `veronte4x.numbers.for_people`)."""
+    if type(value) is float:
+        return for_people(value, float_bits(owner, attr))
+    return readable(owner, attr, value)
 
 
 def hex_bytes(data: bytes) -> str:
@@ -61,12 +87,12 @@ def readable_fields(message: Any) -> dict[str, Any]:
     """A message's fields as a flat dict with readable values.
 
     The keys are those of `veronte4x.capture.fields` (tuples as ``name_0``, ``name_1``...,
-    nested structures with dots); the values go through `readable`.
+    nested structures with dots); the values go through `readable`, exact.
 
     Examples:
         >>> from veronte4x import codec, dronecan
         >>> readable_fields(codec.ArbitrationVariable(number=0, value=0.10000000149011612))
-        {'number': 0, 'value': 0.1}
+        {'number': 0, 'value': 0.10000000149011612}
         >>> status = dronecan.NodeStatus(7, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
         >>> readable_fields(status)["health"]
         'OK'
@@ -75,7 +101,8 @@ def readable_fields(message: Any) -> dict[str, Any]:
 
 
 def format_message(message: Any) -> str:
-    """A message on one line: its class, then every field as ``name=value``, with units.
+    """A message on one line for people: its class, then every field as ``name=value``
+    (`shown`), with units.
 
     Examples:
         >>> from veronte4x import dronecan
@@ -111,7 +138,7 @@ def _item(owner: type, attr: str, item: Any, top: str, prefix: str) -> str:
 
 
 def _scalar(owner: type, attr: str, value: Any) -> str:
-    shown = readable(owner, attr, value)
+    text = shown(owner, attr, value)
     if type(value) is bytes and attr in text_fields(owner):
-        return repr(shown)
-    return str(shown)
+        return repr(text)
+    return str(text)

@@ -1,7 +1,9 @@
 """``veronte4x decode``: a capture to one record per line, as text, JSON lines or CSV.
 
-Values are written as people read them (`veronte4x.capture.readable`): shortest round-trip
-floats, enums by name, text as text; the text output adds units and ISO 8601 times.
+Numbers follow `veronte4x.numbers`: JSON lines and CSV carry the exact decoded values
+(`veronte4x.capture.readable.readable_fields`), the text output shows them for people
+(shortest at the field's declared width, with units and ISO 8601 times); enums by name, text
+as text everywhere.
 """
 
 from __future__ import annotations
@@ -9,7 +11,6 @@ from __future__ import annotations
 import argparse
 import csv
 import json
-import math
 import sys
 from collections.abc import Callable, Iterable
 from typing import Any, TextIO
@@ -17,6 +18,7 @@ from typing import Any, TextIO
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.readable import format_message, hex_bytes, readable_fields
+from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
@@ -24,6 +26,7 @@ from veronte4x.cli.interrupts import Interrupts
 from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 from veronte4x.cli.options import live as live_bus
+from veronte4x.numbers import exact
 from veronte4x.times import format_time
 from veronte4x.words import counted
 
@@ -60,8 +63,9 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
+    loss = BusLoss()
     watch = InputWatch(None if live_bus(args) else args.file)
-    records = watch.records(open_records(args, bus_map))
+    records = watch.records(open_records(args, bus_map, loss=loss))
     out = sys.stdout
     clock = _Clock(args.relative_time)
     if args.output == "csv":
@@ -90,22 +94,24 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     except KeyboardInterrupt:
         close()
         out.flush()
-        print(f"veronte4x: interrupted after {_summary(counts)}", file=sys.stderr)
+        print(f"veronte4x: interrupted after {_summary(counts, loss)}", file=sys.stderr)
         return EXIT_INTERRUPTED
     if status == EXIT_OK:
         close()
     note = watch.note()
     print(
-        f"veronte4x: {_summary(counts)} ({args.on_error})" + (f"; {note}" if note else ""),
+        f"veronte4x: {_summary(counts, loss)} ({args.on_error})" + (f"; {note}" if note else ""),
         file=sys.stderr,
     )
     return status
 
 
-def _summary(counts: Stats) -> str:
+def _summary(counts: Stats, loss: BusLoss) -> str:
     errors = sum(counts.errors.values())
     unknown = sum(counts.unknown.values())
-    return f"{counted(counts.records, 'record')}, {unknown} undecoded, {errors} bad"
+    lost = loss.text()
+    text = f"{counted(counts.records, 'record')}, {unknown} undecoded, {errors} bad"
+    return text + (f", {lost}" if lost else "")
 
 
 class _Clock:
@@ -161,8 +167,9 @@ def _text_writer(out: TextIO, clock: _Clock) -> Writer:
 
 
 def _row(record: Record, clock: _Clock) -> dict[str, Any]:
+    stamp = clock.seconds(record.timestamp)
     row: dict[str, Any] = {
-        "timestamp": clock.seconds(record.timestamp),
+        "timestamp": stamp if stamp is None else exact(stamp),
         "channel": record.channel,
         "can_id": record.can_id,
         "sender": record.sender,
@@ -180,21 +187,9 @@ def _row(record: Record, clock: _Clock) -> dict[str, Any]:
     return row
 
 
-def _json_safe(value: Any) -> Any:
-    """Non-finite floats as strings (JSON has no NaN or infinity)."""
-    if type(value) is float and not math.isfinite(value):
-        return str(value)
-    return value
-
-
 def _jsonl_writer(out: TextIO, clock: _Clock) -> Writer:
-    def write(record: Record) -> None:
-        row = _row(record, clock)
-        try:
-            text = json.dumps(row, allow_nan=False)
-        except ValueError:  # a NaN or an infinity, which JSON has not
-            text = json.dumps({k: _json_safe(v) for k, v in row.items()})
-        out.write(text + "\n")
+    def write(record: Record) -> None:  # no NaN reaches json: `exact` makes it "NaN"
+        out.write(json.dumps(_row(record, clock), allow_nan=False) + "\n")
 
     return write, _nothing
 

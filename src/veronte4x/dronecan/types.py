@@ -209,9 +209,18 @@ def is_text(attribute: Attribute) -> bool:
 
 def is_float16(attribute: Attribute) -> bool:
     """Whether a field holds half-precision floats: ``float16``, or an array of them."""
+    return _float_bits(attribute) == 16
+
+
+def is_float32(attribute: Attribute) -> bool:
+    """Whether a field holds single-precision floats: ``float32``, or an array of them."""
+    return _float_bits(attribute) == 32
+
+
+def _float_bits(attribute: Attribute) -> int | None:
     t = attribute.type
     item = t.item if isinstance(t, ArrayType) else t
-    return isinstance(item, PrimitiveType) and item.kind == "float" and item.bits == 16
+    return item.bits if isinstance(item, PrimitiveType) and item.kind == "float" else None
 
 
 def text_attributes(

@@ -31,6 +31,7 @@ from veronte4x.dronecan.parser import Definition, DsdlError, check_references, p
 from veronte4x.dronecan.types import (
     data_types,
     is_float16,
+    is_float32,
     standard_definitions,
     text_attributes,
 )
@@ -39,6 +40,7 @@ from veronte4x.errors import argument_type_error
 _serial = itertools.count(1)
 _TEXT: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
 _FLOAT16: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
+_FLOAT32: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
 
 
 def text_fields(cls: type) -> frozenset[str]:
@@ -49,6 +51,11 @@ def text_fields(cls: type) -> frozenset[str]:
 def float16_fields(cls: type) -> frozenset[str]:
     """The attributes of a DroneCAN class (of any type set) that hold ``float16`` values."""
     return _FLOAT16.get(cls, frozenset())
+
+
+def float32_fields(cls: type) -> frozenset[str]:
+    """The attributes of a DroneCAN class (of any type set) that hold ``float32`` values."""
+    return _FLOAT32.get(cls, frozenset())
 
 
 class TypeSet:
@@ -97,6 +104,7 @@ class TypeSet:
         )
         _TEXT.update(self.text_fields)
         _FLOAT16.update(text_attributes(definitions, classes, members, is_float16))
+        _FLOAT32.update(text_attributes(definitions, classes, members, is_float32))
 
     @classmethod
     def standard(cls) -> TypeSet:
