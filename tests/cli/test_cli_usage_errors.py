@@ -85,7 +85,7 @@ def test_monitor_with_no_source(rates: list[str]) -> None:
     )
 
 
-def test_the_rates_report_leaves_out_remote_frames(tmp_path: Path) -> None:
+def test_the_rates_report_counts_remote_frames_in_the_load_only(tmp_path: Path) -> None:
     capture = tmp_path / "remote.log"
     capture.write_text(
         "(1.000000) can0 123#R\n(1.010000) can0 123#0102\n(1.020000) can0 123#0102\n",
@@ -97,7 +97,8 @@ def test_the_rates_report_leaves_out_remote_frames(tmp_path: Path) -> None:
         "rates:",
         "  can0 0x123: 2 at 100 Hz, jitter -, longest gap 10 ms",
         "bus load (worst-case bit stuffing):",
-        "  can0: 2 frames, 12 % of 125 kbit/s (detected: the lowest that fits)",
+        # 55 bits (remote, 11-bit ID) + 2 x 75 (2 data bytes) in 20 ms at 125 kbit/s
+        "  can0: 3 frames, 8.2 % of 125 kbit/s (detected: the lowest that fits)",
     ]
 
 

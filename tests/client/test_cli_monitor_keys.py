@@ -74,4 +74,7 @@ def test_rates_of_frames_too_close_for_any_bit_rate(tmp_path: Path) -> None:
         screen = wait_for(tmux, lambda s: "exit=" in s)
     assert "exit=0" in screen
     assert "3 records, 0 bad, 0.001 s; bus load can0 ? (give --bitrate)" in screen
-    assert "  can0: 3 frames, bit rate unknown: give --bitrate" in screen
+    assert (
+        "  can0: 3 frames, bit rate unknown: frames 1 µs apart: faster than any standard bit "
+        "rate; give --bitrate"
+    ) in screen

@@ -6,13 +6,38 @@ type, by its bytes 0 and 1; or a DroneCAN session: data type, source and destina
 the count, rate, period jitter and longest gap, and per channel the bus load. It never
 reads a clock: `RateTracker.streams` takes the time "now".
 
-Bus load counts each frame's bits with the usual worst-case bit-stuffing estimate of
-Davis, Burns, Bril and Lukkien, "Controller Area Network (CAN) schedulability analysis:
-Refuted, revisited and revised", Real-Time Systems 35 (2007), equation (2):
-``g + 8s + 13 + floor((g + 8s - 1) / 4)`` bits for ``s`` data bytes, with ``g`` = 34 for
-an 11-bit ID and 54 for a 29-bit one (the 13 are the CRC delimiter, ACK, end of frame and
-interframe space, which are not stuffed). A frame of 8 bytes with an 11-bit ID counts 135
-bits; the same frame without stuffing 111 (`frame_bits`).
+Bus load counts every frame's bits over the span of every frame (data, remote, CAN FD and
+error frames), with the usual worst-case bit-stuffing estimate of Davis, Burns, Bril and
+Lukkien, "Controller Area Network (CAN) schedulability analysis: Refuted, revisited and
+revised", Real-Time Systems 35 (2007), equation (2): ``floor((n - 1) / 4)`` stuff bits for
+the ``n`` bits the stuffing rule covers.
+
+- A classic frame: ``g + 8s + 13 + floor((g + 8s - 1) / 4)`` bits for ``s`` data bytes,
+  with ``g`` = 34 for an 11-bit ID and 54 for a 29-bit one (the 13 are the CRC delimiter,
+  ACK, end of frame and interframe space, which are not stuffed). A frame of 8 bytes with
+  an 11-bit ID counts 135 bits; the same frame without stuffing 111 (`frame_bits`).
+- A remote frame: a classic frame with no data field (``s`` = 0, whatever its DLC asks):
+  55 bits with an 11-bit ID, 80 with a 29-bit one.
+- A CAN FD frame (ISO 11898-1:2015, ISO CAN FD; `fd_frame_bits`), its data padded to the
+  next length a DLC gives (12, 16, 20, 24, 32, 48, 64): the arbitration phase (start of
+  frame to BRS: 17 bits with an 11-bit ID, 36 with a 29-bit one) and the 13 bits from the
+  CRC delimiter to the interframe space go at the nominal bit rate; the data phase (ESI,
+  DLC, data, the 4-bit stuff count, the CRC: 17 bits for up to 16 data bytes, 21 above, and
+  its fixed stuff bits: one before the stuff count and one after every 4 bits, 6 with
+  CRC-17 and 7 with CRC-21) at the data bit rate where BRS is set, at the nominal one where
+  it is not. Dynamic stuffing covers start of frame to the end of the data (the CRC has
+  the fixed stuff bits instead); its worst-case stuff bits go with the phase of their bits.
+  8 bytes with an 11-bit ID: 34 bits in the arbitration phase and 113 in the data phase
+  (CRC and fixed stuff bits as Vector's "CAN FD" e-learning and CiA's "Cyclic redundancy
+  check (CRC) in CAN frames" describe them).
+- An error frame: `ERROR_FRAME_BITS`.
+
+The bit rate, unless given, is the lowest standard one at which the closest two frames fit
+(a receiver stamps a frame once it is whole, so two frames are at least the second one's
+unstuffed bits apart; the data phase of a CAN FD frame with BRS takes its time at the data
+bit rate if given, none if not; error frames, stamped wherever a controller reports them,
+are left out); `BusLoad.reason` says
+why none was found.
 
 A stream is flagged ``stopped`` when it has been silent for more than 3 of its periods (its
 usual one, or its cycle if longer: the longest of its last 16 periods that another of
@@ -48,6 +73,15 @@ SLOW_FACTOR = 2.0
 RECENT = 16
 """Periods that make a stream's recent rate."""
 
+ERROR_FRAME_BITS = 23
+"""Bits an error frame counts: the error flag at its longest (6 dominant bits, up to 12
+where other nodes' flags follow the first one's), the 8-bit error delimiter and the 3-bit
+intermission (ISO 11898-1:2015). A log does not say where the error broke off a frame, so
+the bits sent before it are not counted."""
+
+FD_LENGTHS = (0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64)
+"""The data lengths a CAN FD DLC gives."""
+
 _BINS_PER_OCTAVE = 64
 _MIN_PERIOD = 1e-6
 _NAMES = {(t.kind, t.data_type_id): t.full_name for t in DATA_TYPES}
@@ -64,6 +98,27 @@ def frame_bits(data_bytes: int, extended: bool, stuffing: bool = True) -> int:
     g = 54 if extended else 34
     bits = g + 8 * data_bytes + 13
     return bits + (g + 8 * data_bytes - 1) // 4 if stuffing else bits
+
+
+def fd_frame_bits(data_bytes: int, extended: bool, stuffing: bool = True) -> tuple[int, int]:
+    """Bits an ISO CAN FD frame takes on the bus, interframe space included: ``(nominal,
+    data)``, the bits at the nominal bit rate and those of the data phase (see the module).
+
+    Args:
+        data_bytes: 0..64, padded to the next length a DLC gives.
+        extended: A 29-bit ID.
+        stuffing: Count the worst-case dynamic stuff bits (the fixed ones always count).
+    """
+    size = next(n for n in FD_LENGTHS if n >= min(data_bytes, 64))
+    arbitration = 36 if extended else 17  # start of frame to BRS
+    nominal = arbitration + 13  # and CRC delimiter, ACK slot and delimiter, EOF, intermission
+    crc, fixed = (17, 6) if size <= 16 else (21, 7)
+    data = 5 + 8 * size + 4 + crc + fixed  # ESI, DLC, data, stuff count, CRC
+    if stuffing:
+        first = (arbitration - 1) // 4
+        nominal += first
+        data += (arbitration + 5 + 8 * size - 1) // 4 - first
+    return nominal, data
 
 
 @dataclass
@@ -209,12 +264,16 @@ class BusLoad:
 
     Attributes:
         channel: Interface name.
-        frames: Frames counted.
-        bits: Their bits, worst-case stuffing included (`frame_bits`).
+        frames: Frames counted, of every kind.
+        bits: Their bits, worst-case stuffing included (see the module).
         seconds: From the first frame to the last.
         bitrate: Bit rate in bit/s (given, or detected: `detect_bitrate`), or None.
         detected: The bit rate was detected rather than given.
-        percent: bits / (seconds x bitrate) x 100, or NaN without a bit rate or a span.
+        percent: The time the bits take (``data_bits`` at ``data_bitrate``, the others at
+            ``bitrate``) over ``seconds``, x 100; NaN without a bit rate or a span.
+        data_bits: Of ``bits``, those of CAN FD data phases with BRS.
+        data_bitrate: The CAN FD data bit rate in bit/s, if given.
+        reason: Why ``percent`` is NaN, for a person (empty when it is not).
     """
 
     channel: str
@@ -224,6 +283,9 @@ class BusLoad:
     bitrate: int | None
     detected: bool
     percent: float
+    data_bits: int = 0
+    data_bitrate: int | None = None
+    reason: str = ""
 
 
 class RateTracker:
@@ -233,35 +295,86 @@ class RateTracker:
         bus_map: Tells Veronte IDs (labelled by role) and DroneCAN frames (grouped by
             session, counted per transfer) from the rest.
         bitrate: The bus bit rate in bit/s; None detects it per channel.
+        data_bitrate: The CAN FD data bit rate in bit/s, for the data phase of frames with
+            BRS; None leaves the load of a channel with such frames unknown.
     """
 
-    def __init__(self, bus_map: BusMap | None = None, bitrate: int | None = None) -> None:
+    def __init__(
+        self,
+        bus_map: BusMap | None = None,
+        bitrate: int | None = None,
+        data_bitrate: int | None = None,
+    ) -> None:
         self.bus_map = bus_map or BusMap()
         self.bitrate = bitrate
+        self.data_bitrate = data_bitrate
         self._streams: dict[tuple[str, tuple[int, ...], bool], Stream] = {}
         self._bits: dict[str, int] = {}
+        self._data_bits: dict[str, int] = {}
         self._frames: dict[str, int] = {}
         self._span: dict[str, tuple[float, float]] = {}
-        self._needed: dict[str, float] = {}  # highest bit rate two close frames imply
+        # The highest bit rate two close frames imply, and those frames' distance.
+        self._needed: dict[str, tuple[float, float]] = {}
         self._previous: dict[str, float] = {}
         self._commands = command_names(self.bus_map.layouts)
 
     def add(
-        self, time: float, can_id: int, data: bytes, extended: bool = False, channel: str = ""
+        self,
+        time: float,
+        can_id: int,
+        data: bytes,
+        extended: bool = False,
+        channel: str = "",
+        *,
+        remote: bool = False,
+        fd: bool = False,
+        brs: bool = False,
+        error: bool = False,
     ) -> None:
-        """Count one frame (a data frame of 0..8 bytes) seen at ``time`` seconds."""
-        size = min(len(data), 8)
-        self._bits[channel] = self._bits.get(channel, 0) + frame_bits(size, extended)
+        """Count one frame seen at ``time`` seconds: a data frame (0..8 bytes; 0..64 with
+        ``fd``, CAN FD, its data phase at the data bit rate with ``brs``), a remote frame
+        (no data field) or an error frame. Remote and error frames count in the bus load
+        only, not in any stream."""
+        phase_seconds = 0.0  # the least time a data phase at the data bit rate takes
+        if error:
+            bits, data_bits, unstuffed = ERROR_FRAME_BITS, 0, 0
+        elif fd:
+            nominal, phase = fd_frame_bits(len(data), extended)
+            bare_nominal, bare_phase = fd_frame_bits(len(data), extended, stuffing=False)
+            bits, data_bits = nominal + phase, phase if brs else 0
+            unstuffed = bare_nominal if brs else bare_nominal + bare_phase
+            if brs and self.data_bitrate:
+                phase_seconds = bare_phase / self.data_bitrate
+        else:
+            size = 0 if remote else min(len(data), 8)
+            bits, data_bits = frame_bits(size, extended), 0
+            unstuffed = frame_bits(size, extended, stuffing=False)
+        self._bits[channel] = self._bits.get(channel, 0) + bits
+        if data_bits:
+            self._data_bits[channel] = self._data_bits.get(channel, 0) + data_bits
         self._frames[channel] = self._frames.get(channel, 0) + 1
         first, _ = self._span.get(channel, (time, time))
         self._span[channel] = (min(first, time), time)
+        if not error:
+            self._close(channel, time, unstuffed, phase_seconds)
+        if not (remote or error):
+            self._stream(time, can_id, data, extended, channel)
+
+    def _close(self, channel: str, time: float, unstuffed: int, phase_seconds: float) -> None:
+        """Keep the bit rate the frame at ``time`` and the one before imply: its
+        ``unstuffed`` bits at the nominal rate, after a data phase of ``phase_seconds``."""
         previous = self._previous.get(channel)
         if previous is not None and time > previous:
             # A receiver stamps a frame once it is whole: two frames cannot be closer than
             # the second one's bits without stuffing.
-            needed = frame_bits(size, extended, stuffing=False) / (time - previous)
-            self._needed[channel] = max(self._needed.get(channel, 0.0), needed)
+            left = time - previous - phase_seconds
+            needed = unstuffed / left if left > 0 else math.inf
+            if needed > self._needed.get(channel, (0.0, 0.0))[0]:
+                self._needed[channel] = (needed, time - previous)
         self._previous[channel] = time
+
+    def _stream(self, time: float, can_id: int, data: bytes, extended: bool, channel: str) -> None:
+        """Count a data frame in its stream."""
         role, _ = self.bus_map.role(can_id, extended)
         key: tuple[int, ...] = (can_id,)
         if role is Role.DRONECAN:
@@ -318,21 +431,59 @@ class RateTracker:
         out = []
         for channel, bits in sorted(self._bits.items()):
             first, last = self._span[channel]
-            bitrate, detected = self.bitrate, False
-            if bitrate is None:
-                bitrate, detected = detect_bitrate(self._needed.get(channel, 0.0)), True
             seconds = last - first
-            percent = 100 * bits / (seconds * bitrate) if bitrate and seconds > 0 else math.nan
+            data_bits = self._data_bits.get(channel, 0)
+            bitrate, detected = self.bitrate, self.bitrate is None
+            if detected:
+                needed = self._needed.get(channel)
+                bitrate = None if needed is None else detect_bitrate(needed[0])
+            percent, reason = math.nan, ""
+            if bitrate is None:
+                reason = self._undetected(channel)
+            elif data_bits and self.data_bitrate is None:
+                reason = "CAN FD frames with BRS: data bit rate unknown; give --data-bitrate"
+            elif seconds <= 0:
+                reason = "no time between the first frame and the last"
+            else:
+                busy = (bits - data_bits) / bitrate
+                if self.data_bitrate is not None:
+                    busy += data_bits / self.data_bitrate
+                percent = 100 * busy / seconds
             out.append(
-                BusLoad(channel, self._frames[channel], bits, seconds, bitrate, detected, percent)
+                BusLoad(
+                    channel,
+                    self._frames[channel],
+                    bits,
+                    seconds,
+                    bitrate,
+                    detected,
+                    percent,
+                    data_bits,
+                    self.data_bitrate,
+                    reason,
+                )
             )
         return out
+
+    def _undetected(self, channel: str) -> str:
+        """Why no bit rate was detected on the channel, and what to do."""
+        if channel not in self._needed:
+            return "no two frames at different times to detect it from; give --bitrate"
+        _, apart = self._needed[channel]
+        return (
+            f"frames {_microseconds(apart)} apart: faster than any standard bit rate; "
+            "give --bitrate"
+        )
 
 
 def detect_bitrate(needed: float) -> int | None:
     """The smallest standard bit rate at or above ``needed`` bit/s (what the closest frames
     imply), or None if even 1 Mbit/s is too slow (timestamps not precise enough)."""
     return next((rate for rate in STANDARD_BITRATES if rate >= needed), None)
+
+
+def _microseconds(seconds: float) -> str:
+    return f"{seconds * 1e6:.3g} µs"
 
 
 def _session(can_id: int) -> int:

@@ -11,25 +11,37 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.rates import RateTracker
+from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.cli.options import open_frame_source, with_dbc
 from veronte4x.words import counted
 
 
 def add_options(parser: argparse.ArgumentParser) -> None:
-    """``--rates``; the bus load takes the bus options' ``--bitrate`` if given."""
+    """``--rates`` and ``--data-bitrate``; the bus load takes the bus options'
+    ``--bitrate`` if given."""
     parser.add_argument(
         "--rates",
         action="store_true",
         help="show per CAN ID or DroneCAN session: rate, jitter, longest gap, stopped and "
-        "slow streams; and the bus load in %% of --bitrate (default: detected from the "
-        "closest frames); monitor shows them live in its table",
+        "slow streams; and the bus load of every frame (data, remote, CAN FD, error) in %% "
+        "of --bitrate (default: detected from the closest frames); monitor shows them live "
+        "in its table",
+    )
+    parser.add_argument(
+        "--data-bitrate",
+        type=int,
+        metavar="B",
+        help="--rates: the CAN FD data bit rate in bit/s, for the data phase of frames with "
+        "BRS (without it, a bus with such frames has no load figure)",
     )
 
 
 def tracker(args: argparse.Namespace, bus_map: BusMap) -> RateTracker | None:
     """A tracker if ``--rates`` was given."""
-    return RateTracker(bus_map, getattr(args, "bitrate", None)) if args.rates else None
+    if not args.rates:
+        return None
+    return RateTracker(bus_map, getattr(args, "bitrate", None), args.data_bitrate)
 
 
 def records(
@@ -37,22 +49,29 @@ def records(
     bus_map: BusMap,
     rates: RateTracker,
     stop: threading.Event | None = None,
+    loss: BusLoss | None = None,
 ) -> Iterator[Record]:
-    """The command's records, decoded from frames that also feed ``rates``."""
-    return with_dbc(
-        args, CaptureDecoder(bus_map).decode(feed(open_frame_source(args, stop), rates))
-    )
+    """The command's records, decoded from frames that also feed ``rates`` (``loss``: as
+    `veronte4x.cli.options.open_records` counts it)."""
+    frames = open_frame_source(args, stop, loss)
+    return with_dbc(args, CaptureDecoder(bus_map).decode(feed(frames, rates)))
 
 
 def feed(frames: Iterable[Frame | BadLine], rates: RateTracker) -> Iterator[Frame | BadLine]:
-    """Pass frames through, counting each timestamped data frame in ``rates``."""
+    """Pass frames through, counting each timestamped frame in ``rates``."""
     for frame in frames:
-        if (
-            isinstance(frame, Frame)
-            and frame.timestamp is not None
-            and not (frame.remote or frame.error or frame.fd)
-        ):
-            rates.add(frame.timestamp, frame.can_id, frame.data, frame.extended, frame.channel)
+        if isinstance(frame, Frame) and frame.timestamp is not None:
+            rates.add(
+                frame.timestamp,
+                frame.can_id,
+                frame.data,
+                frame.extended,
+                frame.channel,
+                remote=frame.remote,
+                fd=frame.fd,
+                brs=frame.brs,
+                error=frame.error,
+            )
         yield frame
 
 
@@ -69,10 +88,14 @@ def report(rates: RateTracker, now: float | None = None) -> str:
     lines.append("bus load (worst-case bit stuffing):")
     for load in rates.load():
         if load.bitrate is None:
-            rate = "bit rate unknown: give --bitrate"
+            rate = f"bit rate unknown: {load.reason}"
         else:
             how = "detected: the lowest that fits" if load.detected else "given"
+            if load.data_bitrate is not None:
+                how += f"; data phase at {load.data_bitrate / 1000:g} kbit/s"
             rate = f"{_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s ({how})"
+            if load.reason:
+                rate += f": {load.reason}"
         lines.append(f"  {load.channel or '-'}: {counted(load.frames, 'frame')}, {rate}")
     return "\n".join(lines)
 
@@ -84,6 +107,8 @@ def load_text(rates: RateTracker) -> str:
         where = load.channel or "-"
         if load.bitrate is None:
             parts.append(f"{where} ? (give --bitrate)")
+        elif load.data_bits and load.data_bitrate is None:
+            parts.append(f"{where} ? (give --data-bitrate)")
         else:
             parts.append(f"{where} {_percent(load.percent)} of {load.bitrate / 1000:g} kbit/s")
     return "bus load " + (", ".join(parts) if parts else "-")
