@@ -152,7 +152,14 @@ def test_apply_dry_run_as_json_and_from_another_node(bus: list[str], tmp_path: P
         "21": [{"name": "zero_behavior", "current": 0, "wanted": 2}],
         "22": [{"name": "zero_behavior", "current": 0, "wanted": 2}],
     }
-    result = veronte4x("esc", "apply", str(changed), "22", "--from", "21", *bus, "--dry-run")
+    from_21 = ("esc", "apply", str(changed), "22", "--from", "21", *bus, "--dry-run")
+    refused = veronte4x(*from_21)  # node 21's esc_index onto node 22: both would turn
+    assert (refused.returncode, refused.stderr) == (
+        2,
+        "veronte4x: node 21 has esc_index 0 already: giving it to node 22 too would make "
+        "RawCommand turn both; add --allow-shared-index to give it anyway; nothing was sent\n",
+    )
+    result = veronte4x(*from_21, "--allow-shared-index")
     assert (result.returncode, result.stderr) == (0, ""), result.stderr
     assert result.stdout.splitlines() == [
         "node 22: esc_index 1 -> 0",
