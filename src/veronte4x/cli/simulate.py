@@ -13,7 +13,7 @@ from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.fleet import node_list
 from veronte4x.cli.options import add_bus_options, bus_settings
 from veronte4x.extras import require
-from veronte4x.simulator.esc import COMMAND_TIMEOUT
+from veronte4x.simulator.esc import COMMAND_TIMEOUT, FILE_REQUEST_TIMEOUT
 
 
 def _node_list(text: str) -> list[int]:
@@ -37,6 +37,7 @@ def _not_negative(text: str) -> float:
 _OPTIONS = {
     "telem_frequency": "--telem-frequency",
     "command_timeout": "--command-timeout",
+    "file_timeout": "--file-timeout",
     "node_id": "--nodes",
     "esc_index": "--nodes (esc_index)",
 }
@@ -87,6 +88,14 @@ def add_parser(commands: Any) -> None:
         help="seconds a module takes to answer a request and, during a firmware update, to "
         "write each chunk before reading the next (0), as real modules take to write flash",
     )
+    esc.add_argument(
+        "--file-timeout",
+        type=float,
+        default=FILE_REQUEST_TIMEOUT,
+        metavar="S",
+        help="seconds a firmware update's file request waits for its answer before it is "
+        f"sent again ({FILE_REQUEST_TIMEOUT:g})",
+    )
     esc.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
     add_bus_options(esc)
     esc.set_defaults(run=run, bus_map=None)
@@ -110,6 +119,7 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
                 update_stall_offset=args.stall_update_at,
                 command_timeout=args.command_timeout or None,
                 response_delay=args.response_delay,
+                file_timeout=args.file_timeout,
             )
             for index, node in enumerate(args.nodes)
         ]

@@ -12,9 +12,12 @@ the request's transfer id and priority (spec 4.1; as libcanard and the dronecan 
 After an accepted BeginFirmwareUpdate the simulator pulls the image as section 2.4 says a
 module does: ``file.GetInfo`` on the file server, then ``file.Read`` from offset 0 until a
 short read, through the sans-IO `veronte4x.node.Requester` it shares with the ground
-client (timeouts and retries included). It then restarts with the image's CRC-64-WE in its
-software version. A file server that stops
-answering ends the update: the module restarts into its old firmware. param.ExecuteOpcode
+client. A request that got no answer in ``file_timeout`` seconds is sent again, as real
+bootloaders do (a lost frame loses the whole 38-frame answer to a read), for up to
+`FILE_SERVER_SILENCE` seconds. It then restarts with the image's CRC-64-WE in its software
+version. A file server that stops answering for that long ends the update: the module
+restarts into its old firmware. A BeginFirmwareUpdate repeated by the same node for the
+same path during the update (its answer was lost) is answered OK again. param.ExecuteOpcode
 SAVE is accepted (sets are kept at once, which the DSDL allows) and ERASE restores the
 defaults.
 
@@ -89,10 +92,13 @@ HARDWARE_VERSION_MAJOR = 1
 """The simulator's GetNodeInfo hardware version, major (minor is 0)."""
 
 FILE_REQUEST_TIMEOUT = 0.5
-"""Seconds the simulator waits for each file.GetInfo or file.Read answer (then retries)."""
+"""Seconds the simulator waits for each file.GetInfo or file.Read answer (then asks again),
+unless told otherwise (``file_timeout``)."""
 
-FILE_REQUEST_RETRIES = 3
-"""Retries of a file request before the simulator gives the update up."""
+FILE_SERVER_SILENCE = 60.0
+"""Seconds a file request is asked again without an answer before the simulator gives the
+update up. Vertiq's document gives no figure: an assumption, long enough for a read to get
+through a bus that loses 10 % of its frames (each attempt then succeeds about once in 75)."""
 
 COMMAND_TIMEOUT = 0.2
 """Seconds a RawCommand setpoint holds without a new one; then the ESC takes a zero
@@ -191,6 +197,9 @@ class SimulatedEsc:
         command_timeout: Seconds a RawCommand setpoint holds without a new command
             (`COMMAND_TIMEOUT`); then a zero setpoint takes over, as when a ground tool is
             killed or loses the bus. None never times out (a fault to test with).
+        file_timeout: Seconds each file request of a firmware update waits for its answer
+            before it is sent again (`FILE_REQUEST_TIMEOUT`), for up to
+            `FILE_SERVER_SILENCE` seconds.
 
     The arguments are also the parameters' defaults (``default_value`` in GetSet replies).
 
@@ -213,6 +222,7 @@ class SimulatedEsc:
         update_stall_offset: int | None = None,
         command_timeout: float | None = COMMAND_TIMEOUT,
         response_delay: float = 0.0,
+        file_timeout: float = FILE_REQUEST_TIMEOUT,
     ) -> None:
         given = (
             ("node_id", node_id),
@@ -245,6 +255,19 @@ class SimulatedEsc:
                 "SimulatedEsc", "response_delay", response_delay, "seconds, 0 or above"
             )
         self._delay = float(response_delay)
+        if (
+            isinstance(file_timeout, bool)
+            or not isinstance(file_timeout, (int, float))
+            or not (math.isfinite(file_timeout) and 0 < file_timeout <= FILE_SERVER_SILENCE)
+        ):
+            raise EncodeError(
+                "SimulatedEsc",
+                "file_timeout",
+                file_timeout,
+                f"seconds above 0, at most {FILE_SERVER_SILENCE:g}",
+            )
+        self._file_timeout = float(file_timeout)
+        self._file_retries = math.ceil(FILE_SERVER_SILENCE / self._file_timeout) - 1
         self._later: list[tuple[float, list[TransferFrame]]] = []
         self._read_at: float | None = None
         self._values = list(self._defaults)
@@ -468,8 +491,8 @@ class SimulatedEsc:
             FileGetInfoRequest(Path(path)),
             source,
             timestamp,
-            timeout=FILE_REQUEST_TIMEOUT,
-            retries=FILE_REQUEST_RETRIES,
+            timeout=self._file_timeout,
+            retries=self._file_retries,
         )
         self._outbox += self._requester.take_frames()
 
@@ -485,8 +508,8 @@ class SimulatedEsc:
             FileReadRequest(pull.received, Path(pull.path)),
             pull.source,
             timestamp,
-            timeout=FILE_REQUEST_TIMEOUT,
-            retries=FILE_REQUEST_RETRIES,
+            timeout=self._file_timeout,
+            retries=self._file_retries,
         )
         self._outbox += self._requester.take_frames()
 
@@ -526,11 +549,15 @@ class SimulatedEsc:
     ) -> BeginFirmwareUpdateResponse:
         if not self._supports_firmware_update:
             return BeginFirmwareUpdateResponse(FirmwareUpdateError.INVALID_MODE)
-        if self._mode is Mode.SOFTWARE_UPDATE:
-            return BeginFirmwareUpdateResponse(FirmwareUpdateError.IN_PROGRESS)
-        self._mode = Mode.SOFTWARE_UPDATE
         source = request.source_node_id or caller  # 0 means the caller (DSDL)
-        self._firmware_source = (source, request.image_file_remote_path.path)
+        wanted = (source, request.image_file_remote_path.path)
+        if self._mode is Mode.SOFTWARE_UPDATE:
+            again = wanted == self._firmware_source  # a retry: our answer was lost
+            return BeginFirmwareUpdateResponse(
+                FirmwareUpdateError.OK if again else FirmwareUpdateError.IN_PROGRESS
+            )
+        self._mode = Mode.SOFTWARE_UPDATE
+        self._firmware_source = wanted
         self._motor = motor.release(self._motor)
         return BeginFirmwareUpdateResponse(FirmwareUpdateError.OK)
 
