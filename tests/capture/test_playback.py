@@ -113,7 +113,12 @@ def test_bad_arguments(arguments: dict[str, float], message: str) -> None:
             st.sampled_from(["can0", "can1"]),
             st.integers(0, 0x7FF),
             st.binary(max_size=8),
+            remote=st.booleans(),
+            fd=st.booleans(),
             error=st.booleans(),
+            brs=st.booleans(),
+            esi=st.booleans(),
+            dlc=st.integers(0, 15),
         ),
         max_size=40,
     ),
@@ -123,7 +128,7 @@ def test_every_frame_goes_once_unchanged_and_in_order(frames: list[Frame], speed
     player = Player(frames, speed=speed)
     player.start(0.0)
     dues = everything(player)
-    assert [f for _, f in dues] == [f for f in frames if not f.error]
+    assert [f for _, f in dues] == frames  # error frames, flags and DLCs included
     assert all(a <= b for (a, _), (b, _) in itertools.pairwise(dues))
 
 
@@ -155,7 +160,7 @@ def test_play_sends_every_frame_in_order_with_its_spacing(tmp_path: Path) -> Non
     ] + [f"({last + 0.7:.6f}) can0 123#R"]
     capture = tmp_path / "capture.log"
     capture.write_text("\n".join([*lines, *extra]) + "\n")
-    expected = [f for f in open_frames(capture) if isinstance(f, Frame) and not f.error]
+    expected = [f for f in open_frames(capture) if isinstance(f, Frame)]
     port = free_port()
     receiver = subprocess.Popen(
         [sys.executable, "-c", RECEIVER, GROUP, str(port), str(len(expected))],

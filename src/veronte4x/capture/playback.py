@@ -3,10 +3,11 @@
 Like can-utils' ``canplayer``, a frame is due at its capture time's offset from the first
 frame, divided by the speed, from the moment playback starts. `Player` never reads a clock
 or sleeps: the caller says what time it is (`Player.due`, `Player.sent`), waits until the
-next frame is due and sends it; an adapter does the waiting (``veronte4x play``). A frame
-is never changed; frames are sent in capture order. A frame without a timestamp is due
-with the one before it, and a timestamp that goes back (merged logs) does not move a frame
-before the one sent before it.
+next frame is due and sends it; an adapter does the waiting (``veronte4x play``). Every
+frame goes (error frames too) and is never changed: its CAN FD flags and a remote frame's
+DLC are kept, only a channel map renames its channel. Frames are sent in capture order. A
+frame without a timestamp is due with the one before it, and a timestamp that goes back
+(merged logs) does not move a frame before the one sent before it.
 """
 
 from __future__ import annotations
@@ -99,8 +100,6 @@ class Player:
         offset = 0.0
         first: float | None = None
         for frame in frames:
-            if frame.error:
-                continue  # error frames are what a controller reports, not what it sends
             if filters and not any(f.matches(frame.can_id) for f in filters):
                 continue
             if channels is not None:

@@ -150,7 +150,11 @@ def _play(
                     data=frame.data,
                     is_extended_id=frame.extended,
                     is_remote_frame=frame.remote,
+                    is_error_frame=frame.error,
                     is_fd=frame.fd,
+                    bitrate_switch=frame.brs,
+                    error_state_indicator=frame.esi,
+                    dlc=frame.dlc if frame.remote else None,
                     channel=frame.channel if mapped else None,
                 )
                 buses[frame.channel if mapped else None].send(message)
