@@ -5,6 +5,7 @@ only the motor asked for."""
 
 from __future__ import annotations
 
+import asyncio
 import threading
 import time
 from collections.abc import Iterator
@@ -16,6 +17,7 @@ import pytest
 from veronte4x import dronecan
 from veronte4x.client import indices
 from veronte4x.client import operations as ops
+from veronte4x.client.aio import AsyncBusClient
 from veronte4x.client.bus import BusClient
 from veronte4x.client.errors import InvalidRequestError, NoResponseError, ParameterError
 from veronte4x.client.indices import (
@@ -242,6 +244,18 @@ def test_a_library_spin_refused_sends_nothing(shared: Rig) -> None:
         spin_indices([21], found)
     assert [esc.state.rpm for esc in shared.escs] == [0, 0]
     assert not any(esc.motor.driven for esc in shared.escs)
+
+
+def test_the_asyncio_client_runs_the_same_survey(shared: Rig) -> None:
+    async def main() -> IndexSurvey:
+        async with AsyncBusClient(shared.client_bus, timeout=2.0) as client:
+            found: IndexSurvey = await client.run(survey(client.protocol, [21]))
+            return found
+
+    found = asyncio.run(main())
+    assert found == IndexSurvey({21: 0, 22: 0}, {})
+    with pytest.raises(EscIndexError):
+        spin_indices([21], found)
 
 
 def test_a_library_spin_turns_only_the_motor_asked_for(apart: Rig) -> None:
