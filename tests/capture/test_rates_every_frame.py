@@ -54,6 +54,8 @@ def test_fd_frame_bits_by_hand() -> None:
     nominal = 36 + 13 + 35 // 4  # 57
     data = 5 + 160 + 4 + 21 + 7 + (36 + 5 + 160 - 1) // 4 - 35 // 4  # 197 + 42 = 239
     assert fd_frame_bits(20, True) == (nominal, data) == (57, 239)
+    # 29-bit ID, 8 bytes (the table of docs/other-tools.md): 96 + floor(104 / 4) - 8.
+    assert fd_frame_bits(8, True) == (57, 114)
     # 10 bytes go on the bus as 12 (the DLC gives no 10); 0 bytes still have their CRC.
     assert fd_frame_bits(10, False) == fd_frame_bits(12, False) == (34, 128 + 25)
     assert fd_frame_bits(0, False) == (34, 5 + 4 + 17 + 6 + (22 - 1) // 4 - 4)  # (34, 33)
