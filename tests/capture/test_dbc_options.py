@@ -161,3 +161,31 @@ def test_a_bus_map_that_is_not_utf8(tmp_path: Path, command: list[str]) -> None:
         "veronte4x: bus.toml: not UTF-8 text (byte 15): save the bus map as UTF-8, as TOML "
         "requires\n"
     )
+
+
+def test_signals_of_a_multiplexor_cantools_does_not_take(tmp_path: Path) -> None:
+    """opendbc's vw_pq.dbc, Motor_2: signals under ``m0``, ``m1`` of a multiplexor written
+    ``m`` (not ``M``), which cantools leaves out of every frame; the column-wise pass too."""
+    dbc = tmp_path / "orphans.dbc"
+    dbc.write_text(
+        HEAD + "BO_ 256 Motor: 8 X\n"
+        ' SG_ select m : 6|2@1+ (1,0) [0|3] "" X\n'
+        ' SG_ code m0 : 0|6@1+ (1,0) [0|63] "" X\n'
+        ' SG_ version m1 : 0|6@1+ (1,0) [0|63] "" X\n'
+        ' SG_ temperature : 8|8@1+ (0.75,-48) [-48|143.25] "degC" X\n'
+        "SG_MUL_VAL_ 256 code select 0-0;\nSG_MUL_VAL_ 256 version select 1-1;\n"
+    )
+    database: Any = cantools.database.load_file(str(dbc))
+    assert database.decode_message(256, bytes.fromhex("0540000000000000")) == {
+        "select": 0, "temperature": 0.0
+    }  # fmt: skip
+    path = write(
+        tmp_path / "x.log", ["(1.0) can0 100#0540000000000000", "(1.1) can0 100#01FF000000000000"]
+    )
+    bus_map = BusMap()
+    records = list(capture.read(path, bus_map, dbc=[dbc]))
+    assert [(r.message.code, r.message.version, r.message.temperature) for r in records] == [
+        (None, None, 0.0), (None, None, 143.25)
+    ]  # fmt: skip
+    tables = capture.read_tables(path, bus_map, dbc=[dbc])
+    assert_same_tables(tables, capture.tables_from_records(iter(records)))

@@ -352,11 +352,7 @@ def _message_class(message: Any, name: str) -> type[Any]:
     ranges: dict[str, tuple[int, int]] = {}
     choices: dict[str, str] = {}
     for signal, attr in zip(signals, numbers, strict=True):
-        if (
-            signal.is_float
-            or not isinstance(signal.scale, int)
-            or not isinstance(signal.offset, int)
-        ):
+        if not integer_signal(signal):
             kind: Any = float
         else:
             kind = int
@@ -473,16 +469,22 @@ def _names(decode: Callable[..., dict[str, Any]], data: bytes) -> dict[str, Any]
         return {}
 
 
+def integer_signal(signal: Any) -> bool:
+    """Whether cantools decodes the cantools ``signal`` to ints (its conversion keeps a raw
+    int an int: integer scale and offset, or none), as its values' type says."""
+    return not signal.is_float and isinstance(signal.conversion.raw_to_scaled(0, False), int)
+
+
 def _integer_range(signal: Any, message: str) -> tuple[int, int]:
-    """The lowest and highest value of an integer signal (integer scale and offset) of the
-    message named ``message``.
+    """The lowest and highest value of an `integer_signal` of the message named
+    ``message``.
 
     Raises:
         ValueError: Values of more than `MAX_DIGITS` digits.
     """
     half = 1 << (signal.length - 1)
     raw = (-half, half - 1) if signal.is_signed else (0, 2 * half - 1)
-    ends = [value * signal.scale + signal.offset for value in raw]
+    ends = [signal.conversion.raw_to_scaled(value, False) for value in raw]
     if max(len(str(abs(end))) for end in ends) > MAX_DIGITS:
         raise ValueError(
             f"signal {signal.name} of {message}: its values have more than "

@@ -21,7 +21,7 @@ from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.columnar.frames import MAX_DATA, FrameColumns
 from veronte4x.capture.columnar.schema import HEAD, SENDER_INDEX, Column, TableSpec
 from veronte4x.capture.columnar.tables import SUB, Tables
-from veronte4x.capture.dbc_in import MAX_DIGITS, DbcEntry, decoder_of, failure
+from veronte4x.capture.dbc_in import MAX_DIGITS, DbcEntry, decoder_of, failure, integer_signal
 from veronte4x.capture.records import Record, error_record
 from veronte4x.errors import SourceError
 
@@ -132,8 +132,8 @@ def _simple(message: Any) -> bool:
     except Exception:  # as `DbcDecoder.decode` takes them
         return False
     for signal in message.signals:
-        if signal.is_float or signal.length > 62:
-            return False
+        if signal.is_float or signal.length > 62 or signal.multiplexer_ids:
+            return False  # (a multiplexed signal without a multiplexer: cantools skips it)
         scale, offset = signal.conversion.scale, signal.conversion.offset
         if not isinstance(scale, (int, float)) or not isinstance(offset, (int, float)):
             return False
@@ -169,8 +169,8 @@ def _vectorised(message: Any, cls: type[Any], data: npt.NDArray[np.uint8]) -> di
             unique, where = np.unique(raw, return_inverse=True)
             names = [_name(conversion.raw_to_scaled(value, True)) for value in unique.tolist()]
             out[cls.CHOICES[column]] = np.array(names, object)[where.reshape(-1)]
-        if isinstance(scale, int) and isinstance(offset, int):
-            out[column] = raw * scale + offset
+        if integer_signal(signal):  # integral scale and offset, as cantools keeps ints
+            out[column] = raw * int(scale) + int(offset)
         elif isinstance(scale, int):  # Python: the exact product, then the float sum
             out[column] = (raw * scale).astype(np.float64) + offset
         else:
