@@ -30,7 +30,6 @@ Examples:
 from __future__ import annotations
 
 import asyncio
-import contextlib
 from collections.abc import Iterator, Sequence
 from typing import Any, TypeVar
 
@@ -57,7 +56,7 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation, OperationBatch, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import Event
-from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
+from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, RawCommand, Value
 
 __all__ = ["AsyncBusClient", "AsyncCommandStream"]
 
@@ -87,10 +86,10 @@ class AsyncBusClient(BusAdapter):
         return self
 
     async def __aexit__(self, *exc: object) -> None:
-        for stream in self._streams:
-            with contextlib.suppress(Exception):  # its error was the stream user's to see
-                await stream.stop()
+        running = [s._task for s in self._streams if s._task is not None]
         self.stop()
+        if running:
+            await asyncio.wait(running)  # cancelled by stop: they end at once
 
     def start(self) -> None:
         """Start receiving frames on the running event loop."""
@@ -249,11 +248,12 @@ class AsyncCommandStream(StreamBase):
     refresh the throttles with `set` more often than the watchdog period; when refreshes
     stop, zero throttle is sent. Leaving the ``async with`` block, normally, by an exception
     or by a cancellation, stops the task and sends zero throttle `STOP_REPEATS` times
-    before anything else can run on the loop. From the moment the task that started the
-    stream is cancelled (``asyncio.wait_for``, ``asyncio.timeout``, ``Task.cancel``) the
-    stream sends no throttle: zero if it runs before the block ends, then nothing, even
-    when the cancellation is caught (`set` then raises `OperationCancelledError`). The
-    client's end stops its streams the same way, started with ``async with`` or not. If
+    before anything else can run on the loop. While the task that started the stream has a
+    cancellation pending (``asyncio.wait_for``, ``asyncio.timeout``, ``Task.cancel``), the
+    commands due go out at zero throttle: from a cancellation on, zero, then nothing once
+    the block has ended (a cancellation the block catches lets the setpoints go on). The
+    client's end stops its streams the same way, started with ``async with`` or not (`set`
+    then raises `OperationCancelledError`). If
     sending fails in the task, it sends zero throttle if it can and stops; `set` and the
     end of the block raise that error.
 
@@ -286,15 +286,7 @@ class AsyncCommandStream(StreamBase):
         try:
             while True:
                 await asyncio.sleep(wait)
-                if self._owner_cancelled():
-                    self._failed(
-                        OperationCancelledError(
-                            "the command stream stopped when its task was cancelled: zero "
-                            "throttle was sent; start a new stream to drive again"
-                        )
-                    )
-                    return
-                wait = self._send_due()
+                wait = self._send_zero() if self._owner_cancelled() else self._send_due()
         except Exception as error:  # a failing bus
             self._failed(error)
 
@@ -303,6 +295,15 @@ class AsyncCommandStream(StreamBase):
         about to leave the block, so no throttle may go out (Python 3.10 cannot tell)."""
         cancelling = getattr(self._owner, "cancelling", None)
         return cancelling is not None and cancelling() > 0
+
+    def _send_zero(self) -> float:
+        """Send the command due now, if any, at zero throttle; the seconds to the next."""
+        with self._lock:
+            command = self.commander.poll(self.client.clock())
+            wait = self.commander.wait(self.client.clock(), MAX_WAIT)
+        if command is not None:
+            self._send([RawCommand((0,) * len(command.cmd))])
+        return wait
 
     def start(self) -> None:
         """Start sending on the running loop (nothing goes out before the first `set`),
