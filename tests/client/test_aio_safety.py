@@ -8,6 +8,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import itertools
+import sys
 import threading
 from collections.abc import Iterator
 
@@ -190,6 +191,8 @@ def test_a_stream_under_wait_for_stops_for_good(channel: str) -> None:
 def test_a_stream_goes_on_after_a_cancellation_its_block_catches(channel: str) -> None:
     """``asyncio.timeout`` inside the block cancels the block's task and catches it: the
     setpoints then go on, and the block's end stops them (zero, then nothing)."""
+    if sys.version_info < (3, 11):
+        pytest.skip("asyncio.timeout is Python 3.11's")
 
     async def run(bus: can.BusABC) -> tuple[int, int]:
         async with AsyncBusClient(bus) as client:
