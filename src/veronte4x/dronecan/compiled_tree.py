@@ -24,6 +24,8 @@ or a payload that does not fit the type, `struct.error` for a range `struct` ref
 payload too short for a read), and the caller runs the generic `Serializer`, which gives
 the precise error, or saturates. The decoder checks every count and union tag before
 using it and the payload length at the end, so arbitrary bytes never raise anything else.
+A type whose code would nest more than `MAX_BLOCKS` blocks (Python compiles at most 20
+nested loops) gets functions that always raise `SlowPath`: the generic serializer does it.
 """
 
 from __future__ import annotations
@@ -31,11 +33,12 @@ from __future__ import annotations
 import struct
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from veronte4x.codegen import attribute
 from veronte4x.dronecan.compiled import (
     FastPaths,
+    SlowPath,
     Transport,
     _slot_builder,
     _Source,
@@ -143,6 +146,14 @@ def _tail_differs(t: Scalar | Array | Struct | Union) -> bool:
     return False
 
 
+MAX_BLOCKS = 18
+"""Most blocks (loops and ifs) one generated function nests."""
+
+
+class _TooDeep(Exception):
+    """Raised by a `_Writer` asked for more than `MAX_BLOCKS` nested blocks."""
+
+
 class _Writer:
     """Lines of one generated function, indented, with fresh local names."""
 
@@ -161,6 +172,8 @@ class _Writer:
 
     @contextmanager
     def block(self, head: str) -> Iterator[None]:
+        if self.depth > MAX_BLOCKS:
+            raise _TooDeep
         self.emit(head)
         self.depth += 1
         yield
@@ -663,6 +676,18 @@ class _Encoder(_Writer):
 
 def compile_tree(schema: Struct, transport: Transport) -> FastPaths:
     """Generate the fast paths of any struct (see the module docstring)."""
+    try:
+        return _compile_tree(schema, transport)
+    except _TooDeep:
+        return FastPaths(_slow, _slow, _slow, None)
+
+
+def _slow(*args: object) -> Any:
+    """The fast path of a type nested too deep for generated code: the generic one."""
+    raise SlowPath
+
+
+def _compile_tree(schema: Struct, transport: Transport) -> FastPaths:
     src = _Source()
     src.names.update(
         FLOATS=frozenset((float, int)),

@@ -477,7 +477,7 @@ def _depth(
     d = definitions[name]
     if name in trail:
         raise DsdlError(d.path, None, f"{name} contains itself")
-    if len(trail) == MAX_DEPTH:
+    if len(trail) > MAX_DEPTH:
         top = definitions[trail[0]]
         raise DsdlError(
             top.path, None, f"{top.full_name} nests types more than {MAX_DEPTH} levels deep"
