@@ -104,6 +104,18 @@ def test_a_root_under_a_directory_that_is_not_utf8_loads(tmp_path: Path) -> None
     assert types["vendor.Foo"](a=3).a == 3
 
 
+def test_a_path_of_bytes_loads_or_names_the_bytes(tmp_path: Path) -> None:
+    """A path as ``os.listdir(b".")`` gives it: decoded as ``os.fsdecode`` does."""
+    parent = os.fsencode(tmp_path) + b"/\xfe"
+    _tree(Path(os.fsdecode(parent + b"/vendor")), {"20000.Foo.uavcan": "uint8 a\n"})
+    types = TypeSet.standard().with_dsdl(parent + b"/vendor")
+    assert types["vendor.Foo"](a=3).a == 3
+    (tmp_path / os.fsdecode(b"\xff")).mkdir()
+    with pytest.raises(DsdlError) as error:
+        TypeSet.standard().with_dsdl(os.fsencode(tmp_path) + b"/\xff")
+    assert str(error.value) == f"{tmp_path}/\\xff: directory name '\\xff' {NAMESPACE}"
+
+
 def test_a_full_name_longer_than_80_characters_is_refused(tmp_path: Path) -> None:
     name = "A" * (80 - len("vendor."))
     root = _tree(

@@ -136,18 +136,21 @@ class TypeSet:
         # directories again (Dask workers must see them, as they see the output).
         return (_load, (tuple(str(r) for r in self.roots),))
 
-    def with_dsdl(self, *root_namespace_dirs: str | os.PathLike[str]) -> TypeSet:
+    def with_dsdl(
+        self, *root_namespace_dirs: str | bytes | os.PathLike[str] | os.PathLike[bytes]
+    ) -> TypeSet:
         """A new set: this one plus the types of these root namespace directories.
 
         Each directory is a root namespace (``.../ardupilot``, ``.../com``): its name is the
-        first component of the full names. A directory already in the set is skipped.
+        first component of the full names. A directory already in the set is skipped. A
+        path of bytes (a name that is not UTF-8) is read as `os.fsdecode` reads it.
 
         Raises:
             DsdlError: A malformed definition (file and line), an unknown nested type, a
                 type defined twice, a data type id claimed twice (naming both files), or a
                 root named ``uavcan`` (the standard one cannot be replaced or extended).
         """
-        roots = [Path(d).resolve() for d in root_namespace_dirs]
+        roots = [Path(os.fsdecode(d)).resolve() for d in root_namespace_dirs]
         new_roots = [r for r in dict.fromkeys(roots) if r not in self.roots]
         if not new_roots:
             return self
@@ -267,7 +270,7 @@ def set_default_types(types: TypeSet) -> None:
     _default = types
 
 
-def load_dsdl(*root_namespace_dirs: str | os.PathLike[str]) -> TypeSet:
+def load_dsdl(*root_namespace_dirs: str | bytes | os.PathLike[str] | os.PathLike[bytes]) -> TypeSet:
     """Add the types of vendor root namespace directories to the default set; return it.
 
     After this, everything that decodes or encodes DroneCAN without an explicit
