@@ -48,10 +48,10 @@ class DsdlError(Veronte4xError, ValueError):
         self.line = line
         self.problem = problem
         where = self.path if line is None else f"{self.path}:{line}"
-        super().__init__(printable(f"{where}: {problem}"))
+        super().__init__(_printable(f"{where}: {problem}"))
 
 
-def printable(text: str) -> str:
+def _printable(text: str) -> str:
     """``text`` with each unprintable character escaped (``\\n``, ``\\x00``; a byte of a
     name that is not UTF-8, kept by Python as a lone surrogate, as ``\\xff``): one line."""
     if text.isprintable():
