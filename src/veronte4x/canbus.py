@@ -10,6 +10,7 @@ import configparser
 import contextlib
 import os
 import socket
+import sys
 from collections.abc import Callable
 from typing import Any
 
@@ -25,6 +26,7 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is in
 from veronte4x import codec, dronecan
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.decoder import CaptureDecoder
+from veronte4x.capture.readers.live import frame_socket
 from veronte4x.capture.readers.pythoncan import frame_from_message
 from veronte4x.capture.records import Record
 from veronte4x.errors import Veronte4xError
@@ -86,26 +88,34 @@ RECEIVE_BUFFER = 4 * 1024 * 1024
 """Bytes of receive buffer `widen_receive_buffer` asks for: a few thousand frames."""
 
 
+SO_RCVBUFFORCE = 33
+"""Linux's ``SO_RCVBUF`` past ``net.core.rmem_max``, for a process with ``CAP_NET_ADMIN``
+(candump's ``-r`` uses it the same way)."""
+
+
 def widen_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> None:
     """Raise the receive buffer of a bus that is a datagram socket (python-can's
-    ``udp_multicast``) to ``size`` bytes, as far as the system lets a user (Linux:
-    ``net.core.rmem_max``); other buses, and a buffer already as large, are left alone.
+    ``udp_multicast``) or a SocketCAN one to ``size`` bytes, as far as the system lets the
+    process (Linux: ``net.core.rmem_max`` for a user, any size with ``CAP_NET_ADMIN``);
+    other buses, and a buffer already as large, are left alone.
 
     Each CAN frame is a datagram there, which the kernel counts at about 1 kB: the default
     buffer (about 200 kB on Linux) holds some 200 frames and drops the rest, while 8 nodes
     served at once take 300 frames in one burst (38 per 256-byte file read), and each lost
-    frame costs a node its request timeout. `open_bus` calls it on every bus it opens.
+    frame costs a node its request timeout; a full 1 Mbit/s bus sends 8,800 frames a
+    second. `open_bus` calls it on every bus it opens.
     """
-    try:
-        descriptor = bus.fileno()
-        duplicate = socket.socket(fileno=os.dup(descriptor))
-    except (NotImplementedError, AttributeError, OSError, ValueError, TypeError):
+    duplicate = frame_socket(bus)
+    if duplicate is None:
         return  # no socket behind it (virtual, a vendor library) or no socket to share
     with duplicate, contextlib.suppress(OSError):
-        if duplicate.type != socket.SOCK_DGRAM:
+        if duplicate.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF) >= size:
             return
-        if duplicate.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF) < size:
-            duplicate.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, size)
+        if sys.platform == "linux":
+            with contextlib.suppress(OSError):  # not allowed: as far as rmem_max then
+                duplicate.setsockopt(socket.SOL_SOCKET, SO_RCVBUFFORCE, size)
+                return
+        duplicate.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, size)
 
 
 __all__ = [

@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.rates import Stream
@@ -26,6 +26,9 @@ from veronte4x.capture.readable import format_message, hex_bytes, shown
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
 from veronte4x.words import counted
+
+if TYPE_CHECKING:
+    from veronte4x.capture.readers.live import BusLoss
 
 RATE_WINDOW = 2.0
 """Seconds over which a row's rate is counted."""
@@ -134,6 +137,8 @@ class MonitorState:
     Args:
         rate_window: Seconds over which rates are counted.
         rates: Show each row's timing (period, jitter, longest gap, flags) in the table.
+        loss: What the bus layer of a live bus dropped, for the summary (kept up to date
+            by its reader, `veronte4x.capture.readers.live.read_bus`).
 
     Examples:
         >>> from veronte4x import capture
@@ -144,9 +149,12 @@ class MonitorState:
         [('arbiter', 'Score', 3)]
     """
 
-    def __init__(self, rate_window: float = RATE_WINDOW, rates: bool = False) -> None:
+    def __init__(
+        self, rate_window: float = RATE_WINDOW, rates: bool = False, loss: BusLoss | None = None
+    ) -> None:
         self.rate_window = rate_window
         self.rates = rates
+        self.loss = loss
         self.records = 0
         self.errors = 0
         self.first_timestamp: float | None = None
@@ -242,11 +250,14 @@ class MonitorState:
         return sum(1 for t in entry.times if t > latest - window) / window
 
     def summary(self) -> str:
-        """One line: records, errors, time span."""
+        """One line: records, errors, time span, and the frames the bus layer lost where
+        it counts them."""
         span = ""
         if self.first_timestamp is not None and self.last_timestamp is not None:
             span = f", {round(self.last_timestamp - self.first_timestamp, 3)} s"
-        return f"{counted(self.records, 'record')}, {self.errors} bad{span}"
+        lost = None if self.loss is None else self.loss.text()
+        text = f"{counted(self.records, 'record')}, {self.errors} bad{span}"
+        return text + (f", {lost}" if lost else "")
 
 
 def can_id_text(can_id: int) -> str:

@@ -18,6 +18,7 @@ from typing import Any, TextIO
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.readable import format_message, hex_bytes, readable_fields
+from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
@@ -62,8 +63,9 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Decode the capture to standard output; the summary goes to standard error."""
     counts = Stats()
+    loss = BusLoss()
     watch = InputWatch(None if live_bus(args) else args.file)
-    records = watch.records(open_records(args, bus_map))
+    records = watch.records(open_records(args, bus_map, loss=loss))
     out = sys.stdout
     clock = _Clock(args.relative_time)
     if args.output == "csv":
@@ -92,22 +94,24 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     except KeyboardInterrupt:
         close()
         out.flush()
-        print(f"veronte4x: interrupted after {_summary(counts)}", file=sys.stderr)
+        print(f"veronte4x: interrupted after {_summary(counts, loss)}", file=sys.stderr)
         return EXIT_INTERRUPTED
     if status == EXIT_OK:
         close()
     note = watch.note()
     print(
-        f"veronte4x: {_summary(counts)} ({args.on_error})" + (f"; {note}" if note else ""),
+        f"veronte4x: {_summary(counts, loss)} ({args.on_error})" + (f"; {note}" if note else ""),
         file=sys.stderr,
     )
     return status
 
 
-def _summary(counts: Stats) -> str:
+def _summary(counts: Stats, loss: BusLoss) -> str:
     errors = sum(counts.errors.values())
     unknown = sum(counts.unknown.values())
-    return f"{counted(counts.records, 'record')}, {unknown} undecoded, {errors} bad"
+    lost = loss.text()
+    text = f"{counted(counts.records, 'record')}, {unknown} undecoded, {errors} bad"
+    return text + (f", {lost}" if lost else "")
 
 
 class _Clock:

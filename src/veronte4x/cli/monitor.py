@@ -35,6 +35,7 @@ from veronte4x.capture.monitor import (
     render_text,
     timing_texts,
 )
+from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.cli import play, rates
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
@@ -90,10 +91,11 @@ class _Reader:
     def _open(self) -> Iterator[Record]:
         """The source's records: fed to the rates tracker and paced as the options say."""
         args, bus_map = self._source
+        loss = self.state.loss
         if self.rates is None:
-            records = open_records(args, bus_map, self.stop)
+            records = open_records(args, bus_map, self.stop, loss)
         else:
-            records = rates.records(args, bus_map, self.rates, self.stop)
+            records = rates.records(args, bus_map, self.rates, self.stop, loss)
         if args.speed is not None and not live(args):
             records = play.paced(records, args.speed, self.stop)
         return records
@@ -153,7 +155,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
     if sys.stdout.isatty():
         require("rich", "monitor", "veronte4x monitor on a terminal")
-    state = MonitorState(rates=args.rates)
+    state = MonitorState(rates=args.rates, loss=BusLoss())
     reader = _Reader(args, bus_map, state)
     reader.start()
     status = EXIT_OK

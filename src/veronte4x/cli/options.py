@@ -8,7 +8,7 @@ import sys
 import threading
 import warnings
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
@@ -18,6 +18,9 @@ from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
 from veronte4x.errors import SourceError
+
+if TYPE_CHECKING:
+    from veronte4x.capture.readers.live import BusLoss
 
 
 def add_capture_options(parser: argparse.ArgumentParser) -> None:
@@ -160,11 +163,15 @@ def _option_value(text: str) -> object:
 
 
 def open_records(
-    args: argparse.Namespace, bus_map: BusMap, stop: threading.Event | None = None
+    args: argparse.Namespace,
+    bus_map: BusMap,
+    stop: threading.Event | None = None,
+    loss: BusLoss | None = None,
 ) -> Iterator[Record]:
     """The records of the command's source: the capture file, or the live bus if one is set.
 
-    A live bus is read until its ``--duration`` ends, Ctrl-C or ``stop`` is set.
+    A live bus is read until its ``--duration`` ends, Ctrl-C or ``stop`` is set; ``loss``
+    counts the frames its bus layer dropped meanwhile.
 
     Raises:
         SourceError: Both a file and a bus, or neither.
@@ -174,7 +181,7 @@ def open_records(
         if args.file is None:
             raise SourceError("give a capture file, or a live bus with --interface")
         return capture.read(args.file, bus_map, args.channel, getattr(args, "dbc", ()))
-    return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop)))
+    return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop, loss)))
 
 
 def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Record]:
@@ -184,9 +191,10 @@ def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Re
 
 
 def open_frame_source(
-    args: argparse.Namespace, stop: threading.Event | None = None
+    args: argparse.Namespace, stop: threading.Event | None = None, loss: BusLoss | None = None
 ) -> Iterator[Frame | BadLine]:
-    """The frames of the command's source: the capture file, or the live bus if one is set.
+    """The frames of the command's source: the capture file, or the live bus if one is set
+    (``loss`` counting the frames its bus layer drops).
 
     Raises:
         SourceError: Both a file and a bus, or neither.
@@ -197,17 +205,18 @@ def open_frame_source(
         return open_frames(args.file, args.channel)
     if args.file not in (None, "-"):
         raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
-    return _live_frames(args, stop)
+    return _live_frames(args, stop, loss)
 
 
 def _live_frames(
-    args: argparse.Namespace, stop: threading.Event | None
+    args: argparse.Namespace, stop: threading.Event | None, loss: BusLoss | None
 ) -> Iterator[Frame | BadLine]:
     from veronte4x.capture.readers.live import read_bus
     from veronte4x.cli.buses import open_bus
 
     bus = open_bus(**bus_settings(args))
     try:
-        yield from read_bus(bus, args.channel or args.interface, args.duration, stop=stop)
+        channel = args.channel or args.interface
+        yield from read_bus(bus, channel, args.duration, stop=stop, loss=loss)
     finally:
         bus.shutdown()

@@ -7,6 +7,7 @@ from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.readers.live import BusLoss
 from veronte4x.cli import rates
 from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.notices import InputWatch, tell
@@ -27,14 +28,15 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Print the counts of the capture."""
     watch = InputWatch(None if live(args) else args.file)
     tracker = rates.tracker(args, bus_map)
+    loss = BusLoss()
     if tracker is None:
-        records = open_records(args, bus_map)
+        records = open_records(args, bus_map, loss=loss)
     else:
-        records = rates.records(args, bus_map, tracker)
+        records = rates.records(args, bus_map, tracker, loss=loss)
     print(capture.stats(watch.records(records)).report())
     if tracker is not None:
         print(rates.report(tracker))
-    note = watch.note()
-    if note:
-        tell(note)
+    for note in (loss.text(), watch.note()):
+        if note:
+            tell(note)
     return EXIT_OK
