@@ -270,10 +270,10 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
 
     The first column, ``time``, holds the time as ISO 8601 in UTC to the microsecond
     (``2025-11-21T15:00:00.010000Z``) when the tables carry timestamps, else their seconds
-    (``time="seconds"`` or ``"relative"``); numbers keep their shortest form, flags are 0
-    or 1, enums their names, text as text (quoted where it needs), and a missing value is an
-    empty cell. Columns a plot or a spreadsheet cannot use (raw bytes, lists, structs) are
-    left out.
+    (``time="seconds"`` or ``"relative"``); numbers are exact (a float32 0.1 is
+    ``0.10000000149011612``, as `veronte4x.numbers` says), flags are 0 or 1, enums their
+    names, text as text (quoted where it needs), and a missing value is an empty cell.
+    Columns a plot or a spreadsheet cannot use (raw bytes, lists, structs) are left out.
 
     Returns:
         The number of columns written, time included.
@@ -298,6 +298,8 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
             column = column.cast(pa.uint8())
         elif pa.types.is_dictionary(kind):
             column = column.cast(kind.value_type)
+        elif pa.types.is_float16(kind) or pa.types.is_float32(kind):
+            column = column.cast(pa.float64())  # written exact, as veronte4x.numbers says
         elif not (
             pa.types.is_integer(kind)
             or pa.types.is_floating(kind)
