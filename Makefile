@@ -10,9 +10,9 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-# The package with what the README's snippets and examples/flight.ipynb use.
+# The package with what the README's snippets, its bench and examples/flight.ipynb use.
 $(VENV)/.installed-run: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e '.[notebook]'
+	$(BIN)/python -m pip install --quiet -e '.[notebook,bench]'
 	touch $@
 
 $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python

@@ -11,17 +11,50 @@ from __future__ import annotations
 
 from typing import Any
 
+from veronte4x.extras import require
+
 
 def open_bus(**settings: Any) -> Any:
     """`veronte4x.canbus.open_bus` with these settings, its ``recv`` and ``send`` raising
     ``can.CanError`` only.
 
     Raises:
-        BusOpenError: python-can could not open it.
+        BusOpenError: Nothing names a bus (`NO_BUS`), or python-can could not open it.
+        MissingExtraError: A udp_multicast bus without msgpack (the ``bench`` extra).
     """
+    from veronte4x.canbus import BusOpenError
     from veronte4x.canbus import open_bus as open_python_can_bus
 
+    if not _names_a_bus(settings):
+        raise BusOpenError(NO_BUS)
+    if settings.get("interface") == "udp_multicast":
+        require("msgpack", "bench", "python-can's udp_multicast bus")
     return _Guarded(open_python_can_bus(**settings))
+
+
+NO_BUS = (
+    "no CAN bus given: name one with --interface and --channel (e.g. --interface socketcan "
+    "--channel can0, or --interface udp_multicast for a bus on this machine), or with "
+    "--can-config FILE or python-can's configuration file ~/.canrc ([default] interface = ...)"
+)
+"""The error line of a command that opens a bus when nothing names one."""
+
+
+def _names_a_bus(settings: dict[str, Any]) -> bool:
+    """Whether the settings or python-can's own configuration (``can.rc``, ``CAN_INTERFACE``,
+    its files) name an interface. A ``config_file`` counts (`veronte4x.canbus.open_bus`
+    says what is wrong with it), and so does a file python-can cannot read."""
+    import can
+
+    if settings.get("interface") or settings.get("config_file") is not None:
+        return True
+    if "interface" in (settings.get("options") or {}):
+        return True
+    try:
+        sources = [can.rc, can.util.load_environment_config(), can.util.load_file_config()]
+    except Exception:  # a file python-can cannot read: opening the bus says why
+        return True
+    return any(source.get("interface") or source.get("bustype") for source in sources)
 
 
 class _Guarded:
