@@ -44,10 +44,6 @@ from veronte4x.arbiter.replay import (
 from veronte4x.arbiter.scores import Contribution, compute_scores, explain_scores
 from veronte4x.arbiter.state import ArbiterMode, ArbiterState, Decision, DecisionKind, SystemChecks
 
-Mode = ArbiterMode  # old name, kept as an alias
-Phase = ArbiterPhase  # old name, kept as an alias
-Event = ArbiterEvent  # old name, kept as an alias
-
 __all__ = [
     "AUTOPILOT_TRANSITIONS",
     "TRANSITIONS",
@@ -66,14 +62,11 @@ __all__ = [
     "DecisionKind",
     "Disagreement",
     "DisorderedError",
-    "Event",  # old name, kept as an alias
     "Failover",
     "FrameError",
     "InputError",
     "MaxErrorMode",
     "Method",
-    "Mode",  # old name, kept as an alias
-    "Phase",  # old name, kept as an alias
     "RelativeMean",
     "ReplayResult",
     "Restart",

@@ -21,10 +21,6 @@ class ArbiterPhase(enum.Enum):
     MAINTENANCE = "Maintenance"
 
 
-Phase = ArbiterPhase  # old name, kept as an alias
-"""`ArbiterPhase` under its earlier name, kept for code that imports it from here."""
-
-
 class ArbiterEvent(enum.Enum):
     """What moves the arbiter from one phase to another (`AutopilotEvent`: one autopilot;
     `veronte4x.client.Event`: what the DroneCAN client reports)."""
@@ -33,10 +29,6 @@ class ArbiterEvent(enum.Enum):
     CHECKS_FAIL_30S = "errors persist 30 s after boot"
     ALL_READY = "Ready from every autopilot"
     MAINTENANCE_COMMAND = "maintenance command"
-
-
-Event = ArbiterEvent  # old name, kept as an alias
-"""`ArbiterEvent` under its earlier name, kept for code that imports it from here."""
 
 
 #: (phase, event) -> next phase; an event not listed for a phase leaves it unchanged.

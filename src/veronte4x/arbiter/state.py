@@ -19,10 +19,6 @@ class ArbiterMode(enum.Enum):
     MAINTENANCE = "Maintenance"
 
 
-Mode = ArbiterMode  # old name, kept as an alias
-"""`ArbiterMode` under its earlier name, kept for code that imports it from here."""
-
-
 MODE_OF_PHASE = {
     ArbiterPhase.IDLE: ArbiterMode.IDLE,
     ArbiterPhase.NORMAL: ArbiterMode.NORMAL,

@@ -43,8 +43,6 @@ from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
 from veronte4x.node.requests import Answered, Pending, Requester, TimedOut, answers
 from veronte4x.node.transfer_ids import TransferIds
 
-FirmwareUpdateError = FirmwareUpdateFailedError  # old name, kept as an alias
-
 __all__ = [
     "DEFAULT_NODE_ID",
     "DEFAULT_SILENCE",
@@ -60,7 +58,6 @@ __all__ = [
     "FileServer",
     "FirmwareOptions",
     "FirmwareUpdate",
-    "FirmwareUpdateError",  # old name, kept as an alias
     "FirmwareUpdateFailedError",
     "InvalidRequestError",
     "NoResponseError",

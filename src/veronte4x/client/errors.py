@@ -54,10 +54,6 @@ class FirmwareUpdateFailedError(ClientError):
         self.timed_out = timed_out
 
 
-FirmwareUpdateError = FirmwareUpdateFailedError  # old name, kept as an alias
-"""`FirmwareUpdateFailedError` under its earlier name, kept for code that imports it from here."""
-
-
 class InvalidRequestError(ClientError, ValueError):
     """A request refused before anything was sent: an empty parameter name, a value that
     does not parse as the parameter's type, an empty or oversized firmware image."""

@@ -327,10 +327,6 @@ class OperationBatch:
         self._running = []
 
 
-Batch = OperationBatch  # old name, kept as an alias
-"""`OperationBatch` under its earlier name, kept for code that imports it from here."""
-
-
 # -- operations --------------------------------------------------------------------------------
 
 

@@ -44,10 +44,6 @@ class FieldKind(enum.Enum):
     MAPPED = "mapped"
 
 
-Kind = FieldKind
-"""`FieldKind` under its earlier name, kept for code that imports ``veronte4x.codec.Kind``."""
-
-
 @dataclass(frozen=True, slots=True)
 class Linear:
     """A linear compression: wire values encoded_min..encoded_max map to decoded_min..decoded_max.

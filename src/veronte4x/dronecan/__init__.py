@@ -70,9 +70,6 @@ from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, decode_frame
 from veronte4x.dronecan.typeset import TypeSet, default_types, load_dsdl, set_default_types
 from veronte4x.errors import DecodeError, EncodeError, Veronte4xError
 
-Frame = TransferFrame  # old name, kept as an alias
-Message = HandNamedMessage  # old name, kept as an alias
-
 __all__ = [
     "DEFAULT_PRIORITY",
     "TRANSFER_ID_TIMEOUT",
@@ -97,7 +94,6 @@ __all__ = [
     "FileReadRequest",
     "FileReadResponse",
     "FirmwareUpdateError",
-    "Frame",  # old name, kept as an alias
     "GetNodeInfoRequest",
     "GetNodeInfoResponse",
     "GetSetRequest",
@@ -106,7 +102,6 @@ __all__ = [
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",  # old name, kept as an alias
     "Mode",
     "NodeStatus",
     "NumericValue",

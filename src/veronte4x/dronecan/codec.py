@@ -90,10 +90,6 @@ def can_id_base(data_type: DataType) -> int:
     return data_type.data_type_id << 16 | request | 0x80
 
 
-Codec = TypeCodec  # old name, kept as an alias
-"""`TypeCodec` under its earlier name, kept for code that imports it from here."""
-
-
 CODECS: tuple[TypeCodec, ...] = tuple(TypeCodec(t) for t in DATA_TYPES)
 """One `TypeCodec` per top-level type, in the order of `DATA_TYPES`."""
 

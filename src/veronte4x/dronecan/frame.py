@@ -14,7 +14,3 @@ class TransferFrame(NamedTuple):
 
     can_id: int
     data: bytes
-
-
-Frame = TransferFrame  # old name, kept as an alias
-"""`TransferFrame` under its earlier name, kept for code that imports it."""

@@ -13,6 +13,13 @@ Naming rules (documented in the DroneCAN types page):
   component in front (``ActuatorStatus``, ``CameraGimbalStatus``, ``HardpointCommand``),
   and more components while a clash remains.
 - The types that veronte4x named before keep their names (`HAND_NAMES`).
+- A vendor type (`plan` with ``named``: the classes of the set it is added to keep their
+  names) climbs its `_ladder`: its short name, then one more namespace component in front
+  per step (the root last), then its full name with ``_`` for ``.`` (``esc.Status`` is
+  ``esc_Status``: ``EscStatus`` is the standard one). It stops at the first name that no
+  class or enum of the set has, that is no short name of a type in the set, no keyword,
+  builtin or name of the generated module; the keys of one clash climb together, so the
+  order of the roots does not matter, and a clash at the top gives ``_2``, ``_3``.
 - Constants sharing the prefix ``P_`` where ``p`` is an unsigned integer field of the
   same type become an ``enum.IntEnum`` named ``CamelCase(P)``
   (``ActuatorCommand.command_type``: ``CommandType``); where two types would give the same
@@ -22,7 +29,11 @@ Naming rules (documented in the DroneCAN types page):
   ``P_FLAG_*`` for a field ``p_flags`` become an ``enum.IntFlag`` and the field stays an
   int. Members drop the prefix unless a name would then start with a digit. Every
   constant also stays a class attribute of its DSDL name; a signed field's constants are
-  only that (the field stays an int).
+  only that (the field stays an int), and so are constants of a prefix that repeat a value
+  (``Fix2.sub_mode``: ``SUB_MODE_DGPS_OTHER`` and ``SUB_MODE_RTK_FLOAT`` are both 0), so
+  no enum gives a value two names.
+- Attributes are the DSDL names; a Python keyword takes ``_`` after it, more while that is
+  another name of the class (`attribute_names`).
 - An enumeration type, whose one field ``p`` is an unsigned integer and whose constants
   (two or more, distinct) all have ``p``'s type without such a prefix
   (``debug.LogLevel``, ``DataTypeKind``, ``tunnel.Protocol``), gets an ``enum.IntEnum``
@@ -271,7 +282,8 @@ def _enum_candidates(
                 continue
             members = [c for c in section.constants if c.name.startswith(prefix) and c.type == t]
             if len(members) >= 2:
-                found.append(((key, a.name), "IntFlag" if flag else "IntEnum", members, prefix))
+                if len({c.value for c in members}) == len(members):  # else a value has 2 names
+                    found.append(((key, a.name), "IntFlag" if flag else "IntEnum", members, prefix))
                 break
     named = [a for a in section.fields if a.name]
     constants = section.constants
@@ -460,6 +472,7 @@ def _class_source(key: str, p: Plan) -> list[str]:
     if section.constants or key in HAND_CONSTANTS:
         lines.append("")
     body: dict[str, str] = {}  # each name of the class body, to its DSDL name
+    attributes = attribute_names(key, section)
 
     def claim(attribute: str, dsdl: str, line: int | None) -> str:
         other = body.setdefault(attribute, dsdl)
@@ -469,7 +482,7 @@ def _class_source(key: str, p: Plan) -> list[str]:
 
     for c in section.constants:
         kind = "float" if c.type.kind == "float" else "bool" if c.type.kind == "bool" else "int"
-        constant = claim(attribute_name(c.name), c.name, c.line)
+        constant = claim(attributes[c.name], c.name, c.line)
         lines.append(f"    {constant}: ClassVar[{kind}] = {_literal(c.value)}")
         if c.comment:
             lines += _doc(c.comment, "    ")
@@ -489,7 +502,7 @@ def _class_source(key: str, p: Plan) -> list[str]:
         if _names(default) & body.keys():  # an attribute above hides a class the default calls
             hidden[a.name] = default
             default = f"_defaults[{a.name!r}]"
-        attribute = claim(attribute_name(a.name), a.name, a.line)
+        attribute = claim(attributes[a.name], a.name, a.line)
         lines.append(f"    {attribute}: {annotation} = {default}")
         if a.comment:
             lines += _doc(a.comment, "    ")
@@ -504,9 +517,26 @@ def _names(expression: str) -> set[str]:
     return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name)}
 
 
-def attribute_name(name: str) -> str:
-    """The Python attribute of a DSDL field: its name, with ``_`` after a Python keyword."""
-    return f"{name}_" if keyword.iskeyword(name) else name
+def attribute_names(key: str, section: Section) -> dict[str, str]:
+    """The Python attribute of each constant and named field of the section of ``key`` (of
+    each member of a union), by DSDL name.
+
+    A name that is no Python keyword is kept as it is; a keyword takes ``_`` after it, and
+    more while that is a name of the class already (another field or constant, or one of
+    `HAND_CONSTANTS`). So ``class`` and ``class_`` in one type are ``class__`` and
+    ``class_``: every value keeps an attribute of its own.
+    """
+    names = [c.name for c in section.constants] + [a.name for a in section.fields if a.name]
+    taken = {n for n in names if not keyword.iskeyword(n)}
+    taken |= {constant for constant, _, _ in HAND_CONSTANTS.get(key, ())}
+    result: dict[str, str] = {}
+    for name in names:
+        attribute = name
+        while keyword.iskeyword(attribute) or (attribute != name and attribute in taken):
+            attribute += "_"
+        taken.add(attribute)
+        result[name] = attribute
+    return result
 
 
 _MEMBER = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")

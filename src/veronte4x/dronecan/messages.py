@@ -84,7 +84,6 @@ __all__ = [
     "HardwareVersion",
     "Health",
     "IntegerValue",
-    "Message",  # old name, kept as an alias
     "Mode",
     "NodeStatus",
     "NumericValue",
@@ -125,6 +124,3 @@ HandNamedMessage: TypeAlias = (
 """Any top-level message, request or response class of this module: the types veronte4x
 named by hand before the DSDL compiler (every other type is in `veronte4x.dronecan.standard`;
 a Veronte message is a `veronte4x.codec.Message`)."""
-
-Message: TypeAlias = HandNamedMessage  # old name, kept as an alias
-"""`HandNamedMessage` under its earlier name, kept for code that imports it."""

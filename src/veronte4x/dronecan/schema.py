@@ -71,11 +71,14 @@ class Array:
 
 @dataclass(frozen=True)
 class StructField:
-    """One field of a struct: its DSDL name (empty for void), type and optional enum."""
+    """One field of a struct: its attribute (empty for void), type, optional enum, and its
+    name in the DSDL (``class`` for the attribute ``class_``; the rule is that of
+    `veronte4x.dronecan.generate.attribute_names`)."""
 
     name: str
     type: Scalar | Array | Struct | Union
     enum: builtins.type | None = None
+    dsdl_name: str = ""
 
 
 @dataclass(frozen=True)
@@ -94,7 +97,8 @@ class Struct:
 
 @dataclass(frozen=True)
 class Member:
-    """One member of a union: its DSDL name, its type, and the Python class that holds it.
+    """One member of a union: its name (a Python keyword with ``_``), its type, the Python
+    class that holds it, and its name in the DSDL.
 
     The class has a single field ``value`` unless the member type is a struct, in which case
     the class is that struct's own class.
@@ -103,6 +107,7 @@ class Member:
     name: str
     type: Scalar | Array | Struct
     cls: builtins.type
+    dsdl_name: str = ""
 
 
 @dataclass(frozen=True)

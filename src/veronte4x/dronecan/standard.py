@@ -192,15 +192,6 @@ class Fix2Mode(enum.IntEnum):
     PPP = 3
 
 
-class SubMode(enum.IntEnum):
-    """DSDL constants ``SUB_MODE_*``."""
-
-    DGPS_OTHER = 0
-    DGPS_SBAS = 1
-    RTK_FLOAT = 0
-    RTK_FIXED = 1
-
-
 class State(enum.IntEnum):
     """DSDL constants ``STATE_*``."""
 
@@ -1006,7 +997,7 @@ class Fix2(HtmlDisplay):
     sats_used: int = 0
     status: Fix2Status = Fix2Status(0)
     mode: Fix2Mode | int = 0
-    sub_mode: SubMode | int = 0
+    sub_mode: int = 0
     covariance: tuple[float, ...] = ()
     """Position and velocity covariance. Units are"""
     pdop: float = 0.0
@@ -2502,7 +2493,6 @@ __all__ = [
     'StatusExtended',
     'StatusFlag',
     'StringValue',
-    'SubMode',
     'Targetted',
     'Temperature',
     'TemperatureErrorFlag',
@@ -2635,7 +2625,6 @@ ENUMS: dict[tuple[str, str], type] = {
     ('uavcan.equipment.gnss.Fix2', 'gnss_time_standard'): Fix2GnssTimeStandard,
     ('uavcan.equipment.gnss.Fix2', 'status'): Fix2Status,
     ('uavcan.equipment.gnss.Fix2', 'mode'): Fix2Mode,
-    ('uavcan.equipment.gnss.Fix2', 'sub_mode'): SubMode,
     ('uavcan.equipment.ice.reciprocating.Status', 'state'): State,
     ('uavcan.equipment.indication.SingleLightCommand', 'light_id'): LightId,
     ('uavcan.equipment.range_sensor.Measurement', 'sensor_type'): SensorType,

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.crc import signature_seed
-from veronte4x.dronecan.generate import attribute_name, keys
+from veronte4x.dronecan.generate import attribute_names, keys
 from veronte4x.dronecan.parser import (
     ArrayType,
     Attribute,
@@ -97,14 +97,16 @@ class _Builder:
         d = self.definitions[full_name]
         section = d.sections[keys(d).index(key)]
         built: Struct | Union
+        attributes = attribute_names(key, section)
         if section.union:
             built = Union(
                 key,
                 tuple(
                     Member(
-                        attribute_name(a.name),
+                        attributes[a.name],
                         self._member_type(d, a.type, a.line),
                         cls,
+                        a.name,
                     )
                     for a, cls in zip(section.fields, self.members[key], strict=True)
                 ),
@@ -115,9 +117,10 @@ class _Builder:
                 self.classes[key],
                 tuple(
                     StructField(
-                        attribute_name(a.name),
+                        attributes.get(a.name, ""),
                         self._type(d, a.type, a.line),
                         self.enums.get((key, a.name)),
+                        a.name,
                     )
                     for a in section.fields
                 ),
@@ -236,13 +239,14 @@ def text_attributes(
         for key, section in zip(keys(d), d.sections, strict=True):
             if key not in classes:
                 continue
+            attributes = attribute_names(key, section)
             for index, a in enumerate(section.fields):
                 if not test(a):
                     continue
                 if section.union:
                     found.setdefault(members[key][index], set()).add("value")
                 else:
-                    found.setdefault(classes[key], set()).add(attribute_name(a.name))
+                    found.setdefault(classes[key], set()).add(attributes[a.name])
     return {cls: frozenset(names) for cls, names in found.items()}
 
 

@@ -294,7 +294,3 @@ def types_or_default(types: TypeSet | None, where: str) -> TypeSet:
     if not isinstance(types, TypeSet):
         raise argument_type_error(where, "types", "a TypeSet", types)
     return types
-
-
-resolve = types_or_default  # old name, kept as an alias
-"""`types_or_default` under its earlier name, kept for code that imports it from here."""

@@ -57,10 +57,6 @@ def decode_dbc_frames(
     tables.add_records(errors)
 
 
-decode_frames = decode_dbc_frames  # old name, kept as an alias
-"""`decode_dbc_frames` under its earlier name, kept for code that imports it from here."""
-
-
 def _decode_group(
     frames: FrameColumns, rows: npt.NDArray[np.int64], entry: DbcEntry, tables: Tables
 ) -> list[tuple[int, Record]]:
