@@ -84,8 +84,9 @@ def open_bus(
     return bus
 
 
-RECEIVE_BUFFER = 4 * 1024 * 1024
-"""Bytes of receive buffer `widen_receive_buffer` asks for: a few thousand frames."""
+RECEIVE_BUFFER = 16 * 1024 * 1024
+"""Bytes of receive buffer `widen_receive_buffer` asks for: some 40,000 frames on
+``udp_multicast`` (4.5 s of a full 1 Mbit/s bus), where the system grants it."""
 
 
 SO_RCVBUFFORCE = 33
