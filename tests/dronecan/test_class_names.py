@@ -14,6 +14,7 @@ from __future__ import annotations
 import itertools
 import json
 import os
+import pickle
 import subprocess
 import sys
 import tempfile
@@ -198,6 +199,23 @@ def test_a_later_load_never_renames_a_loaded_class(tmp_path: Path) -> None:
     for types in (first, second):
         messages = [types["ardupilot.gnss.Status"](5, True), types["com.xacti.GnssStatus"](9, 1)]
         _decoded_everywhere(messages, types, tmp_path)
+
+
+def test_a_pickled_set_keeps_its_class_names(tmp_path: Path) -> None:
+    """A set goes to another process (Dask workers) by its directories, loaded there again
+    call by call: loaded in one call, ardupilot's would be ``ArdupilotGnssStatus``."""
+    ardupilot, com = _gnss(tmp_path)
+    types = STANDARD.with_dsdl(ardupilot).with_dsdl(com)
+    assert types.loads == ((ardupilot.resolve(),), (com.resolve(),))
+    script = (
+        "import pickle, sys\n"
+        "types = pickle.loads(sys.stdin.buffer.read())\n"
+        "print(types['ardupilot.gnss.Status'].__name__, types['com.xacti.GnssStatus'].__name__)"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", script], input=pickle.dumps(types), capture_output=True, check=False
+    )
+    assert (result.returncode, result.stdout) == (0, b"GnssStatus XactiGnssStatus\n")
 
 
 def test_cli_decodes_both_gnss_statuses(tmp_path: Path) -> None:

@@ -71,6 +71,9 @@ class TypeSet:
         by_class: The `TypeCodec` of each message, request and response class.
         classes: Class of each key (full name, ``.Request``/``.Response`` for a service).
         roots: The vendor root namespace directories loaded, in order.
+        loads: The same, as they were loaded: one tuple per `with_dsdl` (class names
+            depend on what was loaded together; a set rebuilt in another process loads
+            them the same way, so its classes have the same names).
         definitions: Every parsed definition, by full name.
         text_fields: The attributes of each class that hold text
             (`veronte4x.dronecan.types.is_text`).
@@ -83,7 +86,7 @@ class TypeSet:
         enums: Mapping[tuple[str, str], type],
         members: Mapping[str, tuple[type, ...]],
         definitions: Mapping[str, Definition],
-        roots: tuple[Path, ...],
+        loads: tuple[tuple[Path, ...], ...],
         names: Mapping[str, str],
     ) -> None:
         self.codecs = codecs
@@ -92,7 +95,8 @@ class TypeSet:
         self._enums = dict(enums)
         self._members = dict(members)
         self.definitions: Mapping[str, Definition] = _types.MappingProxyType(dict(definitions))
-        self.roots = roots
+        self.loads = loads
+        self.roots = tuple(root for load in loads for root in load)
         self.by_class: Mapping[type, TypeCodec] = _types.MappingProxyType(
             {c.data_type.schema.cls: c for c in codecs}
         )
@@ -134,7 +138,7 @@ class TypeSet:
     def __reduce__(self) -> tuple[Any, ...]:
         # Classes compiled at run time do not pickle: another process loads the same
         # directories again (Dask workers must see them, as they see the output).
-        return (_load, (tuple(str(r) for r in self.roots),))
+        return (_load, (tuple(tuple(str(r) for r in load) for load in self.loads),))
 
     def with_dsdl(
         self, *root_namespace_dirs: str | bytes | os.PathLike[str] | os.PathLike[bytes]
@@ -168,8 +172,8 @@ class TypeSet:
         found = data_types(definitions, new, classes, enums, members)
         _check_ids(self.data_types, found)
         codecs = self.codecs + tuple(TypeCodec(t) for t in found)
-        all_roots = (*self.roots, *new_roots)
-        return TypeSet(codecs, classes, enums, members, definitions, all_roots, names)
+        loads = (*self.loads, tuple(new_roots))
+        return TypeSet(codecs, classes, enums, members, definitions, loads, names)
 
 
 _STANDARD_ROOT = (
@@ -236,9 +240,13 @@ def _compile(
     return classes, enums, members, p.names
 
 
-def _load(roots: tuple[str, ...]) -> TypeSet:
-    """The standard set with ``roots`` (how a set is rebuilt in another process)."""
-    return _STANDARD.with_dsdl(*roots)
+def _load(loads: tuple[tuple[str, ...], ...]) -> TypeSet:
+    """The standard set with ``loads``, one `TypeSet.with_dsdl` each (how a set is rebuilt
+    in another process)."""
+    types = _STANDARD
+    for roots in loads:
+        types = types.with_dsdl(*roots)
+    return types
 
 
 _STANDARD = TypeSet(
