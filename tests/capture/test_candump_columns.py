@@ -181,3 +181,16 @@ def test_the_human_view_takes_dated_lines_with_their_exact_times() -> None:
     ]  # fmt: skip
     assert found.micros.tolist() == expected
     assert found.stamp.tolist() == [m / 1e6 for m in found.micros.tolist()]
+
+
+def test_a_line_with_an_empty_interface_is_a_bad_line_on_every_path(tmp_path: Path) -> None:
+    """``(t)  ID#DATA`` (two spaces, no interface name) is no frame for the per-frame reader;
+    the column parser's fixed layout took it as a frame on interface ''."""
+    path = tmp_path / "capture.log"
+    path.write_bytes(b"(1.0)  123#00\n(2.0)  00000000#\n(3.0) can0 123#00\n")
+    expected = _expected(path)
+    assert [type(item) for item in open_frames(path)] == [BadLine, BadLine, Frame]
+    assert _got(read_frames(path)) == expected
+    for batch_bytes in (1, 20, 300):
+        batches = [batch.frames for batch in read_batches(path, batch_bytes)]
+        assert _got(concat(batches)) == expected

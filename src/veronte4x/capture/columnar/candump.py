@@ -204,8 +204,9 @@ def _layout(
         if not text.startswith(b"(") or close < 0 or space < 0:
             continue
         digits = len(stamp) - stamp.count(b".")
-        if stamp.replace(b".", b"", 1).isdigit() and digits <= 16 and space - close - 2 <= 16:
-            return _Layout(len(stamp), stamp.find(b"."), space - close - 2)
+        name = space - close - 2  # an empty name is no frame (the per-frame reader's rule)
+        if stamp.replace(b".", b"", 1).isdigit() and digits <= 16 and 0 < name <= 16:
+            return _Layout(len(stamp), stamp.find(b"."), name)
     return None
 
 
@@ -279,8 +280,9 @@ def _fixed_lines(
 
 
 def _plain_name(name: str) -> bool:
-    """An interface name `_fixed_lines` takes: printable ASCII, no space and no "#"."""
-    return all(33 <= ord(c) <= 126 and c != "#" for c in name)
+    """An interface name `_fixed_lines` takes: printable ASCII, no space and no "#", not
+    empty."""
+    return bool(name) and all(33 <= ord(c) <= 126 and c != "#" for c in name)
 
 
 @dataclass
