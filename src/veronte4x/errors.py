@@ -238,6 +238,28 @@ class SourceError(Veronte4xError, ValueError):
     """
 
 
+class NotACaptureError(SourceError):
+    """A file whose lines are all bad: none is a CAN frame, so it is no capture at all.
+
+    Every command that reads a capture file refuses one the same way (exit code 2).
+
+    Attributes:
+        path: The file's name as given (``standard input`` for ``-``).
+        lines: Its lines, none of them a CAN frame.
+    """
+
+    def __init__(self, path: str, lines: int) -> None:
+        from veronte4x.words import counted
+
+        self.path = path
+        self.lines = lines
+        super().__init__(
+            f"{path} is not a capture of any known format: none of its "
+            f"{counted(lines, 'line')} is a CAN frame; give candump text or a log "
+            "python-can reads"
+        )
+
+
 class MissingExtraError(Veronte4xError, ImportError):
     """An optional dependency is not installed; the message names the extra to install.
 

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.align import DIRECTIONS, AlignError, write_csv
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
+from veronte4x.errors import NotACaptureError
 from veronte4x.words import counted
 
 
@@ -40,6 +42,7 @@ def run_csv(args: argparse.Namespace, bus_map: BusMap, out: str) -> int:
     if (args.every is None) == (args.on is None):
         return _usage("--to csv needs one of --every PERIOD (10ms) or --on TABLE")
     tables = capture.read_tables(args.files, bus_map, args.channel, args.time, dbc=args.dbc)
+    _refuse_no_frame(tables, ", ".join(args.files))
     try:
         aligned = capture.align(
             tables, on=args.on, every=args.every, tolerance=args.tolerance, direction=args.direction
@@ -50,6 +53,21 @@ def run_csv(args: argparse.Namespace, bus_map: BusMap, out: str) -> int:
     rows = counted(aligned.num_rows, "row")
     print(f"veronte4x: {rows}, {counted(columns, 'column')}, in {out}", file=sys.stderr)
     return EXIT_OK
+
+
+def _refuse_no_frame(tables: dict[str, Any], name: str) -> None:
+    """Refuse captures whose lines are all bad, as every command does.
+
+    Raises:
+        NotACaptureError: Not one line of them is a CAN frame.
+    """
+    errors = tables.get("errors")
+    if errors is None or any(t.num_rows for kind, t in tables.items() if kind != "errors"):
+        return
+    kinds = errors["error"].cast("string").to_pylist()
+    bad = kinds.count("bad line")
+    if bad and all(kind in ("bad line", "truncated") for kind in kinds):
+        raise NotACaptureError(name, bad)
 
 
 def _usage(message: str) -> int:

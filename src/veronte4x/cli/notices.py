@@ -12,7 +12,7 @@ from collections.abc import Iterable, Iterator
 
 from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.capture.records import Record
-from veronte4x.errors import SourceError
+from veronte4x.errors import NotACaptureError
 from veronte4x.words import counted
 
 
@@ -47,7 +47,7 @@ class InputWatch:
         whatever ``--on-error`` does with bad frames).
 
         Raises:
-            SourceError: At the end, when every record was a bad line.
+            NotACaptureError: At the end, when every record was a bad line.
         """
         for record in records:
             if record.error == "truncated":
@@ -63,7 +63,7 @@ class InputWatch:
         """Pass frames and bad lines through; tell a `Truncation`.
 
         Raises:
-            SourceError: At the end, when every item was a bad line.
+            NotACaptureError: At the end, when every item was a bad line.
         """
         for item in items:
             if isinstance(item, Truncation):
@@ -77,11 +77,7 @@ class InputWatch:
 
     def _check(self) -> None:
         if self.path is not None and self.bad and not self.frames:
-            raise SourceError(
-                f"{self._name} is not a capture of any known format: none of its "
-                f"{counted(self.bad, 'line')} is a CAN frame; give candump text or a log "
-                "python-can reads"
-            )
+            raise NotACaptureError(self._name, self.bad)
 
     def note(self) -> str | None:
         """A warning when most of the capture's lines are not frames, else None."""

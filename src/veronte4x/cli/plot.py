@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, open_records
+from veronte4x.errors import SourceError
 from veronte4x.extras import require
 
 
@@ -27,7 +29,9 @@ def add_parser(commands: Any) -> None:
         "esc: speed, current, voltage and temperatures of each DroneCAN ESC",
     )
     parser.add_argument(
-        "--output", metavar="FILE", help="write an image (.png, .svg, .pdf) instead of a window"
+        "--output",
+        metavar="FILE",
+        help="write an image (.png, .svg, .pdf...; no suffix: .png) instead of a window",
     )
     add_capture_options(parser)
     parser.set_defaults(run=run, interface=None, can_config=None)
@@ -36,7 +40,8 @@ def add_parser(commands: Any) -> None:
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Draw the figure and save or show it; with nothing to draw, say so and draw nothing."""
     matplotlib = require("matplotlib", "plot", "veronte4x plot")
-    if args.output:
+    output = _output_path(args.output, matplotlib) if args.output else None
+    if output:
         matplotlib.use("Agg")
     watch = InputWatch(args.file)
     records = watch.records(open_records(args, bus_map))
@@ -55,9 +60,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         if data.empty:
             return _nothing(watch, name, "no Score or Status frame of the arbiter")
         figure = draw_timeline(data)
-    if args.output:
-        figure.savefig(args.output)
-        print(f"veronte4x: wrote {args.output}", file=sys.stderr)
+    if output:
+        figure.savefig(output)
+        print(f"veronte4x: wrote {output}", file=sys.stderr)
         return EXIT_OK
     import matplotlib.pyplot as plt
     from matplotlib.backends.registry import BackendFilter, backend_registry
@@ -69,6 +74,29 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     plt.figure(figure)
     plt.show()
     return EXIT_OK
+
+
+def _output_path(name: str, matplotlib: Any) -> str:
+    """The file ``--output`` writes: ``name``, or ``name.png`` with no suffix (matplotlib's
+    ``savefig.format``), checked before any frame is read.
+
+    Raises:
+        SourceError: A suffix matplotlib writes no image as, or a directory that is not there.
+    """
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    path = Path(name)
+    kind = path.suffix.removeprefix(".").lower()
+    if not kind:
+        path = path.with_name(f"{path.name}.{matplotlib.rcParams['savefig.format']}")
+    elif kind not in FigureCanvasBase.get_supported_filetypes():
+        known = ", ".join(f".{k}" for k in sorted(FigureCanvasBase.get_supported_filetypes()))
+        raise SourceError(
+            f"--output {name}: matplotlib writes no .{kind} image; give one of {known}"
+        )
+    if not path.parent.is_dir():
+        raise SourceError(f"--output {name}: no directory {path.parent}")
+    return str(path)
 
 
 def _nothing(watch: InputWatch, name: str, what: str) -> int:

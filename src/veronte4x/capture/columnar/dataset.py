@@ -52,7 +52,7 @@ from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.datasets import CAPTURE, capture_directory, resolved, table_file
 from veronte4x.capture.source import STDIN
-from veronte4x.errors import SourceError
+from veronte4x.errors import NotACaptureError, SourceError
 from veronte4x.progress import Bar
 from veronte4x.words import counted
 
@@ -145,7 +145,7 @@ def convert_file(
         writer = _Writer(Path(out_dir), name)
         decoder = StreamDecoder(bus_map, channel, per_frame)
         clock = Clock(time_form, channel)
-        frames = 0
+        frames = bad = 0
         truncated.clear()
         try:
             for batch in ahead(read_batches(name, batch_bytes), decoder.prepare):
@@ -155,10 +155,13 @@ def convert_file(
                 for kind, (table, _) in clock(tables).items():
                     if kind == "errors":
                         truncated.extend(_truncations(table))
+                        bad += _bad_lines(table)
                     writer.write(kind, table)
                 if progress is not None and batch.position is not None:
                     progress(batch.position)
             decoder.finish()
+            if bad and not frames:
+                raise NotACaptureError(name, bad)
         except TooManySessions as signal:
             writer.abort()
             per_frame.append(signal.channel)
@@ -168,6 +171,12 @@ def convert_file(
             raise
         records = writer.commit()
         return Summary(1, frames, records, time.perf_counter() - started, truncated)
+
+
+def _bad_lines(errors: pa.Table) -> int:
+    """The ``bad line`` rows of an ``errors`` table."""
+    count: int = pc.sum(pc.equal(errors["error"].cast(pa.string()), "bad line")).as_py() or 0
+    return count
 
 
 def _truncations(errors: pa.Table) -> list[str]:
