@@ -65,6 +65,10 @@ CPython does not specialise attribute lookups on a module that has one: every
 ``codec.decode`` call would pay 10-25 ns more, up to a twelfth of a frame's decode.
 """
 decode = DEFAULT_CODEC.decode
+"""Decode one Veronte frame's data bytes with `DEFAULT_CODEC`:
+``decode(data, *, sender, allow_excess=False)``, as `Codec.decode` does (its arguments,
+result and errors)."""
+decode.__module__, decode.__qualname__ = __name__, "decode"  # where it imports from
 encode = DEFAULT_CODEC.encode
 
 

@@ -440,6 +440,11 @@ class Codec:
         source = "\n".join(functions + lines) + "\n"
         compile_source(source, namespace, "decode Codec fast")
         decode: Callable[..., Message] = namespace["decode"]
+        # What help(), Jupyter's ``?`` and tracebacks show: the method it stands for.
+        method = Codec.decode if sender is None else Codec.decoder
+        decode.__module__ = __name__
+        decode.__qualname__ = method.__qualname__
+        decode.__doc__ = method.__doc__
         return decode
 
     def decode(self, data: BytesLike, *, sender: Sender, allow_excess: bool = False) -> Message:
