@@ -8,7 +8,7 @@ import math
 import struct
 from pathlib import Path
 
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from veronte4x import capture, codec, dronecan
@@ -80,7 +80,6 @@ def test_the_sign_of_zero_never_leaks_to_the_next_value(tmp_path: Path) -> None:
 
 
 @given(st.lists(st.floats(width=32) | st.sampled_from([0.0, -0.0]), min_size=1, max_size=50))
-@settings(deadline=None)
 def test_the_shortest_form_reads_back_bit_for_bit_whatever_came_before(
     values: list[float],
 ) -> None:

@@ -50,9 +50,7 @@ def _bits(value: Any) -> Any:
 
 
 @given(data=st.data())
-@settings(
-    max_examples=3, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
-)
+@settings(max_examples=3, suppress_health_check=[HealthCheck.function_scoped_fixture])
 def test_json_lines_of_every_standard_type_are_capture_read_and_dronecan_values(
     tmp_path: Path, data: st.DataObject
 ) -> None:
