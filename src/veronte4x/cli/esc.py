@@ -37,6 +37,7 @@ from veronte4x.cli.fleet import (
 )
 from veronte4x.cli.options import add_bus_options, add_dsdl_option, bus_settings
 from veronte4x.client import indices, operations, paramfile, parmfile
+from veronte4x.client.commander import STOP_REPEATS
 from veronte4x.client.errors import (
     ClientError,
     InvalidRequestError,
@@ -54,16 +55,20 @@ from veronte4x.client.indices import EscIndexError, OwnNodeIdError
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation
 from veronte4x.client.params import ParameterInfo, plain
-from veronte4x.client.protocol import DEFAULT_NODE_ID, Received
-from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor, spin_indices
+from veronte4x.client.protocol import DEFAULT_NODE_ID
+from veronte4x.client.spin import (
+    DEFAULT_SILENCE,
+    AllowUnknown,
+    Spin,
+    SpinArgumentError,
+    SpinStoppedError,
+)
 from veronte4x.dronecan.messages import (
-    EscStatus,
     GetNodeInfoResponse,
     IntegerValue,
     Opcode,
     SoftwareVersionFlag,
 )
-from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError
 from veronte4x.extras import require
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
@@ -566,7 +571,7 @@ def _check_indices(
             allow_unknown=_unknown_allowed(args, survey),
         )
     except EscIndexError as error:
-        advice = _unknown_advice(error, survey)
+        advice = _unknown_advice(error)
         if error.shared:
             advice.append("add --allow-shared-index to give it anyway")
         raise InvalidRequestError(error.line(*advice)) from None
@@ -861,91 +866,74 @@ def _unknown_allowed(args: argparse.Namespace, survey: indices.IndexSurvey) -> l
     return list(survey.unread) if given.every else list(given.ids)
 
 
-def _unknown_advice(error: EscIndexError, survey: indices.IndexSurvey) -> list[str]:
+def _unknown_advice(error: EscIndexError) -> list[str]:
     """What to do about the nodes of ``error`` whose esc_index cannot be read: another
     ``--node-id`` for one that uses the tool's, the option that accepts them."""
     if not error.unread:
         return []
     ids = ",".join(map(str, error.unread))
     drive = "it drives" if len(error.unread) == 1 else "they drive"
-    own = any(isinstance(survey.unread[n], OwnNodeIdError) for n in error.unread)
-    return [OWN_ID_ADVICE] * own + [f"add --allow-unknown-index {ids} if {drive} no motor"]
+    return [OWN_ID_ADVICE] * error.own + [f"add --allow-unknown-index {ids} if {drive} no motor"]
 
 
 def _interrupt(signum: int, frame: object) -> None:
     raise KeyboardInterrupt
 
 
+def _zeros(spin: Spin) -> str:
+    indices_sent = ", ".join(str(i) for i in sorted(spin.setpoint))
+    return f"zero throttle sent to esc_index {indices_sent} ({STOP_REPEATS} times)"
+
+
 def _spin(client: BusClient, args: argparse.Namespace) -> int:
     if not args.yes:
         _error("esc spin moves motors: add --yes to confirm that they are free to turn")
         return EXIT_USAGE
-    if not -1.0 <= args.throttle <= 1.0:
-        raise InvalidRequestError(f"--throttle {args.throttle:g} is outside -1..1")
-    if not 0 < args.duration < float("inf"):
-        raise InvalidRequestError(
-            f"--duration {args.duration:g} must be a finite number of seconds above 0"
-        )
-    for option in ("silence", "rate", "watchdog"):
-        if not 0 < getattr(args, option) < float("inf"):
-            raise InvalidRequestError(f"--{option} {getattr(args, option):g} must be above 0")
     if any(given.every for given in args.nodes):
         raise InvalidRequestError("esc spin needs the nodes named: 'all' is refused")
-    nodes: list[int] = []
-    for given in args.nodes:
-        nodes += [n for n in given.ids if n not in nodes]
-    survey = client.run(indices.survey(client.protocol, nodes))
+    given = args.allow_unknown_index
+    allow: AllowUnknown = () if given is None else "all" if given.every else given.ids
+    started: list[Spin] = []
+
+    def start(spin: Spin) -> None:
+        started.append(spin)
+        signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
+
     try:
-        escs = spin_indices(nodes, survey, _unknown_allowed(args, survey))
+        result = client.spin(
+            [n for given in args.nodes for n in given.ids],
+            args.throttle,
+            args.duration,
+            rate=args.rate,
+            watchdog=args.watchdog,
+            silence=args.silence,
+            max_temperature=args.max_temperature,
+            max_current=args.max_current,
+            allow_unknown=allow,
+            on_start=start,
+        )
+    except SpinArgumentError as error:
+        option = "--" + error.argument.replace("_", "-")
+        raise InvalidRequestError(error.line(option)) from None
     except EscIndexError as error:
-        raise InvalidRequestError(error.line(*_unknown_advice(error, survey))) from None
-    setpoint = {index: args.throttle for index in escs.values()}
-    signal.signal(signal.SIGTERM, _interrupt)  # `kill` stops the motors too, like Ctrl-C
-    rpm: dict[int, list[int]] = {node: [] for node in nodes}
-    monitor = SpinMonitor(
-        nodes,
-        client.clock(),
-        silence=args.silence,
-        max_temperature=args.max_temperature,
-        max_current=args.max_current,
-    )
-    stream = client.command_stream(args.rate, args.watchdog)
-    reason: str | None = None
-    interrupted = False
-    try:
-        with stream:
-            end = client.clock() + args.duration
-            while client.clock() < end and reason is None:
-                stream.set(setpoint)
-                for event in client.spin_once(0.02):
-                    if isinstance(event, Received):
-                        monitor.observe(event.transfer)
-                        _telemetry(event.transfer, rpm)
-                reason = monitor.check(client.clock())
+        raise InvalidRequestError(error.line(*_unknown_advice(error))) from None
+    except SpinStoppedError as error:
+        _error(f"{error.reason}; every motor stopped: {_zeros(started[0])}")
+        return EXIT_FINDINGS if error.over_limit else EXIT_NO_ANSWER
     except KeyboardInterrupt:
-        interrupted = True
-    zeros = (
-        f"zero throttle sent to esc_index {', '.join(str(i) for i in sorted(setpoint))} "
-        f"({stream.STOP_REPEATS} times)"
-    )
-    if interrupted:
-        _error(f"interrupted; {zeros}")
+        if not started:
+            raise
+        _error(f"interrupted; {_zeros(started[0])}")
         return EXIT_INTERRUPTED
-    if reason is not None:
-        _error(f"{reason}; every motor stopped: {zeros}")
-        return EXIT_FINDINGS if monitor.over_limit else EXIT_NO_ANSWER
-    settle = time.monotonic() + 0.2  # let the zero throttle reach the ESCs' telemetry
-    while time.monotonic() < settle:
-        client.spin_once(0.02)
     summary = [
         {
-            "node_id": node,
-            "esc_index": escs[node],
+            "node_id": node.node_id,
+            "esc_index": node.esc_index,
             "throttle": args.throttle,
-            "peak_rpm": max(rpm[node], key=abs, default=None),
-            "telemetry": len(rpm[node]),
+            "peak_rpm": node.peak_rpm,
+            "telemetry": node.telemetry,
         }
-        for node in nodes
+        for node in result.nodes
     ]
     if args.json:
         _print_json(summary)
@@ -956,11 +944,5 @@ def _spin(client: BusClient, args: argparse.Namespace) -> int:
                 f"node {row['node_id']} (esc_index {row['esc_index']}): throttle "
                 f"{args.throttle:g} for {args.duration:g} s, {peak}; zero throttle sent"
             )
-    _error(zeros)
+    _error(_zeros(started[0]))
     return EXIT_OK
-
-
-def _telemetry(transfer: Transfer, rpm: dict[int, list[int]]) -> None:
-    """Keep the rpm of an esc.Status from a spun node."""
-    if isinstance(transfer.message, EscStatus) and transfer.source_node_id in rpm:
-        rpm[transfer.source_node_id].append(transfer.message.rpm)

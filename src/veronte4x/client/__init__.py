@@ -39,7 +39,15 @@ from veronte4x.client.protocol import (
     Received,
     StatusSeen,
 )
-from veronte4x.client.spin import DEFAULT_SILENCE, SpinMonitor
+from veronte4x.client.spin import (
+    DEFAULT_SILENCE,
+    Spin,
+    SpinArgumentError,
+    SpinMonitor,
+    SpinResult,
+    SpinStoppedError,
+    SpunNode,
+)
 from veronte4x.node.requests import Answered, Pending, Requester, TimedOut, answers
 from veronte4x.node.transfer_ids import TransferIds
 
@@ -71,7 +79,12 @@ __all__ = [
     "Received",
     "RejectedError",
     "Requester",
+    "Spin",
+    "SpinArgumentError",
     "SpinMonitor",
+    "SpinResult",
+    "SpinStoppedError",
+    "SpunNode",
     "StatusSeen",
     "TimedOut",
     "TransferIds",

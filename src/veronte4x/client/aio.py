@@ -30,12 +30,12 @@ Examples:
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
 import can
 
-from veronte4x.client import operations
+from veronte4x.client import indices, operations
 from veronte4x.client.adapter import (
     MAX_WAIT,
     BusAdapter,
@@ -56,6 +56,15 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation, OperationBatch, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import Event
+from veronte4x.client.spin import (
+    DEFAULT_SILENCE,
+    SETTLE,
+    STEP,
+    AllowUnknown,
+    Spin,
+    SpinResult,
+    spin_plan,
+)
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, RawCommand, Value
 
 __all__ = ["AsyncBusClient", "AsyncCommandStream"]
@@ -239,6 +248,48 @@ class AsyncBusClient(BusAdapter):
     ) -> AsyncCommandStream:
         """An `AsyncCommandStream` from this client (start it with ``async with``)."""
         return AsyncCommandStream(self, Commander(rate, watchdog))
+
+    async def spin(
+        self,
+        nodes: Iterable[int],
+        throttle: float,
+        duration: float,
+        *,
+        rate: float = DEFAULT_RATE,
+        watchdog: float = DEFAULT_WATCHDOG,
+        silence: float = DEFAULT_SILENCE,
+        max_temperature: float | None = None,
+        max_current: float | None = None,
+        allow_unknown: AllowUnknown = (),
+        on_start: Callable[[Spin], object] | None = None,
+    ) -> SpinResult:
+        """Spin motors, watching them, then zero throttle (see `BusClient.spin`: the same
+        checks, refusals, limits and errors); a cancellation sends zero throttle
+        `AsyncCommandStream.STOP_REPEATS` times and nothing after, and goes on."""
+        plan = spin_plan(
+            nodes,
+            throttle,
+            duration,
+            rate=rate,
+            watchdog=watchdog,
+            silence=silence,
+            max_temperature=max_temperature,
+            max_current=max_current,
+            allow_unknown=allow_unknown,
+        )
+        found = await self.run(indices.survey(self.protocol, plan.nodes))
+        spin = plan.start(found, self.clock())
+        if on_start is not None:
+            on_start(spin)
+        async with self.command_stream(plan.rate, plan.watchdog) as stream:
+            while spin.going(self.clock()):
+                stream.set(spin.setpoint)
+                spin.observe(await self.spin_once(STEP), self.clock())
+        result = spin.result()
+        settle = self.clock() + SETTLE
+        while self.clock() < settle:
+            await self.spin_once(STEP)
+        return result
 
 
 class AsyncCommandStream(StreamBase):

@@ -15,7 +15,7 @@ from typing import Any, TypeVar
 
 import can
 
-from veronte4x.client import operations
+from veronte4x.client import indices, operations
 from veronte4x.client.adapter import (
     MAX_WAIT,
     BusAdapter,
@@ -35,6 +35,15 @@ from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.operations import Operation, OperationBatch, Task
 from veronte4x.client.params import ParameterInfo
 from veronte4x.client.protocol import DEFAULT_NODE_ID, Event, Received
+from veronte4x.client.spin import (
+    DEFAULT_SILENCE,
+    SETTLE,
+    STEP,
+    AllowUnknown,
+    Spin,
+    SpinResult,
+    spin_plan,
+)
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, Value
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer
@@ -311,6 +320,80 @@ class BusClient(BusAdapter):
     ) -> CommandStream:
         """A `CommandStream` from this client (start it with ``with``)."""
         return CommandStream(self, Commander(rate, watchdog))
+
+    def spin(
+        self,
+        nodes: Iterable[int],
+        throttle: float,
+        duration: float,
+        *,
+        rate: float = DEFAULT_RATE,
+        watchdog: float = DEFAULT_WATCHDOG,
+        silence: float = DEFAULT_SILENCE,
+        max_temperature: float | None = None,
+        max_current: float | None = None,
+        allow_unknown: AllowUnknown = (),
+        on_start: Callable[[Spin], object] | None = None,
+    ) -> SpinResult:
+        """Spin the motors of ``nodes`` at ``throttle`` for ``duration`` seconds, watching
+        them, then zero throttle.
+
+        The arguments are checked before anything is sent (`spin_plan`); then every node's
+        ``esc_index`` is read (`veronte4x.client.indices.survey`) and a spin that would turn
+        a motor not named is refused (`spin_indices`). RawCommand goes out at ``rate`` from a
+        `CommandStream`; every motor gets zero throttle `CommandStream.STOP_REPEATS` times
+        however the spin ends: at its end, when a node falls silent for ``silence`` seconds
+        or reports over ``max_temperature`` (°C) or ``max_current`` (A), or on an exception
+        (KeyboardInterrupt included, which goes on). A spin that ran its course reads the bus
+        `SETTLE` seconds more.
+
+        Args:
+            nodes: The nodes to spin (each once).
+            throttle: The fraction, -1..1.
+            duration: Seconds, finite and above 0.
+            rate: RawCommand per second.
+            watchdog: Seconds after which an unrefreshed setpoint drops to zero.
+            silence: Seconds without esc.Status or NodeStatus from a node that stop it.
+            max_temperature: Stop above this temperature, °C (None: no limit).
+            max_current: Stop above this current, A (None: no limit).
+            allow_unknown: Nodes known to drive no motor whose ``esc_index`` may be
+                unreadable (``"all"``: any such node).
+            on_start: Called with the `Spin` once the indices are known, before the first
+                command (e.g. to route SIGTERM to KeyboardInterrupt).
+
+        Returns:
+            What each node did (its index, peak rpm and esc.Status count).
+
+        Raises:
+            SpinArgumentError: An argument out of range; nothing was sent.
+            EscIndexError: Another motor would turn; no command was sent.
+            NoResponseError: A node to spin did not answer for its ``esc_index``.
+            SpinStoppedError: A node fell silent or reported over a limit; every motor
+                got zero throttle.
+        """
+        plan = spin_plan(
+            nodes,
+            throttle,
+            duration,
+            rate=rate,
+            watchdog=watchdog,
+            silence=silence,
+            max_temperature=max_temperature,
+            max_current=max_current,
+            allow_unknown=allow_unknown,
+        )
+        spin = plan.start(self.run(indices.survey(self.protocol, plan.nodes)), self.clock())
+        if on_start is not None:
+            on_start(spin)
+        with self.command_stream(plan.rate, plan.watchdog) as stream:
+            while spin.going(self.clock()):
+                stream.set(spin.setpoint)
+                spin.observe(self.spin_once(STEP), self.clock())
+        result = spin.result()
+        settle = self.clock() + SETTLE
+        while self.clock() < settle:
+            self.spin_once(STEP)
+        return result
 
 
 class CommandStream(StreamBase):

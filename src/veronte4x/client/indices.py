@@ -45,12 +45,16 @@ class EscIndexError(InvalidRequestError):
         unread: The nodes whose ``esc_index`` could not be read (a tool may accept them
             explicitly).
         shared: Whether an index would be shared (rather than only unknown).
+        own: Whether a node of ``unread`` uses this tool's own node id (`OwnNodeIdError`).
     """
 
-    def __init__(self, problems: Sequence[str], unread: Sequence[int], shared: bool) -> None:
+    def __init__(
+        self, problems: Sequence[str], unread: Sequence[int], shared: bool, own: bool = False
+    ) -> None:
         self.problems = tuple(problems)
         self.unread = tuple(unread)
         self.shared = shared
+        self.own = own
         super().__init__(self.line())
 
     def line(self, *advice: str) -> str:
@@ -74,6 +78,10 @@ class IndexSurvey:
     def nodes(self) -> list[int]:
         """Every node surveyed, by id."""
         return sorted({*self.indices, *self.unread})
+
+    def own_id(self, nodes: Collection[int]) -> bool:
+        """Whether one of ``nodes`` was not asked because it uses the tool's own node id."""
+        return any(isinstance(self.unread.get(n), OwnNodeIdError) for n in nodes)
 
 
 class OwnNodeIdError(InvalidRequestError):
@@ -182,4 +190,4 @@ def check_changes(
             f"({reason(node, survey.unread[node])})"
         )
     if problems:
-        raise EscIndexError(problems, unread, shared)
+        raise EscIndexError(problems, unread, shared, survey.own_id(unread))
