@@ -15,6 +15,7 @@ from veronte4x import client, dronecan
 OLD_NAMES = [
     ("veronte4x.codec", "Kind", "FieldKind"),
     ("veronte4x.codec.fields", "Kind", "FieldKind"),
+    ("veronte4x.codec.compiler", "builder", "slot_builder"),
     ("veronte4x.dronecan", "Frame", "TransferFrame"),
     ("veronte4x.dronecan.frame", "Frame", "TransferFrame"),
     ("veronte4x.dronecan", "Message", "HandNamedMessage"),

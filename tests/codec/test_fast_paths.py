@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from tests.codec.strategies import MESSAGES
 from veronte4x import codec
 from veronte4x.codec import layouts
-from veronte4x.codec.compiler import builder
+from veronte4x.codegen import slot_builder
 
 CODECS = {
     "lsb_first": codec.Codec(),
@@ -177,8 +177,8 @@ def test_no_builder_under_a_frozen_base() -> None:
     class Child(Base):
         y: int
 
-    assert builder(Child) is None
-    made = builder(codec.Score)
+    assert slot_builder(Child) is None
+    made = slot_builder(codec.Score)
     assert made is not None
     probe = made()
     probe.autopilot, probe.score = 1, 2.0

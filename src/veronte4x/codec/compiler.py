@@ -239,12 +239,9 @@ def _namespace(layout: FrameLayout) -> dict[str, Any]:
         namespace["_pack"] = struct.Struct(plan[0]).pack
     for dc_field in _dataclass_fields(layout.message):
         namespace[f"_set_{dc_field.name}"] = _slot_setter(layout.message, dc_field.name)
-    namespace["_builder"] = builder(layout.message)
+    namespace["_builder"] = slot_builder(layout.message)
     return namespace
 
-
-builder = slot_builder
-"""`veronte4x.codegen.slot_builder`, under the name this module has always exported."""
 
 _PER_LAYOUT = re.compile(
     r"\b(_cls|_builder|_derr|_eerr|_f32|_unpack|_unpack_exact|_pack"
@@ -445,7 +442,7 @@ def _decode_source(
     if layout.tail is not None:
         lines.append(f"    f{len(layout.fields) - 1} = _bytes(data[{size}:])")
     # Fill the slots directly: a frozen dataclass's __init__ costs far more (docs/performance.md).
-    if builder(layout.message) is not None:
+    if slot_builder(layout.message) is not None:
         lines.append("    o = _builder()")
         lines += [f"    o.{attr} = {value}" for attr, value in _values(layout)]
         lines.append("    o.__class__ = _cls")
