@@ -10,6 +10,8 @@ from __future__ import annotations
 import asyncio
 import itertools
 import re
+import subprocess
+import sys
 import threading
 import time
 from collections.abc import Iterator
@@ -282,3 +284,25 @@ def test_the_plan_keeps_the_first_of_each_node_and_allows_all_unknown() -> None:
     plan = spin_plan([23, 21, 23], 0, 2, rate=50, watchdog=0.5, allow_unknown="all")
     assert (plan.nodes, plan.allow_unknown, plan.throttle) == ((23, 21), "all", 0.0)
     assert spin_plan([21], 1, 2, rate=50, watchdog=0.5, allow_unknown=[30]).allow_unknown == (30,)
+
+
+@pytest.mark.parametrize(
+    ("option", "value", "text"),
+    [
+        ("--throttle", "2", "--throttle 2 is outside -1..1"),
+        ("--duration", "inf", "--duration inf must be a finite number of seconds above 0"),
+        ("--rate", "0", "--rate 0 must be above 0"),
+        ("--max-current", "inf", "--max-current inf must be finite"),
+        ("--max-temperature", "nan", "--max-temperature nan must be finite"),
+    ],
+)
+def test_the_command_line_names_its_option(option: str, value: str, text: str) -> None:
+    """The library's refusal, in the command line's words: exit code 2, one line."""
+    arguments = {"--throttle": "0.1", "--duration": "1", option: value}
+    result = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "esc", "spin", "21", "--yes",
+         *itertools.chain.from_iterable(arguments.items()),
+         "--interface", "virtual", "--channel", f"test-spin-cli-{next(_CHANNELS)}"],
+        capture_output=True, text=True, timeout=GUARD, check=False,
+    )  # fmt: skip
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"veronte4x: {text}\n")
