@@ -10,14 +10,12 @@ import socket
 import subprocess
 import sys
 import time
-from importlib import metadata
 from pathlib import Path
 from typing import Any
 
 import pytest
-import tomli
-from packaging.requirements import Requirement
-from packaging.utils import canonicalize_name
+
+from tests.extras_support import EXTRAS, distributions, modules
 
 ROOT = Path(__file__).resolve().parent.parent
 README = (ROOT / "README.md").read_text()
@@ -104,7 +102,6 @@ def test_readme_command_runs_clean_on_the_demo_flight(command: str, demo: Path) 
         assert SUMMARY.fullmatch(summary), summary
 
 
-PROJECT = tomli.loads((ROOT / "pyproject.toml").read_text())["project"]
 NEEDS = re.compile(r"# needs (?:no extra|the (.+) extras?)\b")
 MAKEFILE = (ROOT / "Makefile").read_text()
 DEMO_EXTRAS = re.findall(
@@ -119,41 +116,8 @@ def _extras(block: str) -> list[str]:
     found = NEEDS.match(block)
     assert found, f"a README snippet does not say which extras it needs:\n{block}"
     names = re.split(r", | and ", found.group(1)) if found.group(1) else []
-    assert set(names) <= set(PROJECT["optional-dependencies"]), names
+    assert set(names) <= set(EXTRAS), names
     return names
-
-
-def _distributions(extras: list[str]) -> set[str]:
-    """The installed distributions that these extras of veronte4x bring, with theirs."""
-    todo = [Requirement(r) for name in extras for r in PROJECT["optional-dependencies"][name]]
-    seen: set[str] = set()
-    while todo:
-        requirement = todo.pop()
-        name = canonicalize_name(requirement.name)
-        if name in seen:
-            continue
-        seen.add(name)
-        try:
-            found = metadata.distribution(name)
-        except metadata.PackageNotFoundError:
-            continue
-        for text in found.requires or []:
-            needed = Requirement(text)
-            wanted = requirement.extras or {""}
-            if needed.marker is None or any(needed.marker.evaluate({"extra": e}) for e in wanted):
-                todo.append(needed)
-    return seen
-
-
-def _modules(extras: list[str]) -> list[str]:
-    """The top-level modules a snippet may import: the standard library, veronte4x's, and
-    those of the distributions its extras bring."""
-    allowed = _distributions(extras) | {"veronte4x"}
-    return sorted(
-        module
-        for module, names in metadata.packages_distributions().items()
-        if any(canonicalize_name(name) in allowed for name in names)
-    )
 
 
 GUARD = """
@@ -172,9 +136,9 @@ exec(compile(sys.stdin.read(), "README.md", "exec"), {"__name__": "__main__"})
 
 def test_every_readme_snippet_runs_in_make_demos_environment() -> None:
     """Each extra a snippet names is one that `make demo` installs."""
-    installed = _distributions(DEMO_EXTRAS)
+    installed = distributions(DEMO_EXTRAS)
     for block in _blocks("python"):
-        assert _distributions(_extras(block)) <= installed, block
+        assert distributions(_extras(block)) <= installed, block
 
 
 @pytest.mark.parametrize("block", _blocks("python"))
@@ -182,7 +146,7 @@ def test_readme_python_runs_with_only_the_extras_it_names(block: str, demo: Path
     """In the demo's directory, in a process where only the standard library, veronte4x
     and the modules of the extras the snippet names can be imported."""
     result = subprocess.run(
-        [sys.executable, "-c", GUARD, ",".join(_modules(_extras(block)))],
+        [sys.executable, "-c", GUARD, ",".join(modules(_extras(block)))],
         input=block,
         cwd=demo,
         capture_output=True,
@@ -193,7 +157,7 @@ def test_readme_python_runs_with_only_the_extras_it_names(block: str, demo: Path
 
 def test_the_guard_refuses_what_the_extras_do_not_bring(demo: Path) -> None:
     result = subprocess.run(
-        [sys.executable, "-c", GUARD, ",".join(_modules([]))],
+        [sys.executable, "-c", GUARD, ",".join(modules([]))],
         input="import pyarrow\n",
         cwd=demo,
         capture_output=True,

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.flat import field_names, flatten
 from veronte4x.capture.records import Record
+from veronte4x.extras import require
 from veronte4x.times import TimeForm, check_time_form
 from veronte4x.units import unit
 
@@ -76,8 +77,10 @@ def to_dataframe(
 
     Raises:
         ValueError: ``time`` is none of those.
+        MissingExtraError: pandas is not installed (the ``pandas`` extra), or pyarrow for a
+            file (the ``arrow`` extra).
     """
-    import pandas  # noqa: F401  (without the pandas extra, fail first, either way)
+    require("pandas", "pandas", "capture.to_dataframe")  # fails first, either way
 
     check_time_form(time)
     if isinstance(source, (str, os.PathLike)):

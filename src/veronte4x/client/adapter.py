@@ -14,7 +14,14 @@ import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.client.adapter") from None
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client.commander import STOP_REPEATS, Commander

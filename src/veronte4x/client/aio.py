@@ -33,7 +33,14 @@ import asyncio
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.client.aio") from None
 
 from veronte4x.client import indices, operations
 from veronte4x.client.adapter import (

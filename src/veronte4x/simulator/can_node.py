@@ -14,7 +14,14 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.simulator.can_node") from None
 
 from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.dronecan.can_id import service_destination

@@ -13,9 +13,16 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable
 
-import numpy as np
-import numpy.typing as npt
-import pyarrow as pa
+from veronte4x.errors import MissingExtraError
+
+try:
+    import numpy as np
+    import numpy.typing as npt
+    import pyarrow as pa
+except ModuleNotFoundError as missing:  # pragma: no cover - the arrow extra is installed in CI
+    if missing.name not in ("numpy", "pyarrow"):
+        raise
+    raise MissingExtraError(missing.name, "arrow", "veronte4x.capture.columnar") from None
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import batches
