@@ -4,7 +4,13 @@ value tables that give one name to several numbers."""
 
 from __future__ import annotations
 
+import csv
+import io
+import json
+import math
 import struct
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -109,3 +115,55 @@ def test_read_and_tables_equal_cantools_bit_for_bit(
     fields = list(type(records[0].message).__dataclass_fields__)
     rows = [{f: bits(row[f]) for f in fields} for row in tables["M"].to_pylist()]
     assert rows == [{f: bits(getattr(r.message, f)) for f in fields} for r in records]
+
+
+def _number_text(value: Any) -> str:
+    """A value as the numbers rule writes it in CSV (docs/captures.md)."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return "NaN" if value != value else ("Infinity" if value > 0 else "-Infinity")
+    return "" if value is None else repr(value) if isinstance(value, float) else str(value)
+
+
+def _from_json(value: Any) -> Any:
+    named = {"NaN": math.nan, "Infinity": math.inf, "-Infinity": -math.inf}
+    return named.get(value, value) if isinstance(value, str) else value
+
+
+@settings(max_examples=5, suppress_health_check=[HealthCheck.too_slow])
+@given(message(), st.lists(st.binary(min_size=8, max_size=8), min_size=1, max_size=20))
+def test_the_command_lines_json_lines_and_csv_equal_read_bit_for_bit(
+    shape: tuple[list[str], list[str]], payloads: list[bytes]
+) -> None:
+    """``veronte4x decode --dbc`` as a subprocess: each signal of its JSON lines and CSV is
+    `capture.read`'s value (which the test above holds to cantools), NaN and -0.0 included."""
+    signals, extra = shape
+    text = "\n".join(
+        ['VERSION ""', "NS_ :", "BS_:", "BU_: X", "BO_ 256 M: 8 X", *signals, "", *extra, ""]
+    )
+    payloads = [*payloads, SPECIAL[0] + SPECIAL[1], SPECIAL[1] + SPECIAL[2]]
+    with tempfile.TemporaryDirectory() as folder:
+        dbc = Path(folder) / "g.dbc"
+        dbc.write_text(text)
+        lines = [f"({1 + i / 100:.6f}) can0 100#{data.hex()}" for i, data in enumerate(payloads)]
+        path = write(Path(folder) / "x.log", lines)
+        records = [r for r in capture.read(path, dbc=[dbc]) if r.error is None]
+        runs = [
+            subprocess.run(
+                [sys.executable, "-m", "veronte4x", "decode", str(path), "--dbc", str(dbc),
+                 "--output", output],
+                capture_output=True, text=True, check=False, timeout=600,
+            )
+            for output in ("jsonl", "csv")
+        ]  # fmt: skip
+    assert [run.returncode for run in runs] == [0, 0], runs[0].stderr + runs[1].stderr
+    outputs = [run.stdout for run in runs]
+    fields = list(type(records[0].message).__dataclass_fields__)
+    expected = [{f: getattr(r.message, f) for f in fields} for r in records]
+    decoded = [json.loads(line) for line in outputs[0].splitlines()]
+    assert [{f: bits(_from_json(row[f])) for f in fields} for row in decoded] == [
+        {f: bits(value) for f, value in row.items()} for row in expected
+    ]
+    table = list(csv.DictReader(io.StringIO(outputs[1])))
+    assert [{f: row[f] for f in fields} for row in table] == [
+        {f: _number_text(value) for f, value in row.items()} for row in expected
+    ]
