@@ -4,6 +4,7 @@ code and its exact lines."""
 
 from __future__ import annotations
 
+import json
 import os
 import random
 import re
@@ -13,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.client.cli_support import HANG_GUARD
+from tests.client.cli_support import HANG_GUARD, bus_args, free_port, simulator
 from veronte4x.cli.buses import NO_BUS
 
 
@@ -127,3 +128,141 @@ def test_convert_refuses_a_file_that_is_no_capture_as_every_command_does(
     assert sorted(p.name for p in tmp_path.iterdir() if p.name != "dataset") == ["noise.log"]
     for written in tmp_path.glob("dataset/*"):
         pytest.fail(f"the refused conversion left {written}")
+
+
+@pytest.fixture(scope="module")
+def flight_start(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The first 2,000 lines of the demo flight (`examples/make_capture.py`): the autopilots,
+    the arbiter and four Vertiq ESCs, their GetNodeInfo answers among them."""
+    directory = tmp_path_factory.mktemp("flight")
+    subprocess.run(
+        [sys.executable, str(CAPTURE.parent / "make_capture.py"), "flight.log"],
+        cwd=directory,
+        check=True,
+        capture_output=True,
+        timeout=HANG_GUARD,
+    )
+    lines = (directory / "flight.log").read_text().splitlines(keepends=True)
+    start = directory / "start.log"
+    start.write_text("".join(lines[:2000]))
+    return start
+
+
+def test_decode_shows_an_empty_certificate_as_none(flight_start: Path) -> None:
+    result = _run("decode", str(flight_start))
+    assert result.returncode == 0, result.stderr
+    answers = [line for line in result.stdout.splitlines() if "GetNodeInfoResponse(" in line]
+    assert len(answers) == 4
+    assert all("certificate_of_authenticity=(none))" in line for line in answers), answers[0]
+
+
+def test_decode_with_a_channel_the_capture_does_not_have_says_which_it_has() -> None:
+    result = _run("decode", str(CAPTURE), "--channel", "can9")
+    assert (result.returncode, result.stdout) == (0, "")
+    assert result.stderr.splitlines() == [
+        "veronte4x: 0 records, 0 undecoded, 0 bad (skip)",
+        f"veronte4x: no frame of {CAPTURE} is on channel can9: its channels are can0; give one "
+        "of them to --channel, or leave it out",
+    ]
+    result = _run("decode", str(CAPTURE), "--channel", "can0")
+    assert result.stderr.splitlines() == ["veronte4x: 39 records, 0 undecoded, 1 bad (skip)"]
+
+
+def test_replay_of_a_capture_without_veronte_traffic_says_so(
+    flight_start: Path, tmp_path: Path
+) -> None:
+    escs = tmp_path / "escs.log"
+    lines = flight_start.read_text().splitlines(keepends=True)
+    escs.write_text("".join(line for line in lines if re.search(r" [0-9A-F]{8}#", line)))
+    config = CAPTURE.parent / "arbiter.toml"
+    result = _run("replay", str(escs), "--config", str(config))
+    assert (result.returncode, result.stdout) == (0, "\n")
+    assert result.stderr.splitlines() == [
+        "veronte4x: 0 decisions, 0 disagreements, 0 bad frames",
+        "veronte4x: no frame has a Veronte 4x CAN ID (autopilots 008, 009, 00A, 00B, arbiter "
+        "0FF): is this a 4x capture? Other IDs: give the vehicle's --config (or --bus-map)",
+    ]
+    result = _run("replay", str(CAPTURE), "--config", str(config), "--channel", "can9")
+    assert result.stderr.splitlines()[-1] == (
+        f"veronte4x: no frame of {CAPTURE} is on channel can9: its channels are can0; give one "
+        "of them to --channel, or leave it out"
+    )
+    result = _run("replay", str(CAPTURE), "--config", str(config))
+    assert "Veronte 4x CAN ID" not in result.stderr
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+@pytest.mark.parametrize("command", [["decode"], ["stats"], ["decode", "--output", "jsonl"]])
+def test_a_full_standard_output_is_named(command: list[str]) -> None:
+    with open("/dev/full", "w") as full:
+        result = subprocess.run(
+            [sys.executable, "-m", "veronte4x", command[0], str(CAPTURE), *command[1:]],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=HANG_GUARD,
+            check=False,
+        )
+    assert (result.returncode, result.stderr) == (
+        2,
+        "veronte4x: standard output: No space left on device\n",
+    )
+
+
+def test_esc_apply_of_a_broken_file_names_it(tmp_path: Path) -> None:
+    """The file is read before any node is asked: no simulator is needed to see it refused."""
+    broken = tmp_path / "saved.toml"
+    broken.write_text("x = [\n")
+    result = _run("esc", "apply", str(broken), "21", *bus_args(free_port()))
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == (
+        f"veronte4x: {broken}: not a TOML file: Invalid value (at end of document)\n"
+    )
+    parm = tmp_path / "saved.parm"
+    parm.write_text("# only a comment\n")
+    result = _run("esc", "apply", str(parm), "21", *bus_args(free_port()))
+    assert (result.returncode, result.stderr) == (
+        2,
+        f"veronte4x: {parm}: the .parm file holds no parameter line (NAME VALUE)\n",
+    )
+
+
+def test_esc_get_json_has_no_null_index_and_info_shows_the_certificate() -> None:
+    port = free_port()
+    with simulator(port, "--nodes", "21"):
+        got = _run("esc", "get", "21", "esc_index", "--json", *bus_args(port))
+        by_index = _run("esc", "get", "21", "0", "--by-index", "--json", *bus_args(port))
+        info = _run("esc", "info", "21", *bus_args(port))
+    assert (got.returncode, got.stderr) == (0, "")
+    assert json.loads(got.stdout) == {
+        "name": "esc_index",
+        "value": 0,
+        "default": 0,
+        "min": 0,
+        "max": 19,
+    }
+    assert by_index.returncode == 0, by_index.stderr
+    assert json.loads(by_index.stdout)["index"] == 0
+    assert info.returncode == 0, info.stderr
+    [hardware] = [line for line in info.stdout.splitlines() if line.startswith("  hardware")]
+    assert hardware.endswith(", certificate of authenticity (none)"), hardware
+
+
+def test_a_conversion_summary_rounds_its_time_for_people(tmp_path: Path) -> None:
+    from veronte4x import capture
+
+    summary = capture.to_parquet([CAPTURE], tmp_path / "dataset")
+    assert repr(summary) == (
+        f"Summary(files=1, frames=39, records={summary.records!r}, "
+        f"seconds={summary.seconds:.3g}, truncated=[])"
+    )
+    assert summary.seconds > 0 and repr(summary.seconds) not in repr(summary)
+    html = summary._repr_html_()
+    assert "<caption" in html and ">Summary</caption>" in html
+    assert "<th>frames</th><td>39</td>" in html
+    assert f"<th>seconds</th><td>{summary.seconds:.3g} s</td>" in html
+    assert all(
+        f"<td>{kind}</td><td>{rows}</td>" in html
+        for kind, rows in summary.records.items()
+        if kind != "errors"
+    )

@@ -141,4 +141,6 @@ def _scalar(owner: type, attr: str, value: Any) -> str:
     text = shown(owner, attr, value)
     if type(value) is bytes and attr in text_fields(owner):
         return repr(text)
+    if type(value) is bytes and not value:  # an empty array, as esc info shows one
+        return "(none)"
     return str(text)

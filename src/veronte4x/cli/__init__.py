@@ -19,6 +19,7 @@ import contextlib
 import os
 import sys
 from collections.abc import Sequence
+from typing import Any, TextIO, cast
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
@@ -47,6 +48,15 @@ COMMANDS = (
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return its exit code."""
+    stdout = sys.stdout
+    sys.stdout = cast(TextIO, _StandardOutput(stdout))
+    try:
+        return _run(argv)
+    finally:
+        sys.stdout = stdout
+
+
+def _run(argv: Sequence[str] | None) -> int:
     try:
         parser = _parser()
         args = parser.parse_args(argv)
@@ -82,6 +92,30 @@ def _os_error(error: OSError) -> str:
     if error.filename is not None and error.strerror:
         return f"{error.filename}: {error.strerror}"
     return str(error)
+
+
+class _StandardOutput:
+    """``sys.stdout`` while a command runs: a write or flush that fails raises the error
+    naming ``standard output`` (a failed write names no file: ``> /dev/full`` said only
+    "[Errno 28] No space left on device"); everything else is the stream's."""
+
+    def __init__(self, stream: TextIO) -> None:
+        self._stream = stream
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)
+        except OSError as error:
+            raise type(error)(error.errno, error.strerror, "standard output") from None
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except OSError as error:
+            raise type(error)(error.errno, error.strerror, "standard output") from None
 
 
 def _parser() -> argparse.ArgumentParser:

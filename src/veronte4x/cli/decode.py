@@ -23,7 +23,7 @@ from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
-from veronte4x.cli.notices import InputWatch
+from veronte4x.cli.notices import InputWatch, channel_hint
 from veronte4x.cli.options import add_capture_options, add_live_options, open_records
 from veronte4x.cli.options import live as live_bus
 from veronte4x.numbers import exact
@@ -103,6 +103,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         f"veronte4x: {_summary(counts, loss)} ({args.on_error})" + (f"; {note}" if note else ""),
         file=sys.stderr,
     )
+    hint = channel_hint(watch.path, args.channel, watch.frames)
+    if hint is not None:
+        print(f"veronte4x: {hint}", file=sys.stderr)
     return status
 
 

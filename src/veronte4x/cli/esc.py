@@ -16,7 +16,7 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import (
@@ -428,7 +428,8 @@ def _info_text(node: int, info: GetNodeInfoResponse) -> str:
             f"  software  {sw['major']}.{sw['minor']}, vcs commit "
             f"{'-' if sw['vcs_commit'] is None else format(sw['vcs_commit'], '#010x')}, "
             f"image CRC {sw['image_crc'] or '-'}",
-            f"  hardware  {hw['major']}.{hw['minor']}, unique id {hw['unique_id']}",
+            f"  hardware  {hw['major']}.{hw['minor']}, unique id {hw['unique_id']}, "
+            f"certificate of authenticity {hw['certificate_of_authenticity'] or '(none)'}",
         ]
     )
 
@@ -516,8 +517,17 @@ def _get(client: BusClient, args: argparse.Namespace) -> int:
         args,
         lambda node: operations.get_param(node, name, index=index),
         lambda node, p: prefix.format(node=node) + _show(p),
-        lambda node, p: p.as_dict(),
+        lambda node, p: _param_json(p),
     )
+
+
+def _param_json(parameter: ParameterInfo) -> dict[str, Any]:
+    """A parameter read or set, for ``--json``: its index only where it is known (a
+    parameter named is read by name, and GetSet answers without its index)."""
+    data = parameter.as_dict()
+    if parameter.index is None:
+        del data["index"]
+    return data
 
 
 def _set(client: BusClient, args: argparse.Namespace) -> int:
@@ -538,7 +548,7 @@ def _set(client: BusClient, args: argparse.Namespace) -> int:
         args,
         lambda node: operations.set_param(node, name, args.value, index=index),
         lambda node, p: prefix.format(node=node) + _show(p),
-        lambda node, p: p.as_dict(),
+        lambda node, p: _param_json(p),
         nodes,
     )
 
@@ -714,14 +724,14 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
     text = _read_text(args.file)
     saved: list[paramfile.NodeParameters] | tuple[parmfile.ParmLine, ...]
     if parmfile.is_parm(args.file, text):
-        saved = parmfile.loads(text)
+        saved = _named(args.file, parmfile.loads, text)
         if args.nodes.every or len(args.nodes.ids) != 1 or args.source is not None:
             raise InvalidRequestError(
                 f"{args.file} is a .parm file (the DroneCAN GUI tool's): it names no node, "
                 "so it is applied to one node named alone, without --from"
             )
     else:
-        saved = paramfile.loads(text)
+        saved = _named(args.file, paramfile.loads, text)
     nodes = resolve(client, args.nodes)
     reads = client.run_all([operations.read_node(node) for node in nodes])
     failed = [(node, t.error) for node, t in zip(nodes, reads, strict=True) if t.error]
@@ -792,6 +802,18 @@ def _apply(client: BusClient, args: argparse.Namespace) -> int:
     if failed_ids:  # on standard error too, as every fleet action says it
         _error(total(len(rows), failed_ids))
     return code
+
+
+_Loaded = TypeVar("_Loaded")
+"""What a parameter file's text loads as."""
+
+
+def _named(file: str, load: Callable[[str], _Loaded], text: str) -> _Loaded:
+    """``load(text)``, a `paramfile.ParameterFileError` naming ``file``."""
+    try:
+        return load(text)
+    except paramfile.ParameterFileError as error:
+        raise paramfile.ParameterFileError(f"{file}: {error}") from None
 
 
 def _read_text(file: str) -> str:

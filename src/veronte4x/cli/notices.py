@@ -87,3 +87,20 @@ class InputWatch:
             f"{self.bad} of {counted(self.bad + self.frames, 'line')} are not CAN frames: is "
             f"{self._name} a capture?"
         )
+
+
+def channel_hint(path: str | None, channel: str | None, frames: int) -> str | None:
+    """A hint when ``--channel`` kept no frame of a capture file: the channels it has (read
+    again, only then); None otherwise, and for standard input or a live bus."""
+    from veronte4x.capture.source import open_frames
+
+    if path in (None, "-") or channel is None or frames:
+        return None
+    assert path is not None
+    channels = sorted({f.channel for f in open_frames(path) if isinstance(f, Frame) and f.channel})
+    if not channels:
+        return None
+    return (
+        f"no frame of {path} is on channel {channel}: its channels are {', '.join(channels)}; "
+        "give one of them to --channel, or leave it out"
+    )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from itertools import chain
 from typing import TYPE_CHECKING, Any
 
@@ -12,7 +12,7 @@ from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_NOT_IN_TIME_ORDER, EXIT_OK
-from veronte4x.cli.notices import InputWatch
+from veronte4x.cli.notices import InputWatch, channel_hint
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
 from veronte4x.errors import SourceError
 from veronte4x.times import format_time
@@ -72,11 +72,13 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         and not (frame.error or frame.remote or frame.fd)
         and frame.extended == config.extended_ids
     )
-    first = next(frames, None)  # an error about the capture comes before the warning
+    veronte = _Seen({*config.autopilot_ids, config.arbiter_id})
+    steps = veronte.frames(frames)
+    first = next(steps, None)  # an error about the capture comes before the warning
     if not args.config:
         print(NO_CONFIG, file=sys.stderr)
     try:
-        result = arbiter.replay(chain((first,) if first else (), frames), config)
+        result = arbiter.replay(chain((first,) if first else (), steps), config)
     except DisorderedError as error:
         sys.stdout.flush()
         print(
@@ -98,7 +100,39 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         summary += f", {_count(len(result.restarts), 'restart')} (the time steps back)"
     note = watch.note()
     print(summary + (f"; {note}" if note else ""), file=sys.stderr)
+    if not veronte.count:
+        hint = channel_hint(watch.path, args.channel, watch.frames) or _no_veronte(config)
+        print(f"veronte4x: {hint}", file=sys.stderr)
     return EXIT_FINDINGS if result.disagreements else EXIT_OK
+
+
+class _Seen:
+    """Counts the frames on the arbiter's or an autopilot's CAN ID as they pass."""
+
+    def __init__(self, ids: set[int]) -> None:
+        self.ids = ids
+        self.count = 0
+
+    def frames(self, frames: Iterator[_Step]) -> Iterator[_Step]:
+        for frame in frames:
+            if frame[1] in self.ids:
+                self.count += 1
+            yield frame
+
+
+_Step = tuple[float, int, bytes]
+"""A frame as the arbiter model takes it: time, CAN ID, data."""
+
+
+def _no_veronte(config: ArbiterConfig) -> str:
+    """The hint for a capture without one frame on the arbiter's or an autopilot's CAN ID."""
+    width = 8 if config.extended_ids else 3
+    ids = ", ".join(f"{i:0{width}X}" for i in config.autopilot_ids)
+    return (
+        f"no frame has a Veronte 4x CAN ID (autopilots {ids}, arbiter "
+        f"{config.arbiter_id:0{width}X}): is this a 4x capture? Other IDs: give the vehicle's "
+        "--config (or --bus-map)"
+    )
 
 
 def _load(path: str, load: Callable[[str], ArbiterConfig]) -> ArbiterConfig:

@@ -107,9 +107,41 @@ class Summary:
             self.records[kind] = self.records.get(kind, 0) + count
         self.truncated.extend(other.truncated)
 
+    def __repr__(self) -> str:
+        """As a dataclass's, ``seconds`` to 3 significant digits (exact in the attribute)."""
+        return (
+            f"Summary(files={self.files}, frames={self.frames}, records={self.records!r}, "
+            f"seconds={self.seconds:.3g}, truncated={self.truncated!r})"
+        )
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the counts and time, the rows per table, where captures end early."""
+        from veronte4x.display import side_by_side, table
+
+        kinds = self._kinds()
+        head = [
+            ("files", self.files),
+            ("frames", self.frames),
+            ("records", sum(self.records[k] for k in kinds)),
+            ("errors", self.errors),
+            ("seconds", f"{self.seconds:.3g} s"),
+        ]
+        parts = [table("Summary", ("", ""), head, header=False)]
+        if kinds:
+            parts.append(
+                table("rows per table", ("", "rows"), [(k, self.records[k]) for k in kinds])
+            )
+        if self.truncated:
+            parts.append(table("ends early", ("capture",), [(t,) for t in self.truncated]))
+        return side_by_side(parts)
+
+    def _kinds(self) -> list[str]:
+        """The tables written but ``errors``, the largest first."""
+        return sorted((k for k in self.records if k != "errors"), key=lambda k: -self.records[k])
+
     def line(self) -> str:
         """One line for a person: files, frames, records per table, errors and time."""
-        kinds = sorted((k for k in self.records if k != "errors"), key=lambda k: -self.records[k])
+        kinds = self._kinds()
         total = sum(self.records[k] for k in kinds)
         per_kind = ", ".join(f"{kind} {self.records[kind]}" for kind in kinds)
         return (
