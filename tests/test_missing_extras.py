@@ -61,6 +61,8 @@ CALLS: dict[str, set[str]] = {
     },
     "from veronte4x import canbus; canbus.open_bus(interface='virtual').shutdown()": {"can"},
     "from veronte4x.client.bus import BusClient": {"can"},
+    "from veronte4x.cli.buses import open_bus; open_bus(interface='udp_multicast', "
+    "channel='239.74.163.2').shutdown()": {"can", "msgpack"},
     "from veronte4x.simulator.can_node import EscBus": {"can"},
 }
 """Representative calls, each with the top-level modules it needs."""

@@ -266,3 +266,16 @@ def test_a_conversion_summary_rounds_its_time_for_people(tmp_path: Path) -> None
         for kind, rows in summary.records.items()
         if kind != "errors"
     )
+
+
+def test_a_jitter_below_a_millisecond_is_shown_in_microseconds(tmp_path: Path) -> None:
+    """Periods of 10.05 and 9.95 ms: a standard deviation of 57.735 µs (``5.774e-02 ms``
+    before)."""
+    times = ["0.000000", "0.010050", "0.020000", "0.030050", "0.040000"]
+    capture_file = tmp_path / "steady.log"
+    capture_file.write_text("".join(f"({t}) can0 123#01\n" for t in times))
+    result = _run("stats", str(capture_file), "--rates")
+    assert result.returncode == 0, result.stderr
+    assert "  can0 0x123: 5 at 100 Hz, jitter 57.74 µs, longest gap 10.05 ms" in (
+        result.stdout.splitlines()
+    )

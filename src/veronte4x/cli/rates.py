@@ -83,7 +83,7 @@ def report(rates: RateTracker, now: float | None = None) -> str:
         gaps = f", {counted(s.gaps, 'gap')}" if s.gaps else ""
         lines.append(
             f"  {s.channel or '-'} {s.label}: {s.count} at {_hz(s.rate)}, jitter "
-            f"{_ms(s.jitter)}, longest gap {_ms(s.longest_gap)}{gaps}{flags}"
+            f"{_duration(s.jitter)}, longest gap {_duration(s.longest_gap)}{gaps}{flags}"
         )
     lines.append("bus load (worst-case bit stuffing):")
     for load in rates.load():
@@ -118,8 +118,11 @@ def _hz(value: float) -> str:
     return "-" if math.isnan(value) else f"{value:.4g} Hz"
 
 
-def _ms(value: float) -> str:
-    return "-" if math.isnan(value) else f"{value * 1000:.4g} ms"
+def _duration(value: float) -> str:
+    """Seconds in ms, or in µs below 1 ms (a jitter of ``64.89 µs``, not ``6.489e-05 ms``)."""
+    if math.isnan(value):
+        return "-"
+    return f"{value * 1e6:.4g} µs" if 0 < abs(value) < 1e-3 else f"{value * 1000:.4g} ms"
 
 
 def _percent(value: float) -> str:
