@@ -36,7 +36,8 @@ DBC = 'VERSION ""\nBU_: A\nBO_ 1 M: 1 A\n SG_ s : 0|8@1+ (1,0) [0|255] "" A\n'
 """A DBC file of one message (CAN ID 1)."""
 
 CALLS: dict[str, set[str]] = {
-    "from veronte4x import codec; codec.decode(b'\\x00\\xff\\x01', sender=codec.Sender.AUTOPILOT)": set(),
+    "from veronte4x import codec; "
+    "codec.decode(b'\\x00\\xff\\x01', sender=codec.Sender.AUTOPILOT)": set(),
     "from veronte4x import capture; list(capture.read('capture.log'))": set(),
     "from veronte4x import capture; capture.stats(capture.read('capture.log'))": set(),
     "from veronte4x import dronecan; dronecan.TypeSet.standard()": set(),
