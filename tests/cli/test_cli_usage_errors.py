@@ -24,7 +24,7 @@ from tests.client.cli_support import (
     veronte4x,
 )
 from veronte4x.canbus import open_bus
-from veronte4x.cli.options import add_bus_options, bus_settings
+from veronte4x.cli.options import NO_SOURCE, add_bus_options, bus_settings
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 
@@ -81,7 +81,7 @@ def test_monitor_with_no_source(rates: list[str]) -> None:
     assert (result.returncode, result.stdout, result.stderr) == (
         2,
         "",
-        "veronte4x: give a capture file, or a live bus with --interface\n",
+        f"veronte4x: {NO_SOURCE}\n",
     )
 
 

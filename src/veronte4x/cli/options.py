@@ -127,6 +127,13 @@ def add_live_options(parser: argparse.ArgumentParser) -> None:
     )
 
 
+NO_SOURCE = (
+    "give a capture file, or a live bus with --interface and --channel (e.g. --interface "
+    "socketcan --channel can0) or --can-config FILE"
+)
+"""The error line of a command that reads a capture or a bus when given neither."""
+
+
 def live(args: argparse.Namespace) -> bool:
     """Whether the command reads a live bus rather than a capture."""
     return bool(args.interface or args.can_config)
@@ -179,7 +186,7 @@ def open_records(
     """
     if not live(args):
         if args.file is None:
-            raise SourceError("give a capture file, or a live bus with --interface")
+            raise SourceError(NO_SOURCE)
         return capture.read(args.file, bus_map, args.channel, getattr(args, "dbc", ()))
     return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop, loss)))
 
@@ -201,7 +208,7 @@ def open_frame_source(
     """
     if not live(args):
         if args.file is None:
-            raise SourceError("give a capture file, or a live bus with --interface")
+            raise SourceError(NO_SOURCE)
         return open_frames(args.file, args.channel)
     if args.file not in (None, "-"):
         raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
