@@ -21,14 +21,14 @@ import bitstruct.c as bitstruct_c
 
 from veronte4x import codec
 from veronte4x.codec import layouts
-from veronte4x.codec.compiler import builder
+from veronte4x.codegen import slot_builder
 
 _BOOL = (False, True)
 
 
 def _pwm(packing: codec.PwmPacking) -> tuple[Callable[[bytes], object], Callable[[bytes], object]]:
     generated = layouts.PWM_SET[packing].functions[0]
-    build = builder(codec.PwmSet)
+    build = slot_builder(codec.PwmSet)
     assert build is not None
     first = {wire: channel for channel, wire in layouts.PWM_COMMANDS.items()}
     if packing is codec.PwmPacking.MSB_FIRST:
@@ -72,7 +72,7 @@ _DECLARED = codec.Layout(
 def _declared() -> tuple[Callable[[bytes], object], Callable[[bytes], object]]:
     generated = _DECLARED.frame.functions[0]
     cls = _DECLARED.message_class
-    build = builder(cls)
+    build = slot_builder(cls)
     assert build is not None
     # Little-endian fields from bit 0 up: on the reversed bytes, the last field comes first.
     compiled = bitstruct_c.compile("s16u6s10u12u4")
@@ -89,7 +89,7 @@ def _declared() -> tuple[Callable[[bytes], object], Callable[[bytes], object]]:
 
 def _status() -> tuple[Callable[[bytes], object], Callable[[bytes], object]]:
     generated = layouts.STATUS_4X.functions[0]
-    build = builder(codec.Status)
+    build = slot_builder(codec.Status)
     assert build is not None
     names = [name for name, _ in layouts.STATUS_FLAGS]
     # Per byte, MSB first: byte 2 is arbitrating then selected; bytes 3-5 are flags 7..0.

@@ -21,8 +21,8 @@ from typing import Any
 from bench_codec import CASES, _database, _rates
 
 from veronte4x import codec
-from veronte4x.codec.compiler import builder
 from veronte4x.codec.messages import Message
+from veronte4x.codegen import slot_builder
 
 
 def _returning(message: Message) -> Callable[..., Message]:
@@ -39,7 +39,7 @@ def _building(message: Message) -> Callable[..., Message]:
     lines = ["def decode(data, *, sender, allow_excess=False):", "    o = _builder()"]
     lines += [f"    o.{name} = _{name}" for name in names]
     lines += ["    o.__class__ = _cls", "    return o"]
-    namespace: dict[str, Any] = {"_builder": builder(cls), "_cls": cls}
+    namespace: dict[str, Any] = {"_builder": slot_builder(cls), "_cls": cls}
     namespace.update({f"_{name}": getattr(message, name) for name in names})
     exec("\n".join(lines) + "\n", namespace)
     decode: Callable[..., Message] = namespace["decode"]
