@@ -124,7 +124,15 @@ def check_cantools(path: Path, bus_map: BusMap) -> int:
             allow_truncated=True,
             force_extended_id=bus_map.extended,
         )
-        assert_same(got, expected(record), record)
+        want = expected(record)
+        # A frame longer than one form of its type and shorter than the next (a 5-byte
+        # Status with allow_excess: the 4-byte CEX form and an excess byte) leaves the
+        # longer form's fields None; cantools, decoding truncated frames, reads the bits of
+        # the exported (longest) form that the frame holds. Only those may be extra.
+        absent = {
+            name for name in got if name not in want and getattr(record.message, name, 0) is None
+        }
+        assert_same({k: v for k, v in got.items() if k not in absent}, want, record)
     return len(decoded)
 
 

@@ -192,6 +192,6 @@ def test_apply_refuses_an_index_another_node_has(tmp_path: Path) -> None:
             n for n, line in enumerate(twice.read_text().splitlines(), 1) if line == "[[node]]"
         ]
         assert dup.stderr == (
-            f"veronte4x: node_id 21 is given twice (lines {lines[0]} and "
+            f"veronte4x: {twice}: node_id 21 is given twice (lines {lines[0]} and "
             f"{lines[2]}): one would be ignored; keep one table per node\n"
         )
