@@ -145,7 +145,7 @@ def _write(root: Path, relative: str, text: str) -> Path:
         ("@union\nuint8 a\n", None, "at least two fields"),
         ("uint8[<=0] a\n", 1, "at least one item"),
         ("saturated Foo a\n", 1, "cast mode"),
-        ("@sealed\n", 1, "unknown directive"),
+        ("@sealed\n", 1, "unsupported directive @sealed"),
         ("uint8 a b c\n", 1, "cannot read"),
     ],
 )

@@ -13,9 +13,13 @@ from veronte4x.dronecan.parser import (
     PrimitiveType,
     check_references,
     parse_namespaces,
+    signature,
 )
 
 THING = "vendor/20000.Thing.uavcan"
+D = "veronte4x reads @union and OVERRIDE_SIGNATURE 0x<16 hex digits>"
+"""What the error of an unsupported directive says is supported."""
+TAKES = f"takes one hexadecimal signature of 64 bits: {D}"
 
 
 def _write(root: Path, relative: str, text: str | bytes) -> Path:
@@ -57,6 +61,13 @@ def _write(root: Path, relative: str, text: str | bytes) -> Path:
         ("void3 pad\n", 1, "void fields have no name"),
         ("uint8 2a\n", 1, "'2a' is not a valid name"),
         ("uint8 A = 1\nuint16 A = 2\n", 2, "A defined twice"),
+        ("uint8 a\n@sealed\n", 2, f"unsupported directive @sealed ({D})"),
+        ("OVERRIDE_DTID 0x10\nuint8 a\n", 1, f"unsupported directive OVERRIDE_DTID ({D})"),
+        ("uint8 a\nOVERRIDE_SIGNATURE\n", 2, f"OVERRIDE_SIGNATURE {TAKES}"),
+        ("OVERRIDE_SIGNATURE 0x1 0x2\n", 1, f"OVERRIDE_SIGNATURE {TAKES}"),
+        ("OVERRIDE_SIGNATURE 0x10000000000000000\n", 1, f"OVERRIDE_SIGNATURE {TAKES}"),
+        ("OVERRIDE_SIGNATURE -0x1\n", 1, f"OVERRIDE_SIGNATURE {TAKES}"),
+        ("OVERRIDE_SIGNATURE 0xG1\n", 1, f"OVERRIDE_SIGNATURE {TAKES}"),
     ],
 )
 def test_each_malformed_line_is_named_with_its_problem(
@@ -154,3 +165,31 @@ def test_constants_of_every_form(tmp_path: Path) -> None:
     assert comments == {"HASH": "a hash in a literal is no comment", "G": "half"}
     assert section.constants[7].type == PrimitiveType("bool", 1, "saturated")
     assert [f.name for f in section.fields] == ["a"]
+
+
+def test_override_signature_as_the_dronecan_package_reads_it(tmp_path: Path) -> None:
+    """``OVERRIDE_SIGNATURE`` stands for the CRC of the normalized definition, wherever it
+    is in the file (after ``---`` too), with or without ``0x``, the last one winning; the
+    nested types' signatures still extend it, and a type nesting it uses the overridden one
+    (dronecan/dsdl/parser.py: ``get_dsdl_signature``, ``get_data_type_signature``)."""
+    dsdl = pytest.importorskip("dronecan.dsdl")
+    _write(tmp_path, "vendor/Inner.uavcan", "OVERRIDE_SIGNATURE 0123456789abcdef\nuint8 a\n")
+    _write(tmp_path, "vendor/Plain.uavcan", "uint8 a\n")
+    texts = {
+        "vendor/20000.Outer.uavcan": "# doc\nInner i\nOVERRIDE_SIGNATURE 0xFFFFFFFFFFFFFFFF\n",
+        "vendor/20001.Holder.uavcan": "Inner[<=2] i\nPlain p\n",
+        "vendor/200.Ask.uavcan": "Inner i\n---\nOVERRIDE_SIGNATURE 0x1\nOVERRIDE_SIGNATURE 0x2\n",
+    }
+    for name, text in texts.items():
+        _write(tmp_path, name, text)
+    ours = parse_namespaces([tmp_path / "vendor"])
+    check_references(ours)
+    theirs = {t.full_name: t for t in dsdl.parse_namespaces([str(tmp_path / "vendor")])}
+    assert set(ours) == set(theirs)
+    assert ours["vendor.Ask"].override_signature == 2
+    assert ours["vendor.Inner"].override_signature == 0x0123456789ABCDEF
+    assert ours["vendor.Plain"].override_signature is None
+    known: dict[str, int] = {}
+    for name in ours:
+        assert signature(name, ours, known) == theirs[name].get_data_type_signature(), name
+    assert known["vendor.Inner"] == 0x0123456789ABCDEF

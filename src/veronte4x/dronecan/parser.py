@@ -8,8 +8,8 @@ for a service, ``---`` between request and response. Comments start with ``#``.
 
 The data type signature follows the specification's section "Data type signature": the
 CRC-64-WE of the normalized definition (full name, then each field as ``[cast] type name``,
-constants and comments left out, ``---`` between the halves of a service), extended with
-the signature of each nested type in field order.
+constants and comments left out, ``---`` between the halves of a service), or the value of
+``OVERRIDE_SIGNATURE``, extended with the signature of each nested type in field order.
 
 What may reach the generated classes is held to a strict grammar, that of the
 ``dronecan`` package's parser: namespace (directory) names ``[a-z][a-z0-9_]*``, type names
@@ -156,6 +156,8 @@ class Definition:
         sections: One section, or two for a service (request, response).
         path: The file.
         doc: The comment block at the top of the file.
+        override_signature: The value of ``OVERRIDE_SIGNATURE``, or None: it stands for
+            the CRC of `normalized` in the signature.
     """
 
     full_name: str
@@ -164,6 +166,7 @@ class Definition:
     sections: list[Section]
     path: str
     doc: str = ""
+    override_signature: int | None = None
 
     @property
     def short_name(self) -> str:
@@ -194,6 +197,12 @@ _PRIMITIVE = re.compile(r"(uint|int|float|void)([0-9]+)\Z|bool\Z")
 _ARRAY = re.compile(r"(.+?)\[(<=|<)?([0-9]+)\]\Z")
 _COMPOUND = re.compile(r"[A-Za-z][A-Za-z0-9_]*(\.[A-Za-z][A-Za-z0-9_]*)*\Z")
 _CONSTANT = re.compile(r"(\S+) +(\S+?) *= *(.+)\Z")
+_DIRECTIVE = re.compile(r"[A-Z][A-Z0-9]*_[A-Z0-9_]*\Z")
+"""The first word of a directive: an upper-case word with ``_`` in it, such as
+``OVERRIDE_SIGNATURE``, on a line of no ``=`` where no field name follows it."""
+_OVERRIDE = "OVERRIDE_SIGNATURE"
+_HEX = re.compile(r"0[xX][0-9a-fA-F]{1,16}\Z|[0-9a-fA-F]{1,16}\Z")
+_DIRECTIVES = f"veronte4x reads @union and {_OVERRIDE} 0x<16 hex digits>"
 _MAX_FULL_NAME = 80
 """Longest full name (the specification's limit, which the ``dronecan`` package enforces)."""
 _FLOAT_MAX = {16: 65504.0, 32: 3.4028234663852886e38, 64: sys.float_info.max}
@@ -313,6 +322,7 @@ def parse_text(text: str, full_name: str, default_id: int | None, path: str) -> 
     header: list[str] = []
     started = False
     names: set[str] = set()
+    override: int | None = None
     for number, raw in enumerate(text.splitlines(), 1):
         code, comment = _split_comment(raw)
         section = sections[-1]
@@ -332,12 +342,18 @@ def parse_text(text: str, full_name: str, default_id: int | None, path: str) -> 
             continue
         if code.startswith("@"):
             if code != "@union":
-                raise DsdlError(path, number, f"unknown directive {code}")
+                raise DsdlError(path, number, f"unsupported directive {code} ({_DIRECTIVES})")
             if section.fields or section.union:
                 raise DsdlError(path, number, "@union must come before the fields")
             section.union = True
             continue
         tokens = code.split()
+        if tokens[0] == _OVERRIDE:
+            override = _override(tokens, path, number)
+            continue
+        directive = _DIRECTIVE.match(tokens[0]) and "=" not in code
+        if directive and len(tokens) >= 2 and _NAME.match(tokens[1]) is None:
+            raise DsdlError(path, number, f"unsupported directive {tokens[0]} ({_DIRECTIVES})")
         cast = tokens[0] if tokens[0] in CAST_MODES else None
         if cast is not None:
             tokens = tokens[1:]
@@ -379,7 +395,18 @@ def parse_text(text: str, full_name: str, default_id: int | None, path: str) -> 
         raise DsdlError(path, None, f"{kind} id {default_id} above {_MAX_ID[service]}")
     doc = "\n".join(header).strip()
     sections[0].doc = doc
-    return Definition(full_name, default_id, service, sections, path, doc)
+    return Definition(full_name, default_id, service, sections, path, doc, override)
+
+
+def _override(tokens: list[str], path: str, line: int) -> int:
+    """The signature of an ``OVERRIDE_SIGNATURE`` line: one hexadecimal number of 64 bits
+    at most, ``0x`` in front or not, as the ``dronecan`` package reads it (``int(x, 16)``;
+    a second such line replaces the first there too)."""
+    if len(tokens) != 2 or _HEX.match(tokens[1]) is None:
+        raise DsdlError(
+            path, line, f"{_OVERRIDE} takes one hexadecimal signature of 64 bits: {_DIRECTIVES}"
+        )
+    return int(tokens[1], 16)
 
 
 def _check_name(name: str, seen: set[str], path: str, line: int) -> str:
@@ -507,8 +534,9 @@ def nested_name(t: FieldType) -> str | None:
 def signature(
     name: str, definitions: Mapping[str, Definition], known: dict[str, int] | None = None
 ) -> int:
-    """The data type signature of ``name``: that of its normalized definition, extended by
-    each nested type's signature (then the running value itself) in field order.
+    """The data type signature of ``name``: the CRC of its normalized definition (or its
+    ``OVERRIDE_SIGNATURE``), extended by each nested type's signature (then the running
+    value itself) in field order.
 
     Args:
         name: A full name of ``definitions`` (checked by `check_references`).
@@ -521,7 +549,9 @@ def signature(
     if found is not None:
         return found
     d = definitions[name]
-    value = crc64we(d.normalized().encode())
+    value = d.override_signature
+    if value is None:
+        value = crc64we(d.normalized().encode())
     for section in d.sections:
         for a in section.fields:
             target = nested_name(a.type)
