@@ -32,6 +32,8 @@ OLD_NAMES = [
     ("veronte4x.arbiter.machine", "Phase", "ArbiterPhase"),
     ("veronte4x.arbiter", "Event", "ArbiterEvent"),
     ("veronte4x.arbiter.machine", "Event", "ArbiterEvent"),
+    ("veronte4x.simulator.can_node", "wanted", "is_dronecan_frame"),
+    ("veronte4x.simulator.can_node", "to_message", "frame_to_message"),
 ]
 
 

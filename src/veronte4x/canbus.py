@@ -1,7 +1,8 @@
-"""python-can in and out: decode ``can.Message`` objects, make them, listen to a live bus.
+"""python-can bus I/O: open a bus, widen its receive buffer, DroneCAN frames to and from
+``can.Message``.
 
-Needs the ``can`` extra (``pip install "veronte4x[can]"``). This is the thin I/O adapter;
-decoding itself stays sans-IO in `veronte4x.capture.decoder`.
+Needs the ``can`` extra (``pip install "veronte4x[can]"``). This module knows DroneCAN frames
+and python-can only; decoding a live bus into records is `veronte4x.capture.can_messages`.
 """
 
 from __future__ import annotations
@@ -11,7 +12,6 @@ import contextlib
 import os
 import socket
 import sys
-from collections.abc import Callable
 from typing import Any
 
 from veronte4x.errors import MissingExtraError
@@ -23,13 +23,20 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is in
         raise
     raise MissingExtraError("can", "can", "veronte4x.canbus") from None
 
-from veronte4x import codec, dronecan
-from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.decoder import CaptureDecoder
-from veronte4x.capture.readers.live import frame_socket
-from veronte4x.capture.readers.pythoncan import frame_from_message
-from veronte4x.capture.records import Record
+from veronte4x.dronecan.frame import TransferFrame
+from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, encode
 from veronte4x.errors import Veronte4xError
+from veronte4x.sockets import frame_socket
+
+__all__ = [
+    "RECEIVE_BUFFER",
+    "BusOpenError",
+    "frame_to_message",
+    "is_dronecan_frame",
+    "open_bus",
+    "to_can_messages",
+    "widen_receive_buffer",
+]
 
 
 class BusOpenError(Veronte4xError, OSError):
@@ -119,72 +126,6 @@ def widen_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> None:
         duplicate.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, size)
 
 
-__all__ = [
-    "RECEIVE_BUFFER",
-    "BusOpenError",
-    "DecodingListener",
-    "decode_can_message",
-    "frame_to_message",
-    "is_dronecan_frame",
-    "open_bus",
-    "to_can_message",
-    "to_can_messages",
-    "widen_receive_buffer",
-]
-
-
-def decode_can_message(message: can.Message, decoder: CaptureDecoder | None = None) -> list[Record]:
-    """Decode one ``can.Message`` into its records (none while a DroneCAN transfer is open).
-
-    Pass the same `CaptureDecoder` for every message of a bus: it keeps the DroneCAN
-    reassembly state between frames.
-    """
-    return list((decoder or CaptureDecoder()).decode((frame_from_message(message),)))
-
-
-def to_can_message(
-    message: codec.Message,
-    can_id: int | None = None,
-    *,
-    autopilot: int | None = None,
-    bus_map: BusMap | None = None,
-    timestamp: float = 0.0,
-    channel: str | None = None,
-) -> can.Message:
-    """Encode a Veronte message into a ``can.Message``.
-
-    Args:
-        message: The message.
-        can_id: The CAN ID. By default Status and Score go on the bus map's arbiter ID and
-            Ready and ArbitrationVariable on the ID of `autopilot`; other messages need it.
-        autopilot: 0 = AP1 .. 3 = external, for Ready and ArbitrationVariable.
-        bus_map: IDs and codec choices; Embention's template defaults if None.
-        timestamp: The message's timestamp.
-        channel: The message's channel.
-
-    Raises:
-        EncodeError: A field is out of range.
-        ValueError: No CAN ID given and none follows from the message.
-    """
-    bus_map = bus_map or BusMap()
-    if can_id is None:
-        if isinstance(message, (codec.Status, codec.Score)):
-            can_id = bus_map.arbiter_id
-        elif isinstance(message, (codec.Ready, codec.ArbitrationVariable)):
-            if autopilot is None or not 0 <= autopilot <= 3:
-                raise ValueError(f"{type(message).__name__} needs autopilot=0..3 or can_id")
-            can_id = bus_map.autopilot_ids[autopilot]
-        else:
-            raise ValueError(f"{type(message).__name__} needs a can_id")
-    return can.Message(
-        timestamp=timestamp,
-        arbitration_id=can_id,
-        is_extended_id=bus_map.extended,
-        data=bus_map.codec().encode(message),
-        channel=channel,
-    )
-
-
 def is_dronecan_frame(message: can.Message) -> bool:
     """Whether a bus message can be a DroneCAN frame: extended ID, data, classic CAN."""
     return (
@@ -197,7 +138,7 @@ def is_dronecan_frame(message: can.Message) -> bool:
 
 
 def frame_to_message(
-    frame: dronecan.TransferFrame, timestamp: float = 0.0, channel: str | None = None
+    frame: TransferFrame, timestamp: float = 0.0, channel: str | None = None
 ) -> can.Message:
     """One DroneCAN frame as an extended ``can.Message``."""
     return can.Message(
@@ -214,7 +155,7 @@ def to_can_messages(
     *,
     source_node_id: int,
     transfer_id: int,
-    priority: int = dronecan.DEFAULT_PRIORITY,
+    priority: int = DEFAULT_PRIORITY,
     destination_node_id: int | None = None,
     timestamp: float = 0.0,
     channel: str | None = None,
@@ -225,7 +166,7 @@ def to_can_messages(
     Raises:
         EncodeError: A field is out of range, or an argument is.
     """
-    frames = dronecan.encode(
+    frames = encode(
         message,
         source_node_id=source_node_id,
         transfer_id=transfer_id,
@@ -233,34 +174,3 @@ def to_can_messages(
         destination_node_id=destination_node_id,
     )
     return [frame_to_message(frame, timestamp, channel) for frame in frames]
-
-
-class DecodingListener(can.Listener):
-    """A ``can.Listener`` that decodes live traffic and hands each record to a callback.
-
-    Attach it to a bus with ``can.Notifier(bus, [DecodingListener(records.append)])``. Each
-    received message goes through `on_message_received`:
-
-    Examples:
-        >>> from veronte4x import dronecan
-        >>> records = []
-        >>> listener = DecodingListener(records.append)
-        >>> status = dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
-        >>> for message in to_can_messages(status, source_node_id=10, transfer_id=0):
-        ...     listener.on_message_received(message)
-        >>> records[0].node_id, records[0].message.uptime_sec
-        (10, 5)
-
-    Args:
-        callback: Called with every record, in order.
-        bus_map: IDs and codec choices; Embention's template defaults if None.
-    """
-
-    def __init__(self, callback: Callable[[Record], object], bus_map: BusMap | None = None) -> None:
-        self.callback = callback
-        self.decoder = CaptureDecoder(bus_map)
-
-    def on_message_received(self, msg: can.Message) -> None:
-        """Decode one received message and pass its records on."""
-        for record in self.decoder.decode((frame_from_message(msg),)):
-            self.callback(record)

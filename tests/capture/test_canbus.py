@@ -4,13 +4,9 @@ import can
 import pytest
 
 from veronte4x import codec
-from veronte4x.canbus import (
-    DecodingListener,
-    decode_can_message,
-    to_can_message,
-    to_can_messages,
-)
+from veronte4x.canbus import to_can_messages
 from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.can_messages import DecodingListener, decode_can_message, to_can_message
 from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.records import Record
 

@@ -8,7 +8,8 @@ import can
 import pytest
 
 from veronte4x import codec
-from veronte4x.canbus import BusOpenError, is_dronecan_frame, open_bus, to_can_message
+from veronte4x.canbus import BusOpenError, is_dronecan_frame, open_bus
+from veronte4x.capture.can_messages import to_can_message
 
 
 def test_a_config_file_then_arguments_then_options(tmp_path: Path) -> None:

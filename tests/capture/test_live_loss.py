@@ -24,13 +24,8 @@ import pytest
 from tests.client.cli_support import GROUP, bus_args, free_port
 from veronte4x.canbus import RECEIVE_BUFFER, open_bus
 from veronte4x.capture.monitor import MonitorState
-from veronte4x.capture.readers.live import (
-    SO_MEMINFO,
-    BusLoss,
-    frame_socket,
-    kernel_drops,
-    read_bus,
-)
+from veronte4x.capture.readers.live import BusLoss, read_bus
+from veronte4x.sockets import SO_MEMINFO, frame_socket, kernel_drops
 
 linux_only = pytest.mark.skipif(sys.platform != "linux", reason="Linux counts the drops")
 

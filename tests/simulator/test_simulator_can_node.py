@@ -13,11 +13,12 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from veronte4x import dronecan
+from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.client import NoResponseError
 from veronte4x.client.bus import BusClient
 from veronte4x.dronecan import vertiq
 from veronte4x.simulator import SimulatedEsc
-from veronte4x.simulator.can_node import EscBus, EscNode, to_message, wanted
+from veronte4x.simulator.can_node import EscBus, EscNode
 
 from .support import ESC, StepClock
 
@@ -66,13 +67,13 @@ def test_only_dronecan_shaped_messages_reach_the_core(
         can.Message(arbitration_id=0x10015501, data=bytes(12), is_fd=True),
         can.Message(arbitration_id=0x10015501, data=b""),
     ):
-        assert not wanted(message)
+        assert not is_dronecan_frame(message)
         other.send(message)
     node.step()
     assert sum(esc._reassembler.counts.values()) == 0
     frame = dronecan.TransferFrame(0x10015501, bytes(7) + b"\xc0")
-    assert wanted(to_message(frame))
-    assert to_message(frame, 1.5).timestamp == 1.5
+    assert is_dronecan_frame(frame_to_message(frame))
+    assert frame_to_message(frame, 1.5).timestamp == 1.5
 
 
 def test_client_requests_and_the_node_answers(buses: tuple[can.BusABC, can.BusABC]) -> None:
@@ -182,7 +183,7 @@ def test_esc_bus_gives_each_esc_what_feeding_it_everything_does(
         routed.clock = lambda now=now: now  # type: ignore[misc]
         message = can.Message(arbitration_id=can_id, data=data, is_extended_id=True)
         routed.feed(message)
-        for twin in twins if wanted(message) else []:
+        for twin in twins if is_dronecan_frame(message) else []:
             twin.receive(can_id, data, now)
         if step % 5 == 4:  # restarts take effect, node ids change, responses go out
             for esc, twin in zip(routed.escs, twins, strict=True):

@@ -27,15 +27,7 @@ from veronte4x.canbus import frame_to_message, is_dronecan_frame
 from veronte4x.dronecan.can_id import service_destination
 from veronte4x.simulator.esc import SimulatedEsc
 
-__all__ = ["EscBus", "EscNode", "to_message", "wanted"]
-
-
-wanted = is_dronecan_frame
-"""Whether a bus message can be a DroneCAN frame (`veronte4x.canbus.is_dronecan_frame`)."""
-
-
-to_message = frame_to_message
-"""One DroneCAN frame as an extended ``can.Message`` (`veronte4x.canbus.frame_to_message`)."""
+__all__ = ["EscBus", "EscNode"]
 
 
 class EscNode:
@@ -71,7 +63,7 @@ class EscNode:
 
     def feed(self, message: can.Message) -> None:
         """Give one bus message to the ESC, stamped with the clock (others are skipped)."""
-        if wanted(message):
+        if is_dronecan_frame(message):
             self.esc.receive(message.arbitration_id, bytes(message.data), self.clock())
 
     def step(self) -> int:
@@ -86,7 +78,7 @@ class EscNode:
             message = self.bus.recv(timeout=0.0)
         frames = self.esc.poll(self.clock())
         for frame in frames:
-            self.bus.send(to_message(frame))
+            self.bus.send(frame_to_message(frame))
         return len(frames)
 
     def run(self, duration: float, max_wait: float = 0.05) -> None:
@@ -137,7 +129,7 @@ class EscBus:
         message to each, a service frame only to the ESC it is addressed to (the others
         would drop it, as `SimulatedEsc.receive` does; 8 ESCs take a 256-byte file read in
         38 frames, for one of them)."""
-        if wanted(message):
+        if is_dronecan_frame(message):
             now = self.clock()
             can_id = message.arbitration_id
             data = bytes(message.data)
@@ -160,7 +152,7 @@ class EscBus:
         now = self.clock()
         for esc in self.escs:
             for frame in esc.poll(now):
-                self.bus.send(to_message(frame))
+                self.bus.send(frame_to_message(frame))
                 sent += 1
         return sent
 

@@ -11,10 +11,6 @@ python-can's interfaces keep no count of their own, and neither carries sequence
 from __future__ import annotations
 
 import contextlib
-import os
-import socket
-import struct
-import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -23,6 +19,7 @@ from typing import Any
 from veronte4x.capture.frames import Frame
 from veronte4x.capture.readers.pythoncan import frame_from_message
 from veronte4x.errors import Veronte4xError
+from veronte4x.sockets import frame_socket, kernel_drops
 from veronte4x.words import counted
 
 
@@ -55,40 +52,6 @@ class BusLoss:
     def text(self) -> str | None:
         """``N frames lost by the bus layer``; None when the bus does not count them."""
         return f"{counted(self.frames, 'frame')} lost by the bus layer" if self.counted else None
-
-
-def frame_socket(bus: Any) -> socket.socket | None:
-    """A duplicate of the socket ``bus`` receives frames on, for its options and counters
-    (the caller closes it): a datagram socket (``udp_multicast``) or a SocketCAN one;
-    None for a bus with no socket behind it (``virtual``, a vendor library's) or another
-    kind of socket."""
-    try:
-        descriptor = bus.fileno()
-        duplicate = socket.socket(fileno=os.dup(descriptor))
-    except (NotImplementedError, AttributeError, OSError, ValueError, TypeError):
-        return None
-    if duplicate.type == socket.SOCK_DGRAM or duplicate.family == getattr(socket, "AF_CAN", -1):
-        return duplicate
-    duplicate.close()
-    return None
-
-
-SO_MEMINFO = 55
-"""Linux's socket option giving a socket's memory counters (``include/uapi/asm-generic/
-socket.h``); the ninth, ``SK_MEMINFO_DROPS``, counts the frames dropped on it."""
-_MEMINFO = struct.Struct("9I")
-
-
-def kernel_drops(frames: socket.socket) -> int | None:
-    """The frames the kernel dropped on a socket since it was opened (a full receive
-    buffer), modulo 2**32; None where the system does not say (not Linux, before 4.6)."""
-    if sys.platform != "linux":
-        return None
-    try:
-        raw = frames.getsockopt(socket.SOL_SOCKET, SO_MEMINFO, _MEMINFO.size)
-    except OSError:
-        return None
-    return _MEMINFO.unpack_from(raw)[8] if len(raw) >= _MEMINFO.size else None
 
 
 class _DropCount:
