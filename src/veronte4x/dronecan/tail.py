@@ -27,21 +27,48 @@ def tail_byte(start: bool, end: bool, toggle: bool, transfer_id: int) -> int:
     )
 
 
-def _tail_sequences() -> tuple[tuple[tuple[int, ...], ...], ...]:
-    """Tail bytes of every multi-frame length, indexed by transfer id then frame count."""
-    rows: list[tuple[int, ...]] = [()]  # transfer id 0; the others add their id to each byte
-    for count in range(1, 64):
-        rows.append(tuple(tail_byte(i == 0, i == count - 1, bool(i & 1), 0) for i in range(count)))
-    return tuple(tuple(tuple(map(tid.__or__, row)) for row in rows) for tid in range(32))
+class TailRows(dict[int, tuple[int, ...]]):
+    """The tail bytes of every multi-frame length for one transfer id: ``rows[count]`` is
+    the tail byte of each of ``count`` frames, made on first use.
+
+    A transfer has as many frames as its payload needs (the type's largest payload bounds
+    it): libcanard's ``payload_len`` is a ``uint16_t`` and the ``dronecan`` package cuts and
+    joins any number of frames, so no frame count is refused here.
+    """
+
+    __slots__ = ("transfer_id",)
+
+    def __init__(self, transfer_id: int) -> None:
+        super().__init__()
+        self.transfer_id = transfer_id
+
+    def __missing__(self, count: int) -> tuple[int, ...]:
+        if not isinstance(count, int) or count < 0:
+            raise KeyError(count)
+        tid = self.transfer_id
+        row = self[count] = tuple(
+            tail_byte(i == 0, i == count - 1, bool(i & 1), tid) for i in range(count)
+        )
+        return row
 
 
-MULTI_FRAME_TAILS = _tail_sequences()
+MULTI_FRAME_TAILS = tuple(TailRows(tid) for tid in range(32))
 """``MULTI_FRAME_TAILS[transfer_id][frame_count]``: the tail byte of each frame."""
+
+
+def frame_count(size: int) -> int:
+    """Frames of a transfer of ``size`` payload bytes (the CRC's two bytes added past 7).
+
+    Examples:
+        >>> frame_count(7), frame_count(8), frame_count(12), frame_count(13)
+        (1, 2, 2, 3)
+    """
+    return 1 if size <= SINGLE_FRAME_MAX else (size + 8) // 7
 
 
 def split_payload(payload: bytes, crc: int, transfer_id: int) -> list[bytes]:
     """Cut a payload longer than 7 bytes into frame data (CRC first, tail bytes added)."""
     body = bytes((crc & 0xFF, crc >> 8)) + payload
-    count = (len(body) + 6) // 7
+    count = frame_count(len(payload))
     tails = MULTI_FRAME_TAILS[transfer_id][count]
     return [body[i * 7 : i * 7 + 7] + bytes((tails[i],)) for i in range(count)]

@@ -24,7 +24,14 @@ from veronte4x.dronecan.compiled import (
 )
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame
-from veronte4x.dronecan.tail import MULTI_FRAME_TAILS, SINGLE_FRAME_MAX, split_payload
+from veronte4x.dronecan.tail import (
+    MULTI_FRAME_TAILS,
+    SINGLE_FRAME_MAX,
+    TRANSFER_ID_MASK,
+    frame_count,
+    split_payload,
+    tail_byte,
+)
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, EncodeError, argument_type_error
 from veronte4x.words import counted
@@ -58,10 +65,10 @@ class Transfer(NamedTuple):
     data_type_id: int
 
     def _repr_html_(self) -> str:
-        """Jupyter's view: the transfer and its message as tables (`veronte4x.display`)."""
-        from veronte4x.display import to_html
+        """Jupyter's view: the transfer and its message as tables (`veronte4x.dronecan.view`)."""
+        from veronte4x.dronecan.view import transfer_html
 
-        return to_html(self)
+        return transfer_html(self)
 
 
 _FAST: dict[type, FramesFunction] = {}
@@ -249,7 +256,6 @@ class _Routes:
 
 _MAX_ROUTES = 4096
 _new_tuple = tuple.__new__
-_MAX_FRAMES = len(MULTI_FRAME_TAILS[0])  # the most frames of a transfer, plus one
 
 
 def _transfer_fields(codec: TypeCodec, can_id: int) -> tuple[int, int | None, int, Any, int]:
@@ -269,11 +275,12 @@ def _single_route(codec: TypeCodec, can_id: int) -> _SingleRoute:
 def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
     """The multi-frame route of a valid CAN ID of a type."""
     decode, seed = codec.fast.decode, codec.crc_seed
+    most = frame_count(codec.max_payload)
     source, destination, priority, kind, data_type_id = _transfer_fields(codec, can_id)
 
     def route(frames: list[Any], timestamp: float) -> Transfer | None:
         count = len(frames)
-        if count >= _MAX_FRAMES:
+        if count > most:  # a longer payload than the type's largest
             return None
         chunks = []
         for frame in frames:
@@ -305,14 +312,30 @@ def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
     return route
 
 
-_TAILS = tuple(
-    tuple((bytes(tails[:-1]), tails[-1]) if tails else (b"", 0) for tails in by_count)
-    for by_count in MULTI_FRAME_TAILS
-)
+class _ByCount(dict[int, Any]):
+    """A value per frame count, made by ``make(count)`` on first use (a route asks only
+    for counts up to its type's largest transfer, `frame_count`)."""
+
+    __slots__ = ("make",)
+
+    def __init__(self, make: Callable[[int], Any]) -> None:
+        super().__init__()
+        self.make = make
+
+    def __missing__(self, count: int) -> Any:
+        value = self[count] = self.make(count)
+        return value
+
+
+def _tail_pair(rows: dict[int, tuple[int, ...]]) -> Callable[[int], tuple[bytes, int]]:
+    return lambda count: (bytes(rows[count][:-1]), rows[count][-1])
+
+
+_TAILS = tuple(_ByCount(_tail_pair(rows)) for rows in MULTI_FRAME_TAILS)
 """``_TAILS[transfer_id][frame_count]``: the tail bytes of the frames before the last, and
 the last one's."""
 
-_CHUNKS = tuple(struct.Struct("7sx" * (count - 1)) for count in range(_MAX_FRAMES))
+_CHUNKS = _ByCount(lambda count: struct.Struct("7sx" * (count - 1)))
 """``_CHUNKS[frame_count]`` unpacks the payload bytes (7 each) of the frames before the last."""
 
 _ROUTES_OF: weakref.WeakKeyDictionary[TypeSet, _Routes] = weakref.WeakKeyDictionary()
@@ -439,20 +462,21 @@ def _decode_frames_checked(
     items: list[tuple[int, bytes]], timestamp: float, types: TypeSet | None = None
 ) -> Transfer:
     """`decode_frames` through the generic path, checking every field in turn."""
-    if not 0 < len(items) < len(MULTI_FRAME_TAILS[0]):
-        raise DecodeError(None, f"{len(items)} frames, not 1..{len(MULTI_FRAME_TAILS[0]) - 1}", b"")
+    if not items:
+        raise DecodeError(None, "no frames", b"")
     can_id = items[0][0]
     fields = parse_can_id(can_id)
     codec = types_or_default(types, "decode_frames").by_id.get((fields.kind, fields.data_type_id))
     name = codec.data_type.full_name if codec else None
-    tid = items[0][1][-1] & 0x1F if items[0][1] else 0
+    tid = items[0][1][-1] & TRANSFER_ID_MASK if items[0][1] else 0
+    count = len(items)
     for index, (frame_id, data) in enumerate(items):
-        last = index == len(items) - 1
+        last = index == count - 1
         if frame_id != can_id:
             raise DecodeError(name, f"frame {index} has CAN ID {frame_id:#x}", data, "can_id")
         if not 1 <= len(data) <= 8 or (not last and len(data) != 8):
             raise DecodeError(name, f"frame {index} has {counted(len(data), 'byte')}", data)
-        expected = MULTI_FRAME_TAILS[tid][len(items)][index] if len(items) > 1 else 0xC0 | tid
+        expected = tail_byte(index == 0, last, bool(index & 1), tid)
         if data[-1] != expected:
             raise DecodeError(
                 name, f"frame {index} tail byte {data[-1]:#04x}, expected {expected:#04x}", data
