@@ -436,15 +436,17 @@ def parse_file(path: Path, full_name_prefix: str) -> Definition:
     return parse_text(text, full_name, default_id, str(path))
 
 
-def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Definition]:
-    """Parse every definition under each root namespace directory (e.g. ``.../uavcan``).
+def definition_files(roots: Iterable[str | os.PathLike[str]]) -> list[tuple[str, Path, int]]:
+    """The full name, file and root (its index in ``roots``) of every definition under each
+    root namespace directory: the roots in order, the files of each sorted. Only the
+    directories are listed; no file is read.
 
     Raises:
-        DsdlError: A malformed file, a type defined twice, or a nested type that is
-            defined nowhere (naming the file and line that uses it).
+        DsdlError: A root that is not a directory, a directory name that is no namespace
+            name, or a file name that is not ``[ID.]Name.uavcan``.
     """
-    found: dict[str, Definition] = {}
-    for root in roots:
+    found = []
+    for index, root in enumerate(roots):
         base = Path(root)
         if not base.is_dir():
             raise DsdlError(base, None, "not a directory of DSDL definitions")
@@ -453,12 +455,35 @@ def parse_namespaces(roots: Iterable[str | os.PathLike[str]]) -> dict[str, Defin
             parts = path.relative_to(base).parent.parts
             for part in parts:
                 _check_namespace(part, path)
-            prefix = ".".join((base.name, *parts))
-            definition = parse_file(path, prefix)
-            other = found.get(definition.full_name)
-            if other is not None:
-                raise DsdlError(path, None, f"{definition.full_name} also in {other.path}")
-            found[definition.full_name] = definition
+            name = _FILE.match(path.name)
+            if name is None:
+                raise DsdlError(path, None, "not a DSDL file name ([ID.]Name.uavcan)")
+            found.append((".".join((base.name, *parts, name.group(2))), path, index))
+    return found
+
+
+def parse_namespaces(
+    roots: Iterable[str | os.PathLike[str]], *, override: bool = False
+) -> dict[str, Definition]:
+    """Parse every definition under each root namespace directory (e.g. ``.../uavcan``).
+
+    Two roots of one name (a user's ``com`` beside the shipped one) add up. With
+    ``override``, a definition in a later root replaces the one of the same full name in
+    an earlier root (`veronte4x.dronecan.vendor_roots.overrides` lists them); without it,
+    that is an error, as two definitions of one name in one root always are.
+
+    Raises:
+        DsdlError: A malformed file, or a type defined twice (naming both files).
+    """
+    found: dict[str, Definition] = {}
+    root_of: dict[str, int] = {}
+    for full_name, path, root in definition_files(roots):
+        definition = parse_file(path, full_name.rsplit(".", 1)[0])
+        other = found.get(full_name)
+        if other is not None and not (override and root_of[full_name] < root):
+            raise DsdlError(path, None, f"{full_name} also in {other.path}")
+        found[full_name] = definition
+        root_of[full_name] = root
     return found
 
 
