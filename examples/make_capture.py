@@ -13,6 +13,10 @@ What is on the bus (one CAN bus, ``can0``), at the rates of Embention's template
   asks each ESC for its node info once at start.
 - Four simulated Vertiq ESCs (`veronte4x.simulator.SimulatedEsc`, nodes 20-23, ESC indices
   0-3) publish NodeStatus at 1 Hz and esc.Status and Temperature at 10 Hz, and answer.
+  They differ as real ones do (`ESC_MODELS`, and each its own throttle): one draws more
+  current, one sits in a warmer place, one warms up through the flight.
+- Every frame is stamped when it ends on a 1 Mbit/s bus that carries one frame at a time,
+  the lowest CAN ID first (`veronte4x.capture.bus_time`).
 - At ``--fail-at`` seconds the autopilot selected then stops sending: the arbiter declares
   it dead after 0.1 s and switches; ``veronte4x replay`` explains it.
 
@@ -24,36 +28,57 @@ from __future__ import annotations
 import argparse
 import math
 import random
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
+from dataclasses import replace
 from pathlib import Path
 
 from veronte4x import arbiter, codec, dronecan
 from veronte4x.arbiter.config_file import load_config
+from veronte4x.capture.bus_time import PendingFrame, transmit
 from veronte4x.dronecan.vertiq import raw_command
-from veronte4x.simulator import SimulatedEsc
+from veronte4x.simulator import DEFAULT_MODEL, SimulatedEsc
 
 START = 1_763_737_200.0  # capture clock at t = 0 (2025-11-21 15:00 UTC)
 TICK = 0.020  # the autopilots' arbitration period
+BITRATE = 1_000_000  # bit/s
 AUTOPILOT_IDS = (8, 9, 10)
 FC_NODE = 10
 ESC_NODES = (20, 21, 22, 23)
+ESC_MODELS = (
+    DEFAULT_MODEL,
+    replace(DEFAULT_MODEL, max_current=33.0),  # a heavier propeller: more current
+    replace(DEFAULT_MODEL, ambient_temperature=303.15),  # mounted near the battery
+    replace(DEFAULT_MODEL, coil_heating=0.2, mcu_heating=4.0),  # one that warms up
+)
+"""Each ESC's motor (`veronte4x.simulator.MotorModel`): four that differ as real ones do."""
 CONFIG = load_config(str(Path(__file__).with_name("arbiter.toml")))
 
 
 class Bus:
-    """Collects (time, CAN ID, extended, data) lines and writes them in candump -L form."""
+    """Collects the frames the nodes send and writes them in candump -L form, each stamped
+    when it ends on a 1 Mbit/s bus (`veronte4x.capture.bus_time`: one frame at a time, the
+    lowest CAN ID first)."""
 
     def __init__(self) -> None:
-        self.lines: list[tuple[float, str]] = []
+        self.frames: list[PendingFrame] = []
+        self.texts: list[str] = []
 
-    def send(self, time: float, can_id: int, data: bytes, extended: bool = False) -> None:
+    def send(
+        self, time: float, can_id: int, data: bytes, sender: Hashable, extended: bool = False
+    ) -> None:
         ident = f"{can_id:08X}" if extended else f"{can_id:03X}"
-        self.lines.append((time, f"({START + time:.6f}) can0 {ident}#{data.hex().upper()}"))
+        self.frames.append(PendingFrame(time, can_id, extended, len(data), sender))
+        self.texts.append(f"can0 {ident}#{data.hex().upper()}")
 
     def write(self, path: Path) -> int:
-        self.lines.sort(key=lambda line: line[0])
-        path.write_text("".join(text + "\n" for _, text in self.lines))
-        return len(self.lines)
+        queued = sorted(range(len(self.frames)), key=lambda i: self.frames[i].ready)
+        ends = transmit([self.frames[i] for i in queued], BITRATE)
+        order = sorted(range(len(ends)), key=ends.__getitem__)
+        texts = [self.texts[queued[i]] for i in order]
+        path.write_text(
+            "".join(f"({START + ends[i]:.6f}) {t}\n" for i, t in zip(order, texts, strict=True))
+        )
+        return len(order)
 
 
 def attitude(time: float) -> tuple[float, float]:
@@ -66,12 +91,22 @@ def throttle(time: float) -> float:
     return min(1.0, time / 5.0) * (0.55 + 0.1 * math.sin(time / 13.0))
 
 
+def esc_throttle(time: float, index: int) -> float:
+    """One ESC's throttle: the collective plus the attitude controller's corrections (the
+    front pair works harder in the climb, each motor has its own small oscillation)."""
+    trim = (0.04, 0.03, -0.02, -0.03)[index]
+    return min(1.0, throttle(time) * (1.0 + trim + 0.02 * math.sin(0.9 * time + index)))
+
+
 def generate(minutes: float, fail_at: float, seed: int) -> Bus:
     """Simulate the vehicle and return the bus traffic."""
     rng = random.Random(seed)
     bus = Bus()
     model = arbiter.Arbiter(CONFIG)
-    escs = [SimulatedEsc(node, index, start_time=0.0) for index, node in enumerate(ESC_NODES)]
+    escs = [
+        SimulatedEsc(node, index, start_time=0.0, model=model_)
+        for index, (node, model_) in enumerate(zip(ESC_NODES, ESC_MODELS, strict=True))
+    ]
     bias = (0.012, 0.001, -0.006)  # each autopilot's steady attitude error, rad
     noise = 0.0015  # sensor noise, rad
     gnss = (1.7, 1.9, 1.5)  # each autopilot's GNSS accuracy, m
@@ -81,18 +116,20 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
     ticks = int(end / TICK)
 
     def deliver(
-        time: float, frames: Iterator[dronecan.TransferFrame] | list[dronecan.TransferFrame]
+        time: float,
+        sender: int,
+        frames: Iterator[dronecan.TransferFrame] | list[dronecan.TransferFrame],
     ) -> None:
-        for offset, frame in enumerate(frames):
-            stamp = time + offset * 0.0002
-            bus.send(stamp, frame.can_id, frame.data, extended=True)
+        for frame in frames:
+            bus.send(time, frame.can_id, frame.data, sender, extended=True)
             for esc in escs:
-                esc.receive(frame.can_id, frame.data, stamp)
+                esc.receive(frame.can_id, frame.data, time)
 
     for node in ESC_NODES:  # the flight controller asks every ESC who it is
         request = dronecan.GetNodeInfoRequest()
         deliver(
             0.001 * node,
+            "flight controller",
             dronecan.encode(
                 request, source_node_id=FC_NODE, transfer_id=0, destination_node_id=node
             ),
@@ -115,20 +152,23 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
             messages += [codec.ArbitrationVariable(n, v) for n, v in enumerate(values)]
             pwm = tuple(round(2048 + 1500 * math.sin(now / 3 + ch)) for ch in range(4))
             messages.append(codec.PwmSet(0, pwm))  # type: ignore[arg-type]
-            for offset, message in enumerate(messages):
+            for message in messages:
                 data = codec.encode(message)
-                stamp = at + offset * 0.0001
-                bus.send(stamp, can_id, data)
+                bus.send(at, can_id, data, f"AP{ap + 1}")
                 if not isinstance(message, codec.PwmSet):
-                    model.receive(can_id, data, stamp)
+                    model.receive(can_id, data, at)
         for can_id, data in model.poll(now + 0.002):
-            bus.send(now + 0.002, can_id, data)
-        command = raw_command([throttle(now)] * len(escs))
-        deliver(now + 0.003, dronecan.encode(command, source_node_id=FC_NODE, transfer_id=fc_tid))
+            bus.send(now + 0.002, can_id, data, "arbiter")
+        command = raw_command([esc_throttle(now, index) for index in range(len(escs))])
+        deliver(
+            now + 0.003,
+            "flight controller",
+            dronecan.encode(command, source_node_id=FC_NODE, transfer_id=fc_tid),
+        )
         fc_tid = (fc_tid + 1) % 32
         for index, esc in enumerate(escs):
             at = now + 0.005 + 0.001 * index
-            deliver(at, esc.poll(at))
+            deliver(at, f"ESC {index}", esc.poll(at))
     return bus
 
 

@@ -6,7 +6,8 @@ What is on the bus, each type at its usual rate, encoded by `veronte4x.dronecan.
 - An autopilot (node 10) commanding 8 ESCs (esc.RawCommand at 400 Hz) and two servos
   (actuator.ArrayCommand at 100 Hz); its safety.ArmingStatus and indication.LightsCommand
   at 10 Hz.
-- Eight ESCs (nodes 60-67): esc.Status at 50 Hz each.
+- Eight ESCs (nodes 60-67): esc.Status at 50 Hz each; their loads differ a little, and
+  one (node 65) warms up through the flight.
 - Two servos (nodes 80, 81): actuator.Status at 20 Hz.
 - A GNSS receiver (node 70): gnss.Fix2 at 10 Hz, gnss.Auxiliary at 5 Hz, a
   debug.LogMessage a second.
@@ -14,6 +15,10 @@ What is on the bus, each type at its usual rate, encoded by `veronte4x.dronecan.
   air_data.StaticPressure and StaticTemperature at 10 Hz; an airspeed sensor (73):
   air_data.RawAirData at 20 Hz; a battery monitor (74): power.BatteryInfo at 5 Hz.
 - The NodeStatus of every node, once a second.
+
+Every frame is stamped when it ends on a 1 Mbit/s bus that carries one frame at a time,
+the lowest CAN ID first (`veronte4x.capture.bus_time`), so bus load and rates are those a
+real bus would show.
 
 The vehicle flies a 60-second cycle (disarmed, spool-up, hover, climb, cruise, descent):
 the commands, ESC speeds and currents, battery voltage and height follow it, so the values
@@ -31,6 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from veronte4x import dronecan
+from veronte4x.capture.bus_time import PendingFrame, transmit
 from veronte4x.dronecan.definitions import DATA_TYPES
 from veronte4x.dronecan.schema import Array, Struct, Union
 
@@ -38,6 +44,7 @@ START = 1_700_000_000.0  # capture clock at t = 0 (2023-11-14 22:13:20 UTC)
 AUTOPILOT, ESCS, SERVOS = 10, range(60, 68), (80, 81)
 GPS, COMPASS, BARO, AIRSPEED, BATTERY = 70, 71, 72, 73, 74
 NODES = (AUTOPILOT, *ESCS, *SERVOS, GPS, COMPASS, BARO, AIRSPEED, BATTERY)
+BITRATE = 1_000_000  # bit/s
 
 Fields = Callable[[float], dict[str, Any]]
 """The fields of a transfer sent at ``t`` seconds (the defaults of the rest are zero)."""
@@ -61,6 +68,13 @@ def throttle(t: float) -> float:
 def esc_throttle(t: float, index: int) -> float:
     """One ESC's share: the collective plus the attitude controller's small corrections."""
     return max(0.0, throttle(t) * (1.0 + 0.04 * (index - 3.5) / 3.5 * math.sin(0.9 * t + index)))
+
+
+def esc_temperature(t: float, index: int) -> float:
+    """An ESC's temperature, K: warmer under load; ESC 5 (node 65), poorly cooled, warms up
+    by 1 K every 10 s to 40 K above the others."""
+    warming = min(40.0, 0.1 * t) if index == 5 else 0.0
+    return 300.0 + 25.0 * esc_throttle(t, index) + warming
 
 
 def battery_current(t: float) -> float:
@@ -208,7 +222,7 @@ def _traffic() -> list[tuple[float, int, str, Fields]]:
                     "error_count": 0,
                     "voltage": battery_voltage(t) - 0.1,
                     "current": 30.0 * esc_throttle(t, i) ** 2,
-                    "temperature": 300.0 + 25.0 * esc_throttle(t, i),
+                    "temperature": esc_temperature(t, i),
                     "rpm": round(9000 * esc_throttle(t, i)),
                     "power_rating_pct": round(100 * esc_throttle(t, i)),
                     "esc_index": i,
@@ -263,8 +277,13 @@ def frames_per_second() -> float:
 
 
 def bus_lines(seconds: float) -> list[str]:
-    """candump ``-L`` lines of the bus's first ``seconds``, in time order."""
-    events: list[tuple[float, int, list[str]]] = []
+    """candump ``-L`` lines of the bus's first ``seconds``, in time order.
+
+    Each transfer is ready at its stream's time (streams a little out of phase); its frames
+    then go onto a 1 Mbit/s bus as a real one carries them (`veronte4x.capture.bus_time`:
+    one frame at a time, the lowest CAN ID first), stamped when they end."""
+    frames: list[PendingFrame] = []
+    texts: list[str] = []
     for order, (period, node, name, fields) in enumerate(_traffic()):
         data_type = _BY_NAME[name]
         phase = order * 1e-4
@@ -273,13 +292,16 @@ def bus_lines(seconds: float) -> list[str]:
             made = dronecan.encode(
                 _message(data_type, fields(t)), source_node_id=node, transfer_id=k % 32
             )
-            texts = [f"{f.can_id:08X}#{f.data.hex().upper()}" for f in made]
-            events.append((START + phase + t, order, texts))
-    events.sort(key=lambda event: event[:2])
-    lines = []
-    for stamp, _, texts in events:
-        lines += [f"({stamp + 1e-5 * i:.6f}) can0 {text}" for i, text in enumerate(texts)]
-    return lines
+            for f in made:
+                frames.append(PendingFrame(phase + t, f.can_id, True, len(f.data), node))
+                texts.append(f"{f.can_id:08X}#{f.data.hex().upper()}")
+    order = sorted(range(len(frames)), key=lambda i: frames[i].ready)  # as nodes queue them
+    frames, texts = [frames[i] for i in order], [texts[i] for i in order]
+    ends = transmit(frames, BITRATE)
+    return [
+        f"({START + ends[i]:.6f}) can0 {texts[i]}"
+        for i in sorted(range(len(ends)), key=ends.__getitem__)
+    ]
 
 
 def vehicle_lines(frames: int) -> list[str]:
