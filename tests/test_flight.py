@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import dataclasses
+import datetime
 import io
 import json
 import re
@@ -175,3 +176,19 @@ def test_tables_example(flight: Path, tmp_path: Path) -> None:
     assert "ESC node 20, 5-15 s from the start: 100 rows" in result.stdout
     assert "AP3" in result.stdout.split("Selected autopilot changes")[1]
     assert plot.stat().st_size > 10_000
+
+
+def test_a_capture_replays_in_python_as_on_the_command_line(flight: Path) -> None:
+    """`capture.replay(path, config)`: the CLI's timeline, with UTC datetimes."""
+    from veronte4x.capture.arbitration import replay
+    from veronte4x.times import format_time
+
+    config = EXAMPLES / "arbiter.toml"
+    result = replay(flight, config)
+    assert result == replay(flight, load_config(config))
+    cli = run("replay", str(flight), "--config", str(config)).stdout
+    assert result.timeline(format_time) + "\n" == cli
+    switch = next(d for d in result.decisions if d.reason.startswith("AP2 -> AP3"))
+    assert switch.utc is not None and switch.utc.tzinfo is not None
+    assert switch.utc.strftime("%Y-%m-%dT%H:%M:%S.%fZ") == format_time(switch.time)
+    assert (switch.utc - datetime.datetime(2025, 11, 21, 15, tzinfo=datetime.UTC)).seconds == 15

@@ -42,6 +42,29 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
 _EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
 
 
+def utc_datetime(seconds: float) -> _dt.datetime | None:
+    """Unix time as a UTC datetime, to the microsecond (as the tables hold it).
+
+    Returns:
+        None for a capture's own clock (below `EPOCH_THRESHOLD`), a time that is not
+        finite, or one past year 9999.
+
+    Examples:
+        >>> utc_datetime(1763737200.01)
+        datetime.datetime(2025, 11, 21, 15, 0, 0, 10000, tzinfo=datetime.timezone.utc)
+        >>> utc_datetime(12.5) is None
+        True
+    """
+    if not EPOCH_THRESHOLD <= seconds < _MAX_SECONDS:
+        return None
+    return _EPOCH + _dt.timedelta(microseconds=round(seconds * 1_000_000))
+
+
+_MAX_SECONDS = (
+    _dt.datetime(9999, 12, 31, 23, 59, 59, tzinfo=_dt.timezone.utc) - _EPOCH
+).total_seconds()
+
+
 TimeForm = Literal["timestamp", "relative", "seconds"]
 """How tables, DataFrames and datasets give a capture's time (their ``time`` option):
 ``timestamp``, an Arrow ``timestamp[us, tz=UTC]`` exact to the log (the default);

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import datetime
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass, fields
 
 from veronte4x.arbiter.machine import ArbiterPhase
 from veronte4x.codec.messages import Flags4
+from veronte4x.times import utc_datetime
 
 
 class ArbiterMode(enum.Enum):
@@ -119,6 +121,11 @@ class Decision:
 
     def __str__(self) -> str:
         return f"{self.time:10.3f} s  {self.body()}"
+
+    @property
+    def utc(self) -> datetime.datetime | None:
+        """`time` as a UTC datetime where it is Unix time (a capture's own clock: None)."""
+        return utc_datetime(self.time)
 
     def body(self) -> str:
         """The decision without its time."""

@@ -1,0 +1,69 @@
+"""The arbiter model over a capture file: `veronte4x.arbiter.replay` as the CLI runs it.
+
+`veronte4x.arbiter.replay` is sans-IO: it takes (time, CAN ID, data) triples. This adapter
+reads them from a capture in any format `open_frames` reads, with the frames the CLI's
+``veronte4x replay`` keeps: timestamped data frames (no error, remote or CAN FD frame) whose
+ID width is the configuration's.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+
+from veronte4x.arbiter.config import ArbiterConfig
+from veronte4x.arbiter.config_file import load_config
+from veronte4x.arbiter.replay import CapturedFrame, ReplayResult
+from veronte4x.arbiter.replay import replay as replay_frames
+from veronte4x.capture.frames import Frame
+from veronte4x.capture.source import open_frames
+
+__all__ = ["replay"]
+
+
+def replay(
+    path: str | os.PathLike[str],
+    config: ArbiterConfig | str | os.PathLike[str],
+    channel: str | None = None,
+) -> ReplayResult:
+    """Run a capture through the arbiter model and compare it with the real arbiter.
+
+    Args:
+        path: The capture file (any format `veronte4x.capture.open_frames` reads).
+        config: The captured vehicle's arbiter configuration, or the path of its TOML file
+            (`veronte4x.arbiter.config_file.load_config`). ``ArbiterConfig()`` is the
+            default configuration, with which disagreements may come from the
+            configuration rather than the arbiter.
+        channel: Keep only this interface's frames.
+
+    Returns:
+        As `veronte4x.arbiter.replay`; each decision's `Decision.utc` is its time as a UTC
+        datetime.
+
+    Raises:
+        SourceError: The path is a directory or a file in no format veronte4x knows.
+        ConfigError: The configuration file is not a valid arbiter configuration.
+        DisorderedError: The capture is not in time order.
+
+    Examples:
+        >>> from veronte4x import capture
+        >>> result = capture.replay("examples/flight.log", "examples/arbiter.toml")
+        ... # doctest: +SKIP
+        >>> print(result.timeline())  # doctest: +SKIP
+    """
+    if not isinstance(config, ArbiterConfig):
+        config = load_config(config)
+    return replay_frames(_frames(path, config, channel), config)
+
+
+def _frames(
+    path: str | os.PathLike[str], config: ArbiterConfig, channel: str | None
+) -> Iterator[CapturedFrame]:
+    for frame in open_frames(path, channel):
+        if (
+            isinstance(frame, Frame)
+            and frame.timestamp is not None
+            and not (frame.error or frame.remote or frame.fd)
+            and frame.extended == config.extended_ids
+        ):
+            yield frame.timestamp, frame.can_id, frame.data
