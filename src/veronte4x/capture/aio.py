@@ -3,12 +3,12 @@
 Frames come through python-can's asyncio support (a ``can.Notifier`` bound to the running
 loop feeding a ``can.AsyncBufferedReader``) and go through the same `CaptureDecoder` as
 `veronte4x.capture.read` gives the frames of a python-can log: the records are those
-`read` would give for a log of the same messages. Needs the ``can`` extra.
+`read` would give for a log of the same messages. Needs the ``can`` extra. asyncio is
+imported by the calls, so that importing `veronte4x.capture` does not import it.
 """
 
 from __future__ import annotations
 
-import asyncio
 import os
 import time
 from collections.abc import AsyncIterator, Callable, Iterable
@@ -76,6 +76,8 @@ class _Inbox:
     """The notifier's listener: messages, or the bus's failure, queued on the loop."""
 
     def __init__(self) -> None:
+        import asyncio
+
         self.queue: asyncio.Queue[Any] = asyncio.Queue()
 
     def __call__(self, message: Any) -> None:
@@ -93,6 +95,8 @@ async def _records(
     duration: float | None,
     clock: Callable[[], float],
 ) -> AsyncIterator[Record]:
+    import asyncio
+
     import can
 
     inbox = _Inbox()

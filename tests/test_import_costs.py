@@ -1,0 +1,112 @@
+"""What starting costs: importing a public module, or a call that does not need an optional
+package, leaves the heavy optional packages unimported (issue 36, "lazy where laziness is
+free"). Each check runs in a fresh interpreter and compares sets of module names, never a
+time (the times are `benchmarks/bench_cold.py`'s)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+CAPTURE = ROOT / "examples" / "capture.log"
+
+HEAVY = frozenset(
+    {
+        "asammdf",
+        "asyncio",
+        "can",  # python-can, which itself imports asyncio, pandas, polars and asammdf
+        "cantools",
+        "distributed",
+        "dronecan",  # the dronecan package (pydronecan), not veronte4x.dronecan
+        "matplotlib",
+        "msgpack",
+        "numpy",
+        "pandas",
+        "polars",
+        "pyarrow",
+        "pyarrow.dataset",
+        "rich",
+        "tqdm",
+    }
+)
+"""Optional packages that cost tens to hundreds of milliseconds to import."""
+
+PUBLIC = (
+    "veronte4x",
+    "veronte4x.codec",
+    "veronte4x.dronecan",
+    "veronte4x.capture",
+    "veronte4x.client",
+    "veronte4x.arbiter",
+    "veronte4x.node",
+    "veronte4x.simulator",
+    "veronte4x.variables",
+    "veronte4x.cli",
+)
+
+PROBE = """
+import json, sys
+heavy = set(json.loads(sys.argv[1]))
+steps = json.loads(sys.argv[2])
+found = {}
+for name, code in steps:
+    exec(code, {})
+    found[name] = sorted(heavy & set(sys.modules))
+print(json.dumps(found))
+"""
+
+
+def heavy_after(steps: list[tuple[str, str]]) -> dict[str, set[str]]:
+    """Run ``steps`` (name, code) in turn in one fresh interpreter; the heavy modules loaded
+    after each. Importing is monotonic: a module that a step alone would import is loaded
+    after that step here too, so a step that adds nothing proves its code alone imports
+    none."""
+    done = subprocess.run(
+        [sys.executable, "-c", PROBE, json.dumps(sorted(HEAVY)), json.dumps(steps)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    found: dict[str, list[str]] = json.loads(done.stdout.splitlines()[-1])
+    return {name: set(modules) for name, modules in found.items()}
+
+
+def test_importing_a_public_module_imports_no_heavy_package() -> None:
+    found = heavy_after([(module, f"import {module}") for module in PUBLIC])
+    assert found == {module: set() for module in PUBLIC}
+
+
+def test_decoding_a_candump_file_per_frame_imports_no_heavy_package() -> None:
+    found = heavy_after(
+        [
+            (
+                "capture.read",
+                f"from veronte4x import capture; list(capture.read({str(CAPTURE)!r}))",
+            ),
+            (
+                "veronte4x decode",
+                "import contextlib, io; from veronte4x.cli import main\n"
+                "with contextlib.redirect_stdout(io.StringIO()):\n"
+                f"    main(['decode', {str(CAPTURE)!r}])",
+            ),
+        ]
+    )
+    assert found == {"capture.read": set(), "veronte4x decode": set()}
+
+
+@pytest.mark.parametrize("call", ["read_tables", "to_parquet"])
+def test_arrow_calls_import_only_what_they_need(call: str, tmp_path: Path) -> None:
+    arguments = f"{str(CAPTURE)!r}" + (
+        f", {str(tmp_path / 'out')!r}" if call == "to_parquet" else ""
+    )
+    found = heavy_after([(call, f"from veronte4x import capture; capture.{call}({arguments})")])
+    # pandas is pyarrow's: pyarrow (pandas-shim.pxi) imports it, when it is installed, on
+    # building its first array in a process; nothing of veronte4x asks for it.
+    assert found[call] - {"pandas"} == {"numpy", "pyarrow"}
