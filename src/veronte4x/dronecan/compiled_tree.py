@@ -15,7 +15,7 @@ The bit stream (see `serializer`) is read and written in pieces:
   it is (``unpack_from``, a slice for ``uint8`` arrays); elsewhere from the payload as one
   big-endian int ``x``, shifted so that reads past the end give zeros.
 - Arrays of whole-byte scalars are one ``struct`` call; other scalar arrays one list
-  comprehension (an integer item of more than 8 bits from two tables, `_half_tables`);
+  comprehension (an integer item of 9 to 24 bits from two tables, `half_tables`);
   arrays of structs a loop; a union an ``if`` per member.
 - The encoder appends every piece to one int ``a`` and its bit count, then pads to bytes.
 
@@ -30,6 +30,7 @@ nested loops) gets functions that always raise `SlowPath`: the generic serialize
 
 from __future__ import annotations
 
+import functools
 import struct
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -77,25 +78,34 @@ def _from_piece(t: Scalar, var: str, name: Namer) -> str:
     return scalar_value(t, gather(var, be_runs(0, t.bits, t.bits), t.bits), None, name)
 
 
-def _half_tables(t: Scalar) -> tuple[tuple[int, ...], tuple[int, ...]]:
-    """Two tables that decode an integer scalar of more than 8 bits from its piece of the
-    stream (``t.bits`` bits, a big-endian int): the value is ``high[piece >> h] +
-    low[piece & (2**h - 1)]``, ``h`` half the bits rounded up. The piece's bit runs are
-    disjoint, so each half contributes its own bits of the value; the half that holds the
-    sign bit of an ``int`` also subtracts ``2**bits``."""
-    runs = be_runs(0, t.bits, t.bits)
-    sign = 1 << t.bits if t.kind == "int" else 0
+HALF_TABLE_BITS = 24
+"""Widest integer item read through `half_tables` (two tables of at most 4,096 entries);
+a wider one is valued from its bit runs, one expression per item."""
 
-    def part(piece: int) -> int:
-        bits = 0  # as `gather` reads them
-        for source, width, dest in runs:
-            bits |= (piece >> dest & (1 << width) - 1) << source
-        return bits - sign if bits >> (t.bits - 1) and sign else bits
 
-    low_bits = (t.bits + 1) // 2
-    high = tuple(part(j << low_bits) for j in range(1 << (t.bits - low_bits)))
-    low = tuple(part(j) for j in range(1 << low_bits))
-    return high, low
+@functools.cache
+def half_tables(kind: str, bits: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
+    """Two tables that decode an integer scalar (``kind`` ``int`` or ``uint``) of ``bits``
+    bits, 8 < bits <= `HALF_TABLE_BITS`, from its piece of the stream (a big-endian int):
+    the value is ``high[piece >> h] + low[piece & (2**h - 1)]``, ``h`` half the bits rounded
+    up. Each bit of the piece stands for one bit of the value (its bit runs are disjoint),
+    so a table is built by doubling: the entries so far, then each plus the next bit's
+    weight. The sign bit of an ``int`` weighs ``-2**(bits - 1)``; one table per (kind,
+    bits) for the whole process."""
+    weights = [0] * bits  # the value's weight of each bit of the piece
+    for source, width, dest in be_runs(0, bits, bits):
+        for k in range(width):
+            weight = 1 << (source + k)
+            weights[dest + k] = -weight if kind == "int" and source + k == bits - 1 else weight
+    low_bits = (bits + 1) // 2
+
+    def table(piece_bits: list[int]) -> tuple[int, ...]:
+        entries = [0]
+        for weight in piece_bits:
+            entries += [e + weight for e in entries]
+        return tuple(entries)
+
+    return table(weights[low_bits:]), table(weights[:low_bits])
 
 
 def _to_piece(t: Scalar, var: str) -> str:
@@ -404,10 +414,10 @@ class _Decoder(_Writer):
                         "A", tuple(struct.Struct(f"<{n}{code}") for n in range(t.max_size + 1))
                     )
                     self.emit(f"{v} = {table}[{k}].unpack({data})")
-        elif item.kind in ("int", "uint") and item.bits > 8:
+        elif item.kind in ("int", "uint") and 8 < item.bits <= HALF_TABLE_BITS:
             self.uses_x = True
             y, i = self.fresh("y"), self.fresh("i")
-            high, low = _half_tables(item)
+            high, low = half_tables(item.kind, item.bits)
             low_bits = (item.bits + 1) // 2
             # The items as one int, first item on top; each item from two tables.
             self.emit(f"{y} = x >> (q - {self.at()} - ({total}))")
