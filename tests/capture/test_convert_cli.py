@@ -37,7 +37,7 @@ def test_convert_writes_the_dataset_and_one_summary_line(tmp_path: Path) -> None
 
 
 def test_convert_keeps_one_channel(tmp_path: Path) -> None:
-    result = convert(str(FLIGHT), "--to", "parquet", str(tmp_path), "--channel", "can1")
+    result = convert(str(FLIGHT), "--to", "parquet", str(tmp_path), "--only-channel", "can1")
     assert result.returncode == 0
     assert_same_tables(read_back(tmp_path), capture.read_tables(FLIGHT, channel="can1"))
 

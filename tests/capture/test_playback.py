@@ -178,7 +178,10 @@ def test_play_sends_every_frame_in_order_with_its_spacing(tmp_path: Path) -> Non
                 "veronte4x",
                 "play",
                 str(capture),
-                f"udp_multicast:{GROUP}",
+                "--interface",
+                "udp_multicast",
+                "--channel",
+                GROUP,
                 "--bus-option",
                 f"port={port}",
                 "--speed",
@@ -214,20 +217,20 @@ def test_play_usage_errors(tmp_path: Path) -> None:
             check=False,
         )
 
-    done = play("virtual:x", "--speed", "0")
+    done = play("-i", "virtual", "-c", "x", "--speed", "0")
     assert done.returncode == 2
     assert done.stderr.endswith(
         "veronte4x play: error: argument --speed: '0': expected a positive number, e.g. 2 or 0.5\n"
     )
-    done = play("virtual:x", "--filter", "zz")
+    done = play("-i", "virtual", "-c", "x", "--filter", "zz")
     assert done.returncode == 2
     assert "filter 'zz': expected a hexadecimal CAN ID or ID:MASK" in done.stderr
-    done = play("virtual:x", "--channel-map", "can0")
+    done = play("-i", "virtual", "-c", "x", "--channel-map", "can0")
     assert (done.returncode, done.stderr) == (
         2,
         "veronte4x: --channel-map 'can0': expected CAPTURED=SENT, e.g. can0=vcan1\n",
     )
-    done = play("nosuchinterface:x")
+    done = play("-i", "nosuchinterface", "-c", "x")
     assert done.returncode == 2
     assert done.stderr.startswith("veronte4x: cannot open the CAN bus (interface nosuchinterface")
 

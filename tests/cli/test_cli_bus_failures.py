@@ -93,7 +93,7 @@ def test_decode_of_a_live_bus_that_fails(tmp_path: Path, kind: str) -> None:
     [
         (["monitor", "--interface", "failing"], "the CAN bus failed: RuntimeError: driver crashed"),
         (
-            ["play", str(EXAMPLE), "failing"],
+            ["play", str(EXAMPLE), "--interface", "failing"],
             "the CAN bus failed sending frame 4: RuntimeError: driver crashed",
         ),
         (

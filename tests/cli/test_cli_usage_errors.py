@@ -163,7 +163,7 @@ def test_play_with_a_channel_map_sends_onto_the_mapped_channel() -> None:
     port = free_port()
     with can.Bus(interface="udp_multicast", channel=GROUP, port=port) as listener:
         options = ["--bus-option", f"port={port}", "--channel-map", f"can0={GROUP}"]
-        result = veronte4x("play", str(CAPTURE), "udp_multicast:", *options, "--speed", "10")
+        result = veronte4x("play", str(CAPTURE), "-i", "udp_multicast", *options, "--speed", "10")
         assert result.returncode == 0, result.stderr
         assert result.stderr.startswith("veronte4x: sent 39 frames in ")
         received: list[int] = []
@@ -175,7 +175,7 @@ def test_play_with_a_channel_map_sends_onto_the_mapped_channel() -> None:
 
 
 def test_play_with_a_channel_map_that_is_not_captured_equals_sent() -> None:
-    result = veronte4x("play", str(CAPTURE), "udp_multicast:", "--channel-map", "can0")
+    result = veronte4x("play", str(CAPTURE), "-i", "udp_multicast", "--channel-map", "can0")
     assert (result.returncode, result.stdout, result.stderr) == (
         2,
         "",

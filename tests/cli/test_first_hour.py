@@ -157,14 +157,14 @@ def test_decode_shows_an_empty_certificate_as_none(flight_start: Path) -> None:
 
 
 def test_decode_with_a_channel_the_capture_does_not_have_says_which_it_has() -> None:
-    result = _run("decode", str(CAPTURE), "--channel", "can9")
+    result = _run("decode", str(CAPTURE), "--only-channel", "can9")
     assert (result.returncode, result.stdout) == (0, "")
     assert result.stderr.splitlines() == [
         "veronte4x: 0 records, 0 undecoded, 0 bad (skip)",
         f"veronte4x: no frame of {CAPTURE} is on channel can9: its channels are can0; give one "
-        "of them to --channel, or leave it out",
+        "of them to --only-channel, or leave it out",
     ]
-    result = _run("decode", str(CAPTURE), "--channel", "can0")
+    result = _run("decode", str(CAPTURE), "--only-channel", "can0")
     assert result.stderr.splitlines() == ["veronte4x: 39 records, 0 undecoded, 1 bad (skip)"]
 
 
@@ -182,10 +182,10 @@ def test_replay_of_a_capture_without_veronte_traffic_says_so(
         "veronte4x: no frame has a Veronte 4x CAN ID (autopilots 008, 009, 00A, 00B, arbiter "
         "0FF): is this a 4x capture? Other IDs: give the vehicle's --config (or --bus-map)",
     ]
-    result = _run("replay", str(CAPTURE), "--config", str(config), "--channel", "can9")
+    result = _run("replay", str(CAPTURE), "--config", str(config), "--only-channel", "can9")
     assert result.stderr.splitlines()[-1] == (
         f"veronte4x: no frame of {CAPTURE} is on channel can9: its channels are can0; give one "
-        "of them to --channel, or leave it out"
+        "of them to --only-channel, or leave it out"
     )
     result = _run("replay", str(CAPTURE), "--config", str(config))
     assert "Veronte 4x CAN ID" not in result.stderr

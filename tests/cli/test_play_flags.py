@@ -8,7 +8,7 @@ from pathlib import Path
 
 import can
 
-from tests.client.cli_support import GROUP, free_port, veronte4x
+from tests.client.cli_support import GROUP, bus_args, free_port, veronte4x
 
 LINES = [
     "(1.000000) can0 123#11223344",  # classic, 11-bit
@@ -69,9 +69,7 @@ def test_every_flag_and_dlc_reaches_the_bus(tmp_path: Path) -> None:
     capture.write_text("\n".join(LINES) + "\n", encoding="utf-8")
     port = free_port()
     with can.Bus(interface="udp_multicast", channel=GROUP, port=port, fd=True) as listener:
-        result = veronte4x(
-            "play", str(capture), f"udp_multicast:{GROUP}", "--bus-option", f"port={port}"
-        )
+        result = veronte4x("play", str(capture), *bus_args(port))
         assert result.returncode == 0, result.stderr
         assert result.stderr.startswith("veronte4x: sent 10 frames in ")
         assert receive(listener, len(EXPECTED)) == EXPECTED
@@ -85,7 +83,8 @@ def test_a_channel_map_renames_the_channel_and_keeps_the_flags(tmp_path: Path) -
         result = veronte4x(
             "play",
             str(capture),
-            "udp_multicast:",
+            "--interface",
+            "udp_multicast",
             "--bus-option",
             f"port={port}",
             "--channel-map",
@@ -120,9 +119,7 @@ def test_an_asc_capture_plays_with_its_flags(tmp_path: Path) -> None:
         expected = [(*seen(m)[:-1], None) for m in reader]
     port = free_port()
     with can.Bus(interface="udp_multicast", channel=GROUP, port=port, fd=True) as listener:
-        result = veronte4x(
-            "play", str(path), f"udp_multicast:{GROUP}", "--bus-option", f"port={port}"
-        )
+        result = veronte4x("play", str(path), *bus_args(port))
         assert result.returncode == 0, result.stderr
         assert receive(listener, len(expected)) == expected
     assert [e[2:8] for e in expected] == [

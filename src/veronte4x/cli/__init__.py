@@ -26,7 +26,7 @@ from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
 from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
-from veronte4x.cli.options import with_dbc_options
+from veronte4x.cli.options import UsageError, check_bus_spelling, with_dbc_options
 from veronte4x.dronecan import DsdlError, load_dsdl
 from veronte4x.errors import SourceError
 
@@ -60,6 +60,7 @@ def _run(argv: Sequence[str] | None) -> int:
     try:
         parser = _parser()
         args = parser.parse_args(argv)
+        check_bus_spelling(args)
         bus_map = BusMap.from_toml(args.bus_map) if args.bus_map else BusMap()
         if getattr(args, "dsdl", None):
             bus_map = bus_map.with_types(load_dsdl(*args.dsdl))
@@ -75,7 +76,7 @@ def _run(argv: Sequence[str] | None) -> int:
         return EXIT_OK
     except OSError as error:
         return _fail(_os_error(error), EXIT_USAGE)
-    except (SourceError, BusMapError, ConfigError, DsdlError, ImportError) as error:
+    except (SourceError, UsageError, BusMapError, ConfigError, DsdlError, ImportError) as error:
         return _fail(str(error), EXIT_USAGE)
 
 

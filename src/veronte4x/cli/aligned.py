@@ -41,7 +41,7 @@ def run_csv(args: argparse.Namespace, bus_map: BusMap, out: str) -> int:
     """Decode the captures, align their tables and write the CSV."""
     if (args.every is None) == (args.on is None):
         return _usage("--to csv needs one of --every PERIOD (10ms) or --on TABLE")
-    tables = capture.read_tables(args.files, bus_map, args.channel, args.time, dbc=args.dbc)
+    tables = capture.read_tables(args.files, bus_map, args.only_channel, args.time, dbc=args.dbc)
     _refuse_no_frame(tables, ", ".join(args.files))
     try:
         aligned = capture.align(

@@ -11,7 +11,7 @@ from veronte4x.capture.busmap import TEXT_FORMS, BusMap
 from veronte4x.cli import aligned
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import tell
-from veronte4x.cli.options import add_capture_options
+from veronte4x.cli.options import add_capture_options, add_renamed_option
 from veronte4x.extras import require
 from veronte4x.times import TIME_FORMS
 
@@ -56,6 +56,7 @@ def add_parser(commands: Any) -> None:
         "array as its exact bytes); default: the bus map's text, string unless it says",
     )
     add_capture_options(parser)
+    add_renamed_option(parser, "--channel", "--only-channel")
     aligned.add_options(parser)
     parser.set_defaults(run=run)
 
@@ -83,7 +84,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             bus_map,
             client,
             None,
-            args.channel,
+            args.only_channel,
             dbc=args.dbc,
             time=args.time,
         )

@@ -103,7 +103,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         f"veronte4x: {_summary(counts, loss)} ({args.on_error})" + (f"; {note}" if note else ""),
         file=sys.stderr,
     )
-    hint = channel_hint(watch.path, args.channel, watch.frames)
+    hint = channel_hint(watch.path, args.only_channel, watch.frames)
     if hint is not None:
         print(f"veronte4x: {hint}", file=sys.stderr)
     return status
@@ -203,7 +203,7 @@ def _csv_columns(args: argparse.Namespace, bus_map: BusMap) -> Iterable[str] | N
     if args.file == "-":
         return None
     columns: dict[str, None] = {}
-    for record in capture.read(args.file, bus_map, args.channel, args.dbc):
+    for record in capture.read(args.file, bus_map, args.only_channel, args.dbc):
         if record.message is not None:
             columns.update(dict.fromkeys(_row(record, _Clock(False))))
     return columns

@@ -90,7 +90,7 @@ class InputWatch:
 
 
 def channel_hint(path: str | None, channel: str | None, frames: int) -> str | None:
-    """A hint when ``--channel`` kept no frame of a capture file: the channels it has (read
+    """A hint when ``--only-channel`` kept no frame of a capture file: the channels it has (read
     again, only then); None otherwise, and for standard input or a live bus."""
     from veronte4x.capture.source import open_frames
 
@@ -102,5 +102,5 @@ def channel_hint(path: str | None, channel: str | None, frames: int) -> str | No
         return None
     return (
         f"no frame of {path} is on channel {channel}: its channels are {', '.join(channels)}; "
-        "give one of them to --channel, or leave it out"
+        "give one of them to --only-channel, or leave it out"
     )

@@ -17,16 +17,25 @@ from veronte4x.capture.decoder import CaptureDecoder
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.records import Record
 from veronte4x.capture.source import open_frames
-from veronte4x.errors import SourceError
+from veronte4x.errors import SourceError, Veronte4xError
 
 if TYPE_CHECKING:
     from veronte4x.capture.readers.live import BusLoss
 
 
+class UsageError(Veronte4xError, ValueError):
+    """A command line the commands do not take, such as an old spelling; the message names
+    the spelling to use."""
+
+
 def add_capture_options(parser: argparse.ArgumentParser) -> None:
     """The capture argument's companions: the bus map and the channel filter."""
     parser.add_argument("--bus-map", metavar="FILE", help="TOML file of CAN IDs and choices")
-    parser.add_argument("--channel", help="keep only this interface's frames")
+    parser.add_argument(
+        "--only-channel",
+        metavar="CHANNEL",
+        help="keep only the frames of this channel: a capture's interface name, e.g. can0",
+    )
     parser.add_argument(
         "--dbc",
         metavar="FILE",
@@ -85,25 +94,23 @@ def add_dsdl_option(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def add_bus_options(
-    parser: argparse.ArgumentParser, *, channel: bool = True, interface: bool = True
-) -> None:
-    """python-can's bus options: ``--interface``, ``--channel``, ``--bitrate`` and more.
+def add_bus_options(parser: argparse.ArgumentParser) -> None:
+    """python-can's bus options, the same in every command that opens a bus: ``-i/--interface``,
+    ``-c/--channel``, ``-b/--bitrate`` (python-can's own command-line names),
+    ``--can-config`` and ``--bus-option``.
 
     Without ``--interface`` python-can reads its own configuration (``--can-config`` or its
-    default files and environment). ``channel=False`` leaves ``--channel`` to
-    `add_capture_options`, where it filters a capture and names the bus channel of a live
-    source; ``interface=False`` leaves both to a command that names the bus otherwise
-    (``play``'s ``BUS`` argument).
+    default files and environment). ``--channel`` is always the bus's channel; a capture's
+    channel filter is ``--only-channel`` (`add_capture_options`).
     """
     group = parser.add_argument_group("bus (python-can, the 'can' extra)")
-    if interface:
-        group.add_argument(
-            "--interface", help="python-can interface: socketcan, pcan, slcan, udp_multicast, ..."
-        )
-    if channel and interface:
-        group.add_argument("--channel", help="the interface's channel, e.g. can0")
-    group.add_argument("--bitrate", type=int, help="bit rate in bit/s (DroneCAN: 1000000)")
+    group.add_argument(
+        "-i",
+        "--interface",
+        help="python-can interface: socketcan, pcan, slcan, udp_multicast, ...",
+    )
+    group.add_argument("-c", "--channel", help="the interface's channel, e.g. can0 or 239.74.163.2")
+    group.add_argument("-b", "--bitrate", type=int, help="bit rate in bit/s (DroneCAN: 1000000)")
     group.add_argument(
         "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
     )
@@ -116,9 +123,33 @@ def add_bus_options(
     )
 
 
+def add_renamed_option(parser: argparse.ArgumentParser, old: str, new: str) -> None:
+    """An option spelled ``old`` before, hidden from the help, that refuses with one line
+    naming ``new`` (`UsageError`, exit code 2)."""
+    parser.add_argument(old, nargs="?", help=argparse.SUPPRESS, action=_Renamed, new=new)
+
+
+class _Renamed(argparse.Action):
+    """Refuses an old spelling, naming the new one."""
+
+    def __init__(self, option_strings: list[str], dest: str, new: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest, **kwargs)
+        self.new = new
+
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: Any,
+        option_string: str | None = None,
+    ) -> None:
+        given = f" ({self.new} {values})" if isinstance(values, str) else ""
+        raise UsageError(f"{option_string} is now {self.new}{given}")
+
+
 def add_live_options(parser: argparse.ArgumentParser) -> None:
     """Options of a command that reads a capture and can read a live bus instead."""
-    add_bus_options(parser, channel=False)
+    add_bus_options(parser)
     parser.add_argument(
         "--duration",
         type=float,
@@ -137,6 +168,23 @@ NO_SOURCE = (
 def live(args: argparse.Namespace) -> bool:
     """Whether the command reads a live bus rather than a capture."""
     return bool(args.interface or args.can_config)
+
+
+def check_bus_spelling(args: argparse.Namespace) -> None:
+    """Refuse ``--channel`` given with a capture and no bus: it was the capture's channel
+    filter once, and is the bus's channel now.
+
+    Raises:
+        UsageError: ``--channel`` without ``--interface`` or ``--can-config`` in a command
+            that reads a capture (the message names ``--only-channel``).
+    """
+    if not hasattr(args, "only_channel") or getattr(args, "channel", None) is None:
+        return
+    if not live(args):
+        raise UsageError(
+            f"--channel names a live bus's channel (with --interface); to keep only the "
+            f"frames of channel {args.channel} of a capture, use --only-channel {args.channel}"
+        )
 
 
 def bus_settings(args: argparse.Namespace) -> dict[str, Any]:
@@ -187,7 +235,7 @@ def open_records(
     if not live(args):
         if args.file is None:
             raise SourceError(NO_SOURCE)
-        return capture.read(args.file, bus_map, args.channel, getattr(args, "dbc", ()))
+        return capture.read(args.file, bus_map, args.only_channel, getattr(args, "dbc", ()))
     return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop, loss)))
 
 
@@ -209,7 +257,7 @@ def open_frame_source(
     if not live(args):
         if args.file is None:
             raise SourceError(NO_SOURCE)
-        return open_frames(args.file, args.channel)
+        return open_frames(args.file, args.only_channel)
     if args.file not in (None, "-"):
         raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
     return _live_frames(args, stop, loss)
@@ -224,6 +272,8 @@ def _live_frames(
     bus = open_bus(**bus_settings(args))
     try:
         channel = args.channel or args.interface
-        yield from read_bus(bus, channel, args.duration, stop=stop, loss=loss)
+        frames = read_bus(bus, channel, args.duration, stop=stop, loss=loss)
+        only = getattr(args, "only_channel", None)
+        yield from frames if only is None else (f for f in frames if f.channel == only)
     finally:
         bus.shutdown()

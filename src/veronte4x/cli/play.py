@@ -1,4 +1,4 @@
-"""``veronte4x play CAPTURE BUS``: send a capture's frames onto a CAN bus, like canplayer.
+"""``veronte4x play CAPTURE --interface I --channel C``: a capture onto a CAN bus, like canplayer.
 
 The schedule is `veronte4x.capture.playback.Player`'s; this module only opens the buses,
 reads the clock, sleeps and sends.
@@ -30,12 +30,7 @@ def add_parser(commands: Any) -> None:
         "play", help="send a capture's frames onto a CAN bus with their original spacing"
     )
     parser.add_argument("file", metavar="CAPTURE", help="capture file (any format decode reads)")
-    parser.add_argument(
-        "bus",
-        metavar="BUS",
-        help="python-can bus as INTERFACE[:CHANNEL]: socketcan:vcan0, "
-        "udp_multicast:239.74.163.2, pcan:PCAN_USBBUS1 (needs veronte4x[can])",
-    )
+    parser.add_argument("old_bus", nargs="?", help=argparse.SUPPRESS)  # refused: see `run`
     parser.add_argument(
         "--speed", type=speed, default=1.0, metavar="X", help="2 plays twice as fast (1)"
     )
@@ -64,7 +59,7 @@ def add_parser(commands: Any) -> None:
         metavar="N",
         help="play N times, or for ever without N (until Ctrl-C)",
     )
-    add_bus_options(parser, interface=False)
+    add_bus_options(parser)
     parser.set_defaults(run=run, bus_map=None)
 
 
@@ -99,8 +94,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Play the capture; the timing goes to standard error."""
     from veronte4x.cli.buses import open_bus
 
-    interface, _, channel = args.bus.partition(":")
-    args.interface, args.channel = interface or None, channel or None
+    if args.old_bus is not None:
+        return _usage(_old_bus_line(args.old_bus))
     settings = bus_settings(args)
     mapping: dict[str, str] | None = None
     if args.channel_map:
@@ -124,6 +119,20 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     finally:
         for bus in buses.values():
             bus.shutdown()
+
+
+def _old_bus_line(bus: str) -> str:
+    """The line refusing ``play CAPTURE INTERFACE:CHANNEL``, the spelling before the bus
+    options, with the options it means."""
+    interface, _, channel = bus.partition(":")
+    options = " ".join(
+        f"--{name} {value}"
+        for name, value in (("interface", interface), ("channel", channel))
+        if value
+    )
+    return (
+        f"play takes the bus as options now: {options or '--interface I --channel C'} (not {bus})"
+    )
 
 
 def _play(

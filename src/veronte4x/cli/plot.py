@@ -10,7 +10,7 @@ from typing import Any
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import InputWatch
-from veronte4x.cli.options import add_capture_options, open_records
+from veronte4x.cli.options import add_capture_options, add_renamed_option, open_records
 from veronte4x.errors import SourceError
 from veronte4x.extras import require
 
@@ -34,6 +34,7 @@ def add_parser(commands: Any) -> None:
         help="write an image (.png, .svg, .pdf...; no suffix: .png) instead of a window",
     )
     add_capture_options(parser)
+    add_renamed_option(parser, "--channel", "--only-channel")
     parser.set_defaults(run=run, interface=None, can_config=None)
 
 
@@ -105,6 +106,6 @@ def _nothing(watch: InputWatch, name: str, what: str) -> int:
         reason = f"{name} holds no CAN frame"
     else:
         other = "arbitration" if what.startswith("no ESC") else "esc"
-        reason = f"{name} has {what}; try --kind {other}, or another --channel"
+        reason = f"{name} has {what}; try --kind {other}, or another --only-channel"
     print(f"veronte4x: nothing to plot: {reason}", file=sys.stderr)
     return EXIT_USAGE

@@ -101,7 +101,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     note = watch.note()
     print(summary + (f"; {note}" if note else ""), file=sys.stderr)
     if not veronte.count and watch.path is not None:  # a capture file's
-        hint = channel_hint(watch.path, args.channel, watch.frames) or _no_veronte(config)
+        hint = channel_hint(watch.path, args.only_channel, watch.frames) or _no_veronte(config)
         print(f"veronte4x: {hint}", file=sys.stderr)
     return EXIT_FINDINGS if result.disagreements else EXIT_OK
 
