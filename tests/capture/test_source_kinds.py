@@ -94,7 +94,7 @@ def test_a_format_registered_again_replaces_the_old_one(toy: Path) -> None:  # n
     replacement = registry.Reader("toy", (".toy", ".toy2"), reversed_frames)
     assert registry.register(replacement) is replacement
     assert list(registry.READERS) == order
-    assert registry.by_suffix("flight.toy2") is replacement
+    assert registry.claimants("flight.toy2") == [replacement]
     assert list(capture.open_frames(toy)) == before[::-1]
 
 

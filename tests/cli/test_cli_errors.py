@@ -50,9 +50,9 @@ def test_an_unknown_format_is_a_usage_error(tmp_path: Path) -> None:
     result = run("decode", str(path))
     assert result.returncode == 2
     assert first_error_line(result) == (
-        f"veronte4x: {path}: in no format veronte4x knows: its content is not candump, and its "
-        "suffix is none of .log, .txt, .candump, .asc, .blf, .csv, .db, .mf4, .trc; rename it "
-        "to the suffix of its format, or convert it to candump text"
+        f"veronte4x: {path}: in no format veronte4x knows: its content is not candump or gvret, "
+        "and its suffix is none of .log, .txt, .candump, .asc, .blf, .csv, .db, .mf4, .trc; "
+        "rename it to the suffix of its format, or convert it to candump text"
     )
     assert result.stdout == b""
 

@@ -103,6 +103,13 @@ def micros(seconds: float) -> int | None:
     return exact if FIRST_MICROS <= exact < END_MICROS else None
 
 
+def micros_seconds(count: int) -> float:
+    """The timestamp of a log's whole count of microseconds: ``count / 1e6``, as a `Seconds`
+    holding ``count`` where the float alone would not give it back (after 2242)."""
+    seconds = count / 1_000_000
+    return seconds if -_SAFE < seconds < _SAFE else Seconds(seconds, count)
+
+
 def text_seconds(text: str, seconds: float | None = None) -> float:
     """The timestamp of a log's decimal text: ``float(text)``, as a `Seconds` with the
     text's microseconds (rounded half to even past the sixth decimal) where the float alone

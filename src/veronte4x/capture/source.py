@@ -58,15 +58,17 @@ class Source:
 
 
 def resolve(path: str | os.PathLike[str]) -> Source:
-    """Decide how a capture is read from its path, and its content where the suffix is silent.
+    """Decide how a capture is read from its path and its content.
 
     The format whose reader claims the suffix (``.gz`` aside) reads it: candump text
     (``.log``, ``.txt``, ``.candump``) natively; ``.asc``, ``.blf``, ``.csv``, ``.db``,
     ``.mf4`` and ``.trc`` through python-can (MF4 column-wise through asammdf); see
-    `veronte4x.capture.readers.registry`. A file with any other suffix, or none, is read
-    by the first format that recognises its first bytes (gunzipped if they are gzip's);
-    standard input (``-``) and a pipe are read as candump text, the one format that
-    streams. Gzip is recognised by the file's first bytes, whatever its name.
+    `veronte4x.capture.readers.registry`. Where several formats claim the suffix
+    (``.csv``: python-can's CSV and SavvyCAN's GVRET CSV), the first bytes of the file
+    (gunzipped if they are gzip's) settle it, as `registry.pick` says. A file with any other
+    suffix, or none, is read by the first format that recognises its first bytes; standard
+    input (``-``) and a pipe are read as candump text, the one format that streams. Gzip is
+    recognised by the file's first bytes, whatever its name.
 
     Raises:
         SourceError: The path is a directory, or a file in no format veronte4x knows.
@@ -77,19 +79,15 @@ def resolve(path: str | os.PathLike[str]) -> Source:
         return Source(name, registry.streaming(), _stdin_is_gzip())
     if os.path.isdir(name):
         raise SourceError(f"{name} is a directory: give a capture file")
-    head = b""
-    if os.path.isfile(name):
-        with open(name, "rb") as file:
-            head = file.read(registry.SNIFF_BYTES)
-    gzipped = head.startswith(_GZIP_MAGIC) or (not head and name.lower().endswith(".gz"))
-    reader = registry.by_suffix(name)
-    if reader is not None:
-        return Source(name, reader, gzipped)
     if not os.path.isfile(name):
-        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is read by the
-        # format that streams. A missing file fails when it is opened.
-        return Source(name, registry.streaming(), gzipped)
-    reader = registry.by_content(_gunzip_head(name) if gzipped else head)
+        # A pipe (/dev/stdin, <(candump -L can0)) cannot be read twice: it is read by its
+        # suffix's format, or the format that streams. A missing file fails when opened.
+        gzipped = name.lower().endswith(".gz")
+        return Source(name, registry.pick(name, None) or registry.streaming(), gzipped)
+    with open(name, "rb") as file:
+        head = file.read(registry.SNIFF_BYTES)
+    gzipped = head.startswith(_GZIP_MAGIC) or (not head and name.lower().endswith(".gz"))
+    reader = registry.pick(name, _gunzip_head(name) if gzipped else head)
     if reader is not None:
         return Source(name, reader, gzipped)
     raise SourceError(_unknown(name, gzipped, empty=not head))
