@@ -1,7 +1,8 @@
 """The asyncio client as safe as the blocking one (issue 41, item 7): many reads awaited at
-once get their own answers, also from two clients with one node id; a command stream lets
-no throttle out once its task is cancelled (zero, then nothing), and none outlives its
-client. Simulated ESCs served from a thread on python-can's virtual bus (real clock)."""
+once get their own answers, and two clients with one node id refuse rather than take each
+other's; a command stream lets no throttle out once its task is cancelled (zero, then
+nothing), and none outlives its client. Simulated ESCs served from a thread on python-can's
+virtual bus (real clock)."""
 
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ import can
 import pytest
 
 from veronte4x import dronecan
-from veronte4x.client import OperationCancelledError, plain
+from veronte4x.client import NodeIdConflictError, OperationCancelledError, ParameterInfo, plain
 from veronte4x.client.aio import AsyncBusClient, AsyncCommandStream
 from veronte4x.simulator import SimulatedEsc
 from veronte4x.simulator.can_node import EscBus
@@ -46,8 +47,8 @@ def channel() -> str:
     return f"test-aio-safety-{next(_CHANNELS)}"
 
 
-@pytest.fixture
-def served(channel: str) -> Iterator[None]:
+@contextlib.contextmanager
+def _serve(channel: str) -> Iterator[None]:
     """Nodes 21 and 22, with other values for each parameter, served from a thread."""
     escs = [
         SimulatedEsc(21, 0, bit_rate=1000000),
@@ -62,6 +63,12 @@ def served(channel: str) -> Iterator[None]:
         finally:
             stop.set()
             thread.join()
+
+
+@pytest.fixture
+def served(channel: str) -> Iterator[None]:
+    with _serve(channel):
+        yield
 
 
 def _commands(spy: can.BusABC) -> list[tuple[int, ...]]:
@@ -92,29 +99,38 @@ def test_150_reads_by_index_awaited_at_once_get_their_own_answers(
     assert asyncio.run(read()) == [ORDER[i % 5] for i in range(150)]
 
 
-def test_two_clients_with_one_node_id_150_reads_each_at_once(channel: str, served: None) -> None:
-    """Same node id, same transfer ids: each client takes only the answers that name what
-    it asked (the others are counted and discarded), so every value is the node's."""
-    asked = [(21 + i % 2, ORDER[(i * 3) % 5]) for i in range(150)]
+def test_two_clients_with_one_node_id_150_reads_by_index_each_at_once(channel: str) -> None:
+    """Same node id, same transfer ids, other indices: each client hears the other's
+    requests from its own id and refuses from then on, so every answer it took is its own
+    (before: 3 of 150 named another parameter). The clients' buses come first on the
+    virtual channel, which copies a frame to each bus in turn: the ESCs' answer to a
+    request then never reaches a client before the request itself, as on CAN."""
+    asked = [[(21 + i % 2, (i + shift) % 5) for i in range(150)] for shift in (0, 2)]
 
-    async def read(bus: can.BusABC) -> tuple[list[tuple[int, str, object]], int]:
+    async def read(bus: can.BusABC, mine: list[tuple[int, int]]) -> list[object]:
         async with AsyncBusClient(bus) as client:
-            found = await asyncio.gather(*(client.get_param(n, name) for n, name in asked))
-            return (
-                [(n, p.name, plain(p.value)) for (n, _), p in zip(asked, found, strict=True)],
-                client.protocol.requests.mismatched,
+            return list(
+                await asyncio.gather(
+                    *(client.get_param(n, index=i) for n, i in mine), return_exceptions=True
+                )
             )
 
-    async def both() -> list[tuple[list[tuple[int, str, object]], int]]:
-        with (
-            can.Bus(interface="virtual", channel=channel) as a,
-            can.Bus(interface="virtual", channel=channel) as b,
-        ):
-            return list(await asyncio.gather(read(a), read(b)))
+    async def both(a: can.BusABC, b: can.BusABC) -> list[list[object]]:
+        return list(await asyncio.gather(read(a, asked[0]), read(b, asked[1])))
 
-    expected = [(n, name, VALUES[n][name]) for n, name in asked]
-    for answers, _ in asyncio.run(both()):
-        assert answers == expected
+    with (
+        can.Bus(interface="virtual", channel=channel) as a,
+        can.Bus(interface="virtual", channel=channel) as b,
+        _serve(channel),
+    ):
+        results = asyncio.run(both(a, b))
+    for mine, found in zip(asked, results, strict=True):
+        refused = [f for f in found if isinstance(f, NodeIdConflictError)]
+        assert refused, "the other client's requests went unheard"
+        for (node, index), got in zip(mine, found, strict=True):
+            if not isinstance(got, NodeIdConflictError):
+                assert isinstance(got, ParameterInfo), got
+                assert (got.name, plain(got.value)) == (ORDER[index], VALUES[node][ORDER[index]])
 
 
 def _stream_of(client: AsyncBusClient) -> AsyncCommandStream:

@@ -25,7 +25,7 @@ from veronte4x.client import (
 )
 from veronte4x.client.files import FileRead
 from veronte4x.client.firmware import image_crc
-from veronte4x.client.protocol import Received
+from veronte4x.client.protocol import NodeIdConflict, Received
 from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.errors import EncodeError
 
@@ -401,21 +401,28 @@ def test_any_frames_give_events_or_nothing(frames: list[tuple[int, bytes]]) -> N
 
     A GetNodeInfo response from the node asked, to the client, with the request's transfer
     id answers the request once; any other transfer id, source, destination or type does
-    not. A file read request to the client is served with the same transfer id; anything
-    else is only reported as received.
+    not, nor any after a service frame from the client's own id (another tool's: the first
+    such frame is a `NodeIdConflict`). A file read request to the client is served with the
+    same transfer id; anything else is only reported as received.
     """
     client = ClientProtocol(node_id=_CLIENT)
     client.files.add(b"fw", b"\x01" * 10)
     handle = client.request(dronecan.GetNodeInfoRequest(), _ASKED, now=0.0)
     client.take_frames()
     waiting = True
+    conflict = False  # a service frame from the client's id that it did not send
     for number, (can_id, data) in enumerate(frames):
         events = client.receive(can_id, data, number * 0.01)
         if not events:
             continue
+        if isinstance(events[0], NodeIdConflict):
+            assert (can_id & 0x7F, can_id & 0x80, conflict) == (_CLIENT, 0x80, False)
+            assert len(events) == 1
+            conflict = True
+            continue
         assert isinstance(events[0], Received)
         transfer = events[0].transfer
-        assert [type(e).__name__ for e in events] == _expected(transfer, waiting)
+        assert [type(e).__name__ for e in events] == _expected(transfer, waiting and not conflict)
         for event in events:
             if isinstance(event, Answered):
                 waiting = False

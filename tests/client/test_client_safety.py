@@ -13,6 +13,7 @@ from veronte4x import dronecan
 from veronte4x.client import (
     MAX_IMAGE_SIZE,
     InvalidRequestError,
+    NodeIdConflictError,
     ParameterError,
     Requester,
     SpinMonitor,
@@ -88,12 +89,12 @@ def test_a_value_that_does_not_parse_is_refused_in_plain_words(channel: str, esc
             client.set_param(21, "esc_index", 2.5)
 
 
-def test_two_clients_with_one_node_id_take_only_their_own_answers(
+def test_two_clients_with_one_node_id_refuse_rather_than_take_each_others_answers(
     channel: str, escs: EscBus
 ) -> None:
-    """Same node id, same first transfer id: both send GetSet #0 to node 21. The ESC takes
-    the second as a repeat of the first and answers once; that answer names esc_index,
-    and the other client must not take it for bit_rate."""
+    """Same node id, same first transfer id: a sends GetSet #0 to node 21, b reads another
+    parameter with the same transfer id. Each hears the other's request from its own id and
+    refuses from then on: no answer is taken for another's."""
     with (
         can.Bus(interface="virtual", channel=channel) as bus_a,
         can.Bus(interface="virtual", channel=channel) as bus_b,
@@ -101,15 +102,21 @@ def test_two_clients_with_one_node_id_take_only_their_own_answers(
         a, b = _client(bus_a, escs), _client(bus_b, escs)
         a.protocol.request(vertiq.get_parameter("esc_index"), 21, a.clock(), timeout=0.2)
         a.spin_once(0.0)  # sent
-        got = b.get_param(21, "bit_rate")
-        assert (got.name, got.value) == ("bit_rate", dronecan.IntegerValue(500000))
-        assert b.protocol.requests.mismatched >= 1
-        for _ in range(100):  # a's request is answered as its own, or retried
-            a.spin_once(0.0)
-        for step in range(200):  # and many reads in turns, interleaved on the bus
-            name = ("esc_index", "bit_rate", "telem_frequency", "zero_behavior")[step % 4]
-            reader = (a, b)[step % 2]
-            assert reader.get_param(22, name).name == name
+        line = (
+            "another tool or node on the bus sends with this tool's node id 127 (a "
+            "uavcan.protocol.param.GetSet request to node 21), so their answers cannot be "
+            "told apart; give each tool on the bus a node id of its own"
+        )
+        with pytest.raises(NodeIdConflictError) as error:
+            b.get_param(21, "bit_rate")
+        assert str(error.value) == line
+        with pytest.raises(NodeIdConflictError):  # refused from then on
+            b.get_param(22, "bit_rate")
+        with pytest.raises(NodeIdConflictError):  # a heard b's request too
+            a.get_param(22, "esc_index")
+        assert a.protocol.requests.mismatched == b.protocol.requests.mismatched == 0
+        c = _client(bus_b, escs, node_id=100)  # another id: served as ever
+        assert c.get_param(22, "esc_index").name == "esc_index"
 
 
 def test_answers_checks_what_a_reply_says_of_its_request() -> None:

@@ -62,3 +62,24 @@ class InvalidRequestError(ClientError, ValueError):
 class OperationCancelledError(ClientError):
     """The operation was cancelled (`Runner.cancel`) before it finished: it has no result,
     and what it had asked of a node may or may not have been done."""
+
+
+class NodeIdConflictError(InvalidRequestError):
+    """Another tool or node sends service frames with this client's node id: answers to
+    either may reach both with the same transfer id, and one to a read by index names
+    nothing that tells whose it is. From the first such frame on, the client takes no
+    answer and refuses every request (its pending ones fail with this error too).
+
+    Attributes:
+        node_id: The node id both use.
+        heard: The frame heard, in words.
+    """
+
+    def __init__(self, node_id: int, heard: str) -> None:
+        self.node_id = node_id
+        self.heard = heard
+        super().__init__(
+            f"another tool or node on the bus sends with this tool's node id {node_id} "
+            f"({heard}), so their answers cannot be told apart; give each tool on the bus a "
+            "node id of its own"
+        )

@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
-from veronte4x.client.errors import ClientError, InvalidRequestError
+from veronte4x.client.errors import ClientError, InvalidRequestError, NodeIdConflictError
 from veronte4x.client.operations import Operation, discover, get_param
 from veronte4x.client.params import plain
 from veronte4x.client.protocol import ClientProtocol
@@ -118,6 +118,9 @@ def survey(
     node heard and of those in ``also`` (heard or not), one after another.
 
     A node that uses ``protocol``'s own node id is not asked (`OwnNodeIdError`).
+
+    Raises:
+        NodeIdConflictError: Another tool sends with ``protocol``'s node id.
     """
     heard = yield from discover(protocol, duration)
     indices: dict[int, int] = {}
@@ -128,6 +131,8 @@ def survey(
             continue
         try:
             indices[node] = yield from read_esc_index(node)
+        except NodeIdConflictError:
+            raise  # no node's answer can be trusted: not one node's problem
         except ClientError as error:
             unread[node] = error
     return IndexSurvey(indices, unread)

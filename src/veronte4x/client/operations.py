@@ -33,6 +33,7 @@ from typing import Any, Generic, TypeVar
 from veronte4x.client.errors import (
     FirmwareUpdateFailedError,
     InvalidRequestError,
+    NodeIdConflictError,
     NoResponseError,
     OperationCancelledError,
     ParameterError,
@@ -50,7 +51,13 @@ from veronte4x.client.firmware import (
 from veronte4x.client.nodes import NodeEntry
 from veronte4x.client.paramfile import Change, NodeParameters
 from veronte4x.client.params import ParameterInfo, parameter_request, plain
-from veronte4x.client.protocol import ClientProtocol, Event, FileServed, StatusSeen
+from veronte4x.client.protocol import (
+    ClientProtocol,
+    Event,
+    FileServed,
+    NodeIdConflict,
+    StatusSeen,
+)
 from veronte4x.dronecan import vertiq
 from veronte4x.dronecan.messages import (
     BeginFirmwareUpdateRequest,
@@ -216,10 +223,17 @@ class Runner:
                 return
 
     def feed(self, events: Sequence[Event], now: float) -> None:
-        """Give the events of received frames and of `ClientProtocol.poll` at ``now``."""
+        """Give the events of received frames and of `ClientProtocol.poll` at ``now``; a
+        `NodeIdConflict` fails every operation waiting for an answer with its error."""
         listening = [(task, task.waiting) for task in self._listening]
         for event in events:
-            if isinstance(event, (Answered, TimedOut)):
+            if isinstance(event, NodeIdConflict):
+                for handle, caller in list(self._calls.items()):
+                    del self._calls[handle]
+                    self.protocol.requests.cancel(handle)
+                    refused = NodeIdConflictError(event.error.node_id, event.error.heard)
+                    self._advance(caller, None, refused, now)
+            elif isinstance(event, (Answered, TimedOut)):
                 task = self._calls.pop(event.request.handle, None)
                 if task is None:
                     continue
