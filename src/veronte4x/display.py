@@ -1,14 +1,17 @@
-"""Rich display in Jupyter: compact HTML for messages, records, stats, transfers and nodes.
+"""Rich display in Jupyter: the HTML table builders every view shares, and messages' view.
 
 A class gets Jupyter's ``_repr_html_`` by deriving from `HtmlDisplay` (a mixin with no
-slots, so frozen slotted dataclasses keep their layout); named tuples, which take no mixin,
-call `to_html` from a method of their own. Plain ``repr`` is unchanged. Values are shown as
-the command line's text shows them (`veronte4x.capture.readable.shown`): enums by name,
-floats in their shortest form at the field's declared width, text as text, other bytes in
-hex, times in ISO 8601 (UTC), and a column of units where the protocol gives them.
-Everything is HTML-escaped.
+slots, so frozen slotted dataclasses keep their layout): a message's fields as a table
+(`message_html`). A class with more to show overrides ``_repr_html_`` with a view of its
+own package, built from `table` and `side_by_side`: `veronte4x.capture.records.record_html`,
+`veronte4x.capture.stats.stats_html`, `veronte4x.dronecan.view.transfer_html`,
+`veronte4x.client.nodes.nodes_html`. Plain ``repr`` is unchanged. Values are shown as the
+command line's text shows them (`veronte4x.values.shown`): enums by name, floats in their
+shortest form at the field's declared width, text as text, other bytes in hex, and a column
+of units where the protocol gives them. Everything is HTML-escaped.
 
-This module imports nothing of the library at import time: the codecs import it.
+This module imports no package of the library (the codecs import it): only the modules
+below every protocol, `veronte4x.values` and `veronte4x.units`.
 
 Examples:
     >>> from veronte4x import codec
@@ -24,14 +27,18 @@ from collections.abc import Iterable, Sequence
 from html import escape
 from typing import Any
 
+from veronte4x.units import unit
+from veronte4x.values import shown
+
 
 class HtmlDisplay:
-    """Mixin that gives Jupyter a compact HTML view of the object (``_repr_html_``)."""
+    """Mixin that gives Jupyter a compact HTML view of the object (``_repr_html_``): by
+    default its fields as a table (`message_html`)."""
 
     __slots__ = ()
 
     def _repr_html_(self) -> str:
-        return to_html(self)
+        return message_html(self)
 
 
 Cells = tuple[Any, ...]
@@ -39,23 +46,12 @@ Cells = tuple[Any, ...]
 
 
 def to_html(value: Any) -> str:
-    """The HTML view of a message, `Record`, `Stats`, DroneCAN `Transfer`, node table or node
-    entry (anything else: its ``repr``, escaped)."""
-    from veronte4x.capture.records import Record
-    from veronte4x.capture.stats import Stats
-    from veronte4x.client.nodes import NodeEntry, NodeTable
-    from veronte4x.dronecan.transfer import Transfer
-
-    if isinstance(value, Record):
-        return _record(value)
-    if isinstance(value, Transfer):
-        return _transfer(value)
-    if isinstance(value, Stats):
-        return _stats(value)
-    if isinstance(value, NodeTable):
-        return _nodes(value.all(), "nodes")
-    if isinstance(value, NodeEntry):
-        return _nodes([value], f"node {value.node_id}")
+    """The HTML view of anything: its own (``_repr_html_``), a dataclass's fields as a table,
+    or else its ``repr``, escaped."""
+    view = None if isinstance(value, type) else getattr(value, "_repr_html_", None)
+    if view is not None:
+        html: str = view()
+        return html
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
         return message_html(value)
     return f"<pre>{escape(repr(value))}</pre>"
@@ -68,9 +64,6 @@ def message_html(message: Any, caption: str | None = None) -> str:
 
 
 def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cells]:
-    from veronte4x.capture.readable import shown
-    from veronte4x.units import unit
-
     owner = type(message)
     top = top or owner.__name__
     rows: list[Cells] = []
@@ -85,105 +78,6 @@ def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cell
         else:
             rows.append((name, shown(owner, field.name, value), unit(top, name)))
     return rows
-
-
-def _record(record: Any) -> str:
-    from veronte4x.times import format_time
-
-    head: list[Cells] = [
-        ("time", format_time(record.timestamp)),
-        ("channel", record.channel),
-        ("CAN ID", f"0x{record.can_id:X}"),
-        ("sender", record.sender),
-    ]
-    if record.destination_node_id is not None:
-        head.append(("to node", record.destination_node_id))
-    if record.error is not None:
-        head += [("error", record.error), ("detail", record.detail)]
-    elif record.message is None:
-        head.append(("undecoded", record.detail))
-    head.append(("data", record.data.hex(" ")))
-    parts = [table(f"Record: {record.kind}", ("", ""), head, header=False)]
-    if record.message is not None:
-        parts.append(message_html(record.message))
-    return side_by_side(parts)
-
-
-def _transfer(transfer: Any) -> str:
-    from veronte4x.times import format_time
-
-    head: list[Cells] = [
-        ("kind", transfer.kind.name.lower()),
-        ("data type id", transfer.data_type_id),
-        ("from node", transfer.source_node_id),
-    ]
-    if transfer.destination_node_id is not None:
-        head.append(("to node", transfer.destination_node_id))
-    head += [
-        ("priority", transfer.priority),
-        ("transfer id", transfer.transfer_id),
-        ("time", format_time(transfer.timestamp)),
-    ]
-    name = type(transfer.message).__name__
-    return side_by_side(
-        [table(f"Transfer: {name}", ("", ""), head, header=False), message_html(transfer.message)]
-    )
-
-
-def _stats(stats: Any) -> str:
-    from veronte4x.times import format_time
-
-    undecoded, errors = sum(stats.unknown.values()), sum(stats.errors.values())
-    head: list[Cells] = [("records", stats.records), ("undecoded", undecoded), ("errors", errors)]
-    if stats.first_timestamp is not None and stats.last_timestamp is not None:
-        span = round(stats.last_timestamp - stats.first_timestamp, 6)
-        head += [
-            ("from", format_time(stats.first_timestamp)),
-            ("to", format_time(stats.last_timestamp)),
-            ("span", f"{span} s"),
-        ]
-    parts = [table("Stats", ("", ""), head, header=False)]
-    for title, counter in (
-        ("by message type", stats.by_type),
-        ("by sender", stats.by_sender),
-        ("undecoded traffic", stats.unknown),
-        ("errors by kind", stats.errors),
-    ):
-        if counter:
-            parts.append(table(title, ("", "count"), sorted(counter.items())))
-    return side_by_side(parts)
-
-
-def _nodes(entries: Iterable[Any], caption: str) -> str:
-    from veronte4x.capture.readable import shown
-    from veronte4x.times import format_time
-
-    columns = (
-        "node",
-        "health",
-        "mode",
-        "sub-mode",
-        "vendor code",
-        "uptime (s)",
-        "first seen",
-        "last seen",
-        "restarts",
-    )
-    rows = [
-        (
-            entry.node_id,
-            shown(type(entry), "health", entry.health),
-            shown(type(entry), "mode", entry.mode),
-            entry.sub_mode,
-            entry.vendor_specific_status_code,
-            entry.uptime_sec,
-            format_time(entry.first_seen),
-            format_time(entry.last_seen),
-            entry.restarts,
-        )
-        for entry in entries
-    ]
-    return table(caption, columns, rows)
 
 
 _CAPTION = 'style="text-align: left; font-weight: bold"'

@@ -4,20 +4,18 @@
 The command line's JSON lines and CSV are written through `readable` (`readable_fields`:
 the keys of `veronte4x.capture.fields`, exact values); its text, the monitor and the HTML
 views through `shown`, which shows a float in its shortest form at the field's declared
-width (`float_bits`).
+width (`float_bits`). The three read the facts a message class carries (`veronte4x.values`,
+their home, below every protocol so that a message's HTML view needs no capture module).
 """
 
 from __future__ import annotations
 
-import enum
 from typing import Any
 
 from veronte4x.capture.flat import field_names, flatten, is_message
-from veronte4x.codec.compiler import float32_fields as veronte_float32_fields
-from veronte4x.dronecan.typeset import float16_fields, float32_fields, text_fields
-from veronte4x.numbers import exact, for_people
 from veronte4x.times import format_time
 from veronte4x.units import unit
+from veronte4x.values import float_bits, readable, shown, text_fields
 
 __all__ = [
     "float_bits",
@@ -28,49 +26,6 @@ __all__ = [
     "readable_fields",
     "shown",
 ]
-
-
-def float_bits(owner: type, attr: str) -> int:
-    """The declared width of a float field, 16, 32 or 64 bits: float16 and float32 as the
-    DroneCAN DSDL or the Veronte layout declares them; anything else (DBC signals, scaled
-    Veronte fields) is a float64.
-
-    Examples:
-        >>> from veronte4x import codec, dronecan
-        >>> float_bits(codec.Score, "score"), float_bits(dronecan.EscStatus, "temperature")
-        (32, 16)
-    """
-    if attr in float16_fields(owner):
-        return 16
-    if attr in float32_fields(owner) or attr in veronte_float32_fields(owner):
-        return 32
-    return 64
-
-
-def readable(owner: type, attr: str, value: Any) -> Any:
-    """One field's value as machine formats write it: an enum's name, text as ``str``, other
-    bytes in hex, a float exact (`veronte4x.numbers.exact`: non-finite ones as ``"NaN"``,
-    ``"Infinity"``, ``"-Infinity"``); ints, bools and None unchanged."""
-    kind = type(value)
-    if kind is int or kind is bool or value is None:  # most fields: nothing to do
-        return value
-    if kind is float:
-        return exact(value)
-    if isinstance(value, enum.Enum):
-        return value.name
-    if kind is bytes:
-        if attr in text_fields(owner):
-            return value.decode("utf-8", "backslashreplace")
-        return value.hex()
-    return value
-
-
-def shown(owner: type, attr: str, value: Any) -> Any:
-    """One field's value as people read it: as `readable`, but a float in its shortest form
-    at the field's declared width (`float_bits`, `veronte4x.numbers.for_people`)."""
-    if type(value) is float:
-        return for_people(value, float_bits(owner, attr))
-    return readable(owner, attr, value)
 
 
 def hex_bytes(data: bytes) -> str:

@@ -8,6 +8,8 @@ from typing import Any, NamedTuple
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES, Role
 from veronte4x.codegen import compile_source
+from veronte4x.display import Cells, message_html, side_by_side, table
+from veronte4x.times import format_time
 
 
 class Record(NamedTuple):
@@ -69,10 +71,29 @@ class Record(NamedTuple):
         return type(self.message).__name__
 
     def _repr_html_(self) -> str:
-        """Jupyter's view: the record and its message as tables (`veronte4x.display`)."""
-        from veronte4x.display import to_html
+        """Jupyter's view: the record and its message as tables (`record_html`)."""
+        return record_html(self)
 
-        return to_html(self)
+
+def record_html(record: Record) -> str:
+    """A record as HTML: where and when it came from, then its message's fields."""
+    head: list[Cells] = [
+        ("time", format_time(record.timestamp)),
+        ("channel", record.channel),
+        ("CAN ID", f"0x{record.can_id:X}"),
+        ("sender", record.sender),
+    ]
+    if record.destination_node_id is not None:
+        head.append(("to node", record.destination_node_id))
+    if record.error is not None:
+        head += [("error", record.error), ("detail", record.detail)]
+    elif record.message is None:
+        head.append(("undecoded", record.detail))
+    head.append(("data", record.data.hex(" ")))
+    parts = [table(f"Record: {record.kind}", ("", ""), head, header=False)]
+    if record.message is not None:
+        parts.append(message_html(record.message))
+    return side_by_side(parts)
 
 
 DEFAULTS: dict[str, Any] = {

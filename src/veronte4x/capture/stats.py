@@ -6,12 +6,12 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 from veronte4x.capture.records import Record
-from veronte4x.display import HtmlDisplay
+from veronte4x.display import Cells, side_by_side, table
 from veronte4x.times import format_time
 
 
 @dataclass
-class Stats(HtmlDisplay):
+class Stats:
     """Running counts of decoded records.
 
     Attributes:
@@ -71,3 +71,30 @@ class Stats(HtmlDisplay):
             if not counter:
                 lines.append("  (none)")
         return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the counts as tables (`stats_html`)."""
+        return stats_html(self)
+
+
+def stats_html(stats: Stats) -> str:
+    """Counts as HTML: the totals and the time span, then one table per non-empty count."""
+    undecoded, errors = sum(stats.unknown.values()), sum(stats.errors.values())
+    head: list[Cells] = [("records", stats.records), ("undecoded", undecoded), ("errors", errors)]
+    if stats.first_timestamp is not None and stats.last_timestamp is not None:
+        span = round(stats.last_timestamp - stats.first_timestamp, 6)
+        head += [
+            ("from", format_time(stats.first_timestamp)),
+            ("to", format_time(stats.last_timestamp)),
+            ("span", f"{span} s"),
+        ]
+    parts = [table("Stats", ("", ""), head, header=False)]
+    for title, counter in (
+        ("by message type", stats.by_type),
+        ("by sender", stats.by_sender),
+        ("undecoded traffic", stats.unknown),
+        ("errors by kind", stats.errors),
+    ):
+        if counter:
+            parts.append(table(title, ("", "count"), sorted(counter.items())))
+    return side_by_side(parts)

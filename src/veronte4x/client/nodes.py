@@ -2,18 +2,21 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
-from veronte4x.display import HtmlDisplay
+from veronte4x.display import table
 from veronte4x.dronecan.messages import Health, Mode, NodeStatus
 from veronte4x.dronecan.transfer import Transfer
+from veronte4x.times import format_time
+from veronte4x.values import shown
 
 OFFLINE_TIMEOUT = NodeStatus.OFFLINE_TIMEOUT_MS / 1000
 """Seconds without a NodeStatus after which a node counts as gone (DSDL OFFLINE_TIMEOUT_MS)."""
 
 
 @dataclass(frozen=True, slots=True)
-class NodeEntry(HtmlDisplay):
+class NodeEntry:
     """What the latest NodeStatus of a node said, and when it came.
 
     Attributes:
@@ -42,8 +45,12 @@ class NodeEntry(HtmlDisplay):
         """Whether its latest NodeStatus is less than `OFFLINE_TIMEOUT` old at ``now``."""
         return now - self.last_seen < OFFLINE_TIMEOUT
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: a one-row node table (`nodes_html`)."""
+        return nodes_html([self], f"node {self.node_id}")
 
-class NodeTable(HtmlDisplay):
+
+class NodeTable:
     """Nodes by id, updated from NodeStatus transfers given with their timestamps.
 
     Examples:
@@ -62,7 +69,7 @@ class NodeTable(HtmlDisplay):
 
     def observe(self, transfer: Transfer) -> NodeEntry | None:
         """Take any transfer; a NodeStatus updates its sender's entry, which is returned."""
-        if not isinstance(transfer.message, NodeStatus):
+        if not isinstance(transfer.message, NodeStatus) or transfer.source_node_id is None:
             return None
         return self.observe_status(transfer.source_node_id, transfer.message, transfer.timestamp)
 
@@ -96,3 +103,37 @@ class NodeTable(HtmlDisplay):
     def online(self, now: float) -> list[NodeEntry]:
         """The nodes seen within `OFFLINE_TIMEOUT` of ``now``, by id."""
         return [entry for entry in self.all() if entry.online(now)]
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: every node seen, one row each (`nodes_html`)."""
+        return nodes_html(self.all(), "nodes")
+
+
+def nodes_html(entries: Iterable[NodeEntry], caption: str) -> str:
+    """Node entries as an HTML table, one row each: status, uptime, when seen, restarts."""
+    columns = (
+        "node",
+        "health",
+        "mode",
+        "sub-mode",
+        "vendor code",
+        "uptime (s)",
+        "first seen",
+        "last seen",
+        "restarts",
+    )
+    rows = [
+        (
+            entry.node_id,
+            shown(type(entry), "health", entry.health),
+            shown(type(entry), "mode", entry.mode),
+            entry.sub_mode,
+            entry.vendor_specific_status_code,
+            entry.uptime_sec,
+            format_time(entry.first_seen),
+            format_time(entry.last_seen),
+            entry.restarts,
+        )
+        for entry in entries
+    ]
+    return table(caption, columns, rows)

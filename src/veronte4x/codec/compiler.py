@@ -13,7 +13,6 @@ import dataclasses
 import re
 import struct
 import types
-import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -51,15 +50,6 @@ class Placed:
     shift: int
 
 
-_FLOAT32: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
-
-
-def float32_fields(cls: type) -> frozenset[str]:
-    """The attributes of a Veronte message class (built-in or declared) that hold ``float32``
-    values, as its layouts declare them (a scaled integer field is a float64)."""
-    return _FLOAT32.get(cls, frozenset())
-
-
 @dataclass(frozen=True)
 class FrameLayout:
     """A frame layout: a message class, its ordered fields and where the layout comes from.
@@ -84,8 +74,8 @@ class FrameLayout:
 
     def __post_init__(self) -> None:
         found = {f.attr for f in self.fields if f.kind is FieldKind.FLOAT32 and f.attr}
-        if found:  # for `float32_fields`
-            _FLOAT32[self.message] = float32_fields(self.message) | found
+        if found:  # the class's fact, read by `veronte4x.values.float_bits`
+            self.message._FLOAT32_FIELDS_ = self.message._FLOAT32_FIELDS_ | found
 
     @property
     def name(self) -> str:

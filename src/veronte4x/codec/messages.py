@@ -31,7 +31,8 @@ class Message(HtmlDisplay):
 
     The base itself holds nothing: a plain slotted class, so that the decoders can build
     messages through a class of identical layout (see `veronte4x.codec.compiler`). It
-    gives Jupyter an HTML table of the fields (`veronte4x.display.HtmlDisplay`).
+    gives Jupyter an HTML table of the fields (`veronte4x.display.HtmlDisplay`), which
+    loads no DroneCAN, capture or client module.
 
     Attributes:
         COMMAND: The message type (byte 0 of the frame), or ``None`` where it depends
@@ -41,6 +42,9 @@ class Message(HtmlDisplay):
     __slots__ = ()
 
     COMMAND: ClassVar[int | None] = None
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset()
+    """The attributes its layouts declare float32 (a scaled integer field is a float64),
+    written by `veronte4x.codec.compiler.FrameLayout`; read by `veronte4x.values`."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -17,7 +17,6 @@ import linecache
 import os
 import sys
 import types as _types
-import weakref
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -38,24 +37,6 @@ from veronte4x.dronecan.types import (
 from veronte4x.errors import argument_type_error
 
 _serial = itertools.count(1)
-_TEXT: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
-_FLOAT16: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
-_FLOAT32: weakref.WeakKeyDictionary[type, frozenset[str]] = weakref.WeakKeyDictionary()
-
-
-def text_fields(cls: type) -> frozenset[str]:
-    """The attributes of a DroneCAN class (of any type set) that hold text."""
-    return _TEXT.get(cls, frozenset())
-
-
-def float16_fields(cls: type) -> frozenset[str]:
-    """The attributes of a DroneCAN class (of any type set) that hold ``float16`` values."""
-    return _FLOAT16.get(cls, frozenset())
-
-
-def float32_fields(cls: type) -> frozenset[str]:
-    """The attributes of a DroneCAN class (of any type set) that hold ``float32`` values."""
-    return _FLOAT32.get(cls, frozenset())
 
 
 class TypeSet:
@@ -106,9 +87,13 @@ class TypeSet:
         self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(
             text_attributes(definitions, classes, members)
         )
-        _TEXT.update(self.text_fields)
-        _FLOAT16.update(text_attributes(definitions, classes, members, is_float16))
-        _FLOAT32.update(text_attributes(definitions, classes, members, is_float32))
+        for fact, found in (  # the class's facts, read by `veronte4x.values`
+            ("_TEXT_FIELDS_", self.text_fields),
+            ("_FLOAT16_FIELDS_", text_attributes(definitions, classes, members, is_float16)),
+            ("_FLOAT32_FIELDS_", text_attributes(definitions, classes, members, is_float32)),
+        ):
+            for cls, attributes in found.items():
+                setattr(cls, fact, attributes)
 
     @classmethod
     def standard(cls) -> TypeSet:
