@@ -3,15 +3,18 @@
 from __future__ import annotations
 
 import dataclasses
+import importlib
 import xml.etree.ElementTree as ET
 from collections import Counter
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from veronte4x import capture, codec, dronecan
 from veronte4x.capture.stats import Stats
-from veronte4x.client.nodes import NodeTable
+from veronte4x.client.nodes import NodeEntry, NodeTable
 from veronte4x.display import HtmlDisplay, to_html
 
 CAPTURE = Path(__file__).resolve().parent.parent / "examples" / "capture.log"
@@ -133,6 +136,44 @@ def test_the_node_table() -> None:
 
 def test_anything_else_is_its_escaped_repr() -> None:
     assert to_html("<b>") == "<pre>&#x27;&lt;b&gt;&#x27;</pre>"
+    assert to_html(Stats) == "<pre>&lt;class &#x27;veronte4x.capture.stats.Stats&#x27;&gt;</pre>"
+    record = next(iter(capture.read(CAPTURE)))
+    assert to_html(record) == record._repr_html_()  # its own view
+
+
+def _status() -> dronecan.NodeStatus:
+    return dronecan.NodeStatus(5, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
+
+
+def _transfer() -> dronecan.Transfer:
+    frames = dronecan.encode(_status(), source_node_id=21, transfer_id=3)
+    return dronecan.decode_frames(frames, timestamp=1763737200.5)
+
+
+def _entry() -> NodeEntry:
+    entry = NodeTable().observe_status(21, _status(), 1763737200.0)
+    return entry
+
+
+@pytest.mark.parametrize(
+    ("make", "module", "view"),
+    [
+        (lambda: codec.Score(autopilot=1, score=0.5), "veronte4x.display", "message_html"),
+        (_status, "veronte4x.display", "message_html"),
+        (lambda: next(iter(capture.read(CAPTURE))), "veronte4x.capture.records", "record_html"),
+        (Stats, "veronte4x.capture.stats", "stats_html"),
+        (_transfer, "veronte4x.dronecan.view", "transfer_html"),
+        (NodeTable, "veronte4x.client.nodes", "nodes_html"),
+        (_entry, "veronte4x.client.nodes", "nodes_html"),
+    ],
+    ids=["veronte", "dronecan", "record", "stats", "transfer", "node table", "node entry"],
+)
+def test_each_class_shows_itself_through_the_view_of_its_package(
+    make: Callable[[], Any], module: str, view: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    shown = make()
+    monkeypatch.setattr(importlib.import_module(module), view, lambda *args: f"{view} called")
+    assert shown._repr_html_() == f"{view} called"
 
 
 def test_the_span_of_a_capture_and_the_destination_of_a_service(tmp_path: Path) -> None:
