@@ -11,8 +11,8 @@ import pytest
 
 from veronte4x.dronecan import TypeSet
 from veronte4x.dronecan.parser import DsdlError, parse_namespaces
+from veronte4x.dronecan.types import DSDL_ROOT
 from veronte4x.dronecan.vendor_roots import (
-    DSDL_DIRECTORY,
     ENVIRONMENT_VARIABLE,
     SHIPPED,
     Override,
@@ -35,8 +35,8 @@ def _write(path: Path, text: str = "uint8 a\n") -> Path:
 def test_the_shipped_roots_alone(tmp_path: Path) -> None:
     assert find_roots({}, tmp_path) == Roots(shipped_roots(), ())
     assert [p.name for p in shipped_roots()] == list(SHIPPED)
-    assert all((DSDL_DIRECTORY / name).is_dir() for name in SHIPPED)
-    assert sorted(p.name for p in DSDL_DIRECTORY.iterdir() if p.is_dir()) == sorted(
+    assert all((DSDL_ROOT / name).is_dir() for name in SHIPPED)
+    assert sorted(p.name for p in DSDL_ROOT.iterdir() if p.is_dir()) == sorted(
         (*SHIPPED, "uavcan")
     )  # every root of dronecan/DSDL is shipped
 
@@ -83,10 +83,10 @@ def test_a_later_root_overrides_type_by_type(tmp_path: Path) -> None:
     root, replacing = _user_com(tmp_path)
     found = find_roots({}, tmp_path / "home")
     assert found.roots == (*shipped_roots(), root)
-    override = Override("com.hobbywing.esc.StatusMsg1", DSDL_DIRECTORY / STATUS, replacing)
+    override = Override("com.hobbywing.esc.StatusMsg1", DSDL_ROOT / STATUS, replacing)
     assert found.overrides == (override,)
     assert str(override) == f"com.hobbywing.esc.StatusMsg1: {replacing} replaces " + str(
-        DSDL_DIRECTORY / STATUS
+        DSDL_ROOT / STATUS
     )
     definitions = parse_namespaces(found.roots, override=True)
     assert definitions["com.hobbywing.esc.StatusMsg1"].path == str(replacing)
@@ -94,7 +94,7 @@ def test_a_later_root_overrides_type_by_type(tmp_path: Path) -> None:
     with pytest.raises(DsdlError) as caught:
         parse_namespaces(found.roots)
     assert str(caught.value) == (
-        f"{replacing}: com.hobbywing.esc.StatusMsg1 also in {DSDL_DIRECTORY / STATUS}"
+        f"{replacing}: com.hobbywing.esc.StatusMsg1 also in {DSDL_ROOT / STATUS}"
     )
 
 

@@ -28,12 +28,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from veronte4x.dronecan.parser import definition_files
+from veronte4x.dronecan.types import DSDL_ROOT
 
 SHIPPED = ("ardupilot", "com", "cuav", "dronecan", "mppt")
 """The vendor root namespaces shipped with the package, in the order they load."""
-
-DSDL_DIRECTORY = Path(__file__).with_name("dsdl")
-"""Where the shipped DSDL is (each root a directory of it)."""
 
 ENVIRONMENT_VARIABLE = "VERONTE4X_DSDL_PATH"
 """The environment variable of more root namespace directories (`os.pathsep` between)."""
@@ -76,7 +74,7 @@ class Roots:
 
 def shipped_roots() -> tuple[Path, ...]:
     """The shipped vendor root namespace directories, in `SHIPPED` order."""
-    return tuple(DSDL_DIRECTORY / name for name in SHIPPED)
+    return tuple(DSDL_ROOT / name for name in SHIPPED)
 
 
 def user_roots(
