@@ -259,7 +259,7 @@ def test_payload_too_long_and_bad_payload() -> None:
 def test_unknown_types_and_malformed_frames_are_counted() -> None:
     r = dronecan.Reassembler()
     assert r.feed(dronecan.message_can_id(0, 20000, 1), b"\xc0", timestamp=0.0) is None
-    assert r.feed(dronecan.anonymous_can_id(0, 1, 5), b"\x01\xc0", timestamp=0.0) is None
+    assert r.feed(dronecan.anonymous_can_id(0, 2, 5), b"\x01\xc0", timestamp=0.0) is None
     assert r.feed(dronecan.message_can_id(0, 341, 1), b"", timestamp=0.0) is None
     assert r.feed(1 << 29, b"\xc0", timestamp=0.0) is None
     assert r.feed(dronecan.message_can_id(0, 341, 1), bytes(9), timestamp=0.0) is None

@@ -38,7 +38,7 @@ from typing import Any, NamedTuple, cast
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK
-from veronte4x.dronecan.transfer import Transfer
+from veronte4x.dronecan.transfer import Transfer, received
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
@@ -141,8 +141,7 @@ _LOST = 32
 class _Session:
     """Receiver state of one transfer descriptor (spec 4.1 "State variables").
 
-    Also holds what every transfer of the descriptor shares: its codec, kind, type id and
-    destination.
+    Also holds what every transfer of the descriptor shares: its codec, kind and type id.
     """
 
     __slots__ = (
@@ -155,7 +154,6 @@ class _Session:
         "data_type_id",
         "decode_frame",
         "decode_payload",
-        "destination",
         "kind",
         "last",
         "limit",
@@ -180,7 +178,6 @@ class _Session:
                 self.crc_seed,
                 self.limit,
             ) = shared
-        self.destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
         # The transfer id the fast path of `feed` takes: the one in progress, or the one
         # after the transfer delivered last; -1 sends every frame through the full update.
         self.tid = -1
@@ -209,7 +206,6 @@ def _shared(codec: TypeCodec) -> tuple[Any, ...]:
     )
 
 
-_new_tuple = tuple.__new__
 
 
 class _SessionTypes:
@@ -402,19 +398,7 @@ class Reassembler:
                 session.last = data
                 self._touch(key)
                 self.transfers += 1
-                return _new_tuple(
-                    Transfer,
-                    (
-                        message,
-                        can_id & 0x7F,
-                        session.destination,
-                        can_id >> 24,
-                        tid,
-                        timestamp,
-                        session.kind,
-                        session.data_type_id,
-                    ),
-                )
+                return received(message, can_id, tid, timestamp, session.kind, session.data_type_id)
             if tail & 0xE0 == 0x80 and len(data) == 8:  # first frame of several
                 session.buffer = bytearray(data[:-1])
                 session.toggle = 0x20
@@ -486,8 +470,9 @@ class Reassembler:
             return self._problem(
                 Problem.MALFORMED_FRAME, can_id, data, timestamp, "multi-frame anonymous"
             )
-        else:
-            return self._problem(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "anonymous message")
+        else:  # anonymous: the type id's low 2 bits beside a discriminator (spec 4.1)
+            dtid = (can_id >> 8) & 3
+            shared = self._messages.get(dtid) or self._session_types.message(dtid)
         if shared is None:
             return self._problem(Problem.UNKNOWN_TYPE, can_id, data, timestamp, "unknown data type")
         session = self._sessions.get(can_id & 0xFFFFFF)
@@ -512,13 +497,11 @@ class Reassembler:
         if can_id & 0x80:
             key = (can_id >> 15) & 0x1FF
             shared = self._services.get(key) or self._session_types.service(key)
-            destination: int | None = (can_id >> 8) & 0x7F
-            if not destination or not can_id & 0x7F:
+            if not can_id & 0x7F00 or not can_id & 0x7F:
                 return self._feed(can_id, data, timestamp)
         elif can_id & 0x7F:
             dtid = (can_id >> 8) & 0xFFFF
             shared = self._messages.get(dtid) or self._session_types.message(dtid)
-            destination = None
         else:
             return self._feed(can_id, data, timestamp)
         if shared is None or tail & 0xE0 != 0xC0 or shared[3] is None:
@@ -534,19 +517,7 @@ class Reassembler:
         session.start = timestamp
         session.last = data
         self.transfers += 1
-        transfer = _new_tuple(
-            Transfer,
-            (
-                message,
-                can_id & 0x7F,
-                destination,
-                can_id >> 24,
-                tid,
-                timestamp,
-                shared[1],
-                shared[2],
-            ),
-        )
+        transfer = received(message, can_id, tid, timestamp, shared[1], shared[2])
         return transfer if evicted is None else Problems((evicted,), transfer)
 
     def _new_session(
@@ -748,19 +719,7 @@ class Reassembler:
         session.tid = (tid + 1) & 0x1F
         session.counted = False
         self.transfers += 1
-        return _new_tuple(
-            Transfer,
-            (
-                message,
-                can_id & 0x7F,
-                session.destination,
-                can_id >> 24,
-                tid,
-                session.start,
-                session.kind,
-                session.data_type_id,
-            ),
-        )
+        return received(message, can_id, tid, session.start, session.kind, session.data_type_id)
 
     def _deliver(
         self, session: _Session, can_id: int, payload: Any, tid: int, ts: float, counted: bool
@@ -779,19 +738,7 @@ class Reassembler:
         session.closed = tid
         session.tid = (tid + 1) & 0x1F
         self.transfers += 1
-        return _new_tuple(
-            Transfer,
-            (
-                message,
-                can_id & 0x7F,
-                session.destination,
-                can_id >> 24,
-                tid,
-                ts,
-                session.kind,
-                session.data_type_id,
-            ),
-        )
+        return received(message, can_id, tid, ts, session.kind, session.data_type_id)
 
     def expire(self, timestamp: float) -> int:
         """Drop sessions idle past the transfer-ID timeout at ``timestamp``.

@@ -46,7 +46,8 @@ class Transfer(NamedTuple):
 
     Attributes:
         message: The decoded message, request or response.
-        source_node_id: Sender, 1..127.
+        source_node_id: Sender, 1..127; None for an anonymous message (spec 4.1, "Anonymous
+            message transfers": source node id 0 on the wire).
         destination_node_id: Receiver of a service transfer, ``None`` for a message.
         priority: 0 (highest) to 31.
         transfer_id: 0..31.
@@ -56,7 +57,7 @@ class Transfer(NamedTuple):
     """
 
     message: Any
-    source_node_id: int
+    source_node_id: int | None
     destination_node_id: int | None
     priority: int
     transfer_id: int
@@ -69,6 +70,35 @@ class Transfer(NamedTuple):
         from veronte4x.dronecan.view import transfer_html
 
         return transfer_html(self)
+
+
+_new_tuple = tuple.__new__
+
+
+def received(
+    message: Any,
+    can_id: int,
+    transfer_id: int,
+    timestamp: float,
+    kind: TransferKind,
+    data_type_id: int,
+) -> Transfer:
+    """The `Transfer` of a ``message`` received with a valid 29-bit ``can_id``: its sender,
+    receiver and priority read from the CAN ID (spec 4.1 "ID field"), the sender None for an
+    anonymous message. Every received transfer is built here."""
+    return _new_tuple(
+        Transfer,
+        (
+            message,
+            can_id & 0x7F or None,
+            (can_id >> 8) & 0x7F if can_id & 0x80 else None,
+            can_id >> 24,
+            transfer_id,
+            timestamp,
+            kind,
+            data_type_id,
+        ),
+    )
 
 
 _FAST: dict[type, FramesFunction] = {}
@@ -99,8 +129,7 @@ def encode(
 
     Args:
         message: An instance of one of the message, request or response classes.
-        source_node_id: The sender, 1..127 (anonymous messages are not supported: none of
-            the eight types may be sent anonymously).
+        source_node_id: The sender, 1..127 (anonymous messages are decoded, not sent).
         transfer_id: 0..31.
         priority: 0 (highest) to 31.
         destination_node_id: The receiver, 1..127; required for requests and responses,
@@ -199,9 +228,9 @@ def _check_transport(codec: TypeCodec, source: object, tid: object, priority: ob
             raise EncodeError(name, field, value, f"an int in {low}..{high}")
 
 
-_SingleRoute = tuple[Callable[[bytes], Any], int, "int | None", int, TransferKind, int]
+_SingleRoute = tuple[Callable[[bytes], Any], TransferKind, int]
 """The single-frame route of a CAN ID: the generated frame decoder of its type, and the
-source node, destination node, priority, kind and data type id of its transfers."""
+kind and data type id of its transfers."""
 
 _MultiRoute = Callable[[list[Any], float], "Transfer | None"]
 """The multi-frame route of a CAN ID: ``route(frames, timestamp)``, a list of at least two
@@ -240,7 +269,7 @@ class _Routes:
             return None
         if len(self.single) >= _MAX_ROUTES:
             self.single.clear()
-        route = self.single[can_id] = _single_route(codec, can_id)
+        route = self.single[can_id] = _single_route(codec)
         return route
 
     def add_multi(self, can_id: int) -> _MultiRoute | None:
@@ -255,28 +284,20 @@ class _Routes:
 
 
 _MAX_ROUTES = 4096
-_new_tuple = tuple.__new__
 
 
-def _transfer_fields(codec: TypeCodec, can_id: int) -> tuple[int, int | None, int, Any, int]:
-    """Source, destination, priority, kind and data type id of a valid CAN ID of a type."""
-    destination = (can_id >> 8) & 0x7F if can_id & 0x80 else None
-    data_type = codec.data_type
-    return can_id & 0x7F, destination, can_id >> 24, data_type.kind, data_type.data_type_id
-
-
-def _single_route(codec: TypeCodec, can_id: int) -> _SingleRoute:
+def _single_route(codec: TypeCodec) -> _SingleRoute:
     """The single-frame route of a valid CAN ID of a type with a frame decoder."""
     decode = codec.fast.decode_frame
     assert decode is not None
-    return (decode, *_transfer_fields(codec, can_id))
+    return decode, codec.data_type.kind, codec.data_type.data_type_id
 
 
 def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
     """The multi-frame route of a valid CAN ID of a type."""
     decode, seed = codec.fast.decode, codec.crc_seed
     most = frame_count(codec.max_payload)
-    source, destination, priority, kind, data_type_id = _transfer_fields(codec, can_id)
+    kind, data_type_id = codec.data_type.kind, codec.data_type.data_type_id
 
     def route(frames: list[Any], timestamp: float) -> Transfer | None:
         count = len(frames)
@@ -299,15 +320,15 @@ def _multi_route(codec: TypeCodec, can_id: int) -> _MultiRoute:
         size = len(joined) - 8 * (count - 1)  # of the last frame, if the others have 8 bytes
         if not 0 < size <= len(chunks[-1]):  # then all frames have 1..8 bytes, the others 8
             return None
-        tails = _TAILS[joined[7] & 0x1F][count]  # of the frames before the last, and the last
+        tid = joined[7] & TRANSFER_ID_MASK
+        tails = _TAILS[tid][count]  # of the frames before the last, and the last
         if joined[7 : 8 * count - 8 : 8] != tails[0] or joined[-1] != tails[1]:
             return None
         body = b"".join(_CHUNKS[count].unpack_from(joined)) + joined[8 * count - 8 : -1]
         payload = body[2:]
         if crc_hqx(payload, seed) != body[0] | body[1] << 8:
             return None
-        return _new_tuple(Transfer, (decode(payload), source, destination, priority,
-                                     joined[7] & 0x1F, timestamp, kind, data_type_id))  # fmt: skip
+        return received(decode(payload), can_id, tid, timestamp, kind, data_type_id)
 
     return route
 
@@ -404,15 +425,15 @@ def decode_frames(
                     if route is not None:
                         tail = data[-1]
                         if tail & 0xE0 == 0xC0:
-                            decode, source, destination, priority, kind, data_type_id = route
+                            decode, kind, data_type_id = route
                             try:  # the frame decoder checks the frame's length
                                 message = decode(data)
                             except _FAST_ERRORS:
                                 pass
                             else:
-                                return _new_tuple(Transfer, (message, source, destination,
-                                                             priority, tail & 0x1F, timestamp,
-                                                             kind, data_type_id))  # fmt: skip
+                                tid = tail & TRANSFER_ID_MASK
+                                return received(message, can_id, tid, timestamp, kind,
+                                                data_type_id)  # fmt: skip
         elif frames:
             first = frames[0]
             if first.__class__ is tuple and len(first) == 2:
@@ -498,13 +519,5 @@ def _decode_frames_checked(
             )
     else:
         payload = body
-    return Transfer(
-        codec.decode(payload),
-        fields.source_node_id,
-        fields.destination_node_id,
-        fields.priority,
-        tid,
-        timestamp,
-        fields.kind,
-        fields.data_type_id,
-    )
+    return received(codec.decode(payload), can_id, tid, timestamp, fields.kind,
+                    codec.data_type.data_type_id)  # fmt: skip

@@ -440,6 +440,7 @@ class SimulatedEsc:
         elif isinstance(message, ExecuteOpcodeRequest):
             reply = self._execute_opcode(message)
         elif isinstance(message, BeginFirmwareUpdateRequest):
+            assert request.source_node_id is not None  # a request is never anonymous
             reply = self._begin_firmware_update(message, request.source_node_id)
         else:
             return  # a request this module does not serve: no answer, as on a real node
