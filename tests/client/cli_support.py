@@ -8,6 +8,7 @@ import sys
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 import can
 
@@ -83,6 +84,41 @@ def simulator(port: int, *options: str) -> Iterator[subprocess.Popen[str]]:
     finally:
         process.terminate()
         process.wait(timeout=HANG_GUARD)
+
+
+RELAY = Path(__file__).with_name("lossy_relay.py")
+
+
+@contextmanager
+def relay(
+    port_a: int, port_b: int, loss: float, seed: int, cut: tuple[int, int] | None = None
+) -> Iterator[list[str]]:
+    """``lossy_relay.py`` between the two buses until the block ends (``cut``: its
+    CUT_AFTER and CUT_FOR); yields its lines after the first, complete once the block
+    has ended."""
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            str(RELAY),
+            str(port_a),
+            str(port_b),
+            str(loss),
+            str(seed),
+            *(str(n) for n in cut or ()),
+        ],
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    lines: list[str] = []
+    try:
+        assert process.stderr is not None
+        first = process.stderr.readline()  # written once both buses are open
+        assert first.startswith("relaying"), first
+        yield lines
+    finally:
+        process.terminate()
+        _, rest = process.communicate(timeout=HANG_GUARD)
+        lines += rest.splitlines()
 
 
 @contextmanager

@@ -6,10 +6,6 @@ through), the ground tool retries its own requests and serves repeated reads ali
 
 from __future__ import annotations
 
-import subprocess
-import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -20,31 +16,10 @@ from veronte4x.dronecan.image_crc import crc64we
 from veronte4x.simulator import SimulatedEsc
 from veronte4x.simulator.esc import FILE_SERVER_SILENCE
 
-from .cli_support import HANG_GUARD, bus_args, free_port, simulator, veronte4x
+from .cli_support import bus_args, free_port, relay, simulator, veronte4x
 
-RELAY = Path(__file__).with_name("lossy_relay.py")
 IMAGE = bytes((i * 7 + 3) & 0xFF for i in range(600))
 """Two full reads and a short one."""
-
-
-@contextmanager
-def relay(port_a: int, port_b: int, loss: float, seed: int) -> Iterator[list[str]]:
-    """The relay between the two buses until the block ends; yields its last lines."""
-    process = subprocess.Popen(
-        [sys.executable, str(RELAY), str(port_a), str(port_b), str(loss), str(seed)],
-        stderr=subprocess.PIPE,
-        text=True,
-    )
-    lines: list[str] = []
-    try:
-        assert process.stderr is not None
-        first = process.stderr.readline()  # written once both buses are open
-        assert first.startswith("relaying"), first
-        yield lines
-    finally:
-        process.terminate()
-        _, rest = process.communicate(timeout=HANG_GUARD)
-        lines += rest.splitlines()
 
 
 @pytest.mark.parametrize(("loss", "seed"), [(0.02, 1), (0.10, 2)])
