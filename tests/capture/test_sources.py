@@ -47,7 +47,9 @@ def test_resolve_by_suffix_then_by_content(tmp_path: Path) -> None:
         capture.read(tmp_path)
     other = tmp_path / "notes.md"
     other.write_text("# not a capture\n")
-    with pytest.raises(SourceError, match="its content is not candump or gvret, and its suffix"):
+    with pytest.raises(
+        SourceError, match="its content is not candump or gvret or dataflash, and its suffix"
+    ):
         capture.read(other)
     garbled = tmp_path / "garbled"
     garbled.write_text("garbage first\n" + EXAMPLE.read_text())

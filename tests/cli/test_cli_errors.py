@@ -45,20 +45,21 @@ def test_a_directory_is_a_usage_error(tmp_path: Path) -> None:
 
 
 def test_an_unknown_format_is_a_usage_error(tmp_path: Path) -> None:
-    path = tmp_path / "dump.bin"
+    path = tmp_path / "dump.dat"
     path.write_bytes(bytes(range(256)) * 8)
     result = run("decode", str(path))
     assert result.returncode == 2
     assert first_error_line(result) == (
-        f"veronte4x: {path}: in no format veronte4x knows: its content is not candump or gvret, "
-        "and its suffix is none of .log, .txt, .candump, .asc, .blf, .csv, .db, .mf4, .trc; "
+        f"veronte4x: {path}: in no format veronte4x knows: its content is not candump or gvret or "
+        "dataflash, "
+        "and its suffix is none of .log, .txt, .candump, .asc, .bin, .blf, .csv, .db, .mf4, .trc; "
         "rename it to the suffix of its format, or convert it to candump text"
     )
     assert result.stdout == b""
 
 
 def test_an_unknown_gzipped_format_and_an_empty_file(tmp_path: Path) -> None:
-    packed = tmp_path / "dump.bin"
+    packed = tmp_path / "dump.dat"
     packed.write_bytes(gzip.compress(bytes(range(256)) * 8))
     result = run("stats", str(packed))
     assert result.returncode == 2

@@ -245,6 +245,7 @@ _BATCHES = "veronte4x.capture.columnar.batches"
 _PYTHON_CAN = "veronte4x.capture.readers.pythoncan"
 _MF4 = "veronte4x.capture.columnar.mf4"
 _GVRET = "veronte4x.capture.readers.gvret"
+_DATAFLASH = "veronte4x.capture.readers.dataflash"
 
 register(
     Reader(
@@ -269,3 +270,4 @@ register(
     )
 )
 register(Reader("gvret", (".csv",), f"{_GVRET}:frames", sniff=f"{_GVRET}:sniff"))
+register(Reader("dataflash", (".bin",), f"{_DATAFLASH}:frames", sniff=f"{_DATAFLASH}:sniff"))
