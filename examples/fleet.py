@@ -41,12 +41,8 @@ def make_fleet(
     paths = []
     for number, failure in enumerate(fail_at):
         start = 1_763_737_200.0 + 86_400 * number
-        bus = generate(minutes, failure * minutes * 60, number)
-        lines = sorted(bus.lines, key=lambda line: line[0])
         path = folder / f"flight{number + 1}.log"
-        with path.open("w") as out:
-            for time, text in lines:
-                out.write(f"({start + time:.6f}) {text.split(' ', 1)[1]}\n")
+        generate(minutes, failure * minutes * 60, number).write(path, start)
         paths.append(path)
     return paths
 
@@ -55,18 +51,18 @@ def make_fleet(
 
 SWITCHES_SQL = """
 WITH status AS (
-    SELECT source, timestamp, selected,
-           lag(selected) OVER (PARTITION BY source ORDER BY timestamp) AS previous
+    SELECT source, timestamp, selected_name AS selected,
+           lag(selected_name) OVER (PARTITION BY source ORDER BY timestamp) AS previous
     FROM read_parquet('{data}/capture=*/Status.parquet')
 ), switches AS (
     SELECT source, timestamp, previous, selected FROM status WHERE selected <> previous
 ), scores AS (
     SELECT source, timestamp,
-           max(score) FILTER (WHERE autopilot = 0) AS ap1,
-           max(score) FILTER (WHERE autopilot = 1) AS ap2,
-           max(score) FILTER (WHERE autopilot = 2) AS ap3
+           last_value(CASE WHEN autopilot_name = 'AP1' THEN score END IGNORE NULLS) OVER w AS ap1,
+           last_value(CASE WHEN autopilot_name = 'AP2' THEN score END IGNORE NULLS) OVER w AS ap2,
+           last_value(CASE WHEN autopilot_name = 'AP3' THEN score END IGNORE NULLS) OVER w AS ap3
     FROM read_parquet('{data}/capture=*/Score.parquet')
-    GROUP BY source, timestamp
+    WINDOW w AS (PARTITION BY source ORDER BY timestamp ROWS UNBOUNDED PRECEDING)
 )
 SELECT w.source, w.timestamp, w.previous, w.selected,
        s.timestamp AS scored_at, s.ap1, s.ap2, s.ap3
@@ -95,15 +91,20 @@ def switches_polars(data: Path) -> pl.DataFrame:
     switches = (
         _scan(data, "Status")
         .sort("source", "timestamp")
+        .with_columns(selected=pl.col("selected_name").cast(pl.String))
         .with_columns(previous=pl.col("selected").shift(1).over("source"))
         .filter(pl.col("selected") != pl.col("previous"))
         .select("source", "timestamp", "previous", "selected")
     )
     scores = (
         _scan(data, "Score")
-        .group_by("source", "timestamp")
-        .agg(
-            pl.col("score").filter(pl.col("autopilot") == index).max().alias(f"ap{index + 1}")
+        .sort("source", "timestamp")
+        .with_columns(
+            pl.when(pl.col("autopilot") == index)
+            .then(pl.col("score"))
+            .forward_fill()
+            .over("source")
+            .alias(f"ap{index + 1}")
             for index in range(3)
         )
         .with_columns(scored_at=pl.col("timestamp"))
@@ -166,7 +167,7 @@ def plot(switches: pl.DataFrame, heat: pl.DataFrame, path: Path) -> None:
     """The scores at each switch, and temperature against throttle."""
     figure = Figure(figsize=(10, 4))
     left, right = figure.subplots(1, 2)
-    labels = [f"{Path(s).stem}\nAP{p + 1}->AP{n + 1}" for s, p, n in switches.select(
+    labels = [f"{Path(s).stem}\n{p}->{n}" for s, p, n in switches.select(
         "source", "previous", "selected").iter_rows()]  # fmt: skip
     for offset, column in enumerate(("ap1", "ap2", "ap3")):
         x = [i + 0.25 * (offset - 1) for i in range(len(labels))]

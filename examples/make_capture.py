@@ -70,7 +70,8 @@ class Bus:
         self.frames.append(PendingFrame(time, can_id, extended, len(data), sender))
         self.texts.append(f"can0 {ident}#{data.hex().upper()}")
 
-    def write(self, path: Path) -> int:
+    def write(self, path: Path, start: float = START) -> int:
+        """Write the frames, the capture clock at ``start`` at t = 0; return how many."""
         queued = sorted(range(len(self.frames)), key=lambda i: self.frames[i].ready)
         ends = transmit([self.frames[i] for i in queued], BITRATE)
         order = sorted(range(len(ends)), key=ends.__getitem__)

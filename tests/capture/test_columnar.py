@@ -38,11 +38,14 @@ def test_schemas_are_fixed_by_the_layouts() -> None:
             ("can_id", pa.uint32()),
             ("sender", pa.dictionary(pa.int16(), pa.string())),
             ("autopilot", pa.uint8()),
+            ("autopilot_name", pa.dictionary(pa.uint8(), pa.string())),
             ("score", pa.float32()),
         ]
     )
     status = tables["Status"].schema
-    assert status.names[4:8] == ["selected", "arbitrating", "alive_0", "alive_1"]
+    assert status.names[4:9] == ["selected", "selected_name", "arbitrating", "alive_0", "alive_1"]
+    names = tables["Status"].column("selected_name").combine_chunks().dictionary.to_pylist()
+    assert names == ["AP1", "AP2", "AP3", "external"]
     assert status.field("normal_mode").type == pa.bool_()
 
 

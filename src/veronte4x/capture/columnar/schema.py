@@ -123,6 +123,8 @@ class Column:
             (and checked) as the table is built.
         dsdl: The DSDL type of the values ``get`` gives (None standing for null), where
             they hold structs or unions: made Arrow by `arrow_values`.
+        source: A dictionary column whose indices are the values of column ``source``
+            (the name beside a number: ``selected_name`` beside ``selected``).
     """
 
     name: str
@@ -131,6 +133,7 @@ class Column:
     names: tuple[str, ...] | None = None
     text: bool = False
     dsdl: Scalar | Array | Struct | Union | None = None
+    source: str | None = None
 
     def values(self, messages: Sequence[Any]) -> Any:
         """The column's values of ``messages`` as a table takes them: a list, or an Arrow
@@ -208,7 +211,16 @@ def veronte_spec(kind: str, variants: list[FrameLayout]) -> TableSpec:
             name = f"{attr}_{index}" if tupled else attr
             get = _item(attr, index) if tupled else attrgetter(attr)
             columns.append(Column(name, veronte_type(f), get))
+            if attr in AUTOPILOT_FIELDS:
+                names = AUTOPILOT_NAMES
+                columns.append(Column(f"{name}_name", enum_type(names), get, names, source=name))
     return TableSpec(kind, HEAD, tuple(columns))
+
+
+AUTOPILOT_FIELDS = frozenset({"selected", "autopilot"})
+"""The Veronte fields that hold an autopilot's index (Status ``selected``, Score
+``autopilot``): their tables have a column ``<field>_name`` beside, the autopilot's name
+(`veronte4x.capture.busmap.AUTOPILOT_NAMES`: ``AP2`` for 1)."""
 
 
 def _item(attr: str, index: int) -> Callable[[Any], Any]:

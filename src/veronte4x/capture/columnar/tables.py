@@ -75,6 +75,7 @@ class Tables:
             return
         spec = self.specs[kind]
         names = {c.name: c.names for c in spec.columns}
+        sources = {c.name: c.source for c in spec.columns if c.source is not None}
         arrays: dict[str, pa.Array] = {}
         for field in spec.schema:
             if field.name in spec.texts:
@@ -94,9 +95,8 @@ class Tables:
             elif field.name in head and field.name not in names:
                 arrays[field.name] = _arrow(head[field.name], field.type, len(keys))
             else:
-                arrays[field.name] = _arrow(
-                    fields[field.name], field.type, len(keys), names.get(field.name)
-                )
+                values = fields[sources.get(field.name, field.name)]
+                arrays[field.name] = _arrow(values, field.type, len(keys), names.get(field.name))
         with self._lock:
             self._parts.setdefault(kind, []).append((keys, arrays))
 
