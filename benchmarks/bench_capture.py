@@ -47,9 +47,7 @@ def flight_lines(dronecan_share: float | None) -> list[str]:
     """The example flight's lines in time order; with ``dronecan_share``, Veronte frames
     thinned, in order, until DroneCAN frames are that share of the lines."""
     make = runpy.run_path(str(ROOT / "examples" / "make_capture.py"))
-    lines = make["generate"](2.0, 60.0, 4).lines
-    lines.sort(key=lambda line: line[0])
-    texts = [text for _, text in lines]
+    texts = make["generate"](2.0, 60.0, 4).lines()
     if dronecan_share is None:
         return texts
     kept: list[str] = []

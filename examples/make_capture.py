@@ -70,16 +70,18 @@ class Bus:
         self.frames.append(PendingFrame(time, can_id, extended, len(data), sender))
         self.texts.append(f"can0 {ident}#{data.hex().upper()}")
 
-    def write(self, path: Path, start: float = START) -> int:
-        """Write the frames, the capture clock at ``start`` at t = 0; return how many."""
+    def lines(self, start: float = START) -> list[str]:
+        """The candump -L lines in time order, the capture clock at ``start`` at t = 0."""
         queued = sorted(range(len(self.frames)), key=lambda i: self.frames[i].ready)
         ends = transmit([self.frames[i] for i in queued], BITRATE)
         order = sorted(range(len(ends)), key=ends.__getitem__)
-        texts = [self.texts[queued[i]] for i in order]
-        path.write_text(
-            "".join(f"({START + ends[i]:.6f}) {t}\n" for i, t in zip(order, texts, strict=True))
-        )
-        return len(order)
+        return [f"({start + ends[i]:.6f}) {self.texts[queued[i]]}" for i in order]
+
+    def write(self, path: Path, start: float = START) -> int:
+        """Write the lines (`lines`); return how many."""
+        lines = self.lines(start)
+        path.write_text("".join(line + "\n" for line in lines))
+        return len(lines)
 
 
 def attitude(time: float) -> tuple[float, float]:

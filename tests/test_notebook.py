@@ -90,7 +90,7 @@ def test_the_notebook_runs_and_shows_its_results(executed: Any) -> None:
     assert "<td>V</td>" in html  # units
     assert "OPERATIONAL" in html  # the node table, enums by name
     assert "by message type" in html  # Stats
-    assert "2025-11-21 15:01:00.262+00:00" in html  # the switch to AP3, time as time
+    assert "2025-11-21 15:01:00.262115+00:00" in html  # the switch to AP3, time as time
     assert "AP2 dead" in html  # the replay's reason
     assert len(_outputs(executed, "image/png")) == 2  # the two plots, inline
     if not os.environ.get("TQDM_DISABLE"):  # read_tables' and to_parquet's progress bars

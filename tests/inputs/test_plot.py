@@ -33,13 +33,13 @@ def test_a_capture_without_what_a_kind_draws(tmp_path: Path) -> None:
     assert result.returncode == 2
     assert result.stderr == (
         f"veronte4x: nothing to plot: {path} has no Score or Status frame of the arbiter; try "
-        "--kind esc, or another --channel\n"
+        "--kind esc, or another --only-channel\n"
     )
     result = run("plot", str(CAPTURE), "--kind", "esc", "--output", str(image))
     assert result.returncode == 2
     assert result.stderr == (
         f"veronte4x: nothing to plot: {CAPTURE} has no ESC status or temperature of a DroneCAN "
-        "node; try --kind arbitration, or another --channel\n"
+        "node; try --kind arbitration, or another --only-channel\n"
     )
     assert not image.exists()
 

@@ -178,7 +178,7 @@ def read_tables(
         >>> tables = capture.read_tables("examples/capture.log")
         >>> scores = tables["Score"]
         >>> scores.column_names
-        ['timestamp', 'channel', 'can_id', 'sender', 'autopilot', 'score']
+        ['timestamp', 'channel', 'can_id', 'sender', 'autopilot', 'autopilot_name', 'score']
         >>> str(scores.column("timestamp")[0])
         '2025-11-21 15:00:00.260000+00:00'
         >>> capture.read_tables("examples/capture.log", time="seconds")["Score"][0][0]

@@ -95,7 +95,7 @@ def align(
         >>> tables = capture.read_tables("examples/capture.log")
         >>> grid = capture.align(tables, every="100ms", tolerance="100ms")
         >>> grid.column_names[:3]
-        ['timestamp', 'Status/arbiter/selected', 'Status/arbiter/arbitrating']
+        ['timestamp', 'Status/arbiter/selected', 'Status/arbiter/selected_name']
     """
     for module in ("numpy", "pyarrow"):
         require(module, "arrow", "aligning tables")
