@@ -191,4 +191,6 @@ def test_a_capture_replays_in_python_as_on_the_command_line(flight: Path) -> Non
     switch = next(d for d in result.decisions if d.reason.startswith("AP2 -> AP3"))
     assert switch.utc is not None and switch.utc.tzinfo is not None
     assert switch.utc.strftime("%Y-%m-%dT%H:%M:%S.%fZ") == format_time(switch.time)
-    assert (switch.utc - datetime.datetime(2025, 11, 21, 15, tzinfo=datetime.UTC)).seconds == 15
+    assert (
+        switch.utc - datetime.datetime(2025, 11, 21, 15, tzinfo=datetime.timezone.utc)
+    ).seconds == 15

@@ -87,4 +87,3 @@ def test_an_old_spelling_is_refused_naming_the_new_one(
 ) -> None:
     assert cli.main(argv) == 2
     assert capsys.readouterr() == ("", f"veronte4x: {line}\n")
-

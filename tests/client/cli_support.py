@@ -140,7 +140,11 @@ def _statuses(listener: can.BusABC) -> Iterator[tuple[int, EscStatus]]:
         if message is None:
             continue
         transfer = reassembler.feed(message.arbitration_id, bytes(message.data), 0.0)
-        if transfer is not None and isinstance(transfer.message, EscStatus):
+        if (
+            transfer is not None
+            and transfer.source_node_id is not None
+            and isinstance(transfer.message, EscStatus)
+        ):
             yield transfer.source_node_id, transfer.message
 
 

@@ -43,7 +43,9 @@ class Recorder:
             with self._lock:
                 if isinstance(transfer.message, RawCommand):
                     self.commands.append(transfer.message.cmd)
-                elif isinstance(transfer.message, EscStatus):
+                elif (
+                    isinstance(transfer.message, EscStatus) and transfer.source_node_id is not None
+                ):
                     self.rpm.setdefault(transfer.source_node_id, []).append(transfer.message.rpm)
 
     def statuses(self, node: int) -> list[int]:

@@ -272,6 +272,7 @@ def test_a_library_spin_turns_only_the_motor_asked_for(apart: Rig) -> None:
             for event in client.spin_once(0.02):
                 if isinstance(event, Received) and isinstance(event.transfer.message, EscStatus):
                     node = event.transfer.source_node_id
+                    assert node is not None
                     rpm[node].append(event.transfer.message.rpm)
     assert rpm[22] and set(rpm[22]) == {0}
     assert apart.escs[1].state.rpm == 0

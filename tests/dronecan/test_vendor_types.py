@@ -147,7 +147,7 @@ def _same(a: Any, b: Any) -> bool:
 
 def _both_ways(t: DataType, fields: dict[str, Any], source: int, transfer_id: int) -> None:
     destination = None if t.kind is K.MESSAGE else 42
-    message = dronecan.from_builtin(TYPES[_key(t)], fields, TYPES)
+    message: Any = dronecan.from_builtin(TYPES[_key(t)], fields, TYPES)
     ours = [
         (f.can_id, f.data)
         for f in dronecan.encode(

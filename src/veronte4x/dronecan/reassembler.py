@@ -206,8 +206,6 @@ def _shared(codec: TypeCodec) -> tuple[Any, ...]:
     )
 
 
-
-
 class _SessionTypes:
     """What the sessions of each type of a type set share (`_shared`), filled in per type
     on first use so that a type's decoders are compiled only when its first frame comes."""
