@@ -32,9 +32,11 @@ def test_every_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
     bin_dir = Path(sys.executable).parent
     environment = {**os.environ, "PATH": f"{bin_dir}{os.pathsep}{os.environ['PATH']}"}
     monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("HOME", str(tmp_path))  # find_roots: no user's roots
+    monkeypatch.delenv("VERONTE4X_DSDL_PATH", raising=False)
     namespace: dict[str, object] = {}
     blocks = BLOCK.findall(PAGE.read_text())
-    assert [kind for kind, _ in blocks].count("python") == 3
+    assert [kind for kind, _ in blocks].count("python") == 4
     outputs = []
     for kind, code in blocks:
         if kind == "python":
