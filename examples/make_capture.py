@@ -120,7 +120,7 @@ def generate(minutes: float, fail_at: float, seed: int) -> Bus:
 
     def deliver(
         time: float,
-        sender: int,
+        sender: Hashable,
         frames: Iterator[dronecan.TransferFrame] | list[dronecan.TransferFrame],
     ) -> None:
         for frame in frames:
@@ -183,6 +183,8 @@ def main() -> None:
     parser.add_argument("--fail-at", type=float, default=60.0, help="seconds to the failure")
     parser.add_argument("--seed", type=int, default=4, help="random seed of the sensor noise")
     args = parser.parse_args()
+    if not Path(args.output).resolve().parent.is_dir():  # before the work, not after it
+        parser.error(f"{Path(args.output).parent}: no such directory for the output")
     count = generate(args.minutes, args.fail_at, args.seed).write(Path(args.output))
     print(f"wrote {count} frames to {args.output}")
 

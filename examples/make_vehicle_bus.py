@@ -284,9 +284,9 @@ def bus_lines(seconds: float) -> list[str]:
     one frame at a time, the lowest CAN ID first), stamped when they end."""
     frames: list[PendingFrame] = []
     texts: list[str] = []
-    for order, (period, node, name, fields) in enumerate(_traffic()):
+    for stream, (period, node, name, fields) in enumerate(_traffic()):
         data_type = _BY_NAME[name]
-        phase = order * 1e-4
+        phase = stream * 1e-4
         for k in range(int(seconds / period)):
             t = k * period
             made = dronecan.encode(
@@ -322,6 +322,8 @@ def main() -> None:
     parser.add_argument("output", nargs="?", default=str(Path(__file__).with_name("vehicle.log")))
     parser.add_argument("--seconds", type=float, default=30.0, help="length of the capture")
     args = parser.parse_args()
+    if not Path(args.output).resolve().parent.is_dir():  # before the work, not after it
+        parser.error(f"{Path(args.output).parent}: no such directory for the output")
     frames = write(args.output, args.seconds)
     print(f"wrote {frames:,} frames ({args.seconds:g} s) to {args.output}")
 

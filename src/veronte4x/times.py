@@ -34,9 +34,7 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
         return f"{seconds - start:.6f}"
     if seconds < EPOCH_THRESHOLD:
         return f"{seconds:.6f}"
-    micros = round(seconds * 1_000_000)
-    moment = _EPOCH + _dt.timedelta(microseconds=micros)
-    return moment.strftime("%Y-%m-%dT%H:%M:%S.%fZ")
+    return _moment(seconds).strftime("%Y-%m-%dT%H:%M:%S.%fZ")
 
 
 _EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
@@ -57,6 +55,11 @@ def utc_datetime(seconds: float) -> _dt.datetime | None:
     """
     if not EPOCH_THRESHOLD <= seconds < _MAX_SECONDS:
         return None
+    return _moment(seconds)
+
+
+def _moment(seconds: float) -> _dt.datetime:
+    """Unix time as a UTC datetime, rounded to the microsecond."""
     return _EPOCH + _dt.timedelta(microseconds=round(seconds * 1_000_000))
 
 

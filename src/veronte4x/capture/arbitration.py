@@ -9,16 +9,16 @@ ID width is the configuration's.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from veronte4x.arbiter.config import ArbiterConfig
 from veronte4x.arbiter.config_file import load_config
 from veronte4x.arbiter.replay import CapturedFrame, ReplayResult
 from veronte4x.arbiter.replay import replay as replay_frames
-from veronte4x.capture.frames import Frame
+from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.source import open_frames
 
-__all__ = ["replay"]
+__all__ = ["captured_frames", "replay"]
 
 
 def replay(
@@ -53,13 +53,16 @@ def replay(
     """
     if not isinstance(config, ArbiterConfig):
         config = load_config(config)
-    return replay_frames(_frames(path, config, channel), config)
+    return replay_frames(captured_frames(open_frames(path, channel), config), config)
 
 
-def _frames(
-    path: str | os.PathLike[str], config: ArbiterConfig, channel: str | None
+def captured_frames(
+    items: Iterable[Frame | BadLine], config: ArbiterConfig
 ) -> Iterator[CapturedFrame]:
-    for frame in open_frames(path, channel):
+    """The frames of a capture that the arbiter replay takes, as (time, CAN ID, data):
+    timestamped data frames (no error, remote or CAN FD frame) whose ID width is
+    ``config``'s."""
+    for frame in items:
         if (
             isinstance(frame, Frame)
             and frame.timestamp is not None

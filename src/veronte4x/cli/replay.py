@@ -10,7 +10,6 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.frames import Frame
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_NOT_IN_TIME_ORDER, EXIT_OK
 from veronte4x.cli.notices import InputWatch, channel_hint
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
@@ -53,6 +52,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     from veronte4x import arbiter
     from veronte4x.arbiter.config_file import load_config
     from veronte4x.arbiter.replay import DisorderedError
+    from veronte4x.capture.arbitration import captured_frames
 
     if args.config:
         config = _load(args.config, load_config)
@@ -65,12 +65,10 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     clock = _Clock(args.relative_time)
     watch = InputWatch(None if live(args) else args.file)
     frames = (
-        (clock.see(frame.timestamp), frame.can_id, frame.data)
-        for frame in watch.frame_items(open_frame_source(args))
-        if isinstance(frame, Frame)
-        and frame.timestamp is not None
-        and not (frame.error or frame.remote or frame.fd)
-        and frame.extended == config.extended_ids
+        (clock.see(time), can_id, data)
+        for time, can_id, data in captured_frames(
+            watch.frame_items(open_frame_source(args)), config
+        )
     )
     veronte = _Seen({*config.autopilot_ids, config.arbiter_id})
     steps = veronte.frames(frames)
