@@ -45,7 +45,7 @@ def test_schemas_are_fixed_by_the_layouts() -> None:
     status = tables["Status"].schema
     assert status.names[4:9] == ["selected", "selected_name", "arbitrating", "alive_0", "alive_1"]
     names = tables["Status"].column("selected_name").combine_chunks().dictionary.to_pylist()
-    assert names == ["AP1", "AP2", "AP3", "external"]
+    assert names == ["AP1", "AP2", "AP3", "external AP"]  # as the exported DBC names them
     assert status.field("normal_mode").type == pa.bool_()
 
 

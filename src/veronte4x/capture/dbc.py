@@ -311,7 +311,7 @@ def _signal(
         factor, offset = field.scale.factor, field.scale.offset
     ends = (low * factor + offset, high * factor + offset)
     choices: tuple[tuple[int, str], ...] = ()
-    if field.attr in ("selected", "autopilot"):
+    if field.attr in layouts.AUTOPILOT_FIELDS:
         choices = tuple(enumerate(layouts.AUTOPILOTS))
     return Signal(
         name,

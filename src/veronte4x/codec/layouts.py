@@ -21,6 +21,10 @@ MANUAL = "Veronte Autopilot 4x Software Manual"
 """The manual the public layouts come from, by its title."""
 MANUAL_TABLE = f'{MANUAL}, section 3 "CAN Bus protocol", message-type table'
 AUTOPILOTS = ("AP1", "AP2", "AP3", "external AP")
+"""The autopilots by the index Status, Score and the flags give them (4x Software Manual,
+section 3.1)."""
+AUTOPILOT_FIELDS = frozenset({"selected", "autopilot"})
+"""The fields that hold an autopilot's index: Status ``selected``, Score ``autopilot``."""
 
 _ARBITRATION = constant(0x00, 8, "message type t_arbitration", "command")
 _FF_HEADER = constant(0xFF, 8, "0xFF header", "header")

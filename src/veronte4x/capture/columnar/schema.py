@@ -58,6 +58,7 @@ from veronte4x.capture.columnar.veronte import layout_list
 from veronte4x.codec import Codec
 from veronte4x.codec.compiler import FrameLayout
 from veronte4x.codec.fields import Field, FieldKind
+from veronte4x.codec.layouts import AUTOPILOT_FIELDS, AUTOPILOTS
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union
 from veronte4x.dronecan.serializer import enum_table
@@ -211,16 +212,10 @@ def veronte_spec(kind: str, variants: list[FrameLayout]) -> TableSpec:
             name = f"{attr}_{index}" if tupled else attr
             get = _item(attr, index) if tupled else attrgetter(attr)
             columns.append(Column(name, veronte_type(f), get))
-            if attr in AUTOPILOT_FIELDS:
-                names = AUTOPILOT_NAMES
-                columns.append(Column(f"{name}_name", enum_type(names), get, names, source=name))
+            if attr in AUTOPILOT_FIELDS:  # the name beside, as the exported DBC's value table
+                named = Column(f"{name}_name", enum_type(AUTOPILOTS), get, AUTOPILOTS, source=name)
+                columns.append(named)
     return TableSpec(kind, HEAD, tuple(columns))
-
-
-AUTOPILOT_FIELDS = frozenset({"selected", "autopilot"})
-"""The Veronte fields that hold an autopilot's index (Status ``selected``, Score
-``autopilot``): their tables have a column ``<field>_name`` beside, the autopilot's name
-(`veronte4x.capture.busmap.AUTOPILOT_NAMES`: ``AP2`` for 1)."""
 
 
 def _item(attr: str, index: int) -> Callable[[Any], Any]:
