@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -11,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.capture.columnar_support import VENDOR_TYPES, any_payload
+from tests.plain_data import same
 from veronte4x.capture.columnar import payloads
 from veronte4x.capture.columnar.schema import dronecan_specs, field_column
 from veronte4x.dronecan.codec import CODECS, TypeCodec
@@ -20,16 +20,6 @@ pa = pytest.importorskip("pyarrow")
 SPECS = dronecan_specs(text="binary")  # payloads give bytes; `Tables` makes text strings
 VENDOR_SPECS = dronecan_specs(VENDOR_TYPES, "binary")
 VENDOR_CODECS = VENDOR_TYPES.codecs[len(CODECS) :]
-
-
-def _same(a: Any, b: Any) -> bool:
-    if isinstance(a, float) and isinstance(b, float):
-        return (math.isnan(a) and math.isnan(b)) or a == b
-    if isinstance(a, dict) and isinstance(b, dict):
-        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
-    if isinstance(a, list) and isinstance(b, list):
-        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
-    return bool(a == b)
 
 
 def check(found: TypeCodec, items: list[bytes], specs: dict[str, Any] = SPECS) -> None:
@@ -57,7 +47,7 @@ def check(found: TypeCodec, items: list[bytes], specs: dict[str, Any] = SPECS) -
                 expected = pa.array(column.values([message]), column.type)[0].as_py()
             else:
                 expected = column.get(message)
-            assert _same(got, expected), (column.name, payload.hex())
+            assert same(got, expected), (column.name, payload.hex())
 
 
 @settings(max_examples=300)

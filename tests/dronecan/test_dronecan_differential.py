@@ -8,7 +8,6 @@ values. Infinity is left out: the ``dronecan`` package clamps it, the spec keeps
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import pytest
@@ -21,6 +20,7 @@ from dronecan_oracle import (
 )
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from tests.plain_data import same
 
 from veronte4x import dronecan
 from veronte4x.dronecan.codec import BY_CLASS
@@ -202,16 +202,6 @@ for _t in DATA_TYPES:
     STRATEGIES.setdefault((_t.full_name, _t.kind), schema_strategy(_t.schema))
 
 
-def _same(a: Any, b: Any) -> bool:
-    if isinstance(a, float) and isinstance(b, float):
-        return (math.isnan(a) and math.isnan(b)) or a == b
-    if isinstance(a, dict) and isinstance(b, dict):
-        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
-    if isinstance(a, list) and isinstance(b, list):
-        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
-    return bool(a == b)
-
-
 def test_every_type_has_a_strategy() -> None:
     assert set(STRATEGIES) == set(CLASS_OF)
 
@@ -248,7 +238,7 @@ def test_frames_identical_and_cross_decoded(
     fast = BY_CLASS[type(message)].fast
     frames = fast.frames(message, source, transfer_id, priority, destination)
     assert [(f.can_id, f.data) for f in frames] == theirs
-    assert _same(
+    assert same(
         dronecan.to_builtin(fast.decode(fast.payload(message))),
         reference_builtin(reference_decode(ours)),
     )
@@ -258,7 +248,7 @@ def test_frames_identical_and_cross_decoded(
     results = [reassembler.feed(can_id, d, timestamp=0.0) for can_id, d in theirs]
     transfer = results[-1]
     assert transfer is not None
-    assert _same(dronecan.to_builtin(transfer.message), reference_builtin(reference_decode(ours)))
+    assert same(dronecan.to_builtin(transfer.message), reference_builtin(reference_decode(ours)))
     again = dronecan.encode(
         transfer.message,
         source_node_id=source,

@@ -21,8 +21,9 @@ import pytest
 from dronecan_oracle import reference_builtin, reference_decode, reference_frames
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from test_dronecan_differential import _same, schema_strategy
+from test_dronecan_differential import schema_strategy
 from tests.dsdl_support import write_namespace
+from tests.plain_data import same
 
 import dronecan as dc
 from veronte4x import capture
@@ -179,11 +180,11 @@ def test_frames_identical_and_cross_decoded(
     assert ours == theirs
 
     transfer = v4.decode_frames(theirs, 0.0, TYPES)
-    assert _same(v4.to_builtin(transfer.message, TYPES), reference_builtin(reference_decode(ours)))
+    assert same(v4.to_builtin(transfer.message, TYPES), reference_builtin(reference_decode(ours)))
     reassembler = v4.Reassembler(types=TYPES)
     fed = [reassembler.feed(can_id, d, 0.0) for can_id, d in theirs]
     assert fed[-1] is not None
-    assert _same(v4.to_builtin(fed[-1].message, TYPES), v4.to_builtin(transfer.message, TYPES))
+    assert same(v4.to_builtin(fed[-1].message, TYPES), v4.to_builtin(transfer.message, TYPES))
 
 
 def _reference_object(name: str, kind: v4.TransferKind, fields: dict[str, Any]) -> Any:

@@ -15,7 +15,8 @@ from dronecan_oracle import reference_builtin, reference_decode, reference_frame
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from test_dronecan_compiled import _payloads, messages
-from test_dronecan_differential import _same, schema_strategy
+from test_dronecan_differential import schema_strategy
+from tests.plain_data import same
 
 import dronecan as dc
 from veronte4x import dronecan as v4
@@ -101,7 +102,7 @@ def test_frames_identical_and_cross_decoded(types: TypeSet, kind: str, data: st.
     theirs = _theirs(kind, fields)
     assert ours == theirs
     transfer = v4.decode_frames(theirs, 0.0, types)
-    assert _same(v4.to_builtin(transfer.message, types), reference_builtin(reference_decode(ours)))
+    assert same(v4.to_builtin(transfer.message, types), reference_builtin(reference_decode(ours)))
 
 
 @pytest.mark.parametrize("kind", KINDS)
@@ -116,7 +117,7 @@ def test_generated_code_equals_the_generic_serializer(
     message = data.draw(messages(codec.data_type.schema, faults=False), label="message")
     payload = codec.fast.payload(message)  # never hands over: the values are valid
     assert payload == codec.generic.encode(message)
-    assert _same(
+    assert same(
         v4.to_builtin(codec.fast.decode(payload), types),
         v4.to_builtin(codec.generic.decode(payload), types),
     )

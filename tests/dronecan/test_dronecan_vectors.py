@@ -9,6 +9,7 @@ from typing import Any
 
 import pytest
 from dronecan_oracle import CLASS_OF, KINDS
+from tests.plain_data import same
 
 from veronte4x import dronecan
 from veronte4x.dronecan.codec import BY_CLASS
@@ -24,17 +25,6 @@ def _load(name: str) -> list[dict[str, Any]]:
 
 SAMPLE = _load("dronecan_sample.jsonl")
 OUT_OF_RANGE = _load("dronecan_out_of_range.jsonl")
-
-
-def _same(a: Any, b: Any) -> bool:
-    """Equality where NaN equals NaN (float fields decoded from NaN patterns)."""
-    if isinstance(a, float) and isinstance(b, float):
-        return (math.isnan(a) and math.isnan(b)) or a == b
-    if isinstance(a, dict) and isinstance(b, dict):
-        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
-    if isinstance(a, list) and isinstance(b, list):
-        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
-    return bool(a == b)
 
 
 def _frames(vector: dict[str, Any]) -> list[tuple[int, bytes]]:
@@ -65,7 +55,7 @@ def test_decode_frame_by_frame(vector: dict[str, Any]) -> None:
     transfer = results[-1]
     assert transfer is not None
     expected = vector.get("decoded", vector["fields"])
-    assert _same(dronecan.to_builtin(transfer.message), expected)
+    assert same(dronecan.to_builtin(transfer.message), expected)
     assert type(transfer.message) is CLASS_OF[(vector["type"], KINDS[vector["kind"]])]
     assert transfer.source_node_id == vector["source_node_id"]
     assert transfer.destination_node_id == vector["dest_node_id"]
@@ -76,7 +66,7 @@ def test_decode_frame_by_frame(vector: dict[str, Any]) -> None:
     assert transfer.kind is KINDS[vector["kind"]]
     assert sum(reassembler.counts.values()) == 0
     stateless = dronecan.decode_frames(frames)
-    assert _same(dronecan.to_builtin(stateless.message), expected)
+    assert same(dronecan.to_builtin(stateless.message), expected)
 
 
 @pytest.mark.parametrize("vector", SAMPLE, ids=_ids(SAMPLE))
@@ -86,7 +76,7 @@ def test_payload_decodes_on_both_paths(vector: dict[str, Any]) -> None:
     message = dronecan.decode_payload(kind, vector["data_type_id"], payload)
     cls = CLASS_OF[(vector["type"], kind)]
     generic = Serializer(BY_CLASS[cls].data_type.schema).decode(payload)
-    assert _same(dronecan.to_builtin(message), dronecan.to_builtin(generic))
+    assert same(dronecan.to_builtin(message), dronecan.to_builtin(generic))
 
 
 @pytest.mark.parametrize(
@@ -103,9 +93,7 @@ def test_encode_frame_by_frame(vector: dict[str, Any]) -> None:
         # the spec (and this library) keeps it. The infinity comes back on decoding.
         assert [(f.can_id, f.data) for f in frames] != _frames(vector)
         back = dronecan.to_builtin(dronecan.decode_frames(frames).message)
-        assert _same(
-            back, _keep_infinity(vector.get("decoded", vector["fields"]), vector["fields"])
-        )
+        assert same(back, _keep_infinity(vector.get("decoded", vector["fields"]), vector["fields"]))
         return
     assert [(f.can_id, f.data) for f in frames] == _frames(vector)
     payload = bytes.fromhex(vector["payload"])

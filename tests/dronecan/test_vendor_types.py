@@ -13,7 +13,6 @@ equal values.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -23,6 +22,7 @@ from dronecan_oracle import _fill, reference_builtin, reference_decode, referenc
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_dronecan_differential import schema_strategy
+from tests.plain_data import same
 
 import dronecan as dc
 from dronecan import dsdl, transport
@@ -135,16 +135,6 @@ def _branches(t: Any) -> int:
     return 1
 
 
-def _same(a: Any, b: Any) -> bool:
-    if isinstance(a, float) and isinstance(b, float):
-        return (math.isnan(a) and math.isnan(b)) or a == b
-    if isinstance(a, dict) and isinstance(b, dict):
-        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
-    if isinstance(a, list) and isinstance(b, list):
-        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
-    return bool(a == b)
-
-
 def _both_ways(t: DataType, fields: dict[str, Any], source: int, transfer_id: int) -> None:
     destination = None if t.kind is K.MESSAGE else 42
     message: Any = dronecan.from_builtin(TYPES[_key(t)], fields, TYPES)
@@ -164,11 +154,11 @@ def _both_ways(t: DataType, fields: dict[str, Any], source: int, transfer_id: in
     assert ours == theirs
     expected = reference_builtin(reference_decode(ours))
     decoded = dronecan.decode_frames(theirs, types=TYPES).message
-    assert _same(dronecan.to_builtin(decoded, TYPES), expected)
+    assert same(dronecan.to_builtin(decoded, TYPES), expected)
     reassembler = dronecan.Reassembler(types=TYPES)
     transfer = [reassembler.feed(can_id, data, timestamp=0.0) for can_id, data in theirs][-1]
     assert transfer is not None
-    assert _same(dronecan.to_builtin(transfer.message, TYPES), expected)
+    assert same(dronecan.to_builtin(transfer.message, TYPES), expected)
 
 
 def _key(t: DataType) -> str:
