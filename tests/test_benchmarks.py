@@ -63,6 +63,19 @@ RUNS = [
             "MB candump file",
         ],
     ),
+    (
+        "bench_cold.py",
+        ["--quick"],
+        [
+            "import veronte4x.capture",
+            "veronte4x decode",
+            "read_tables",
+            "pydronecan script",
+            "python-can + cantools",
+            "load_dsdl user ardupilot",
+            "veronte4x monitor --speed 1",
+        ],
+    ),
     ("bench_mf4_memory.py", ["--frames", "20000"], ["MF4 file: 20000 frames", "peak RSS", "bound"]),
     (
         "bench_fleet.py",
