@@ -32,6 +32,11 @@ def bus_args(port: int) -> list[str]:
     return ["--interface", "udp_multicast", "--channel", GROUP, "--bus-option", f"port={port}"]
 
 
+ANSWER = "10"
+"""``--timeout`` (s) for a command where one node never answers and the others must: the
+silent node costs all of it, and a simulated node in another process, on a loaded
+two-core machine, has this long to answer (2 s was missed once, at load 4 with a test run
+on both cores)."""
 HANG_GUARD = 600.0
 """Seconds before a CLI subprocess counts as hung: a guard, not a timed assertion (30 s
 expired on a loaded two-core machine with two test runs going)."""

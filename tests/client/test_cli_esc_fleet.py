@@ -13,7 +13,7 @@ import pytest
 
 from veronte4x.dronecan.image_crc import crc64we
 
-from .cli_support import bus_args, free_port, simulator, veronte4x
+from .cli_support import ANSWER, bus_args, free_port, simulator, veronte4x
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -43,13 +43,13 @@ def test_a_range_read_at_once(bus: list[str]) -> None:
 
 def test_a_node_that_does_not_answer_fails_alone(bus: list[str]) -> None:
     result = veronte4x(
-        "esc", "get", "21,99,22", "esc_index", *bus, "--timeout", "2", "--retries", "0"
+        "esc", "get", "21,99,22", "esc_index", *bus, "--timeout", ANSWER, "--retries", "0"
     )
     assert result.returncode == 3
     assert result.stdout.splitlines() == [
         "node 21: esc_index = 0 (default 0, range 0..19)",
         "node 99: failed: did not answer uavcan.protocol.param.GetSet (sent once, "
-        "2 s each); check the node id, the bus and the bit rate",
+        f"{ANSWER} s each); check the node id, the bus and the bit rate",
         "node 22: esc_index = 1 (default 1, range 0..19)",
         "3 nodes: 2 succeeded, 1 failed (99)",
     ]

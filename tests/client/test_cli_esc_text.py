@@ -19,7 +19,7 @@ from pathlib import Path
 import can
 import pytest
 
-from .cli_support import GROUP, HANG_GUARD, bus_args, free_port, simulator, veronte4x
+from .cli_support import ANSWER, GROUP, HANG_GUARD, bus_args, free_port, simulator, veronte4x
 
 PARAMS_21 = [
     "index  name                  value     default  range",
@@ -92,12 +92,12 @@ def test_params_saved_as_text_and_a_node_that_does_not_answer(
     assert result.stdout == f"saved 5 parameters of node 21 to {saved}\n"
     saved.unlink()
     failed = veronte4x(
-        "esc", "params", "21,99", *bus, "--save", str(saved), "--timeout", "2", "--retries", "0"
+        "esc", "params", "21,99", *bus, "--save", str(saved), "--timeout", ANSWER, "--retries", "0"
     )
     assert (failed.returncode, failed.stdout) == (3, "")
     assert failed.stderr.splitlines() == [
         "veronte4x: node 99: did not answer uavcan.protocol.GetNodeInfo (sent once, "
-        "2 s each); check the node id, the bus and the bit rate",
+        f"{ANSWER} s each); check the node id, the bus and the bit rate",
         f"veronte4x: nothing written to {saved}: 2 nodes: 1 succeeded, 1 failed (99)",
     ]
     assert not saved.exists()  # nothing lost, nothing half written
