@@ -59,10 +59,12 @@ def _names_a_bus(settings: dict[str, Any]) -> bool:
 
 class _Guarded:
     """A python-can bus whose ``recv`` and ``send`` raise ``can.CanError`` only; every
-    other attribute is the bus's."""
+    other attribute is the bus's, and ``__wrapped__`` the bus itself (for a reader that
+    reads its socket, `veronte4x.capture.readers.live.DatagramReader`)."""
 
     def __init__(self, bus: Any) -> None:
         self._bus = bus
+        self.__wrapped__ = bus
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self._bus, name)
