@@ -1,8 +1,17 @@
-"""Timestamps as people read them: ISO 8601 for Unix time, seconds otherwise or relative."""
+"""Timestamps as people and text formats read them: ISO 8601 for Unix time, seconds
+otherwise or relative.
+
+The one rule for a time in text (``decode``'s text, JSON lines and CSV, ``convert --to
+csv``): Unix time as ISO 8601 in UTC to the microsecond (`utc_text`), the log's own
+microseconds, as the tables' ``timestamp[us, tz=UTC]`` hold it; a capture's own clock
+(below `EPOCH_THRESHOLD`: time since a device booted or a log started) as its seconds,
+never as a time of 1970.
+"""
 
 from __future__ import annotations
 
 import datetime as _dt
+from fractions import Fraction
 from typing import Literal
 
 EPOCH_THRESHOLD = 1e8
@@ -31,10 +40,50 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
     if seconds is None:
         return "-"
     if start is not None:
-        return f"{seconds - start:.6f}"
+        return f"{relative_seconds(seconds, start):.6f}"
     if seconds < EPOCH_THRESHOLD:
         return f"{seconds:.6f}"
+    return utc_text(seconds)
+
+
+def relative_seconds(seconds: float, start: float) -> float:
+    """Seconds from ``start`` to ``seconds``, from their whole microseconds (`whole_micros`),
+    so that a difference of logged times is the logged difference.
+
+    Examples:
+        >>> relative_seconds(1763737200.3, 1763737200.0000005)
+        0.3
+        >>> 1763737200.3 - 1763737200.0000005  # the floats' difference
+        0.299999475479126
+    """
+    return (whole_micros(seconds) - whole_micros(start)) / 1_000_000
+
+
+def utc_text(seconds: float) -> str:
+    """Unix time as ISO 8601 in UTC to the microsecond, the form of text outputs.
+
+    The microseconds are the log's (`whole_micros`): a float of python-can's readers that
+    holds less than a microsecond more is rounded to the nearest, as the tables are;
+    ``decode --time seconds`` writes that float itself.
+
+    Examples:
+        >>> utc_text(1763737200.123456)
+        '2025-11-21T15:00:00.123456Z'
+    """
     return _moment(seconds).strftime("%Y-%m-%dT%H:%M:%S.%fZ")
+
+
+def whole_micros(seconds: float) -> int:
+    """A finite timestamp in whole microseconds: those the log wrote where the reader kept
+    them beside the float (`veronte4x.capture.frames.Seconds`), else the nearest to the
+    float, half to even.
+
+    Examples:
+        >>> whole_micros(1763737200.0000005), whole_micros(12.5)
+        (1763737200000000, 12500000)
+    """
+    kept = getattr(seconds, "micros", None)
+    return kept if isinstance(kept, int) else round(Fraction(seconds) * 1_000_000)
 
 
 _EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
@@ -59,8 +108,8 @@ def utc_datetime(seconds: float) -> _dt.datetime | None:
 
 
 def _moment(seconds: float) -> _dt.datetime:
-    """Unix time as a UTC datetime, rounded to the microsecond."""
-    return _EPOCH + _dt.timedelta(microseconds=round(seconds * 1_000_000))
+    """Unix time as a UTC datetime, to the microsecond (`whole_micros`)."""
+    return _EPOCH + _dt.timedelta(microseconds=whole_micros(seconds))
 
 
 _MAX_SECONDS = (

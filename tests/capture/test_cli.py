@@ -33,12 +33,12 @@ def test_decode_text_skips_and_counts_bad_frames() -> None:
 
 
 def test_decode_relative_time() -> None:
-    text = run("decode", str(EXAMPLE), "--relative-time").stdout.splitlines()
+    text = run("decode", str(EXAMPLE), "--time", "relative").stdout.splitlines()
     assert text[0].startswith("0.000000 can0 0FF arbiter   VersionRequest()")
     assert text[2] == "0.010000 can0 008 AP1       Ready(ready=True)"
-    rows = run("decode", str(EXAMPLE), "--relative-time", "--output", "jsonl").stdout
+    rows = run("decode", str(EXAMPLE), "--time", "relative", "--output", "jsonl").stdout
     assert [json.loads(line)["timestamp"] for line in rows.splitlines()[:3]] == [0.0, 0.001, 0.01]
-    csv_lines = run("decode", str(EXAMPLE), "--relative-time", "--output", "csv").stdout
+    csv_lines = run("decode", str(EXAMPLE), "--time", "relative", "--output", "csv").stdout
     assert csv_lines.splitlines()[3].startswith("0.01,can0,8,AP1,Ready,")
 
 
@@ -47,7 +47,7 @@ def test_decode_jsonl_keeps_bad_frames() -> None:
     rows = [json.loads(line) for line in result.stdout.splitlines()]
     assert len(rows) == 39
     assert rows[5] == {
-        "timestamp": 1763737200.02,
+        "timestamp": "2025-11-21T15:00:00.020000Z",
         "channel": "can0",
         "can_id": 8,
         "sender": "AP1",
@@ -56,7 +56,7 @@ def test_decode_jsonl_keeps_bad_frames() -> None:
         "value": 0.11999999731779099,  # the exact float32; text shows 0.12
     }
     assert rows[-2] == {
-        "timestamp": 1763737200.5,
+        "timestamp": "2025-11-21T15:00:00.500000Z",
         "channel": "can0",
         "can_id": 255,
         "sender": "arbiter",
@@ -79,7 +79,8 @@ def test_decode_csv() -> None:
     rows = list(csv.DictReader(io.StringIO(result.stdout)))
     assert len(header) == len(set(header)) == len(rows[0])
     assert rows[2] == dict.fromkeys(header, "") | {
-        "timestamp": "1763737200.01", "channel": "can0", "can_id": "8", "sender": "AP1",
+        "timestamp": "2025-11-21T15:00:00.010000Z", "channel": "can0", "can_id": "8",
+        "sender": "AP1",
         "message": "Ready", "ready": "True",
     }  # fmt: skip
     variable = rows[5]

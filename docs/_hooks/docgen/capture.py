@@ -23,7 +23,7 @@ def units_table() -> str:
 def decode_example() -> str:
     """The first lines `veronte4x decode` writes for the example capture, in each format."""
     blocks = []
-    for options in ([], ["--relative-time"], ["--output", "jsonl"]):
+    for options in ([], ["--time", "relative"], ["--output", "jsonl"]):
         lines = _decode(["examples/capture.log", *options]).splitlines()[4:8]
         command = " ".join(["veronte4x decode examples/capture.log", *options])
         blocks.append(f"`{command}`:\n\n```text\n" + "\n".join(lines) + "\n```\n")

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 from veronte4x.errors import Veronte4xError
 from veronte4x.extras import require
 from veronte4x.files import whole_file
+from veronte4x.times import EPOCH_THRESHOLD
 
 if TYPE_CHECKING:
     import numpy
@@ -270,9 +271,11 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
 
     The first column, ``time``, holds the time as ISO 8601 in UTC to the microsecond
     (``2025-11-21T15:00:00.010000Z``) when the tables carry timestamps, else their seconds
-    (``time="seconds"`` or ``"relative"``); numbers are exact (a float32 0.1 is
-    ``0.10000000149011612``, as `veronte4x.numbers` says), flags are 0 or 1, enums their
-    names, text as text (quoted where it needs), and a missing value is an empty cell.
+    (``time="seconds"`` or ``"relative"``), and timestamps of a capture's own clock (below
+    `veronte4x.times.EPOCH_THRESHOLD`: time since boot, not a time of 1970) as their seconds;
+    numbers are exact (a float32 0.1 is ``0.10000000149011612``, as `veronte4x.numbers`
+    says), flags are 0 or 1, enums their names, text as text (quoted where it needs), and a
+    missing value is an empty cell.
     Columns a plot or a spreadsheet cannot use (raw bytes, lists, structs) are left out.
 
     Returns:
@@ -288,7 +291,11 @@ def write_csv(aligned: pyarrow.Table, path: str | os.PathLike[str]) -> int:
     time = aligned.column(0)
     if pa.types.is_timestamp(time.type):
         micros = pc.cast(pc.cast(time, pa.timestamp("us", tz="UTC")), pa.timestamp("us"))
-        time = pc.strftime(micros, format="%Y-%m-%dT%H:%M:%SZ")  # %S: with microseconds
+        first = pc.min(micros.cast(pa.int64())).as_py()
+        if first is not None and first < EPOCH_THRESHOLD * 1_000_000:  # a clock since boot
+            time = pc.divide(micros.cast(pa.int64()).cast(pa.float64()), 1e6)
+        else:
+            time = pc.strftime(micros, format="%Y-%m-%dT%H:%M:%SZ")  # %S: with microseconds
     else:
         time = time.cast(pa.float64())
     names, columns = ["time"], [time]

@@ -6,6 +6,8 @@ import math
 from fractions import Fraction
 from typing import NamedTuple
 
+from veronte4x.times import whole_micros
+
 
 class Frame(NamedTuple):
     """One CAN frame as captured.
@@ -95,11 +97,9 @@ def micros(seconds: float) -> int | None:
     """A timestamp in whole microseconds since the epoch: those a `Seconds` holds, else the
     nearest to the float (half to even); None when it is not finite or outside the years
     1 to 9999."""
-    exact = getattr(seconds, "micros", None)
-    if exact is None:
-        if not math.isfinite(seconds):
-            return None
-        exact = round(Fraction(seconds) * 1_000_000)
+    if not math.isfinite(seconds):
+        return None
+    exact = whole_micros(seconds)
     return exact if FIRST_MICROS <= exact < END_MICROS else None
 
 

@@ -260,9 +260,16 @@ class MonitorState:
         return text + (f", {lost}" if lost else "")
 
 
-def can_id_text(can_id: int) -> str:
-    """A CAN ID in hex: 3 digits for 11-bit IDs, 8 for 29-bit ones."""
-    return f"{can_id:08X}" if can_id > 0x7FF else f"{can_id:03X}"
+def can_id_text(can_id: int, extended: bool = False) -> str:
+    """A CAN ID as candump prints it: upper-case hex, 3 digits for an 11-bit ID, 8 for a
+    29-bit one (``extended``, or any ID above 0x7FF) with its leading zeros (can-utils
+    ``lib.c``, ``sprint_long_canframe``).
+
+    Examples:
+        >>> can_id_text(0x8), can_id_text(0x5040601), can_id_text(0x10, extended=True)
+        ('008', '05040601', '00000010')
+    """
+    return f"{can_id:08X}" if extended or can_id > 0x7FF else f"{can_id:03X}"
 
 
 def seconds_text(value: float) -> str:

@@ -2,8 +2,20 @@
 
 Numbers follow `veronte4x.numbers`: JSON lines and CSV carry the exact decoded values
 (`veronte4x.capture.readable.readable_fields`), the text output shows them for people
-(shortest at the field's declared width, with units and ISO 8601 times); enums by name, text
-as text everywhere.
+(shortest at the field's declared width, with units); enums by name, text as text
+everywhere.
+
+Times, in every output, as ``--time`` says (`veronte4x.times`): ``timestamp`` (the default),
+Unix time as ISO 8601 in UTC to the microsecond (``2025-11-21T15:00:00.010000Z``, the
+tables' time) and a capture's own clock (below `veronte4x.times.EPOCH_THRESHOLD`, time since
+boot) as its seconds; ``relative``, seconds since the first timestamped record, to the
+microsecond; ``seconds``, the timestamp as the reader gives it (in JSON lines and CSV the
+float itself, its ``repr``: the exact value where a reader holds more than microseconds).
+
+CAN IDs as candump prints them (`veronte4x.capture.monitor.can_id_text`): 3 hex digits for
+an 11-bit ID, 8 for a 29-bit one, upper case; in the text output, from the first 29-bit ID
+on, an 11-bit ID is indented to the width of a 29-bit one so that the columns after it line
+up, as candump indents them once it has seen one (can-utils ``candump.c``).
 """
 
 from __future__ import annotations
@@ -16,7 +28,8 @@ from collections.abc import Callable, Iterable
 from typing import Any, TextIO
 
 from veronte4x import capture
-from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.monitor import can_id_text
 from veronte4x.capture.readable import format_message, hex_bytes, readable_fields
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
@@ -24,10 +37,22 @@ from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
 from veronte4x.cli.notices import InputWatch, channel_hint
-from veronte4x.cli.options import add_capture_options, add_live_options, open_records
+from veronte4x.cli.options import (
+    add_capture_options,
+    add_live_options,
+    add_renamed_option,
+    open_records,
+)
 from veronte4x.cli.options import live as live_bus
 from veronte4x.numbers import exact
-from veronte4x.times import format_time
+from veronte4x.times import (
+    EPOCH_THRESHOLD,
+    TIME_FORMS,
+    TimeForm,
+    format_time,
+    relative_seconds,
+    utc_text,
+)
 from veronte4x.words import counted
 
 HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
@@ -51,10 +76,13 @@ def add_parser(commands: Any) -> None:
         help="bad frames: skip and count them (default), keep them as records, or stop",
     )
     parser.add_argument(
-        "--relative-time",
-        action="store_true",
-        help="times in seconds since the first frame (default: as captured; ISO 8601 in text)",
+        "--time",
+        choices=TIME_FORMS,
+        default="timestamp",
+        help="timestamp: ISO 8601 in UTC to the microsecond (the default; a clock since boot "
+        "as seconds), relative: seconds since the first frame, seconds: as logged (exact)",
     )
+    add_renamed_option(parser, "--relative-time", "--time relative")
     add_capture_options(parser)
     add_live_options(parser)
     parser.set_defaults(run=run)
@@ -67,11 +95,13 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     watch = InputWatch(None if live_bus(args) else args.file)
     records = watch.records(open_records(args, bus_map, loss=loss))
     out = sys.stdout
-    clock = _Clock(args.relative_time)
+    clock = _Clock(args.time)
     if args.output == "csv":
         write, close = _csv_writer(out, clock, _csv_columns(args, bus_map))
+    elif args.output == "jsonl":
+        write, close = _jsonl_writer(out, clock)
     else:
-        write, close = {"text": _text_writer, "jsonl": _jsonl_writer}[args.output](out, clock)
+        write, close = _text_writer(out, clock, _Ids(bus_map))
     live = args.file == "-" or live_bus(args)
     status = EXIT_OK
     try:
@@ -85,7 +115,10 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                         if args.on_error == "raise":
                             close()
                             out.flush()
-                            print(f"veronte4x: {_describe(record, clock)}", file=sys.stderr)
+                            can_id = can_id_text(
+                                record.can_id, _is_extended(record, bus_map.extended)
+                            )
+                            print(f"veronte4x: {_describe(record, clock, can_id)}", file=sys.stderr)
                             status = EXIT_BAD_FRAME
                             break
                     write(record)
@@ -118,32 +151,71 @@ def _summary(counts: Stats, loss: BusLoss) -> str:
 
 
 class _Clock:
-    """Timestamps as written: as captured, or relative to the first timestamped record."""
+    """Timestamps as written, in the form ``--time`` names (the module docstring)."""
 
-    def __init__(self, relative: bool) -> None:
-        self.relative = relative
+    def __init__(self, form: TimeForm) -> None:
+        self.form = form
         self.start: float | None = None
 
-    def seconds(self, stamp: float | None) -> float | None:
-        """The timestamp for JSON and CSV: as captured, or seconds since the first one."""
-        if stamp is None or not self.relative:
-            return stamp
-        if self.start is None:
-            self.start = stamp
-        return round(stamp - self.start, 6)
+    def value(self, stamp: float | None) -> str | float | None:
+        """The timestamp for JSON and CSV: ISO 8601 text, or seconds."""
+        if stamp is None:
+            return None
+        if self.form == "seconds":
+            return exact(stamp)
+        if self.form == "relative":
+            if self.start is None:
+                self.start = stamp
+            return relative_seconds(stamp, self.start)
+        if EPOCH_THRESHOLD <= stamp < _LAST_ISO:
+            return utc_text(stamp)
+        return exact(stamp)
 
     def text(self, stamp: float | None) -> str:
-        """The timestamp for text: ISO 8601, or seconds since the first one."""
-        if stamp is not None and self.relative and self.start is None:
+        """The timestamp for text: ISO 8601, or seconds."""
+        if stamp is None:
+            return "-"
+        if self.form == "seconds":
+            return f"{stamp:.6f}"
+        if self.form == "relative" and self.start is None:
             self.start = stamp
-        return format_time(stamp, self.start if self.relative else None)
+        return format_time(stamp, self.start if self.form == "relative" else None)
 
 
-def _describe(record: Record, clock: _Clock) -> str:
-    return (
-        f"{clock.text(record.timestamp)} {record.channel} {record.can_id:03X} "
-        f"{record.error}: {record.detail}"
-    )
+_LAST_ISO = 253_402_300_800.0
+"""10000-01-01 UTC in seconds: from here on a time has no ISO 8601 form, and is written as
+seconds (and the tables have no value for it)."""
+
+
+class _Ids:
+    """CAN IDs for the text output, as candump prints them (the module docstring)."""
+
+    def __init__(self, bus_map: BusMap) -> None:
+        self.extended = bus_map.extended
+        self.width = 3
+
+    def text(self, record: Record) -> str:
+        """The record's CAN ID, right-aligned in the column."""
+        wide = _is_extended(record, self.extended)
+        if wide:
+            self.width = 8
+        return f"{can_id_text(record.can_id, wide):>{self.width}}"
+
+
+def _is_extended(record: Record, veronte_extended: bool) -> bool:
+    """Whether the record came on a 29-bit ID: every DroneCAN frame, a Veronte frame where
+    the bus map's IDs are, any ID above 0x7FF, undecoded traffic its detail says is."""
+    if record.role is Role.DRONECAN:
+        return True
+    if record.role is Role.ARBITER or record.role is Role.AUTOPILOT:
+        return veronte_extended
+    return record.can_id > 0x7FF or record.detail.startswith("29-bit")
+
+
+def _describe(record: Record, clock: _Clock, can_id: str) -> str:
+    """A bad record in one line: time, channel, CAN ID (``can_id``), error and detail."""
+    stamp = clock.text(record.timestamp)
+    return f"{stamp} {record.channel} {can_id} {record.error}: {record.detail}"
 
 
 Writer = tuple[Callable[[Record], None], Callable[[], None]]
@@ -154,13 +226,13 @@ def _nothing() -> None:
     pass
 
 
-def _text_writer(out: TextIO, clock: _Clock) -> Writer:
+def _text_writer(out: TextIO, clock: _Clock, ids: _Ids) -> Writer:
     def write(record: Record) -> None:
         if record.error is not None:
-            out.write(f"{_describe(record, clock)} {hex_bytes(record.data)}\n")
+            out.write(f"{_describe(record, clock, ids.text(record))} {hex_bytes(record.data)}\n")
             return
         stamp = clock.text(record.timestamp)
-        head = f"{stamp} {record.channel} {record.can_id:03X} {record.sender:<9}"
+        head = f"{stamp} {record.channel} {ids.text(record)} {record.sender:<9}"
         if record.message is None:
             out.write(f"{head} unknown: {record.detail} {hex_bytes(record.data)}\n")
         else:
@@ -170,9 +242,8 @@ def _text_writer(out: TextIO, clock: _Clock) -> Writer:
 
 
 def _row(record: Record, clock: _Clock) -> dict[str, Any]:
-    stamp = clock.seconds(record.timestamp)
     row: dict[str, Any] = {
-        "timestamp": stamp if stamp is None else exact(stamp),
+        "timestamp": clock.value(record.timestamp),
         "channel": record.channel,
         "can_id": record.can_id,
         "sender": record.sender,
@@ -205,7 +276,7 @@ def _csv_columns(args: argparse.Namespace, bus_map: BusMap) -> Iterable[str] | N
     columns: dict[str, None] = {}
     for record in capture.read(args.file, bus_map, args.only_channel, args.dbc):
         if record.message is not None:
-            columns.update(dict.fromkeys(_row(record, _Clock(False))))
+            columns.update(dict.fromkeys(_row(record, _Clock("seconds"))))
     return columns
 
 
