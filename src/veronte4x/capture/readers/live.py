@@ -167,8 +167,8 @@ class _MessageReader:
 
 GATHER = 0.002
 """Seconds `DatagramReader` lets datagrams gather after a wait for one ends, before it
-reads them: on a full 1 Mbit/s bus some 17 frames are read a wake-up, not one (a
-wake-up costs about as much CPU as reading a frame), for 2 ms more latency."""
+reads them: on a full 1 Mbit/s bus up to some 17 frames are read a wake-up, not one,
+for 2 ms more latency."""
 MAX_DATAGRAM = 4096
 """Bytes of a datagram read, as python-can's ``udp_multicast`` reads (its ``max_buffer``,
 ``can/interfaces/udp_multicast/bus.py``); a longer one is cut, and fails to unpack there too."""
