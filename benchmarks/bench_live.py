@@ -230,6 +230,7 @@ def stages(capture: Path, count: int, work: Path) -> list[tuple[str, float]]:
     import can
 
     from veronte4x.canbus import open_bus
+    from veronte4x.capture.busmap import BusMap
     from veronte4x.capture.decoder import CaptureDecoder
     from veronte4x.capture.frames import Frame
     from veronte4x.capture.monitor import MonitorState
@@ -284,7 +285,7 @@ def stages(capture: Path, count: int, work: Path) -> list[tuple[str, float]]:
     records = list(CaptureDecoder().decode(frames))
     per_frame("CaptureDecoder", started)
     with (work / "records.txt").open("w") as out:
-        write, _ = decode._text_writer(out, decode._Clock(False))
+        write, _ = decode._text_writer(out, decode._Clock("timestamp"), decode._Ids(BusMap()))
         counts = Stats()
         started = time.process_time()
         for record in records:
