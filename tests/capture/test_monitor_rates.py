@@ -153,21 +153,51 @@ def test_a_stream_in_bursts_is_stopped_against_its_cycle() -> None:
     assert stream.flags(stream.last + STOP_PERIODS * 0.0198 * 1.01) == ("stopped",)
 
 
-@pytest.mark.parametrize("seconds", [0.5, 1.0, 1.9, 2.0, 5.0])
-def test_rate_in_the_first_window_counts_the_capture_so_far(seconds: float) -> None:
-    """While the capture is younger than the rate window (2 s), a stream's rate is its
-    records since the capture's first one over that time, not over the whole window (a
-    10 Hz stream read 2.5/s at 0.5 s)."""
+@pytest.mark.parametrize("seconds", [0.2, 0.5, 1.0, 1.9, 2.0, 5.0])
+def test_rate_counts_the_streams_complete_intervals_not_the_capture_span(seconds: float) -> None:
+    """A 10 Hz stream reads 10/s from its second record on, however young the capture (it
+    read 2.5/s at 0.5 s, counted over the capture's span), and a 5 Hz one beside it 5/s
+    (BatteryInfo read 20.8/s in the demo's first 2 s): on a stepped clock, record by record."""
     state = MonitorState()
-    state.add(ready(999.95))
+    state.add(ready(999.0))  # the capture starts a second before the streams
     for i in range(round(seconds * 10) + 1):
-        state.add(node_status(1000.0 + i / 10, 20))
-    elapsed = min(seconds + 0.05, 2.0)
-    expected = sum(
-        1 for i in range(round(seconds * 10) + 1) if 1000.0 + i / 10 > 1000.0 + seconds - elapsed
-    )
-    assert row(state, "node 20").rate == pytest.approx(expected / elapsed)
-    assert row(state, "node 20").rate == pytest.approx(10.0, rel=0.25)
+        stamp = 1000.0 + i / 10
+        state.add(node_status(stamp, 20))
+        if i % 2 == 0:
+            state.add(node_status(stamp, 21))
+        if i:
+            assert row(state, "node 20").rate == pytest.approx(10.0)
+        if i >= 2:
+            assert row(state, "node 21").rate == pytest.approx(5.0)
+
+
+def test_a_stream_slower_than_the_window_reads_its_last_interval_until_it_stops() -> None:
+    state = MonitorState()
+    for stamp in (1000.0, 1003.0, 1006.0):  # the arbiter's Scores: every 3 s
+        state.add(node_status(stamp, 20))
+    assert row(state, "node 20").rate == pytest.approx(1 / 3)
+    assert row(state, "node 20", now=1006.0 + STOP_PERIODS * 3.0).rate == pytest.approx(1 / 3)
+    assert row(state, "node 20", now=1006.1 + STOP_PERIODS * 3.0).rate == 0.0
+
+
+def test_one_stream_per_channel() -> None:
+    """The same node's NodeStatus on two channels is two streams, each 1 Hz, each its
+    period; merged they read as one at 0 µs periods."""
+    state = MonitorState(rates=True)
+    for tick in range(5):
+        for channel in ("can0", "can1"):
+            state.add(node_status(1000.0 + tick, 20)._replace(channel=channel))
+    rows = state.rows()
+    assert [(r.sender, r.channel, r.count) for r in rows] == [
+        ("node 20", "can0", 5),
+        ("node 20", "can1", 5),
+    ]
+    for got in rows:
+        assert got.rate == pytest.approx(1.0) and close(got.period, 1.0) and got.flags == ()
+    assert [line.split()[:3] for line in render_text(state).splitlines()[3:]] == [
+        ["node", "20", "can0"],
+        ["node", "20", "can1"],
+    ]
 
 
 def test_rate_of_records_at_one_instant_is_zero() -> None:

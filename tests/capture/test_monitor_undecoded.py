@@ -39,5 +39,5 @@ def test_foreign_frames_get_a_row_each(tmp_path: Path) -> None:
     lines = render_text(state, "unknown").splitlines()
     assert lines[2:] == [
         "sender   type                       id    count   rate/s  errors  fields",
-        "unknown  11-bit CAN ID 0x123       123        2      4.0       0  [03 04]",
+        "unknown  11-bit CAN ID 0x123       123        2     10.0       0  [03 04]",
     ]

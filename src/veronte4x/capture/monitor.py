@@ -1,12 +1,14 @@
 """What `veronte4x monitor` shows: the latest of every message type per sender (sans-IO).
 
-`MonitorState` takes decoded records and keeps, per (message type, sender), the latest
-fields (for people, as `veronte4x.capture.readable.shown` gives them: enums by name,
-units), the count, the rate over the last seconds and the errors; and the arbiter's state
-from its Status and Score frames (Veronte Autopilot 4x Software Manual, the arbiter's CAN
-messages). Each row also keeps its timing as `veronte4x.capture.rates` counts a stream:
-usual period, jitter, longest gap, and the flags ``stopped`` (silent for more than 3
-periods: a DroneCAN node whose NodeStatus is stopped is offline) and ``slow``; the table
+`MonitorState` takes decoded records and keeps, per stream (sender, message type and
+channel: a node's NodeStatus on ``can0`` and on ``can1`` are two rows), the latest fields
+(for people, as `veronte4x.capture.readable.shown` gives them: enums by name, units), the
+count, the rate over the stream's last complete intervals (`stream_rate`) and the errors;
+and the arbiter's state from its Status and Score frames (Veronte Autopilot 4x Software
+Manual, the arbiter's CAN messages). Each row also keeps its timing as
+`veronte4x.capture.rates` counts a stream: usual period, jitter, longest gap, and the flags
+``stopped`` (silent for more than 3 periods: a DroneCAN node whose NodeStatus is stopped is
+offline) and ``slow``; the table
 shows them with ``rates=True`` (``monitor --rates``). Time is the records' own timestamps,
 so a capture and a live bus give the same table; "now", for the silence of a stream, is
 the latest timestamp unless the caller gives it. `render_text` writes the table as plain
@@ -17,11 +19,12 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
-from veronte4x.capture.rates import Stream
+from veronte4x.capture.rates import STOP_PERIODS, Stream
 from veronte4x.capture.readable import format_message, hex_bytes, shown
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
@@ -31,7 +34,38 @@ if TYPE_CHECKING:
     from veronte4x.capture.readers.live import BusLoss
 
 RATE_WINDOW = 2.0
-"""Seconds over which a row's rate is counted."""
+"""Seconds over which a row's rate is counted (`stream_rate`)."""
+
+
+def stream_rate(times: Sequence[float], now: float, window: float = RATE_WINDOW) -> float:
+    """A stream's records per second over its complete intervals, never diluted by time
+    before the stream's first record or after its last.
+
+    The intervals are those between the stream's records in the ``window`` seconds up to
+    ``now``: their count over the time they span. With fewer than two records in the window
+    (a stream slower than it, such as the arbiter's Scores every 3 s), the stream's last
+    interval, while the stream has been silent for at most `STOP_PERIODS` of it; else 0.
+
+    Args:
+        times: The stream's timestamps, in order (at least its last two, and those of the
+            window).
+        now: The end of the window: the latest timestamp, or a live bus's time now.
+        window: Seconds.
+
+    Examples:
+        >>> stream_rate([0.0, 0.2, 0.4], now=0.4)  # 5 Hz, 0.4 s into the capture
+        5.0
+        >>> stream_rate([0.0, 3.0], now=4.0), stream_rate([0.0, 3.0], now=13.0)
+        (0.3333333333333333, 0.0)
+    """
+    recent = [t for t in times if now - window < t <= now]
+    if len(recent) >= 2 and recent[-1] > recent[0]:
+        return (len(recent) - 1) / (recent[-1] - recent[0])
+    if len(times) >= 2:
+        last = times[-1] - times[-2]
+        if last > 0 and now - times[-1] <= STOP_PERIODS * last:
+            return 1 / last
+    return 0.0
 
 
 def fields_text(message: Any) -> str:
@@ -55,11 +89,12 @@ class Row:
     Attributes:
         sender: Who sent it (``AP1``, ``arbiter``, ``node 21``, ...).
         kind: The message class name.
+        channel: The interface it came on.
         can_id: The CAN ID it came on last.
         count: Records of this type from this sender.
         errors: Bad frames on this sender's CAN ID since this type was first decoded there.
-        rate: Records per second over the last `RATE_WINDOW` seconds (over the capture
-            so far while it is younger than that).
+        rate: Records per second over the stream's last complete intervals
+            (`stream_rate`).
         fields: The latest message's fields, as people read them (`fields_text`).
         last_seen: Timestamp of the latest one.
         period: Usual (median) period in seconds, to 1/64 octave (NaN below 2 records).
@@ -71,6 +106,7 @@ class Row:
 
     sender: str
     kind: str
+    channel: str
     can_id: int
     count: int
     errors: int
@@ -159,8 +195,8 @@ class MonitorState:
         self.errors = 0
         self.first_timestamp: float | None = None
         self.last_timestamp: float | None = None
-        self._rows: dict[tuple[str, str], _Entry] = {}
-        self._by_id: dict[tuple[str, int], tuple[str, str]] = {}
+        self._rows: dict[tuple[str, str, str], _Entry] = {}
+        self._by_id: dict[tuple[str, str, int], tuple[str, str, str]] = {}
         self._status: Status | None = None
         self._scores: dict[int, float] = {}
 
@@ -173,20 +209,22 @@ class MonitorState:
                 self.first_timestamp = stamp
             if self.last_timestamp is None or stamp > self.last_timestamp:
                 self.last_timestamp = stamp
-        sender = record.sender
+        sender, channel = record.sender, record.channel
         if record.error is not None:
             self.errors += 1
-            key = self._by_id.get((sender, record.can_id), (sender, f"error: {record.error}"))
+            key = self._by_id.get(
+                (sender, channel, record.can_id), (sender, f"error: {record.error}", channel)
+            )
             entry = self._rows.setdefault(key, _Entry(record.can_id))
             entry.errors += 1
             return
         message = record.message
         if message is None:  # foreign traffic: a row per what it is, its bytes as decode shows
-            key = (sender, record.detail or "undecoded")
+            key = (sender, record.detail or "undecoded", channel)
         else:
-            key = (sender, type(message).__name__)
+            key = (sender, type(message).__name__, channel)
         entry = self._rows.setdefault(key, _Entry(record.can_id))
-        self._by_id[(sender, record.can_id)] = key
+        self._by_id[(sender, channel, record.can_id)] = key
         entry.can_id = record.can_id
         entry.count += 1
         entry.fields = hex_bytes(record.data) if message is None else fields_text(message)
@@ -194,8 +232,9 @@ class MonitorState:
         if stamp is not None:
             if not entry.timing.count or stamp >= entry.timing.last:
                 entry.timing.add(stamp)
-            entry.times.append(stamp)
-            while entry.times and entry.times[0] <= stamp - self.rate_window:
+            if not entry.times or stamp >= entry.times[-1]:
+                entry.times.append(stamp)
+            while len(entry.times) > 2 and entry.times[0] <= stamp - self.rate_window:
                 entry.times.popleft()
         if isinstance(message, Status):
             self._status = message
@@ -212,19 +251,19 @@ class MonitorState:
         (any case). ``now`` (default: the latest timestamp) is when a stream's silence ends,
         for its ``stopped`` flag."""
         wanted = text_filter.lower()
-        latest = self.last_timestamp
         if now is None:
-            now = latest
+            now = self.last_timestamp
         rows = []
-        for (sender, kind), e in sorted(self._rows.items()):
+        for (sender, kind, channel), e in sorted(self._rows.items()):
             if wanted and wanted not in sender.lower() and wanted not in kind.lower():
                 continue
-            rate = self._rate(e, latest)
+            rate = 0.0 if now is None else stream_rate(e.times, now, self.rate_window)
             usual = e.timing.usual()
             rows.append(
                 Row(
                     sender,
                     kind,
+                    channel,
                     e.can_id,
                     e.count,
                     e.errors,
@@ -238,16 +277,6 @@ class MonitorState:
                 )
             )
         return rows
-
-    def _rate(self, entry: _Entry, latest: float | None) -> float:
-        """Records per second over the last `rate_window` seconds, or over the capture so
-        far while it is younger than that."""
-        if latest is None or self.first_timestamp is None:
-            return 0.0
-        window = min(self.rate_window, latest - self.first_timestamp)
-        if window <= 0:
-            return 0.0
-        return sum(1 for t in entry.times if t > latest - window) / window
 
     def summary(self) -> str:
         """One line: records, errors, time span, and the frames the bus layer lost where
@@ -298,9 +327,12 @@ def timing_texts(row: Row) -> tuple[str, str, str, str]:
 
 def render_text(state: MonitorState, text_filter: str = "", now: float | None = None) -> str:
     """The monitor as plain text: the arbiter line, a summary, then one line per row (with
-    its timing columns if the state shows rates)."""
+    its timing columns if the state shows rates); where the rows come on several channels,
+    each sender is followed by its row's channel (``node 20 can1``)."""
     rows = state.rows(text_filter, now)
     lines = [state.arbiter.describe(), state.summary()]
+    if len({r.channel for r in rows}) > 1:  # a stream per channel: say which
+        rows = [replace(r, sender=f"{r.sender} {r.channel}") for r in rows]
     sender_width = max([len("sender"), *(len(r.sender) for r in rows)])
     kind_width = max([len("type"), *(len(r.kind) for r in rows)])
     timing: list[tuple[str, ...]] = [timing_texts(r) if state.rates else () for r in rows]

@@ -242,9 +242,10 @@ def _table(
     ):
         table.add_column(name, justify=justify, no_wrap=True)  # type: ignore[arg-type]
     table.add_column("fields", ratio=1, no_wrap=screen is not None, overflow="ellipsis")
+    several = len({r.channel for r in rows}) > 1  # a stream per channel: say which
     for r in shown:
         table.add_row(
-            r.sender,
+            f"{r.sender} {r.channel}" if several else r.sender,
             r.kind,
             can_id_text(r.can_id),
             str(r.count),
