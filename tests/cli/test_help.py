@@ -36,6 +36,7 @@ ESC_ACTIONS = {
     "restart": "restart the node (RestartNode with the magic number)",
     "update": "update the firmware: the node pulls the image via file.Read",
     "spin": "spin motors with RawCommand at a rate (needs --yes)",
+    "allocate": "serve dynamic node ID allocations (DroneCAN), the table kept in a file",
 }
 
 

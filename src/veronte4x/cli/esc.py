@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from veronte4x.capture.busmap import BusMap
+from veronte4x.cli import allocate
 from veronte4x.cli.exit_codes import (
     EXIT_FINDINGS,
     EXIT_INTERRUPTED,
@@ -212,6 +213,10 @@ def add_parser(commands: Any) -> None:
     spin.add_argument("--yes", action="store_true", help="confirm: this moves motors")
     _allow_unknown(spin, "spin")
     _options(spin)
+
+    allocator = action("allocate", allocate.HELP, allocate.run)
+    allocate.add_arguments(allocator)
+    _options(allocator)
 
 
 def node_id(text: str) -> int:

@@ -40,6 +40,7 @@ _OPTIONS = {
     "file_timeout": "--file-timeout",
     "node_id": "--nodes",
     "esc_index": "--nodes (esc_index)",
+    "preferred_node_id": "--preferred-node-id",
 }
 """The option of each `SimulatedEsc` argument, for error lines in the user's words."""
 
@@ -96,6 +97,18 @@ def add_parser(commands: Any) -> None:
         help="seconds a firmware update's file request waits for its answer before it is "
         f"sent again ({FILE_REQUEST_TIMEOUT:g})",
     )
+    esc.add_argument(
+        "--dynamic-node-id",
+        action="store_true",
+        help="start without a node id and ask an allocation server for one (DroneCAN dynamic "
+        "node ID allocation); the --nodes ids name the unique ids and are the ids preferred",
+    )
+    esc.add_argument(
+        "--preferred-node-id",
+        type=int,
+        metavar="N",
+        help="with --dynamic-node-id: ask for N (0: any) rather than each --nodes id",
+    )
     esc.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
     add_bus_options(esc)
     esc.set_defaults(run=run, bus_map=None)
@@ -109,6 +122,9 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
     from veronte4x.simulator import SimulatedEsc
     from veronte4x.simulator.can_node import EscBus
 
+    if args.preferred_node_id is not None and not args.dynamic_node_id:
+        print("veronte4x: --preferred-node-id needs --dynamic-node-id", file=sys.stderr)
+        return EXIT_USAGE
     try:
         escs = [
             SimulatedEsc(
@@ -120,6 +136,8 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
                 command_timeout=args.command_timeout or None,
                 response_delay=args.response_delay,
                 file_timeout=args.file_timeout,
+                dynamic_node_id=args.dynamic_node_id,
+                preferred_node_id=args.preferred_node_id,
             )
             for index, node in enumerate(args.nodes)
         ]
@@ -142,6 +160,8 @@ def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
         for esc in escs:
             esc.power_cycle(start)
         names = ", ".join(f"{n} (esc_index {i})" for i, n in enumerate(args.nodes))
+        if args.dynamic_node_id:
+            names += " without node ids, asking an allocation server for them"
         print(f"veronte4x: simulating Vertiq ESC nodes {names}; Ctrl-C stops", file=sys.stderr)
         node.run(stop)  # Ctrl-C goes through: exit code 130, as every command
     except can.CanError as error:

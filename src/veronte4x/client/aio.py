@@ -30,6 +30,7 @@ Examples:
 from __future__ import annotations
 
 import asyncio
+import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
@@ -42,7 +43,7 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is in
         raise
     raise MissingExtraError("can", "can", "veronte4x.client.aio") from None
 
-from veronte4x.client import indices, operations
+from veronte4x.client import allocator, indices, operations
 from veronte4x.client.adapter import (
     MAX_WAIT,
     BusAdapter,
@@ -50,6 +51,7 @@ from veronte4x.client.adapter import (
     StreamBase,
     progress_callback,
 )
+from veronte4x.client.allocator import AllocationEvent, Allocator
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.errors import OperationCancelledError
 from veronte4x.client.firmware import (
@@ -247,6 +249,21 @@ class AsyncBusClient(BusAdapter):
                     ),
                 )
             )
+
+    async def serve_allocations(
+        self,
+        table: str | os.PathLike[str],
+        *,
+        duration: float | None = None,
+        on_event: Callable[[AllocationEvent], object] | None = None,
+    ) -> list[AllocationEvent]:
+        """Serve dynamic node ID allocations for ``duration`` seconds, or until cancelled
+        (see `BusClient.serve_allocations`: the same table file, events and errors)."""
+        self._started()  # before the table is read: no request could be heard
+        served = Allocator.from_file(
+            self.protocol, table, self.clock(), info_timeout=self.timeout, info_retries=self.retries
+        )
+        return await self.run(allocator.serve(served, duration, on_event))
 
     # -- motors -----------------------------------------------------------------------------
 

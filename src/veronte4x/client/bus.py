@@ -8,6 +8,7 @@ names the node and what it did not do.
 
 from __future__ import annotations
 
+import os
 import threading
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -22,7 +23,7 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is in
         raise
     raise MissingExtraError("can", "can", "veronte4x.client.bus") from None
 
-from veronte4x.client import indices, operations
+from veronte4x.client import allocator, indices, operations
 from veronte4x.client.adapter import (
     MAX_WAIT,
     BusAdapter,
@@ -30,6 +31,7 @@ from veronte4x.client.adapter import (
     StreamBase,
     progress_callback,
 )
+from veronte4x.client.allocator import AllocationEvent, Allocator
 from veronte4x.client.commander import DEFAULT_RATE, DEFAULT_WATCHDOG, Commander
 from veronte4x.client.firmware import (
     MAX_IMAGE_SIZE,
@@ -319,6 +321,37 @@ class BusClient(BusAdapter):
                     ),
                 )
             )
+
+    def serve_allocations(
+        self,
+        table: str | os.PathLike[str],
+        *,
+        duration: float | None = None,
+        on_event: Callable[[AllocationEvent], object] | None = None,
+    ) -> list[AllocationEvent]:
+        """Serve dynamic node ID allocations from this node (a centralized allocator,
+        `veronte4x.client.allocator`) for ``duration`` seconds, or until interrupted.
+
+        Args:
+            table: The allocation table's file (`veronte4x.client.allocation_table`),
+                created when it first grows, written whole at every change before the
+                answer goes out.
+            duration: Seconds to serve (None: until KeyboardInterrupt).
+            on_event: Called with each `Allocated`, `NodeRecorded` or
+                `AllocationConflict` as it comes.
+
+        Returns:
+            Every event, in order.
+
+        Raises:
+            AllocationTableError: The file is not a valid allocation table.
+            NodeIdConflictError: Another node sends with this client's node id.
+            OSError: The file cannot be read or written.
+        """
+        served = Allocator.from_file(
+            self.protocol, table, self.clock(), info_timeout=self.timeout, info_retries=self.retries
+        )
+        return self.run(allocator.serve(served, duration, on_event))
 
     # -- motors -----------------------------------------------------------------------------
 

@@ -21,6 +21,10 @@ same path during the update (its answer was lost) is answered OK again. param.Ex
 SAVE is accepted (sets are kept at once, which the DSDL allows) and ERASE restores the
 defaults.
 
+With ``dynamic_node_id`` the module starts without a node id at every (re)start and asks an
+allocation server for one (DroneCAN dynamic node ID allocation, `veronte4x.node.allocatee`):
+silent but for its anonymous requests until granted, then a node at the id granted.
+
 Nothing here reads a clock: every time is a ``timestamp`` argument.
 """
 
@@ -75,6 +79,7 @@ from veronte4x.dronecan.vertiq import (
     raw_to_throttle,
 )
 from veronte4x.errors import EncodeError, check_seconds
+from veronte4x.node.allocatee import Allocatee
 from veronte4x.node.requests import Answered, Requester
 from veronte4x.simulator import motor, parameters
 from veronte4x.simulator.motor import DEFAULT_MODEL, MotorModel, MotorState
@@ -118,7 +123,8 @@ class EscState:
     Attributes:
         time: The latest timestamp given to `SimulatedEsc.receive` or `SimulatedEsc.poll`.
         uptime_sec: Whole seconds since the last (re)start.
-        node_id: The node id in use (a new ``uavcan_node_id`` waits for a restart).
+        node_id: The node id in use (a new ``uavcan_node_id`` waits for a restart); None
+            while it waits for a dynamic node id.
         mode: The NodeStatus mode: OPERATIONAL, or SOFTWARE_UPDATE after a
             BeginFirmwareUpdate.
         in_bootloader: Rebooted into the bootloader: silent until `SimulatedEsc.power_cycle`.
@@ -137,7 +143,7 @@ class EscState:
 
     time: float
     uptime_sec: int
-    node_id: int
+    node_id: int | None
     mode: Mode
     in_bootloader: bool
     firmware_source: tuple[int, bytes] | None
@@ -200,6 +206,11 @@ class SimulatedEsc:
         file_timeout: Seconds each file request of a firmware update waits for its answer
             before it is sent again (`FILE_REQUEST_TIMEOUT`), for up to
             `FILE_SERVER_SILENCE` seconds.
+        dynamic_node_id: Start without a node id and ask an allocation server for one at
+            every (re)start (`veronte4x.node.allocatee.Allocatee`); ``node_id`` then names
+            the unique id and is the node id preferred.
+        preferred_node_id: The node id asked for with ``dynamic_node_id``: 1..125, 0 for
+            any; None for ``node_id`` (125 for 126 or 127, the tools' node ids).
 
     The arguments are also the parameters' defaults (``default_value`` in GetSet replies).
 
@@ -223,6 +234,8 @@ class SimulatedEsc:
         command_timeout: float | None = COMMAND_TIMEOUT,
         response_delay: float = 0.0,
         file_timeout: float = FILE_REQUEST_TIMEOUT,
+        dynamic_node_id: bool = False,
+        preferred_node_id: int | None = None,
     ) -> None:
         given = (
             ("node_id", node_id),
@@ -274,6 +287,13 @@ class SimulatedEsc:
         self._supports_firmware_update = supports_firmware_update
         self._model = model
         self._unique_id = UNIQUE_ID_PREFIX + bytes((self._defaults[0],))
+        self._dynamic = dynamic_node_id
+        self._preferred = (
+            min(self._defaults[0], 125)
+            if preferred_node_id is None
+            else _check("preferred_node_id", preferred_node_id, 0, 125)
+        )
+        self._allocatee: Allocatee | None = None
         self._start_time = start_time
         self._now = start_time
         self._motor = motor.at_rest(model)
@@ -291,9 +311,9 @@ class SimulatedEsc:
         return self._values[_INDEX[parameter]]
 
     @property
-    def node_id(self) -> int:
-        """The node id in use."""
-        return self._node_id
+    def node_id(self) -> int | None:
+        """The node id in use; None while it waits for a dynamic node id."""
+        return None if self._allocatee is not None else self._node_id
 
     @property
     def esc_index(self) -> int:
@@ -307,7 +327,7 @@ class SimulatedEsc:
         return EscState(
             time=self._now,
             uptime_sec=self._uptime(self._now),
-            node_id=self._node_id,
+            node_id=self.node_id,
             mode=self._mode,
             in_bootloader=self._in_bootloader,
             firmware_source=self._firmware_source,
@@ -351,20 +371,27 @@ class SimulatedEsc:
 
     def _boot(self, timestamp: float) -> None:
         """Start the application firmware at ``timestamp``: RAM state is lost."""
-        self._node_id = self._value(Parameter.UAVCAN_NODE_ID)
         self._boot_time = timestamp
         self._mode = Mode.OPERATIONAL
         self._firmware_source: tuple[int, bytes] | None = None
         self._in_bootloader = False
         self._pull: _Pull | None = None
         self._read_at = None
-        self._requester = Requester(self._node_id, priority=self._priority)
         self._reassembler = Reassembler()
         self._transfer_ids: dict[type, int] = {NodeStatus: 0, EscStatus: 0, Temperature: 0}
-        self._node_status.restart(NODE_STATUS_FREQUENCY, timestamp)
-        self._telemetry.restart(self._value(Parameter.TELEM_FREQUENCY), timestamp)
         self._motor = motor.release(self._motor)
         self._command_deadline = None
+        self._allocatee = None
+        if self._dynamic:
+            self._allocatee = Allocatee(self._unique_id, self._preferred, start_time=timestamp)
+        self._start(self._value(Parameter.UAVCAN_NODE_ID), timestamp)
+
+    def _start(self, node_id: int, timestamp: float) -> None:
+        """Run as ``node_id`` from ``timestamp``: NodeStatus and telemetry start."""
+        self._node_id = node_id
+        self._requester = Requester(node_id, priority=self._priority)
+        self._node_status.restart(NODE_STATUS_FREQUENCY, timestamp)
+        self._telemetry.restart(self._value(Parameter.TELEM_FREQUENCY), timestamp)
 
     def power_cycle(self, timestamp: float) -> None:
         """Switch the module off and on at ``timestamp`` (the way out of the bootloader).
@@ -391,6 +418,9 @@ class SimulatedEsc:
         timestamp = check_seconds("receive", "timestamp", timestamp)
         if timestamp < self._start_time or self._in_bootloader:
             return
+        if self._allocatee is not None:
+            self._allocating(can_id, data, timestamp)
+            return
         destination = service_destination(can_id)
         if destination is not None and destination != self._node_id:
             return  # a service frame to another node
@@ -410,6 +440,21 @@ class SimulatedEsc:
             answered = self._requester.receive(transfer)
             if answered is not None:
                 self._pulled(answered, timestamp)
+
+    def _allocating(self, can_id: int, data: bytes, timestamp: float) -> None:
+        """A frame heard while waiting for a node id: only Allocation messages count."""
+        assert self._allocatee is not None
+        if service_destination(can_id) is not None:
+            return
+        self._advance(timestamp)
+        transfer = self._reassembler.feed(can_id, data, timestamp)
+        if transfer is None:
+            return
+        self._allocatee.receive(transfer)
+        granted = self._allocatee.node_id
+        if granted is not None:
+            self._allocatee = None
+            self._start(granted, timestamp)
 
     def _command(self, command: RawCommand) -> None:
         index = self._value(Parameter.ESC_INDEX)
@@ -599,6 +644,8 @@ class SimulatedEsc:
         if self._read_at is not None and self._read_at <= timestamp and not self._in_bootloader:
             self._read_at = None
             self._read_next(timestamp)
+        if self._allocatee is not None:
+            return self._allocatee.poll(timestamp)
         while self._later and self._later[0][0] <= timestamp:
             self._outbox += self._later.pop(0)[1]
         self._outbox += self._requester.take_frames()
@@ -637,6 +684,8 @@ class SimulatedEsc:
 
         For adapters that wait on the bus: block for at most until this time.
         """
+        if self._allocatee is not None:
+            return self._allocatee.next_time()
         if self._outbox:
             return self._now
         if self._in_bootloader:
