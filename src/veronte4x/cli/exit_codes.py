@@ -4,7 +4,7 @@ EXIT_OK = 0
 """Success; bad frames skipped or kept are not failures."""
 EXIT_FINDINGS = 1
 """The capture failed a check: ``--on-error raise`` met a bad frame, or ``replay`` found the
-recorded arbiter disagreeing with the model."""
+recorded arbiter disagreeing with the model; or ``esc allocate`` refused an allocation."""
 EXIT_BAD_FRAME = EXIT_FINDINGS
 """``--on-error raise`` met a bad frame."""
 EXIT_USAGE = 2
