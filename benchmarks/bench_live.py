@@ -25,6 +25,7 @@ own: ``tests/on_loopback env PYTHONPATH=src .venv/bin/python benchmarks/bench_li
 from __future__ import annotations
 
 import argparse
+import itertools
 import os
 import platform
 import re
@@ -298,6 +299,22 @@ def stages(capture: Path, count: int, work: Path) -> list[tuple[str, float]]:
     for record in records:
         state.add(record)
     per_frame("monitor: MonitorState.add", started)
+    with (
+        open_bus("udp_multicast", GROUP, options={"port": port}) as bus,
+        (work / "records.txt").open("w") as out,
+    ):
+        fill(bus)
+        write, _ = decode._text_writer(out, decode._Clock("timestamp"), decode._Ids(BusMap()))
+        counts = Stats()
+        started = time.process_time()
+        stream = read_bus(bus, duration=600.0)
+        taken = itertools.islice(stream, count)
+        for record in CaptureDecoder().decode(taken):
+            counts.add(record)
+            write(record)
+            out.flush()
+        stream.close()
+        per_frame("decode's stages in one pipeline, frame by frame (tables built)", started)
     return rows
 
 
