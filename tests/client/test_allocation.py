@@ -140,6 +140,29 @@ def test_the_allocator_answers_the_specification_example_frame_for_frame() -> No
     assert list(allocator.table) == [Entry(125, unique_id)]
 
 
+def test_nothing_is_sent_for_an_allocation_the_table_could_not_store() -> None:
+    """The table is stored before the answer: a store that fails (a full disk) ends the
+    serving with its error, and the allocatee hears nothing it could take."""
+
+    def full_disk(table: AllocationTable) -> None:
+        raise OSError(28, "No space left on device", "table.jsonl")
+
+    protocol = ClientProtocol(1, priority=30)
+    allocator = Allocator(protocol, AllocationTable(), now=0.0, store=full_disk)
+    requests = [(t, c, bytes.fromhex(d)) for t, c, d in SPEC_EXAMPLE if not c & 0x7F]
+    for time_, can_id, data in requests[:2]:
+        allocator.receive(
+            protocol.receive(can_id, data, time_ + LISTEN_FIRST), time_ + LISTEN_FIRST
+        )
+    assert len(protocol.take_frames()) == 4  # the answers to the first two stages
+    time_, can_id, data = requests[2]
+    with pytest.raises(OSError, match="No space left"):
+        allocator.receive(
+            protocol.receive(can_id, data, time_ + LISTEN_FIRST), time_ + LISTEN_FIRST
+        )
+    assert protocol.take_frames() == []
+
+
 def test_the_allocatee_sends_the_specification_example_requests() -> None:
     unique_id = bytes.fromhex("44C08B635E05F4BC1096DF11A8BA5447")
     requests = [(c, bytes.fromhex(d)) for _, c, d in SPEC_EXAMPLE if not c & 0x7F]
@@ -412,6 +435,11 @@ def test_the_simulated_allocatee_gets_its_node_id_from_the_dronecan_package_serv
         server.close()
         node.close()
     assert [e.node_id for e in escs] == [30, 21, 125]
+    twins = [SimulatedEsc(30), SimulatedEsc(21, dynamic_node_id=True)]
+    twins.append(SimulatedEsc(22, dynamic_node_id=True, preferred_node_id=0))
+    ours = Bench(AllocationTable(), twins)
+    ours.until(lambda: all(e.node_id is not None for e in twins))
+    assert [e.node_id for e in twins] == [30, 21, 125]  # the same from veronte4x's server
 
 
 # -- the two clients on the virtual bus --------------------------------------------------------
