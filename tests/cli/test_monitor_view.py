@@ -12,9 +12,10 @@ from veronte4x.capture.monitor import MonitorState
 from veronte4x.cli import monitor
 
 
-def test_on_a_narrow_screen_each_row_is_one_line() -> None:
-    """A mutation survivor: the columns allowed to wrap, so a row took two lines and the
-    rows that fit the screen were miscounted."""
+def test_on_a_narrow_screen_each_row_is_two_lines() -> None:
+    """A mutation survivor: the columns allowed to wrap, so a row took more lines and the
+    rows that fit the screen were miscounted. Narrow (under 100 columns), a row is its
+    columns' line and its fields' line; the rows that fit are counted by two lines."""
     state = MonitorState()
     for tick in range(3):
         state.add(node_status(10.0 + tick, 20))
@@ -24,8 +25,16 @@ def test_on_a_narrow_screen_each_row_is_one_line() -> None:
     screen.print(monitor._table(snapshot, "", screen=screen))
     lines = screen.export_text().splitlines()
     assert lines[:2] == ["arbiter: no Status yet", "6 records"]
-    assert len(lines) == 6  # the two lines above, the table's head and rule, two rows
-    assert lines[4].startswith("AP2 ") and lines[5].startswith("node")
+    assert len(lines) == 7  # the two lines above, the table's head, two rows of two lines
+    assert lines[3].startswith("AP2 ") and lines[5].startswith("node")
+    assert lines[4] == "  ready=True" and lines[6].startswith("  uptime_sec=12 s, health=OK")
+    short = Console(width=44, height=6, record=True, file=io.StringIO(), color_system=None)
+    short.print(monitor._table(snapshot, "", screen=short))
+    assert short.export_text().splitlines()[3:] == [
+        lines[3],
+        lines[4],
+        "+1 more rows (↓); f to filter",
+    ]
 
 
 def test_numbers_are_right_aligned_and_names_left_aligned() -> None:

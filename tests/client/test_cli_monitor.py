@@ -24,7 +24,7 @@ def test_plain_table_over_a_capture() -> None:
         "sender    type                        id    count   rate/s  errors  fields",
     ]
     assert (
-        "AP1       ArbitrationVariable        008        3      6.0       0  number=2, value=1.7"
+        "AP1       ArbitrationVariable        008        3   1000.0       0  number=2, value=1.7"
         in lines
     )
     assert result.stderr == "veronte4x: 39 records, 1 bad, 0.501 s\n"
@@ -49,7 +49,7 @@ def test_interactive_in_a_terminal() -> None:
         terminal("monitor", *bus_args(port)) as tmux,
     ):
         screen = wait_for(tmux, lambda s: "node 22" in s and "Temperature" in s)
-        assert "p pause · f filter · c clear filter · q quit" in screen
+        assert "p pause · f filter · c clear · q quit" in screen
         keys(tmux, "f")
         keys(tmux, "nodestat", literal=True)
         keys(tmux, "Enter")

@@ -4,7 +4,16 @@ On a terminal it is a refreshing table (the ``monitor`` extra, rich) with the ar
 state on top and keys to pause (``p``), filter (``f``, then text and Enter; Esc clears),
 scroll (arrow keys, ``j`` and ``k``) and quit (``q``). One line per row, its fields cut with
 an ellipsis at the terminal's edge; rows below the screen are counted in a last line
-(``+N more rows``). When standard output is not a terminal it prints the table as plain
+(``+N more rows``).
+
+On a terminal narrower than `NARROW` columns (80x24 is the one every terminal has) the
+layout is narrow, by one rule: the arbiter's line wraps between its parts (state; alive;
+ready; scores), never inside one; the table has no rules, its fixed columns are as narrow as
+their contents (a type name longer than `TYPE_WIDTH` is cut with ``…``, the head ``err``),
+and each row's fields (after its timing, with ``--rates``) take the next line, indented, cut
+with ``…`` at the edge: two lines per row.
+
+When standard output is not a terminal it prints the table as plain
 text, every ``--interval`` seconds for a live bus, once at the end for a capture. Ctrl-C
 stops it with code 130, as every command; ``q`` with 0.
 
@@ -43,7 +52,12 @@ from veronte4x.cli.notices import InputWatch
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
 
-KEYS_HELP = "p pause · f filter · c clear filter · q quit · ↑↓ scroll"
+KEYS_HELP = "p pause · f filter · c clear · q quit · ↑↓ scroll"
+
+NARROW = 100
+"""Terminals narrower than this many columns get the narrow layout (module docstring)."""
+TYPE_WIDTH = 20
+"""Characters of a type name in the narrow layout (``GetNodeInfoResponse`` has 19)."""
 
 
 def add_parser(commands: Any) -> None:
@@ -203,33 +217,70 @@ def _table(
     status: str = "",
     screen: Any = None,
     skip: int = 0,
+    width: int | None = None,
 ) -> Any:
     """The view: the arbiter line, the summary line and the table.
 
     On a ``screen`` (the live view's rich console), each row is one line, its fields cut
     with an ellipsis, and the rows from ``skip`` on that fit are shown, the others counted
-    in a last line; without, every row is shown, its fields wrapped between words.
+    in a last line; without, every row is shown, its fields wrapped between words. On a
+    screen or a ``width`` under `NARROW` columns, the narrow layout (module docstring).
     """
     from rich.console import Group
-    from rich.table import Table
     from rich.text import Text
 
     header, summary, rows, timing = snapshot
     wanted = text_filter.lower()
-    shown = [
+    shown = filtered = [
         r for r in rows if not wanted or wanted in r.sender.lower() or wanted in r.kind.lower()
     ]
+    if screen is not None:
+        width = screen.size.width
+    narrow = width is not None and width < NARROW
+    if width is not None and narrow:
+        header = "\n".join(_wrap_parts(header, width))
     top = Text(header, style="bold")
     line = Text(f"{summary}   {status}".rstrip())
     above = below = 0
     if screen is not None:
         heads = sum(len(screen.render_lines(text, screen.options)) for text in (top, line))
-        room = max(1, screen.size.height - heads - _TABLE_HEAD)
+        room = max(1, screen.size.height - heads - (1 if narrow else _TABLE_HEAD))
+        if narrow:
+            room = max(1, room // 2)
         if len(shown) > room:
             room = max(1, room - 1)  # a last line counts the rows not shown
         skip = max(0, min(skip, len(shown) - room))
         above, below = skip, max(0, len(shown) - skip - room)
         shown = shown[skip : skip + room]
+    several = len({r.channel for r in rows}) > 1  # a stream per channel: say which
+    if width is not None and narrow:
+        table = _narrow_table(shown, filtered, timing, several, width)
+    else:
+        table = _wide_table(shown, timing, several, screen is not None)
+    parts: list[Any] = [top, line, table]
+    if below or above:
+        more = [f"+{below} more rows (↓)" if below else "", f"{above} above (↑)" if above else ""]
+        parts.append(Text(", ".join(m for m in more if m) + "; f to filter", style="bold"))
+    return Group(*parts)
+
+
+def _wrap_parts(text: str, width: int) -> list[str]:
+    """The arbiter's line in lines of at most ``width`` characters, broken between its
+    ``; ``-separated parts (a part longer than the width is a line of its own)."""
+    lines: list[str] = []
+    for part in text.split("; "):
+        if lines and len(lines[-1]) + 2 + len(part) <= width:
+            lines[-1] += "; " + part
+        else:
+            lines.append(part)
+    return lines
+
+
+def _wide_table(rows: list[Row], timing: bool, several: bool, one_line: bool) -> Any:
+    """The table of a wide terminal (or of the last table printed): a row per line."""
+    from rich.table import Table
+    from rich.text import Text
+
     table = Table(expand=True, show_edge=False, pad_edge=False)
     for name, justify in (
         ("sender", "left"),
@@ -241,9 +292,8 @@ def _table(
         ("errors", "right"),
     ):
         table.add_column(name, justify=justify, no_wrap=True)  # type: ignore[arg-type]
-    table.add_column("fields", ratio=1, no_wrap=screen is not None, overflow="ellipsis")
-    several = len({r.channel for r in rows}) > 1  # a stream per channel: say which
-    for r in shown:
+    table.add_column("fields", ratio=1, no_wrap=one_line, overflow="ellipsis")
+    for r in rows:
         table.add_row(
             f"{r.sender} {r.channel}" if several else r.sender,
             r.kind,
@@ -254,11 +304,52 @@ def _table(
             Text(str(r.errors), style="bold red" if r.errors else ""),
             r.fields,
         )
-    parts: list[Any] = [top, line, table]
-    if below or above:
-        more = [f"+{below} more rows (↓)" if below else "", f"{above} above (↑)" if above else ""]
-        parts.append(Text(", ".join(m for m in more if m) + "; f to filter", style="bold"))
-    return Group(*parts)
+    return table
+
+
+def _narrow_table(
+    rows: list[Row], every: list[Row], timing: bool, several: bool, width: int
+) -> Any:
+    """The table of a narrow terminal: a head line, then per row its columns on one line
+    and its timing and fields on the next, indented, cut with an ellipsis at ``width``.
+    The columns are as wide as those of ``every`` row, shown or not: they stay put while
+    the rows scroll."""
+    from rich.console import Group
+    from rich.text import Text
+
+    def texts_of(r: Row) -> tuple[str, ...]:
+        return (
+            f"{r.sender} {r.channel}" if several else r.sender,
+            r.kind if len(r.kind) <= TYPE_WIDTH else r.kind[: TYPE_WIDTH - 1] + "…",
+            can_id_text(r.can_id),
+            str(r.count),
+            rate_text(r.rate),
+            str(r.errors),
+        )
+
+    cells = [texts_of(r) for r in rows]
+    heads = ("sender", "type", "id", "count", "rate/s", "err")
+    columns = [texts_of(r) for r in every]
+    widths = [max([len(head), *(len(c[i]) for c in columns)]) for i, head in enumerate(heads)]
+
+    def line(texts: tuple[str, ...]) -> str:
+        left = [f"{t:<{w}}" for t, w in zip(texts[:2], widths[:2], strict=True)]
+        right = [f"{t:>{w}}" for t, w in zip(texts[2:], widths[2:], strict=False)]
+        return " ".join(left + right)
+
+    lines = [Text(line(heads), style="bold", no_wrap=True, overflow="ellipsis")]
+    for r, texts in zip(rows, cells, strict=True):
+        head = Text(line(texts[:-1]) + " ", no_wrap=True, overflow="ellipsis")
+        head.append(f"{texts[-1]:>{widths[-1]}}", style="bold red" if r.errors else "")
+        below = Text("  ", no_wrap=True, overflow="ellipsis")
+        if timing:
+            for cell in _timing_cells(r):
+                below.append_text(cell if isinstance(cell, Text) else Text(cell))
+                below.append(" ")
+        below.append(r.fields)
+        below.truncate(width, overflow="ellipsis")
+        lines += [head, below]
+    return Group(*lines)
 
 
 def _timing_cells(row: Row) -> list[Any]:
@@ -276,7 +367,8 @@ _TABLE_HEAD = 2
 def _print_rich(reader: _Reader, text_filter: str) -> None:
     from rich.console import Console
 
-    Console().print(_table(_snapshot(reader), text_filter))
+    console = Console()
+    console.print(_table(_snapshot(reader), text_filter, width=console.width))
 
 
 @contextlib.contextmanager
