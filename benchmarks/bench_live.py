@@ -13,9 +13,9 @@ Ctrl-C and print their summary.
 Each row: the datagrams the raw socket received, the records the reader wrote and those
 ``veronte4x decode`` gives for the log itself, the frames the kernel dropped on the
 reader's socket (its own count, as the reader says it, and ``/proc/net/udp``'s), the
-reader's CPU time per frame, play's wall time, and the load average before and after; the
-other processes busiest meanwhile are listed (the machine may be shared). A figure, never
-a test.
+reader's CPU time (its start included) per frame it read, what play says of its timing,
+and the load average before and after; the other processes busiest meanwhile are listed
+(the machine may be shared). A figure, never a test.
 
 Run it where the multicast group stays on loopback, e.g. in a network namespace of its
 own: ``tests/on_loopback env PYTHONPATH=src .venv/bin/python benchmarks/bench_live.py
@@ -348,13 +348,14 @@ def main() -> None:
         )  # fmt: skip
         print(f"\n{frames:,} frames at {args.rate:,.0f}/s; decode of the log: {expected:,} records")
         print("| reader | load average before, after | raw socket | records | lost (said) "
-              "| lost (/proc/net/udp) | reader CPU per frame | play |")  # fmt: skip
+              "| lost (/proc/net/udp) | reader CPU per frame read | play |")  # fmt: skip
         print("|---|---|---|---|---|---|---|---|")
         for reader in args.readers:
             run = run_reader(reader, capture, args.seconds, work, args.busy)
+            per_read = run.cpu / max(1, frames - run.lost_proc) * 1e6
             print(
                 f"| {reader} | {run.loads[0]}; {run.loads[1]} | {run.raw:,} | {run.records:,} "
-                f"| {run.lost_said} | {run.lost_proc} | {run.cpu / frames * 1e6:.1f} µs "
+                f"| {run.lost_said} | {run.lost_proc} | {per_read:.1f} µs "
                 f"| {run.play_said.removeprefix('veronte4x: ')} |",
                 flush=True,
             )
