@@ -44,7 +44,7 @@ def main(path: str, plot_path: str) -> None:
     print("\nSelected autopilot changes (UTC, and seconds from the start):")
     for row in switches.itertuples():
         since = (row.timestamp - start).total_seconds()
-        print(f"  {row.timestamp:%H:%M:%S.%f}  {since:8.3f}  AP{row.selected + 1}")
+        print(f"  {row.timestamp:%H:%M:%S.%f}  {since:8.3f}  {row.selected_name}")
 
     def seconds(times: Any) -> Any:
         """Times as seconds from the start, for the x axis."""

@@ -38,9 +38,22 @@ def test_a_decoded_veronte_message_shows_its_fields() -> None:
     assert _captions(html) == ["Status"]
     rows = _cells(html)
     assert rows[0] == ["field", "value", "unit"]
-    assert ["selected", "1", ""] in rows
+    assert ["selected", "1 (AP2)", ""] in rows  # the index, its name beside it
     assert ["alive", "(True, True, True, False)", ""] in rows
     assert repr(status).startswith("Status(selected=1, arbitrating=True, alive=(True, True")
+
+
+@pytest.mark.parametrize(("autopilot", "shown"), [(0, "0 (AP1)"), (3, "3 (external AP)")])
+def test_an_autopilot_index_shows_its_name_in_a_message_and_in_a_record(
+    autopilot: int, shown: str, tmp_path: Path
+) -> None:
+    score = codec.Score(autopilot=autopilot, score=0.5)
+    assert ["autopilot", shown, ""] in _cells(score._repr_html_())
+    log = tmp_path / "score.log"
+    log.write_text(f"(1.0) can0 0FF#{codec.encode(score).hex()}\n", encoding="ascii")
+    [record] = capture.read(log)
+    assert ["autopilot", shown, ""] in _cells(record._repr_html_())
+    assert ["score", "0.5", ""] in _cells(score._repr_html_())  # a float has no name
 
 
 def test_floats_in_shortest_form_and_repr_unchanged() -> None:

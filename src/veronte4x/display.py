@@ -8,7 +8,8 @@ own package, built from `table` and `side_by_side`: `veronte4x.capture.records.r
 `veronte4x.client.nodes.nodes_html`. Plain ``repr`` is unchanged. Values are shown as the
 command line's text shows them (`veronte4x.values.shown`): enums by name, floats in their
 shortest form at the field's declared width, text as text, other bytes in hex, and a column
-of units where the protocol gives them. Everything is HTML-escaped.
+of units where the protocol gives them; an index with a name, the name beside it (a Status's
+``selected`` as ``1 (AP2)``, `veronte4x.values.name_of`). Everything is HTML-escaped.
 
 This module imports no package of the library (the codecs import it): only the modules
 below every protocol, `veronte4x.values` and `veronte4x.units`.
@@ -28,7 +29,7 @@ from html import escape
 from typing import Any
 
 from veronte4x.units import unit
-from veronte4x.values import shown
+from veronte4x.values import name_of, shown
 
 
 class HtmlDisplay:
@@ -76,7 +77,9 @@ def _fields(message: Any, top: str | None = None, prefix: str = "") -> list[Cell
             items = ", ".join(str(shown(owner, field.name, item)) for item in value)
             rows.append((name, f"({items})", unit(top, name)))
         else:
-            rows.append((name, shown(owner, field.name, value), unit(top, name)))
+            text = shown(owner, field.name, value)
+            named = name_of(owner, field.name, value)
+            rows.append((name, text if named is None else f"{text} ({named})", unit(top, name)))
     return rows
 
 

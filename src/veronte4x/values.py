@@ -7,7 +7,10 @@ so in class attributes, each a frozenset of attribute names (absent when empty):
 - ``_FLOAT16_FIELDS_``, ``_FLOAT32_FIELDS_``: the floats the DroneCAN DSDL or the Veronte
   layout declares ``float16`` or ``float32``; every other float is a float64 (a DBC signal,
   a scaled Veronte field);
-- ``_TEXT_FIELDS_``: the ``bytes`` attributes that hold text (`veronte4x.dronecan.types.is_text`).
+- ``_TEXT_FIELDS_``: the ``bytes`` attributes that hold text (`veronte4x.dronecan.types.is_text`);
+- ``_NAMED_FIELDS_`` (a mapping, not a frozenset): the integer attributes whose values have
+  names, to those names by value: a Veronte message's autopilot index (Status ``selected``,
+  Score ``autopilot``) to `veronte4x.codec.layouts.AUTOPILOTS`, the one home of the names.
 
 `veronte4x.dronecan.typeset.TypeSet` writes them on the DroneCAN classes it holds, and
 `veronte4x.codec.compiler.FrameLayout` on the Veronte messages it lays out (the names end
@@ -26,7 +29,7 @@ from typing import Any
 
 from veronte4x.numbers import exact, for_people
 
-__all__ = ["float_bits", "readable", "shown", "text_fields"]
+__all__ = ["float_bits", "name_of", "readable", "shown", "text_fields"]
 
 _NONE: frozenset[str] = frozenset()
 
@@ -35,6 +38,22 @@ def text_fields(owner: type) -> frozenset[str]:
     """The attributes of a message class that hold text (its ``_TEXT_FIELDS_``)."""
     found: frozenset[str] = getattr(owner, "_TEXT_FIELDS_", _NONE)
     return found
+
+
+def name_of(owner: type, attr: str, value: Any) -> str | None:
+    """The name of an integer field's value, where its class gives names (its
+    ``_NAMED_FIELDS_``): ``AP2`` for a Status whose ``selected`` is 1; else None.
+
+    Examples:
+        >>> from veronte4x import codec
+        >>> name_of(codec.Status, "selected", 1), name_of(codec.Score, "score", 1)
+        ('AP2', None)
+    """
+    names = getattr(owner, "_NAMED_FIELDS_", {}).get(attr)
+    if names is None or type(value) is not int or not 0 <= value < len(names):
+        return None
+    name: str = names[value]
+    return name
 
 
 def float_bits(owner: type, attr: str) -> int:

@@ -19,10 +19,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from veronte4x.arbiter.errors import ConfigError
+from veronte4x.codec.layouts import AUTOPILOTS
 from veronte4x.errors import boolean, integer, real
 
-#: Autopilot numbers as the Status and Score messages use them (4x Software Manual, section 3.1.1).
-AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external AP")
 #: Index of the external autopilot.
 EXTERNAL = 3
 #: "Currently, the maximum amount of arbitration variables supported is 32." (4x PDI Builder
@@ -34,7 +33,7 @@ _EXTENDED_ID_MAX = 0x1FFF_FFFF
 
 def autopilot_name(autopilot: int) -> str:
     """The name of an autopilot number: 0 -> "AP1", 3 -> "external AP"."""
-    return AUTOPILOT_NAMES[autopilot]
+    return AUTOPILOTS[autopilot]
 
 
 class Method(enum.Enum):

@@ -47,12 +47,15 @@ from types import MappingProxyType
 from typing import Any, Literal
 
 from veronte4x import codec
+from veronte4x.codec.layouts import AUTOPILOTS
 from veronte4x.dronecan.typeset import TypeSet
 from veronte4x.errors import Veronte4xError, argument_type_error
 from veronte4x.extras import require
 
-AUTOPILOT_NAMES = ("AP1", "AP2", "AP3", "external")
-"""Autopilot names by index, as the Status message orders them."""
+AUTOPILOT_NAMES = tuple(name.removesuffix(" AP") for name in AUTOPILOTS)
+"""The autopilots as senders, by index (``AP1`` .. ``external``): the names of their one
+home, `veronte4x.codec.layouts.AUTOPILOTS`, the external one as records and tables have
+always given their sender, ``external``."""
 
 
 TextForm = Literal["string", "binary"]

@@ -25,6 +25,10 @@ AUTOPILOTS = ("AP1", "AP2", "AP3", "external AP")
 section 3.1)."""
 AUTOPILOT_FIELDS = frozenset({"selected", "autopilot"})
 """The fields that hold an autopilot's index: Status ``selected``, Score ``autopilot``."""
+for _message in (m.Status, m.Score):  # the class's fact, read by `veronte4x.values.name_of`
+    _message._NAMED_FIELDS_ = dict.fromkeys(
+        AUTOPILOT_FIELDS & set(_message.__dataclass_fields__), AUTOPILOTS
+    )
 
 _ARBITRATION = constant(0x00, 8, "message type t_arbitration", "command")
 _FF_HEADER = constant(0xFF, 8, "0xFF header", "header")

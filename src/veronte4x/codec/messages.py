@@ -10,6 +10,7 @@ validates every field and raises `EncodeError`. The wire layouts live in
 from __future__ import annotations
 
 import enum
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -45,6 +46,9 @@ class Message(HtmlDisplay):
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset()
     """The attributes its layouts declare float32 (a scaled integer field is a float64),
     written by `veronte4x.codec.compiler.FrameLayout`; read by `veronte4x.values`."""
+    _NAMED_FIELDS_: ClassVar[Mapping[str, tuple[str, ...]]] = {}
+    """The attributes that hold an autopilot's index, to the autopilots' names, written by
+    `veronte4x.codec.layouts`; read by `veronte4x.values.name_of`."""
 
 
 @dataclass(frozen=True, slots=True)
