@@ -214,6 +214,17 @@ class StreamBase:
         with contextlib.suppress(Exception):
             self._send(zero)
 
+    @staticmethod
+    @contextmanager
+    def _stopping_at_block_end(kind: type[BaseException] | None) -> Iterator[None]:
+        """Around the stop at the end of a stream's ``with`` (or ``async with``) block: the
+        stop's error is raised if the block ended normally, else the block's own goes on."""
+        try:
+            yield
+        except Exception:
+            if kind is None:
+                raise
+
     def _stop_motors(self) -> None:
         """Send zero throttle `STOP_REPEATS` times (after the sender has stopped).
 

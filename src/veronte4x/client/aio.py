@@ -391,9 +391,7 @@ class AsyncCommandStream(StreamBase):
         """Stop at once, from synchronous code (its client does this when it stops): the
         task is cancelled before it can send again, then zero throttle `STOP_REPEATS` times
         unless the stream had stopped already; `set` then raises `OperationCancelledError`."""
-        task, self._task = self._task, None
-        if task is not None:
-            task.cancel()  # it sends nothing more: it only sends between its awaits
+        self._cancel_task()
         if self.failure is None:
             self._failed(
                 OperationCancelledError(
@@ -409,22 +407,25 @@ class AsyncCommandStream(StreamBase):
             Exception: The error that stopped the stream's task (not when its client
                 stopped it: `close`).
         """
-        task, self._task = self._task, None
-        if task is not None:
-            task.cancel()  # it sends nothing more: it only sends between its awaits
+        task = self._cancel_task()
         self._client._streams = tuple(s for s in self._client._streams if s is not self)
         if not self._closed:
             self._stop_motors()
         if task is not None:
             await asyncio.wait([task])  # a cancellation of ours still ends this wait
 
+    def _cancel_task(self) -> asyncio.Task[None] | None:
+        """Cancel the sending task, if any, and forget it; the task (it sends nothing more:
+        it only sends between its awaits)."""
+        task, self._task = self._task, None
+        if task is not None:
+            task.cancel()
+        return task
+
     async def __aenter__(self) -> AsyncCommandStream:
         self.start()
         return self
 
     async def __aexit__(self, kind: type[BaseException] | None, *exc: object) -> None:
-        try:
+        with self._stopping_at_block_end(kind):
             await self.stop()
-        except Exception:
-            if kind is None:  # else the block's own error goes on
-                raise

@@ -486,8 +486,5 @@ class CommandStream(StreamBase):
         return self
 
     def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
-        try:
+        with self._stopping_at_block_end(kind):
             self.stop()
-        except Exception:
-            if kind is None:  # else the block's own error goes on
-                raise
