@@ -14,7 +14,8 @@ from veronte4x.capture import BusMap
 from veronte4x.capture.busmap import TEXT_FORMS
 from veronte4x.capture.columnar import engine
 from veronte4x.codec import Linear
-from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec
+from veronte4x.dronecan.compiled import can_id_base
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.schema import Array, Scalar, Struct, Union
 from veronte4x.dronecan.tail import SINGLE_FRAME_MAX, split_payload

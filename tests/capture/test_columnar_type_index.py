@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from veronte4x import dronecan
 from veronte4x.capture.columnar.dronecan import type_index, type_index_of
 from veronte4x.dronecan import Problem
-from veronte4x.dronecan.codec import can_id_base
+from veronte4x.dronecan.compiled import can_id_base
 
 _STATUS = dronecan.NodeStatus(1, dronecan.Health.OK, dronecan.Mode.OPERATIONAL, 0, 0)
 

@@ -2,15 +2,20 @@
 
 from __future__ import annotations
 
+import os
+import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import dronecan as dc
+import veronte4x
 import veronte4x.dronecan
 from veronte4x import dronecan
-from veronte4x.dronecan import generate
+from veronte4x.dronecan import shipped_source
 from veronte4x.dronecan.definitions import DATA_TYPES, NESTED_SIGNATURES
 from veronte4x.dronecan.parser import (
     DsdlError,
@@ -45,10 +50,39 @@ def test_every_signature_and_id_equals_the_dronecan_package() -> None:
         assert value == dc.TYPENAMES[name].get_data_type_signature()
 
 
-def test_the_generated_module_is_up_to_date() -> None:
-    """``python -m veronte4x.dronecan.generate`` rewrites standard.py; it must be current."""
-    path = Path(veronte4x.dronecan.standard.__file__)
-    assert generate.standard_source() == path.read_text(encoding="utf-8")
+def test_the_generated_modules_are_up_to_date() -> None:
+    """``python -m veronte4x.dronecan.generate`` rewrites every module generated from the
+    shipped DSDL (classes, data, fast paths); each must be current, and no other fast-path
+    module may linger."""
+    package = Path(veronte4x.dronecan.__file__).parent
+    found = shipped_source.sources()
+    for relative, text in found.items():
+        assert (package / relative).read_text(encoding="utf-8") == text, relative
+    on_disk = {f"fast/{p.name}" for p in (package / "fast").glob("*.py")}
+    assert on_disk == {k for k in found if k.startswith("fast/")}
+
+
+def test_the_generator_runs_from_a_broken_package(tmp_path: Path) -> None:
+    """A stale or broken ``standard.py`` (a DSDL file added, a bad edit) does not stop the
+    generator: it imports none of the modules it writes."""
+    source = Path(veronte4x.__file__).parent
+    copy = tmp_path / "src" / "veronte4x"
+    shutil.copytree(source, copy, ignore=shutil.ignore_patterns("__pycache__"))
+    dronecan_copy = copy / "dronecan"
+    for name in ("standard.py", "standard_data.py", "vendor.py", "vendor_data.py"):
+        (dronecan_copy / name).write_text("raise KeyError('broken')\n")
+    (dronecan_copy / "fast" / "uavcan_protocol_NodeStatus.py").unlink()
+    done = subprocess.run(
+        [sys.executable, "-m", "veronte4x.dronecan.generate"],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(tmp_path / "src")},
+        cwd=tmp_path,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr
+    for relative, text in shipped_source.sources().items():
+        assert (dronecan_copy / relative).read_text(encoding="utf-8") == text, relative
 
 
 def test_names_are_predictable() -> None:

@@ -21,7 +21,8 @@ from test_dronecan_compiled import _payloads, _same
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, CODECS, TypeCodec
+from veronte4x.dronecan.compiled import can_id_base
 from veronte4x.dronecan.typeset import TypeSet
 
 SINGLE = [c for c in CODECS if c.fast.decode_frame is not None]

@@ -17,7 +17,8 @@ from veronte4x.client.errors import NodeIdConflictError
 from veronte4x.client.files import FileRead, FileServer
 from veronte4x.client.nodes import NodeEntry, NodeTable
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
-from veronte4x.dronecan.codec import BY_CLASS, BY_ID, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, BY_ID
+from veronte4x.dronecan.compiled import can_id_base
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.messages import FileGetInfoRequest, FileReadRequest, NodeStatus
 from veronte4x.dronecan.reassembler import Reassembler

@@ -1,14 +1,17 @@
 """Payload encoding and decoding for each of the types, fast path first.
 
 Each top-level type gets generated fast functions (`compiled` for flat structs and
-RawCommand, `compiled_tree` for everything else), compiled the first time the type is
-used, and the generic `Serializer` for everything the fast path hands over (errors,
-saturation, odd lengths).
+RawCommand, `compiled_tree` for everything else) and the generic `Serializer` for
+everything the fast path hands over (errors, saturation, odd lengths). A shipped type's
+fast functions are written ahead of time, one module of `veronte4x.dronecan.fast` each
+(`veronte4x.dronecan.generate`), imported the first time the type is used; those of a type
+loaded at run time are compiled then.
 """
 
 from __future__ import annotations
 
 import functools
+import importlib
 from typing import Any
 
 from veronte4x.dronecan.can_id import TransferKind
@@ -16,13 +19,10 @@ from veronte4x.dronecan.compiled import (
     DECODE_FALLBACK,
     ENCODE_FALLBACK,
     FastPaths,
-    Transport,
-    compile_int_array,
-    compile_struct,
+    compile_fast,
+    transport_of,
 )
-from veronte4x.dronecan.compiled_tree import compile_tree
-from veronte4x.dronecan.definitions import DATA_TYPES, DataType
-from veronte4x.dronecan.frame import TransferFrame
+from veronte4x.dronecan.definitions import DATA_TYPES, FAST_MODULES, DataType
 from veronte4x.dronecan.serializer import Serializer
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
 
@@ -36,10 +36,13 @@ class TypeCodec:
         crc_seed: The transfer CRC after the type's signature.
         max_payload: Largest payload in bytes.
         generic: The generic serializer of the type.
+        fast_module: The module of its fast paths written ahead of time (a shipped type),
+            or None: they are compiled at first use.
     """
 
-    def __init__(self, data_type: DataType) -> None:
+    def __init__(self, data_type: DataType, fast_module: str | None = None) -> None:
         self.data_type = data_type
+        self.fast_module = fast_module
         self.crc_seed = data_type.crc_seed
         self.max_payload = data_type.max_payload
         self.generic = Serializer(data_type.schema)
@@ -49,21 +52,12 @@ class TypeCodec:
 
     @functools.cached_property
     def fast(self) -> FastPaths:
-        """The generated fast paths, compiled on first use (one type at a time: importing
-        the package compiles nothing)."""
-        data_type = self.data_type
-        transport = Transport(
-            TransferFrame,
-            can_id_base(data_type),
-            data_type.kind is not TransferKind.MESSAGE,
-            data_type.crc_seed,
-        )
-        schema = data_type.schema
-        return (
-            compile_struct(schema, transport)
-            or compile_int_array(schema, transport)
-            or compile_tree(schema, transport)
-        )
+        """The generated fast paths: imported from `fast_module`, else compiled on first
+        use (one type at a time: importing the package compiles nothing)."""
+        if self.fast_module is not None:
+            made: FastPaths = importlib.import_module(self.fast_module).FAST
+            return made
+        return compile_fast(self.data_type.schema, transport_of(self.data_type))
 
     def encode(self, message: Any, saturate: bool = False) -> bytes:
         """Serialize ``message``; raise EncodeError for any value the type cannot hold."""
@@ -82,15 +76,9 @@ class TypeCodec:
             return self.generic.decode(payload)
 
 
-def can_id_base(data_type: DataType) -> int:
-    """The CAN ID bits fixed by the type: type id, request bit and service bit."""
-    if data_type.kind is TransferKind.MESSAGE:
-        return data_type.data_type_id << 8
-    request = 0x8000 if data_type.kind is TransferKind.REQUEST else 0
-    return data_type.data_type_id << 16 | request | 0x80
-
-
-CODECS: tuple[TypeCodec, ...] = tuple(TypeCodec(t) for t in DATA_TYPES)
+CODECS: tuple[TypeCodec, ...] = tuple(
+    TypeCodec(t, FAST_MODULES[t.full_name, t.kind]) for t in DATA_TYPES
+)
 """One `TypeCodec` per top-level type, in the order of `DATA_TYPES`."""
 
 BY_CLASS: dict[type, TypeCodec] = {c.data_type.schema.cls: c for c in CODECS}

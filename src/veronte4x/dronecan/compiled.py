@@ -34,24 +34,19 @@ gets its fast paths from `compiled_tree`.
 from __future__ import annotations
 
 import struct
-from binascii import crc_hqx
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from veronte4x.codegen import attribute, compile_source, slot_builder
-from veronte4x.dronecan.scalar_code import NAMES, pack_scalars, unpack_scalars
-from veronte4x.dronecan.schema import Array, Scalar, Struct, StructField
-from veronte4x.dronecan.serializer import Serializer
-from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
-from veronte4x.errors import DecodeError
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.fast_base import NAMES, SlowPath, int_array_tables, tail_table
+from veronte4x.dronecan.frame import TransferFrame
+from veronte4x.dronecan.scalar_code import pack_scalars, unpack_scalars
+from veronte4x.dronecan.schema import Array, DataType, Scalar, Struct, StructField
 
 FramesFunction = Callable[[Any, int, int, int, Any], list[Any]]
 PayloadEncoder = Callable[[Any], bytes]
 PayloadDecoder = Callable[[bytes], Any]
-
-
-class SlowPath(Exception):
-    """Raised by generated code when the generic serializer must take over."""
 
 
 ENCODE_FALLBACK = (SlowPath, TypeError, IndexError, OverflowError, struct.error)
@@ -83,32 +78,57 @@ class FastPaths(NamedTuple):
     decode_frame: PayloadDecoder | None
 
 
-def _tail_table(count: int) -> tuple[tuple[bytes, ...], ...]:
-    """Tail bytes of a transfer of ``count`` frames, as 1-byte strings, per transfer id."""
-    return tuple(tuple(bytes((t,)) for t in MULTI_FRAME_TAILS[tid][count]) for tid in range(32))
-
-
 class _Source:
-    """Collects the lines of one generated module and the objects its code refers to."""
+    """Collects the lines of one generated module and the objects its code refers to.
+
+    Each object named also gets the expression that makes it again (`expressions`), so
+    that the same code can be written out as a module of its own (`module_lines`).
+    """
 
     def __init__(self) -> None:
         self.lines: list[str] = []
-        self.names: dict[str, Any] = {
-            **NAMES,
-            "SlowPath": SlowPath,
-            "crc_hqx": crc_hqx,
-            "new": object.__new__,
-            "tnew": tuple.__new__,
-        }
+        self.single = False
+        """Whether the code has a ``decode_frame`` (a payload of the type may fit a frame)."""
+        self.slow = False
+        """Whether the type is nested too deep for generated code (`compiled_tree.MAX_BLOCKS`):
+        its fast paths are all `slow`."""
+        self.names: dict[str, Any] = dict(NAMES)
+        self.expressions: dict[str, str | None] = {}
+        """Each name given to an object, to the expression that makes it: a `struct.Struct`
+        as ``Struct(format)``; a class or enum None (imported by the module's writer)."""
 
-    def name(self, prefix: str, value: Any) -> str:
-        """Make ``value`` visible to the generated code under a fresh name."""
+    def name(self, prefix: str, value: Any, expression: str | None = None) -> str:
+        """Make ``value`` visible to the generated code under a fresh name; ``expression``
+        makes it again (the source of a struct is known, and a class needs none)."""
         number = len(self.names)
         while f"{prefix}{number}" in self.names:  # F16 is taken, for one
             number += 1
         key = f"{prefix}{number}"
+        if expression is None and isinstance(value, struct.Struct):
+            expression = f"Struct({value.format!r})"
+        if expression is None and not isinstance(value, type):
+            raise ValueError(f"generated code names {value!r} without its expression")
         self.names[key] = value
+        self.expressions[key] = expression
         return key
+
+    def cls(self, value: type) -> str:
+        """Name a class (or enum) for the generated code."""
+        return self.name("C", value)
+
+    def builder(self, cls: type) -> str:
+        """Name the slot builder of ``cls`` (see `veronte4x.codegen.slot_builder`)."""
+        return self.name("B", _slot_builder(cls), f"slot_builder({self.cls(cls)})")
+
+    def module_lines(self, class_name: Callable[[type], str]) -> list[str]:
+        """The assignments that make every named object, in the order they were named,
+        then the code: a module body (the imports are the writer's). ``class_name`` gives
+        the name a class or enum is imported under."""
+        made = [
+            f"{key} = {class_name(self.names[key]) if expression is None else expression}"
+            for key, expression in self.expressions.items()
+        ]
+        return [*made, "", "", *self.lines]
 
     def build(self, title: str) -> dict[str, Any]:
         """Run the generated code once (see `veronte4x.codegen.compile_source`); return its
@@ -116,22 +136,12 @@ class _Source:
         return compile_source("\n".join(self.lines), self.names, title)
 
 
-def _shared_values(schema: Struct, size: int) -> tuple[Any, ...] | None:
-    """Every message of a frozen type of at most one payload byte, by that byte (an empty
-    type's one message first); None for a longer or mutable type. Frozen messages can be
-    shared: the decoders of such a type return these instead of building new ones. A
-    payload the generic serializer refuses is None in the table."""
+def _shared(schema: Struct, size: int) -> bool:
+    """Whether a type is frozen and of at most one payload byte: its messages can be
+    shared, made once each (`veronte4x.dronecan.fast_base.shared_table`) and returned by
+    its decoders instead of new ones."""
     params = getattr(schema.cls, "__dataclass_params__", None)
-    if size > 1 or params is None or not params.frozen:
-        return None
-    serializer = Serializer(schema)
-    values = []
-    for payload in [b""] if size == 0 else [bytes((b,)) for b in range(256)]:
-        try:
-            values.append(serializer.decode(payload))
-        except DecodeError:
-            values.append(None)
-    return tuple(values)
+    return size <= 1 and params is not None and params.frozen
 
 
 def _slot_builder(cls: type) -> type:
@@ -149,9 +159,27 @@ class Transport(NamedTuple):
     crc_seed: int
 
 
+def can_id_base(data_type: DataType) -> int:
+    """The CAN ID bits fixed by the type: type id, request bit and service bit."""
+    if data_type.kind is TransferKind.MESSAGE:
+        return data_type.data_type_id << 8
+    request = 0x8000 if data_type.kind is TransferKind.REQUEST else 0
+    return data_type.data_type_id << 16 | request | 0x80
+
+
+def transport_of(data_type: DataType) -> Transport:
+    """What the frames function of a type needs to know about its CAN ID."""
+    return Transport(
+        TransferFrame,
+        can_id_base(data_type),
+        data_type.kind is not TransferKind.MESSAGE,
+        data_type.crc_seed,
+    )
+
+
 def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transport) -> None:
     """Emit the end of a frames function: from a big-endian payload int to the frames."""
-    frame = src.name("TransferFrame", transport.frame_class)
+    frame = src.cls(transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if size <= 7:
         data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
@@ -172,7 +200,7 @@ def _emit_struct_frames(
     src: _Source, size: int, layout: str, values: list[str], transport: Transport
 ) -> None:
     """Emit the end of a frames function packing the groups with ``struct``."""
-    frame = src.name("TransferFrame", transport.frame_class)
+    frame = src.cls(transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"
@@ -192,7 +220,7 @@ def _emit_multi_frame(
     """Emit the end of a frames function that splits payload ``p`` into a multi-frame
     transfer: the transfer CRC first, 7 bytes a frame, each with its tail byte (spec 4.1)."""
     count = (size + 2 + 6) // 7
-    tails = src.name("T", _tail_table(count))
+    tails = src.name("T", tail_table(count), f"tail_table({count})")
     src.lines += [
         f"    b = crc_hqx(p, {transport.crc_seed:#x}).to_bytes(2, 'little') + p",
         f"    c = {can_id}",
@@ -203,11 +231,13 @@ def _emit_multi_frame(
     src.lines.append(f"    return [{', '.join(items)}]")
 
 
-def _emit_decoders(src: _Source, schema: Struct, fields: list[StructField], size: int) -> None:
-    """Emit ``decode`` and ``decode_frame`` of a flat struct: one `struct` unpack, then the
-    message built by slot stores."""
-    builder = src.name("B", _slot_builder(schema.cls))
-    cls = src.name("C", schema.cls)
+def _emit_decoders(
+    src: _Source, schema: Struct, fields: list[StructField], size: int, prefix: str = ""
+) -> None:
+    """Emit ``decode`` and ``decode_frame`` of a flat struct (names after ``prefix``): one
+    `struct` unpack, then the message built by slot stores."""
+    builder = src.builder(schema.cls)
+    cls = src.cls(schema.cls)
     unpacking = unpack_scalars(
         [f.type for f in fields if isinstance(f.type, Scalar)],
         [f"o.{attribute(f.name)}" if f.name else None for f in fields],
@@ -216,7 +246,7 @@ def _emit_decoders(src: _Source, schema: Struct, fields: list[StructField], size
     )
     for function, length, pad in (("decode", size, ""), ("decode_frame", size + 1, "x")):
         unpacker = src.name("S", struct.Struct(unpacking.format + pad))
-        src.lines.append(f"def {function}(buf):")
+        src.lines.append(f"def {prefix}{function}(buf):")
         if function == "decode":  # decode_frame relies on struct's own length check
             src.lines += [f"    if len(buf) != {length}:", "        raise SlowPath"]
         src.lines += [
@@ -230,9 +260,14 @@ def _emit_decoders(src: _Source, schema: Struct, fields: list[StructField], size
         ]
 
 
-def _emit_shared_decoders(src: _Source, size: int, table: str) -> None:
-    """Emit ``decode`` and ``decode_frame`` of a type of at most one payload byte: the
-    message from ``table`` (see `_shared_values`)."""
+def _emit_shared_decoders(
+    src: _Source, schema: Struct, fields: list[StructField], size: int
+) -> None:
+    """Emit ``decode`` and ``decode_frame`` of a type of at most one payload byte (see
+    `_shared`): the message from table ``M``, made once by the struct's own decoder."""
+    _emit_decoders(src, schema, fields, size, "_")
+    table = "M"
+    src.lines.append(f"{table} = shared_table(_decode, {size})")
     for function, pad in (("decode", ""), ("decode_frame", "x")):
         unpacker = src.name("S", struct.Struct("<" + "B" * size + pad))  # checks the length
         src.lines.append(f"def {function}(buf):")
@@ -248,7 +283,7 @@ def _emit_shared_decoders(src: _Source, size: int, table: str) -> None:
             ]
 
 
-def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
+def struct_source(schema: Struct, transport: Transport) -> _Source | None:
     """Generate the fast paths of a struct of scalars, or None if it is not flat.
 
     Fields are packed and unpacked with one `Struct` whose items are byte-aligned groups
@@ -277,18 +312,15 @@ def compile_struct(schema: Struct, transport: Transport) -> FastPaths | None:
         else:
             packer = src.name("S", struct.Struct(packing.format))
             src.lines.append(f"    return {packer}.pack({', '.join(packing.values)})")
-    shared = _shared_values(schema, size)
-    if shared is not None:
-        _emit_shared_decoders(src, size, src.name("M", shared))
+    if _shared(schema, size):
+        _emit_shared_decoders(src, schema, fields, size)
     else:
         _emit_decoders(src, schema, fields, size)
-    code = src.build(f"fast paths {schema.name}")
-    return FastPaths(
-        code["frames"], code["payload"], code["decode"], code["decode_frame"] if size <= 7 else None
-    )
+    src.single = size <= 7
+    return src
 
 
-def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
+def int_array_source(schema: Struct, transport: Transport) -> _Source | None:
     """Fast paths for a struct whose only field is a TAO array of 9..16-bit ints (RawCommand).
 
     The items are packed on a big-endian int through two tables: item value to its stream
@@ -304,17 +336,14 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         return None
     if not array.dynamic:
         return None
-    bits, rest = item.bits, item.bits - 8
+    bits = item.bits
     low = item.low
-    to_stream = tuple(
-        ((v & 0xFF) << rest) | ((v & ((1 << bits) - 1)) >> 8) for v in range(low, item.high + 1)
-    )
-    from_stream = [0] * (1 << bits)
-    for v in range(low, item.high + 1):
-        from_stream[((v & 0xFF) << rest) | ((v & ((1 << bits) - 1)) >> 8)] = v
+    to_stream, from_stream = int_array_tables(low, item.high)
     src = _Source()
-    enc, dec = src.name("S", to_stream), src.name("D", tuple(from_stream))
-    builder, cls = src.name("B", _slot_builder(schema.cls)), src.name("C", schema.cls)
+    tables = f"int_array_tables({low}, {item.high})"
+    enc = src.name("S", to_stream, f"{tables}[0]")
+    dec = src.name("D", from_stream, f"{tables}[1]")
+    builder, cls = src.builder(schema.cls), src.cls(schema.cls)
     offset = -low
     sizes = []
     for count in range(array.max_size + 1):
@@ -375,5 +404,37 @@ def compile_int_array(schema: Struct, transport: Transport) -> FastPaths | None:
         "def decode_frame(buf):",
         f"    return (DF[len(buf)] if len(buf) < {longest} else bad)(buf)",
     ]
+    src.single = True
+    return src
+
+
+def fast_source(schema: Struct, transport: Transport) -> _Source:
+    """The source of the fast paths of any top-level type: `struct_source` for a flat
+    struct, `int_array_source` for RawCommand, else
+    `veronte4x.dronecan.compiled_tree.tree_source`."""
+    from veronte4x.dronecan.compiled_tree import tree_source  # it builds on this module
+
+    return (
+        struct_source(schema, transport)
+        or int_array_source(schema, transport)
+        or tree_source(schema, transport)
+    )
+
+
+def compile_fast(schema: Struct, transport: Transport) -> FastPaths:
+    """Compile the fast paths of any top-level type at run time (`fast_source`)."""
+    src = fast_source(schema, transport)
+    if src.slow:
+        return FastPaths(slow, slow, slow, None)
     code = src.build(f"fast paths {schema.name}")
-    return FastPaths(code["frames"], code["payload"], code["decode"], code["decode_frame"])
+    return FastPaths(
+        code["frames"],
+        code["payload"],
+        code["decode"],
+        code["decode_frame"] if src.single else None,
+    )
+
+
+def slow(*args: object) -> Any:
+    """The fast path of a type nested too deep for generated code: the generic one."""
+    raise SlowPath

@@ -30,21 +30,14 @@ nested loops) gets functions that always raise `SlowPath`: the generic serialize
 
 from __future__ import annotations
 
-import functools
 import struct
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
 from veronte4x.codegen import attribute
-from veronte4x.dronecan.compiled import (
-    FastPaths,
-    SlowPath,
-    Transport,
-    _slot_builder,
-    _Source,
-    _transport_checks,
-)
+from veronte4x.dronecan.compiled import Transport, _Source, _transport_checks
+from veronte4x.dronecan.fast_base import HALF_TABLE_BITS, half_tables, struct_table
 from veronte4x.dronecan.scalar_code import (
     HALF_EXPR,
     Namer,
@@ -69,43 +62,12 @@ from veronte4x.dronecan.schema import (
     tao_min_bits,
     uses_tao,
 )
-from veronte4x.dronecan.tail import MULTI_FRAME_TAILS
 
 
 def _from_piece(t: Scalar, var: str, name: Namer) -> str:
     """The value of scalar ``t`` from ``var``, the ``t.bits``-bit piece of the stream it
     fills, as a big-endian int."""
     return scalar_value(t, gather(var, be_runs(0, t.bits, t.bits), t.bits), None, name)
-
-
-HALF_TABLE_BITS = 24
-"""Widest integer item read through `half_tables` (two tables of at most 4,096 entries);
-a wider one is valued from its bit runs, one expression per item."""
-
-
-@functools.cache
-def half_tables(kind: str, bits: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
-    """Two tables that decode an integer scalar (``kind`` ``int`` or ``uint``) of ``bits``
-    bits, 8 < bits <= `HALF_TABLE_BITS`, from its piece of the stream (a big-endian int):
-    the value is ``high[piece >> h] + low[piece & (2**h - 1)]``, ``h`` half the bits rounded
-    up. Each bit of the piece stands for one bit of the value (its bit runs are disjoint),
-    so a table is built by doubling: the entries so far, then each plus the next bit's
-    weight. The sign bit of an ``int`` weighs ``-2**(bits - 1)``; one table per (kind,
-    bits) for the whole process."""
-    weights = [0] * bits  # the value's weight of each bit of the piece
-    for source, width, dest in be_runs(0, bits, bits):
-        for k in range(width):
-            weight = 1 << (source + k)
-            weights[dest + k] = -weight if kind == "int" and source + k == bits - 1 else weight
-    low_bits = (bits + 1) // 2
-
-    def table(piece_bits: list[int]) -> tuple[int, ...]:
-        entries = [0]
-        for weight in piece_bits:
-            entries += [e + weight for e in entries]
-        return tuple(entries)
-
-    return table(weights[low_bits:]), table(weights[:low_bits])
 
 
 def _to_piece(t: Scalar, var: str) -> str:
@@ -175,6 +137,10 @@ class _Writer:
 
     def emit(self, line: str) -> None:
         self.lines.append("    " * self.depth + line)
+
+    def _structs(self, code: str, count: int) -> str:
+        """Name the structs of 0 .. ``count`` whole items of `struct` code ``code``."""
+        return self.src.name("A", struct_table(code, count), f"struct_table({code!r}, {count})")
 
     def fresh(self, prefix: str) -> str:
         self.count += 1
@@ -305,10 +271,10 @@ class _Decoder(_Writer):
 
     def build(self, cls: type, values: list[tuple[str, str]]) -> str:
         o = self.fresh("o")
-        self.emit(f"{o} = {self.src.name('B', _slot_builder(cls))}()")
+        self.emit(f"{o} = {self.src.builder(cls)}()")
         for field, name in values:
             self.emit(f"{o}.{field} = {name}")
-        self.emit(f"{o}.__class__ = {self.src.name('C', cls)}")
+        self.emit(f"{o}.__class__ = {self.src.cls(cls)}")
         return o
 
     def value(self, t: Array | Struct | Union | Scalar, tao: bool) -> str:
@@ -410,20 +376,20 @@ class _Decoder(_Writer):
                     unpacker = self.src.name("S", struct.Struct(f"<{t.max_size}{code}"))
                     self.emit(f"{v} = {unpacker}.unpack({data})")
                 else:
-                    table = self.src.name(
-                        "A", tuple(struct.Struct(f"<{n}{code}") for n in range(t.max_size + 1))
-                    )
+                    table = self._structs(code, t.max_size)
                     self.emit(f"{v} = {table}[{k}].unpack({data})")
         elif item.kind in ("int", "uint") and 8 < item.bits <= HALF_TABLE_BITS:
             self.uses_x = True
             y, i = self.fresh("y"), self.fresh("i")
             high, low = half_tables(item.kind, item.bits)
+            tables = f"half_tables({item.kind!r}, {item.bits})"
             low_bits = (item.bits + 1) // 2
             # The items as one int, first item on top; each item from two tables.
             self.emit(f"{y} = x >> (q - {self.at()} - ({total}))")
+            high_name = self.src.name("H", high, f"{tables}[0]")
             self.emit(
-                f"{v} = tuple([{self.src.name('H', high)}[({y} >> ({i} + {low_bits}))"
-                f" & {len(high) - 1:#x}] + {self.src.name('L', low)}[({y} >> {i})"
+                f"{v} = tuple([{high_name}[({y} >> ({i} + {low_bits}))"
+                f" & {len(high) - 1:#x}] + {self.src.name('L', low, f'{tables}[1]')}[({y} >> {i})"
                 f" & {len(low) - 1:#x}] for {i} in range(({total}) - {item.bits}, -1,"
                 f" -{item.bits})])"
             )
@@ -527,7 +493,7 @@ class _Encoder(_Writer):
 
     def struct(self, s: Struct, base: str, tao: bool, check: bool = True) -> None:
         if check:
-            self.emit(f"if {base}.__class__ is not {self.src.name('C', s.cls)}:")
+            self.emit(f"if {base}.__class__ is not {self.src.cls(s.cls)}:")
             self.emit("    raise SlowPath")
         last = len(s.fields) - 1
         for part in _chunks(s.fields):
@@ -629,12 +595,8 @@ class _Encoder(_Writer):
             self.emit("    raise SlowPath")
             count = f"len({v})"
             if item.kind == "float" and item.bits in (16, 32):
-                singles = self.src.name(
-                    "A", tuple(struct.Struct(f"<{n}f") for n in range(t.max_size + 1))
-                )
-                raw = self.src.name(
-                    "A", tuple(struct.Struct(f"<{n}I") for n in range(t.max_size + 1))
-                )
+                singles = self._structs("f", t.max_size)
+                raw = self._structs("I", t.max_size)
                 if item.bits == 16:
                     half = HALF_EXPR.format(a="b", m="(b & 0x7FFFFFFF)", v="c")
                     fixed, slow, code = f"{half} for b, c in zip(w, {v})", "f16", "H"
@@ -651,9 +613,7 @@ class _Encoder(_Writer):
                     self.emit(f"{v} = [{fixed}]")
             else:
                 code = read_code(item)
-            packer = self.src.name(
-                "A", tuple(struct.Struct(f"<{n}{code}") for n in range(t.max_size + 1))
-            )
+            packer = self._structs(code, t.max_size)
             self.emit(f"a = a << ({bits}) | from_bytes({packer}[{count}].pack(*{v}), 'big')")
         else:
             e = self.fresh("e")
@@ -670,7 +630,7 @@ class _Encoder(_Writer):
         start = self.off
         for tag, member in enumerate(u.members):
             self.off = 0
-            cls = self.src.name("C", member.cls)
+            cls = self.src.cls(member.cls)
             with self.block(f"{'if' if tag == 0 else 'elif'} {c} is {cls}:"):
                 self.emit(f"a = a << {u.tag_bits} | {tag}")
                 inner = v if isinstance(member.type, Struct) else f"{v}.value"
@@ -684,29 +644,21 @@ class _Encoder(_Writer):
         self.off = start
 
 
-def compile_tree(schema: Struct, transport: Transport) -> FastPaths:
-    """Generate the fast paths of any struct (see the module docstring)."""
+def tree_source(schema: Struct, transport: Transport) -> _Source:
+    """Generate the fast paths of any struct (see the module docstring); a type nested too
+    deep gets a source marked ``slow``."""
     try:
-        return _compile_tree(schema, transport)
+        return _tree_source(schema, transport)
     except _TooDeep:
-        return FastPaths(_slow, _slow, _slow, None)
+        src = _Source()
+        src.slow = True
+        return src
 
 
-def _slow(*args: object) -> Any:
-    """The fast path of a type nested too deep for generated code: the generic one."""
-    raise SlowPath
-
-
-def _compile_tree(schema: Struct, transport: Transport) -> FastPaths:
+def _tree_source(schema: Struct, transport: Transport) -> _Source:
     src = _Source()
-    src.names.update(
-        FLOATS=frozenset((float, int)),
-        INTS=frozenset((int,)),
-        TB=tuple(bytes((b,)) for b in range(256)),
-        MFT=MULTI_FRAME_TAILS,
-    )
     src.lines += _Encoder(src, schema).function()
-    frame = src.name("TransferFrame", transport.frame_class)
+    frame = src.cls(transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if transport.service:
         can_id += " | dst << 8"
@@ -723,10 +675,7 @@ def _compile_tree(schema: Struct, transport: Transport) -> FastPaths:
         f"    return [tnew({frame}, (c, b[7 * i:7 * i + 7] + TB[e])) for i, e in enumerate(t)]",
     ]
     src.lines += _Decoder(src, schema, False).function("decode")
-    single = tao_min_bits(schema) <= 56  # a payload may fit one frame
-    if single:
+    src.single = tao_min_bits(schema) <= 56  # a payload may fit one frame
+    if src.single:
         src.lines += _Decoder(src, schema, True).function("decode_frame")
-    code = src.build(f"fast paths {schema.name}")
-    return FastPaths(
-        code["frames"], code["payload"], code["decode"], code["decode_frame"] if single else None
-    )
+    return src

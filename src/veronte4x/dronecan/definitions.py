@@ -1,24 +1,18 @@
 """The standard DroneCAN types as data: fields in wire order, ids, signatures.
 
-Everything here is compiled from the DSDL of the standard ``uavcan`` namespace shipped
-with the package (`veronte4x.dronecan.types.standard_definitions`): field lists, default
-data type ids, and the 64-bit data type signatures, computed from the normalized
-definitions as the DroneCAN specification (section "Data type signature") defines them.
-The classes are those of `veronte4x.dronecan.standard`. The serializers run from these
-definitions; the docs tables are generated from them too.
+Everything here was compiled ahead of time from the DSDL of the standard ``uavcan``
+namespace shipped with the package, into `veronte4x.dronecan.standard_data` (field lists,
+default data type ids, and the 64-bit data type signatures, computed from the normalized
+definitions as the DroneCAN specification (section "Data type signature") defines them):
+importing parses no DSDL. The classes are those of `veronte4x.dronecan.standard`. The
+serializers run from these definitions; the docs tables are generated from them too.
 """
 
 from __future__ import annotations
 
-from veronte4x.dronecan import standard
+from veronte4x.dronecan import standard_data
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.schema import Struct, Union
-from veronte4x.dronecan.types import (
-    DataType,
-    data_types,
-    nested_signatures,
-    standard_definitions,
-)
+from veronte4x.dronecan.schema import DataType, Struct, Union
 
 __all__ = ["DATA_TYPES", "NESTED_SIGNATURES", "NUMERIC_VALUE", "RAW_COMMAND", "VALUE", "DataType"]
 
@@ -44,25 +38,19 @@ def _order(t: DataType) -> tuple[int, str, int]:
     return first, t.full_name, t.kind.value
 
 
-_DEFINITIONS = standard_definitions()
-
-DATA_TYPES: tuple[DataType, ...] = tuple(
-    sorted(
-        data_types(
-            _DEFINITIONS,
-            _DEFINITIONS,
-            standard.CLASSES,
-            standard.ENUMS,
-            standard.UNION_MEMBERS,
-        ),
-        key=_order,
-    )
-)
+DATA_TYPES: tuple[DataType, ...] = tuple(sorted(standard_data.DATA_TYPES, key=_order))
 """Every top-level type of the standard set (messages, requests and responses): those of
 Vertiq's DroneCAN support document first, then the ground station's, then the rest by
 full name."""
 
-NESTED_SIGNATURES: dict[str, int] = nested_signatures(_DEFINITIONS)
+FAST_MODULES: dict[tuple[str, TransferKind], str] = {
+    (t.full_name, t.kind): module
+    for t, module in zip(standard_data.DATA_TYPES, standard_data.FAST_MODULES, strict=True)
+}
+"""The module of the fast paths of each of `DATA_TYPES` (`veronte4x.dronecan.fast`), by
+full name and kind."""
+
+NESTED_SIGNATURES: dict[str, int] = standard_data.NESTED_SIGNATURES
 """Signatures of the nested types (documentation only: they do not appear on the wire)."""
 
 

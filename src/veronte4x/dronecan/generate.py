@@ -1,8 +1,11 @@
 """Python source of the message classes of a set of DSDL definitions.
 
-`standard` is this module's output for the standard ``uavcan`` namespace, checked into the
-package (``python -m veronte4x.dronecan.generate`` rewrites it; a test compares). For a
-vendor namespace, `veronte4x.dronecan.load_dsdl` compiles the same source at run time.
+`standard` is this module's output for the standard ``uavcan`` namespace, and `vendor`
+for the vendor namespaces shipped beside it, checked into the package with the rest of
+what is generated ahead of time (``python -m veronte4x.dronecan.generate`` rewrites them,
+see `veronte4x.dronecan.shipped_source`; a test compares). For a namespace the user loads,
+`veronte4x.dronecan.load_dsdl` makes the same source at run time. These rules are the one
+home of the names, for both.
 
 Naming rules (documented in the DroneCAN types page):
 
@@ -683,30 +686,12 @@ def _union_source(key: str, p: Plan, done: set[str]) -> list[str]:
     return lines
 
 
-def standard_source() -> str:
-    """The source of `veronte4x.dronecan.standard`."""
-    from veronte4x.dronecan.types import standard_definitions
-
-    p = plan(standard_definitions())
-    return module_source(p, list(p.sections), _STANDARD_DOC, {})
-
-
-_STANDARD_DOC = """Every type of the standard ``uavcan`` DSDL namespace, as frozen dataclasses.
-
-GENERATED from the DSDL files shipped in ``veronte4x/dronecan/dsdl`` by
-``python -m veronte4x.dronecan.generate``: do not edit (a test regenerates and compares).
-The naming rules are those of `veronte4x.dronecan.generate`; `veronte4x.dronecan.messages`
-re-exports the classes veronte4x had before the DSDL compiler.
-"""
-
-
 def main() -> None:
-    """Rewrite ``standard.py`` next to this module."""
-    from pathlib import Path
+    """Rewrite the modules generated from the shipped DSDL
+    (`veronte4x.dronecan.shipped_source`)."""
+    from veronte4x.dronecan.shipped_source import main as write_all
 
-    target = Path(__file__).with_name("standard.py")
-    target.write_text(standard_source(), encoding="utf-8")
-    print(f"wrote {target}")
+    write_all()
 
 
 if __name__ == "__main__":

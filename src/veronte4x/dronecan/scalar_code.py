@@ -10,40 +10,26 @@ Bits are addressed in two ways. `bit_runs` places a scalar in the payload read a
 little-endian int (the groups of a chunk); `be_runs` in a piece of the stream read as one
 big-endian int (the decoder's window ``x``, the encoder's accumulator ``a``).
 
-The expressions refer to the helpers in `NAMES` by name: the namespace of the generated
-code must hold them.
+The expressions refer to the helpers of `veronte4x.dronecan.fast_base.NAMES` by name: the
+namespace of the generated code must hold them.
 """
 
 from __future__ import annotations
 
 import struct
 from collections.abc import Callable, Sequence
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, Protocol
 
-from veronte4x.dronecan.float16 import (
-    FLOAT16_VALUES,
-    float16_bits,
-    float32_bits,
-    float32_value,
-    float64_bits,
-    float64_value,
-)
 from veronte4x.dronecan.schema import Scalar
 from veronte4x.dronecan.serializer import enum_table
 
-Namer = Callable[[str, Any], str]
-"""Makes an object visible to the generated code under a fresh name (prefix, object)."""
 
-NAMES: dict[str, Any] = {
-    "F16": FLOAT16_VALUES,
-    "f16": float16_bits,
-    "f32": float32_bits,
-    "f32v": float32_value,
-    "f64": float64_bits,
-    "f64v": float64_value,
-    "from_bytes": int.from_bytes,
-}
-"""The helpers the expressions of this module call, by the name they use."""
+class Namer(Protocol):
+    """Makes an object visible to the generated code under a fresh name (prefix, object,
+    and the expression that makes it again; a `struct.Struct` or a class needs none)."""
+
+    def __call__(self, prefix: str, value: Any, expression: str | None = None) -> str: ...
+
 
 _UINT_CODES = {8: "B", 16: "H", 32: "I", 64: "Q"}
 
@@ -133,7 +119,10 @@ def gather(var: str, runs: Sequence[tuple[int, int, int]], var_bits: int) -> str
 
 def enum_value(raw: str, enum: type | None, name: Namer, bits: int) -> str:
     """An unsigned field's value from its raw bits: the enum member where there is one."""
-    return raw if enum is None else f"{name('E', enum_table(enum, bits))}[{raw}]"
+    if enum is None:
+        return raw
+    table = name("E", enum_table(enum, bits), f"enum_table({name('C', enum)}, {bits})")
+    return f"{table}[{raw}]"
 
 
 def scalar_value(t: Scalar, raw: str, enum: type | None, name: Namer) -> str:

@@ -10,6 +10,10 @@ from __future__ import annotations
 
 import builtins
 from dataclasses import dataclass
+from functools import cached_property
+
+from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.crc import signature_seed
 
 
 @dataclass(frozen=True)
@@ -191,3 +195,34 @@ def uses_tao(array: Array) -> bool:
 def tao_min_bits(t: Scalar | Array | Struct | Union) -> int:
     """The least bit length of a type as the TAO rule counts it: dynamic arrays count 0."""
     return _least_bits(t, False)
+
+
+@dataclass(frozen=True)
+class DataType:
+    """A top-level type: what goes on the wire for one class.
+
+    Attributes:
+        full_name: DSDL full name, e.g. ``uavcan.protocol.NodeStatus``.
+        kind: Message, request or response.
+        data_type_id: The default data type id.
+        signature: The 64-bit data type signature (one for both halves of a service).
+        schema: The struct definition.
+        path: The DSDL file it was compiled from ("" if none).
+    """
+
+    full_name: str
+    kind: TransferKind
+    data_type_id: int
+    signature: int
+    schema: Struct
+    path: str = ""
+
+    @cached_property
+    def crc_seed(self) -> int:
+        """The transfer CRC after the signature."""
+        return signature_seed(self.signature)
+
+    @property
+    def max_payload(self) -> int:
+        """Largest payload in bytes, with TAO."""
+        return (max_bits(self.schema, tao=True) + 7) // 8

@@ -16,11 +16,12 @@ from typing import Any, NamedTuple
 
 from veronte4x.dronecan import typeset as _typeset
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
-from veronte4x.dronecan.codec import BY_CLASS, TypeCodec, can_id_base
+from veronte4x.dronecan.codec import BY_CLASS, TypeCodec
 from veronte4x.dronecan.compiled import (
     DECODE_FALLBACK,
     ENCODE_FALLBACK,
     FramesFunction,
+    can_id_base,
 )
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame

@@ -11,12 +11,9 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
-from functools import cached_property
 from pathlib import Path
 
 from veronte4x.dronecan.can_id import TransferKind
-from veronte4x.dronecan.crc import signature_seed
 from veronte4x.dronecan.generate import attribute_names, keys
 from veronte4x.dronecan.parser import (
     ArrayType,
@@ -28,7 +25,15 @@ from veronte4x.dronecan.parser import (
     parse_namespaces,
     signature,
 )
-from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union, max_bits
+from veronte4x.dronecan.schema import (
+    Array,
+    DataType,
+    Member,
+    Scalar,
+    Struct,
+    StructField,
+    Union,
+)
 
 DSDL_ROOT = Path(__file__).with_name("dsdl")
 """The standard DSDL shipped with the package: ``uavcan/`` and its ``LICENSE``."""
@@ -40,37 +45,6 @@ def standard_definitions() -> dict[str, Definition]:
     definitions = parse_namespaces([DSDL_ROOT / "uavcan"])
     check_references(definitions)
     return definitions
-
-
-@dataclass(frozen=True)
-class DataType:
-    """A top-level type: what goes on the wire for one class.
-
-    Attributes:
-        full_name: DSDL full name, e.g. ``uavcan.protocol.NodeStatus``.
-        kind: Message, request or response.
-        data_type_id: The default data type id.
-        signature: The 64-bit data type signature (one for both halves of a service).
-        schema: The struct definition.
-        path: The DSDL file it was compiled from ("" if none).
-    """
-
-    full_name: str
-    kind: TransferKind
-    data_type_id: int
-    signature: int
-    schema: Struct
-    path: str = ""
-
-    @cached_property
-    def crc_seed(self) -> int:
-        """The transfer CRC after the signature."""
-        return signature_seed(self.signature)
-
-    @property
-    def max_payload(self) -> int:
-        """Largest payload in bytes, with TAO."""
-        return (max_bits(self.schema, tao=True) + 7) // 8
 
 
 class _Builder:
@@ -248,6 +222,41 @@ def text_attributes(
                 else:
                     found.setdefault(classes[key], set()).add(attributes[a.name])
     return {cls: frozenset(names) for cls, names in found.items()}
+
+
+UNIT = re.compile(r"\[([^\[\]]*[A-Za-z%][^\[\]]*)\]")
+"""A unit in a DSDL comment: ``# [Volt]``, ``# [meter/second]``, ``# [%]`` (a letter or
+``%`` in it: ``[0, 100]`` is a range, not a unit)."""
+
+
+def unit(attribute: Attribute) -> str | None:
+    """The unit of a field from its DSDL comment (``# [Volt]``), or None."""
+    found = UNIT.search(attribute.comment)
+    return found.group(1).strip() if found else None
+
+
+def units_of(
+    definitions: Mapping[str, Definition],
+    classes: Mapping[str, type],
+    members: Mapping[str, tuple[type, ...]],
+) -> dict[type, dict[str, str]]:
+    """The unit of each attribute whose DSDL comment names one (`unit`), by class; of a
+    union's member, its ``value``."""
+    found: dict[type, dict[str, str]] = {}
+    for d in definitions.values():
+        for key, section in zip(keys(d), d.sections, strict=True):
+            if key not in classes:
+                continue
+            attributes = attribute_names(key, section)
+            for index, a in enumerate(section.fields):
+                text = unit(a)
+                if text is None:
+                    continue
+                if section.union:
+                    found.setdefault(members[key][index], {})["value"] = text
+                else:
+                    found.setdefault(classes[key], {})[attributes[a.name]] = text
+    return found
 
 
 def nested_signatures(definitions: Mapping[str, Definition]) -> dict[str, int]:

@@ -5,9 +5,11 @@ two sets can be used side by side (two buses, two vendors). Everything that deco
 encodes DroneCAN takes one as ``types=``; without it, the module-level default is used:
 the standard set until `load_dsdl` adds namespaces to it.
 
-The classes of a vendor namespace are generated from its DSDL by the same code as
-`veronte4x.dronecan.standard` (naming rules in `veronte4x.dronecan.generate`), compiled at
-run time into a module of their own, with the source in ``linecache`` for tracebacks.
+The standard set and the vendor namespaces shipped with the package were generated ahead
+of time (`veronte4x.dronecan.shipped_source`): building them parses no DSDL. The classes of
+a namespace the user loads are generated from its DSDL by the same code (naming rules in
+`veronte4x.dronecan.generate`), into a module of their own, with the source in
+``linecache`` for tracebacks.
 """
 
 from __future__ import annotations
@@ -17,22 +19,23 @@ import linecache
 import os
 import sys
 import types as _types
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
-from veronte4x.dronecan import messages, standard
+from veronte4x.dronecan import messages, standard, standard_data
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
 from veronte4x.dronecan.generate import keys, module_source, plan
 from veronte4x.dronecan.parser import Definition, DsdlError, check_references, parse_namespaces
 from veronte4x.dronecan.types import (
+    DSDL_ROOT,
     data_types,
     is_float16,
     is_float32,
-    standard_definitions,
     text_attributes,
+    units_of,
 )
 from veronte4x.errors import argument_type_error
 
@@ -55,9 +58,12 @@ class TypeSet:
         loads: The same, as they were loaded: one tuple per `with_dsdl` (class names
             depend on what was loaded together; a set rebuilt in another process loads
             them the same way, so its classes have the same names).
-        definitions: Every parsed definition, by full name.
+        definitions: Every parsed definition, by full name (parsed on first use for the
+            sets generated ahead of time).
         text_fields: The attributes of each class that hold text
             (`veronte4x.dronecan.types.is_text`).
+        units: The unit of each attribute whose DSDL comment names one (``# [Volt]``),
+            by class.
     """
 
     def __init__(
@@ -66,16 +72,19 @@ class TypeSet:
         classes: Mapping[str, type],
         enums: Mapping[tuple[str, str], type],
         members: Mapping[str, tuple[type, ...]],
-        definitions: Mapping[str, Definition],
+        definitions: Mapping[str, Definition] | Callable[[], Mapping[str, Definition]],
         loads: tuple[tuple[Path, ...], ...],
         names: Mapping[str, str],
+        facts: Facts | None = None,
     ) -> None:
         self.codecs = codecs
         self._names = dict(names)
         self.classes: Mapping[str, type] = _types.MappingProxyType(dict(classes))
         self._enums = dict(enums)
         self._members = dict(members)
-        self.definitions: Mapping[str, Definition] = _types.MappingProxyType(dict(definitions))
+        self._parse = definitions if callable(definitions) else None
+        if not callable(definitions):
+            self._definitions = _types.MappingProxyType(dict(definitions))
         self.loads = loads
         self.roots = tuple(root for load in loads for root in load)
         self.by_class: Mapping[type, TypeCodec] = _types.MappingProxyType(
@@ -84,21 +93,39 @@ class TypeSet:
         self.by_id: Mapping[tuple[TransferKind, int], TypeCodec] = _types.MappingProxyType(
             {(c.data_type.kind, c.data_type.data_type_id): c for c in codecs}
         )
-        self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(
-            text_attributes(definitions, classes, members)
-        )
+        if facts is None:
+            facts = _facts(self.definitions, classes, members)
+        self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(facts.text)
+        self.units: Mapping[type, Mapping[str, str]] = _types.MappingProxyType(facts.units)
         for fact, found in (  # the class's facts, read by `veronte4x.values`
             ("_TEXT_FIELDS_", self.text_fields),
-            ("_FLOAT16_FIELDS_", text_attributes(definitions, classes, members, is_float16)),
-            ("_FLOAT32_FIELDS_", text_attributes(definitions, classes, members, is_float32)),
+            ("_FLOAT16_FIELDS_", facts.float16),
+            ("_FLOAT32_FIELDS_", facts.float32),
         ):
             for cls, attributes in found.items():
                 setattr(cls, fact, attributes)
+
+    @property
+    def definitions(self) -> Mapping[str, Definition]:
+        """Every definition of the set, by full name (see the class docstring)."""
+        if self._parse is not None:
+            self._definitions = _types.MappingProxyType(dict(self._parse()))
+            self._parse = None
+        return self._definitions
 
     @classmethod
     def standard(cls) -> TypeSet:
         """The standard set: every type of the ``uavcan`` namespace shipped with the package."""
         return _STANDARD
+
+    @classmethod
+    def shipped(cls) -> TypeSet:
+        """The standard set and every vendor namespace shipped with the package
+        (`veronte4x.dronecan.vendor_roots.SHIPPED`), as one load."""
+        global _SHIPPED
+        if _SHIPPED is None:
+            _SHIPPED = _shipped()
+        return _SHIPPED
 
     @property
     def data_types(self) -> tuple[DataType, ...]:
@@ -227,25 +254,88 @@ def _compile(
 
 def _load(loads: tuple[tuple[str, ...], ...]) -> TypeSet:
     """The standard set with ``loads``, one `TypeSet.with_dsdl` each (how a set is rebuilt
-    in another process)."""
+    in another process); the shipped load is the shipped set."""
     types = _STANDARD
+    if loads and loads[0] == tuple(str(r) for r in TypeSet.shipped().loads[0]):
+        types, loads = TypeSet.shipped(), loads[1:]
     for roots in loads:
         types = types.with_dsdl(*roots)
     return types
 
 
-_STANDARD = TypeSet(
-    CODECS,
-    standard.CLASSES,
-    standard.ENUMS,
-    standard.UNION_MEMBERS,
-    standard_definitions(),
-    (),
-    {
-        key: next(n for n, v in vars(standard).items() if v is cls and not n.startswith("_"))
-        for key, cls in standard.CLASSES.items()
-    },
-)
+class Facts(NamedTuple):
+    """What a set knows of each class's attributes."""
+
+    text: dict[type, frozenset[str]]
+    float16: dict[type, frozenset[str]]
+    float32: dict[type, frozenset[str]]
+    units: dict[type, dict[str, str]]
+
+
+def _facts(
+    definitions: Mapping[str, Definition],
+    classes: Mapping[str, type],
+    members: Mapping[str, tuple[type, ...]],
+) -> Facts:
+    """The facts of the classes of a set, from its definitions."""
+    return Facts(
+        text_attributes(definitions, classes, members),
+        text_attributes(definitions, classes, members, is_float16),
+        text_attributes(definitions, classes, members, is_float32),
+        units_of(definitions, classes, members),
+    )
+
+
+def _parse_shipped(roots: Iterable[Path]) -> Callable[[], dict[str, Definition]]:
+    """What parses the definitions of a set generated ahead of time, when asked for."""
+
+    def parse() -> dict[str, Definition]:
+        definitions = parse_namespaces(roots)
+        check_references(definitions)
+        return definitions
+
+    return parse
+
+
+def _generated_set(
+    codecs: tuple[TypeCodec, ...], modules: Iterable[Any], loads: tuple[tuple[Path, ...], ...]
+) -> TypeSet:
+    """A set of the class and data modules generated ahead of time: ``modules`` holds
+    (class module, data module) pairs."""
+    classes: dict[str, type] = {}
+    enums: dict[tuple[str, str], type] = {}
+    members: dict[str, tuple[type, ...]] = {}
+    names: dict[str, str] = {}
+    facts = Facts({}, {}, {}, {})
+    for classes_module, data in modules:
+        classes.update(classes_module.CLASSES)
+        enums.update(classes_module.ENUMS)
+        members.update(classes_module.UNION_MEMBERS)
+        names.update(data.CLASS_NAMES)
+        facts.text.update(data.TEXT_FIELDS)
+        facts.float16.update(data.FLOAT16_FIELDS)
+        facts.float32.update(data.FLOAT32_FIELDS)
+        facts.units.update(data.UNITS)
+    roots = [DSDL_ROOT / "uavcan", *(r for load in loads for r in load)]
+    return TypeSet(codecs, classes, enums, members, _parse_shipped(roots), loads, names, facts)
+
+
+def _shipped() -> TypeSet:
+    """The standard set and the shipped vendor namespaces (`TypeSet.shipped`)."""
+    from veronte4x.dronecan import vendor, vendor_data  # generated ahead of time
+
+    codecs = tuple(
+        TypeCodec(t, module)
+        for t, module in zip(vendor_data.DATA_TYPES, vendor_data.FAST_MODULES, strict=True)
+    )
+    loads = (tuple((DSDL_ROOT / name).resolve() for name in vendor_data.ROOTS),)
+    return _generated_set(
+        CODECS + codecs, ((standard, standard_data), (vendor, vendor_data)), loads
+    )
+
+
+_STANDARD = _generated_set(CODECS, ((standard, standard_data),), ())
+_SHIPPED: TypeSet | None = None
 
 _default = _STANDARD
 
