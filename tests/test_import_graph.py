@@ -12,14 +12,16 @@ The layers, bottom to top (a package or a module directly under ``veronte4x``):
 4. ``progress`` (needs ``extras``) and ``display`` (the HTML table builders, needs ``values``).
 5. The two protocols and the manual's data, independent of each other: ``codec`` (Veronte),
    ``dronecan`` (DroneCAN), ``variables``.
-6. What is built on one protocol: ``arbiter`` (the Veronte arbiter, on ``codec``), ``node``
+6. ``mcastbus``: the ``mcast:`` bus of pydronecan and ArduPilot SITL, on ``dronecan``'s
+   datagram, a python-can bus that ``canbus`` opens.
+7. What is built on one protocol: ``arbiter`` (the Veronte arbiter, on ``codec``), ``node``
    (what every DroneCAN node does, on ``dronecan``), ``canbus`` (CAN bus I/O for DroneCAN
    frames).
-7. The applications, independent of one another: ``capture`` (logs and live captures of
+8. The applications, independent of one another: ``capture`` (logs and live captures of
    both protocols), ``client`` (the ground station: ESCs, parameters, firmware), ``simulator``
    (a simulated ESC). A broken capture module cannot break the ESC tool, and the client and
    the simulated ESC share only ``node``.
-8. ``cli``, then ``__main__``.
+9. ``cli``, then ``__main__``.
 
 An import may only point to a lower layer; two packages of one layer never import each
 other. Imports by name (`importlib.import_module`) are outside this test: the codec's fast
@@ -44,6 +46,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("veronte4x", "extras", "values"),
     ("progress", "display"),
     ("codec", "dronecan", "variables"),
+    ("mcastbus",),
     ("arbiter", "node", "canbus"),
     ("capture", "client", "simulator"),
     ("cli",),

@@ -26,6 +26,7 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is in
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, encode
 from veronte4x.errors import Veronte4xError
+from veronte4x.mcastbus import INTERFACE, McastBus
 from veronte4x.sockets import frame_socket
 
 __all__ = [
@@ -53,8 +54,9 @@ def open_bus(
     """Open a python-can bus from python-can's own settings.
 
     Args:
-        interface: python-can interface name (``socketcan``, ``pcan``, ``udp_multicast``...);
-            None lets python-can take it from its configuration.
+        interface: python-can interface name (``socketcan``, ``pcan``, ``udp_multicast``...),
+            or ``mcast``, the bus of pydronecan and ArduPilot SITL (`veronte4x.mcastbus`,
+            its channel the bus number); None lets python-can take it from its configuration.
         channel: The interface's channel.
         bitrate: Bit rate in bit/s.
         config_file: A python-can configuration file, read before the other arguments.
@@ -80,8 +82,13 @@ def open_bus(
     settings.update({k: v for k, v in given.items() if v is not None})
     settings.update(options or {})
     where = ", ".join(f"{k} {settings[k]}" for k in ("interface", "channel") if k in settings)
+    bus: can.BusABC
     try:
-        bus = can.Bus(**settings)
+        if settings.get("interface") == INTERFACE:
+            settings.pop("interface")
+            bus = McastBus(**settings)
+        else:
+            bus = can.Bus(**settings)
     except Exception as error:  # an interface may raise anything: struct.error for hop_limit=x
         reason = str(error) or type(error).__name__
         raise BusOpenError(

@@ -107,9 +107,15 @@ def add_bus_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "-i",
         "--interface",
-        help="python-can interface: socketcan, pcan, slcan, udp_multicast, ...",
+        help="python-can interface: socketcan, pcan, slcan, udp_multicast, ...; or mcast, the "
+        "bus of pydronecan and ArduPilot SITL",
     )
-    group.add_argument("-c", "--channel", help="the interface's channel, e.g. can0 or 239.74.163.2")
+    group.add_argument(
+        "-c",
+        "--channel",
+        help="the interface's channel, e.g. can0 or 239.74.163.2; mcast: the bus number "
+        "(0, the default, is pydronecan's mcast:0)",
+    )
     group.add_argument("-b", "--bitrate", type=int, help="bit rate in bit/s (DroneCAN: 1000000)")
     group.add_argument(
         "--can-config", metavar="FILE", help="python-can configuration file ([default] section)"
