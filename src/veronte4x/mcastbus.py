@@ -20,7 +20,14 @@ import struct
 import time
 from typing import Any
 
-import can
+from veronte4x.errors import MissingExtraError
+
+try:
+    import can
+except ModuleNotFoundError as missing:  # pragma: no cover - the can extra is installed in CI
+    if missing.name != "can":
+        raise
+    raise MissingExtraError("can", "can", "veronte4x.mcastbus") from None
 
 from veronte4x.dronecan.mcast import PORT, DatagramError, McastFrame, decode, encode, group
 
