@@ -55,6 +55,14 @@ def test_wide_tables_scroll() -> None:
     assert "  - stylesheets/tables.css" in (ROOT / "mkdocs.yml").read_text()
 
 
+def test_code_in_a_table_cell_never_breaks_inside_a_word() -> None:
+    """The DroneCAN types pages cut ``uavcan.protocol.NodeSt atus`` (the theme's
+    ``word-break: break-word``): code in a cell stays on one line, the table scrolls."""
+    css = (DOCS / "stylesheets" / "tables.css").read_text()
+    rule = css[css.index("td code,") :]
+    assert "white-space: nowrap;" in rule and "word-break: keep-all;" in rule
+
+
 def test_units_in_the_generated_tables() -> None:
     types = dronecan.type_tables()
     assert "| 32 | 16 | float16 | `voltage` | V |  |" in types
