@@ -1,6 +1,7 @@
-"""Every Python snippet of the docs runs as pasted (issue 39, item 7): each fenced
-``python`` block of docs/**/*.md, alone in a fresh namespace (so it imports what it uses),
-in a directory with the examples and a demo flight as ``flight.log`` and
+"""Every snippet of the docs runs as pasted (issue 39, item 7): each fenced ``python``
+block of docs/**/*.md alone in a fresh namespace (so it imports what it uses), each
+``bash`` or ``sh`` block line by line in bash (exit code 0), in a directory with the
+examples, the demo vehicle's ``arbiter.toml`` and a demo flight as ``flight.log`` and
 ``examples/flight.log``.
 
 A block that is not meant to run alone says so on the line before its fence, with a reason
@@ -14,8 +15,11 @@ Pages whose blocks run as one session have a test of their own (`PAGE_TESTS`).""
 
 from __future__ import annotations
 
+import os
 import re
 import runpy
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -32,8 +36,12 @@ PAGE_TESTS = {
 """Pages run by a test of their own, which runs their blocks in order, in one session."""
 
 
-def _snippets() -> list[tuple[str, str | None, str]]:
-    """(page#index, marker, code) of every Python block outside `PAGE_TESTS`."""
+SHELLS = ("bash", "sh")
+"""The fence names of shell blocks."""
+
+
+def _snippets(kinds: tuple[str, ...]) -> list[tuple[str, str | None, str]]:
+    """(page#index, marker, code) of every block of these kinds outside `PAGE_TESTS`."""
     found = []
     for page in sorted(DOCS.rglob("*.md")):
         name = page.relative_to(DOCS).as_posix()
@@ -41,12 +49,17 @@ def _snippets() -> list[tuple[str, str | None, str]]:
             continue
         blocks = BLOCK.findall(page.read_text(encoding="utf-8"))
         for index, (marker, kind, code) in enumerate(blocks):
-            if kind == "python":
+            if kind in kinds:
                 found.append((f"{name}#{index}", marker or None, code))
     return found
 
 
-SNIPPETS = _snippets()
+SNIPPETS = _snippets(("python",))
+SHELL_SNIPPETS = _snippets(SHELLS)
+
+
+def _run(snippets: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
+    return [s for s in snippets if not (s[1] or "").startswith("not run")]
 
 
 def test_the_pages_with_tests_of_their_own_exist() -> None:
@@ -56,7 +69,7 @@ def test_the_pages_with_tests_of_their_own_exist() -> None:
 
 
 def test_every_marker_is_one_the_rule_knows() -> None:
-    for where, marker, _ in SNIPPETS:
+    for where, marker, _ in SNIPPETS + SHELL_SNIPPETS:
         assert marker is None or re.fullmatch(r"raises \w+|not run: .+", marker), where
 
 
@@ -72,13 +85,12 @@ def demo(tmp_path_factory: pytest.TempPathFactory) -> Path:
     make = runpy.run_path(str(ROOT / "examples" / "make_capture.py"))
     make["generate"](0.5, 15.0, 4).write(root / "flight.log")
     (examples / "flight.log").symlink_to(root / "flight.log")
+    (root / "arbiter.toml").symlink_to(ROOT / "examples" / "arbiter.toml")
     return root
 
 
 @pytest.mark.parametrize(
-    ("where", "marker", "code"),
-    [s for s in SNIPPETS if not (s[1] or "").startswith("not run")],
-    ids=[s[0] for s in SNIPPETS if not (s[1] or "").startswith("not run")],
+    ("where", "marker", "code"), _run(SNIPPETS), ids=[s[0] for s in _run(SNIPPETS)]
 )
 def test_a_snippet_runs_alone(
     where: str, marker: str | None, code: str, demo: Path, monkeypatch: pytest.MonkeyPatch
@@ -92,3 +104,26 @@ def test_a_snippet_runs_alone(
     with pytest.raises(Exception) as raised:
         exec(compiled, {"__name__": "__snippet__"})
     assert type(raised.value).__name__ == expected, where
+
+
+@pytest.mark.parametrize(
+    ("where", "marker", "code"), _run(SHELL_SNIPPETS), ids=[s[0] for s in _run(SHELL_SNIPPETS)]
+)
+def test_a_shell_snippet_runs_line_by_line(
+    where: str, marker: str | None, code: str, demo: Path
+) -> None:
+    assert marker is None, f"{where}: a shell block is run or not run"
+    environment = {
+        **os.environ,
+        "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}",
+    }
+    for line in code.splitlines():
+        done = subprocess.run(
+            ["bash", "-c", re.sub(r"^python ", f"{sys.executable} ", line)],
+            cwd=demo,
+            capture_output=True,
+            text=True,
+            env=environment,
+            check=False,
+        )
+        assert done.returncode == 0, (where, line, done.stderr)
