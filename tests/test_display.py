@@ -202,3 +202,13 @@ def test_the_span_of_a_capture_and_the_destination_of_a_service(tmp_path: Path) 
     (tmp_path / "request.log").write_text(lines)
     (record,) = capture.read(tmp_path / "request.log")
     assert ["to node", "21"] in _cells(record._repr_html_())
+
+
+def test_the_arbiter_state_shows_the_selected_autopilot_by_name() -> None:
+    from veronte4x import arbiter
+
+    model = arbiter.Arbiter(arbiter.ArbiterConfig())
+    model.receive(9, bytes.fromhex("00ff01"), 0.0)  # AP2's Ready
+    rows = _cells(model.state._repr_html_())
+    assert ["selected", "0 (AP1)", ""] in rows
+    assert _captions(model.state._repr_html_()) == ["ArbiterState"]

@@ -6,9 +6,12 @@ import datetime
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass, fields
+from typing import ClassVar
 
 from veronte4x.arbiter.machine import ArbiterPhase
+from veronte4x.codec.layouts import AUTOPILOTS
 from veronte4x.codec.messages import Flags4
+from veronte4x.display import HtmlDisplay
 from veronte4x.times import utc_datetime
 
 
@@ -133,8 +136,9 @@ class Decision:
 
 
 @dataclass(frozen=True, slots=True)
-class ArbiterState:
-    """A snapshot of the model after the last input.
+class ArbiterState(HtmlDisplay):
+    """A snapshot of the model after the last input; in Jupyter a table of its fields, the
+    selected autopilot's name beside its index (``1 (AP2)``).
 
     Attributes:
         time: Timestamp of the last input, or ``None`` before the first one.
@@ -161,3 +165,5 @@ class ArbiterState:
     selected: int
     checks: SystemChecks
     last_decision: Decision | None
+    _NAMED_FIELDS_: ClassVar[Mapping[str, tuple[str, ...]]] = {"selected": AUTOPILOTS}
+    """The autopilot's name beside ``selected`` (`veronte4x.values.name_of`)."""
