@@ -159,7 +159,7 @@ def test_replay_times_iso_or_relative(flight: Path) -> None:
     config = str(EXAMPLES / "arbiter.toml")
     iso = run("replay", str(flight), "--config", config).stdout.splitlines()
     assert iso[0] == "2025-11-21T15:00:00.000085Z  mode        boot: Idle, checking the system"
-    relative = run("replay", str(flight), "--config", config, "--relative-time").stdout
+    relative = run("replay", str(flight), "--config", config, "--time", "relative").stdout
     assert relative.splitlines()[0] == "0.000000  mode        boot: Idle, checking the system"
     switch = next(line for line in relative.splitlines() if "switch      AP2 -> AP3" in line)
     assert switch.startswith("15.08")  # AP2 falls silent at 15 s

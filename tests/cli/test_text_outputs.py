@@ -105,10 +105,24 @@ def test_a_clock_since_boot_stays_seconds_in_every_output(boot: Path, tmp_path: 
     ]
 
 
-def test_the_old_relative_time_option_names_the_new_one(unix: Path) -> None:
-    result = _run("decode", str(unix), "--relative-time")
+@pytest.mark.parametrize("command", ["decode", "replay"])
+def test_the_old_relative_time_option_names_the_new_one(unix: Path, command: str) -> None:
+    result = _run(command, str(unix), "--relative-time")
     assert (result.returncode, result.stdout) == (2, "")
     assert result.stderr == "veronte4x: --relative-time is now --time relative\n"
+
+
+def test_replay_takes_the_same_time_forms(unix: Path) -> None:
+    forms = {}
+    for form in ("timestamp", "relative", "seconds"):
+        result = _run("replay", str(unix), "--time", form)
+        assert result.returncode == 0, result.stderr
+        forms[form] = result.stdout.splitlines()[0].split()[0]
+    assert forms == {
+        "timestamp": "2025-11-21T15:00:00.000000Z",
+        "relative": "0.000000",
+        "seconds": "1763737200.000000",
+    }
 
 
 def test_can_ids_print_as_candump_prints_them_and_line_up(unix: Path) -> None:

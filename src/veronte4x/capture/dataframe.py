@@ -72,7 +72,7 @@ def to_dataframe(
         channel: Keep only this interface's frames.
         time: ``timestamp`` (the default): times in UTC, a pandas datetime column;
             ``relative``: float seconds from the first timestamped record, as
-            ``candump -t z`` and ``veronte4x decode --relative-time`` show them;
+            ``candump -t z`` and ``veronte4x decode --time relative`` show them;
             ``seconds``: float seconds as logged (Unix time for candump).
 
     Raises:

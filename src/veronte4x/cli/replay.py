@@ -12,9 +12,15 @@ from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_FINDINGS, EXIT_NOT_IN_TIME_ORDER, EXIT_OK
 from veronte4x.cli.notices import InputWatch, channel_hint
-from veronte4x.cli.options import add_capture_options, add_live_options, live, open_frame_source
+from veronte4x.cli.options import (
+    add_capture_options,
+    add_live_options,
+    add_renamed_option,
+    live,
+    open_frame_source,
+)
 from veronte4x.errors import SourceError
-from veronte4x.times import format_time
+from veronte4x.times import TIME_FORMS, TimeForm, format_time
 from veronte4x.words import counted
 
 if TYPE_CHECKING:
@@ -34,10 +40,13 @@ def add_parser(commands: Any) -> None:
         "are assumed and disagreements may come from them)",
     )
     parser.add_argument(
-        "--relative-time",
-        action="store_true",
-        help="times in seconds since the first frame (default: ISO 8601 for Unix time)",
+        "--time",
+        choices=TIME_FORMS,
+        default="timestamp",
+        help="timestamp: ISO 8601 in UTC to the microsecond (the default; a clock since boot "
+        "as seconds), relative: seconds since the first frame, seconds: as logged",
     )
+    add_renamed_option(parser, "--relative-time", "--time relative")
     add_capture_options(parser)
     add_live_options(parser)
     parser.set_defaults(run=run)
@@ -62,7 +71,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             arbiter_id=bus_map.arbiter_id,
             extended_ids=bus_map.extended,
         )
-    clock = _Clock(args.relative_time)
+    clock = _Clock(args.time)
     watch = InputWatch(None if live(args) else args.file)
     frames = (
         (clock.see(time), can_id, data)
@@ -185,10 +194,10 @@ NO_CONFIG = (
 
 
 class _Clock:
-    """The timeline's times: ISO 8601 for Unix time, or seconds since the first frame."""
+    """The timeline's times, as ``--time`` says (`veronte4x.cli.decode`'s forms)."""
 
-    def __init__(self, relative: bool) -> None:
-        self.relative = relative
+    def __init__(self, form: TimeForm) -> None:
+        self.form = form
         self.start: float | None = None
 
     def see(self, stamp: float) -> float:
@@ -199,4 +208,6 @@ class _Clock:
 
     def format(self, stamp: float) -> str:
         """A time of the timeline, as people read it."""
-        return format_time(stamp, self.start if self.relative else None)
+        if self.form == "seconds":
+            return f"{stamp:.6f}"
+        return format_time(stamp, self.start if self.form == "relative" else None)
