@@ -53,6 +53,7 @@ def test_an_autopilot_index_shows_its_name_in_a_message_and_in_a_record(
     log.write_text(f"(1.0) can0 0FF#{codec.encode(score).hex()}\n", encoding="ascii")
     [record] = capture.read(log)
     assert ["autopilot", shown, ""] in _cells(record._repr_html_())
+    assert ["CAN ID", "0FF"] in _cells(record._repr_html_())  # as candump prints it
     assert ["score", "0.5", ""] in _cells(score._repr_html_())  # a float has no name
 
 
@@ -212,3 +213,11 @@ def test_the_arbiter_state_shows_the_selected_autopilot_by_name() -> None:
     rows = _cells(model.state._repr_html_())
     assert ["selected", "0 (AP1)", ""] in rows
     assert _captions(model.state._repr_html_()) == ["ArbiterState"]
+
+
+def test_a_dronecan_record_shows_its_29_bit_id_as_candump_does(tmp_path: Path) -> None:
+    log = tmp_path / "node.log"
+    log.write_text("(1.0) can0 00015514#00000000000000C0\n", encoding="ascii")
+    [record] = capture.read(log)
+    assert record.kind == "NodeStatus"
+    assert ["CAN ID", "00015514"] in _cells(record._repr_html_())

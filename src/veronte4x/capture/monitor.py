@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.rates import STOP_PERIODS, Stream
-from veronte4x.capture.readable import format_message, hex_bytes, shown
+from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, shown
 from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
 from veronte4x.words import counted
@@ -287,18 +287,6 @@ class MonitorState:
         lost = None if self.loss is None else self.loss.text()
         text = f"{counted(self.records, 'record')}, {self.errors} bad{span}"
         return text + (f", {lost}" if lost else "")
-
-
-def can_id_text(can_id: int, extended: bool = False) -> str:
-    """A CAN ID as candump prints it: upper-case hex, 3 digits for an 11-bit ID, 8 for a
-    29-bit one (``extended``, or any ID above 0x7FF) with its leading zeros (can-utils
-    ``lib.c``, ``sprint_long_canframe``).
-
-    Examples:
-        >>> can_id_text(0x8), can_id_text(0x5040601), can_id_text(0x10, extended=True)
-        ('008', '05040601', '00000010')
-    """
-    return f"{can_id:08X}" if extended or can_id > 0x7FF else f"{can_id:03X}"
 
 
 def seconds_text(value: float) -> str:

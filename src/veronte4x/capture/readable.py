@@ -18,6 +18,7 @@ from veronte4x.units import unit
 from veronte4x.values import float_bits, readable, shown, text_fields
 
 __all__ = [
+    "can_id_text",
     "float_bits",
     "format_message",
     "format_time",
@@ -26,6 +27,18 @@ __all__ = [
     "readable_fields",
     "shown",
 ]
+
+
+def can_id_text(can_id: int, extended: bool = False) -> str:
+    """A CAN ID as candump prints it: upper-case hex, 3 digits for an 11-bit ID, 8 for a
+    29-bit one (``extended``, or any ID above 0x7FF) with its leading zeros (can-utils
+    ``lib.c``, ``sprint_long_canframe``).
+
+    Examples:
+        >>> can_id_text(0x8), can_id_text(0x5040601), can_id_text(0x10, extended=True)
+        ('008', '05040601', '00000010')
+    """
+    return f"{can_id:08X}" if extended or can_id > 0x7FF else f"{can_id:03X}"
 
 
 def hex_bytes(data: bytes) -> str:

@@ -7,6 +7,7 @@ from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES, Role
+from veronte4x.capture.readable import can_id_text
 from veronte4x.codegen import compile_source
 from veronte4x.display import Cells, message_html, side_by_side, table
 from veronte4x.times import format_time
@@ -80,7 +81,7 @@ def record_html(record: Record) -> str:
     head: list[Cells] = [
         ("time", format_time(record.timestamp)),
         ("channel", record.channel),
-        ("CAN ID", f"0x{record.can_id:X}"),
+        ("CAN ID", can_id_text(record.can_id, record.role is Role.DRONECAN)),
         ("sender", record.sender),
     ]
     if record.destination_node_id is not None:

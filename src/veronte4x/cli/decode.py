@@ -12,7 +12,7 @@ boot) as its seconds; ``relative``, seconds since the first timestamped record, 
 microsecond; ``seconds``, the timestamp as the reader gives it (in JSON lines and CSV the
 float itself, its ``repr``: the exact value where a reader holds more than microseconds).
 
-CAN IDs as candump prints them (`veronte4x.capture.monitor.can_id_text`): 3 hex digits for
+CAN IDs as candump prints them (`veronte4x.capture.readable.can_id_text`): 3 hex digits for
 an 11-bit ID, 8 for a 29-bit one, upper case; in the text output, from the first 29-bit ID
 on, an 11-bit ID is indented to the width of a 29-bit one so that the columns after it line
 up, as candump indents them once it has seen one (can-utils ``candump.c``).
@@ -29,8 +29,7 @@ from typing import Any, TextIO
 
 from veronte4x import capture
 from veronte4x.capture.busmap import BusMap, Role
-from veronte4x.capture.monitor import can_id_text
-from veronte4x.capture.readable import format_message, hex_bytes, readable_fields
+from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, readable_fields
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats

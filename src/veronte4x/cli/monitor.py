@@ -39,11 +39,11 @@ from veronte4x.capture.monitor import (
     TIMING_HEADS,
     MonitorState,
     Row,
-    can_id_text,
     rate_text,
     render_text,
     timing_texts,
 )
+from veronte4x.capture.readable import can_id_text
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.cli import play, rates
