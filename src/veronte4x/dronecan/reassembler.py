@@ -134,6 +134,13 @@ def _join(report: ProblemReport | None, outcome: Outcome) -> Outcome:
 
 
 _NEVER = -math.inf
+_HEAD = 5
+"""Payload bytes libcanard keeps in a receiver state before it takes buffer blocks
+(``CANARD_MULTIFRAME_RX_PAYLOAD_HEAD_SIZE`` with its default 32-byte blocks): a first frame
+restarts a transfer in progress only once more are stored."""
+_SWITCH_DELAY = 1.0
+"""libcanard's ``IFACE_SWITCH_DELAY_USEC`` in seconds: a first frame this long after the
+latest accepted one restarts its session unless its transfer id is behind the expected one."""
 _LOST = 32
 """Added to a transfer id in `_Session.closed` when that transfer was lost (not delivered)."""
 
@@ -146,10 +153,12 @@ class _Session:
 
     __slots__ = (
         "buffer",
+        "carried",
         "closed",
         "closed_at",
         "codec",
         "counted",
+        "crc",
         "crc_seed",
         "data_type_id",
         "decode_frame",
@@ -157,6 +166,7 @@ class _Session:
         "kind",
         "last",
         "limit",
+        "orphan",
         "start",
         "tid",
         "toggle",
@@ -191,6 +201,11 @@ class _Session:
         self.closed = -1
         self.closed_at = _NEVER
         self.counted = False  # the transfer in progress was already counted as lost
+        self.orphan = False  # libcanard's rules: the payload stored has no first frame
+        # libcanard's CRC registers, which only a first frame resets: the CRC computed up to
+        # the latest frame stored (None: not known) and the one its first frame carried.
+        self.crc: int | None = 0
+        self.carried = 0
 
 
 def _shared(codec: TypeCodec) -> tuple[Any, ...]:
@@ -274,11 +289,18 @@ class Reassembler:
         max_reports: How many recent `ProblemReport` entries `problems` keeps.
         types: The DroneCAN types to decode (`TypeSet`); None for the default set
             (the standard one, plus what `veronte4x.dronecan.load_dsdl` added).
+        strict: False (the default): accept and refuse frames as libcanard's
+            ``canardHandleRxFrame`` does, so a node whose transfer id never advances is
+            heard at every single frame. True: veronte4x's own stricter rules, which refuse
+            a single frame repeating the transfer id delivered last within the timeout,
+            drop a transfer at its first toggle error and count each lost transfer once
+            (docs/dronecan/reassembly.md, "Transfer acceptance").
 
     Attributes:
         counts: Number of each `Problem` so far.
         problems: The most recent problem reports, oldest first.
         reported: Number of problem reports so far.
+        strict: Whether it follows veronte4x's strict rules rather than libcanard's.
         transfers: Number of transfers delivered.
         types: The `TypeSet` it decodes with.
     """
@@ -289,6 +311,7 @@ class Reassembler:
         max_sessions: int = 1024,
         max_reports: int = 256,
         types: TypeSet | None = None,
+        strict: bool = False,
     ) -> None:
         types = types_or_default(types, "Reassembler")
         found = _STANDARD_TYPES if types is TypeSet.standard() else _SESSION_TYPES.get(types)
@@ -308,6 +331,9 @@ class Reassembler:
                 raise argument_type_error("Reassembler", name, "an int", value)
             if value < 1:
                 raise ValueError(f"Reassembler: {name} must be at least 1, not {value}")
+        if not isinstance(strict, bool):
+            raise argument_type_error("Reassembler", "strict", "a bool", strict)
+        self.strict = strict
         self.timeout = transfer_id_timeout
         self.max_sessions = max_sessions
         self.counts: dict[Problem, int] = dict.fromkeys(Problem, 0)
@@ -476,7 +502,13 @@ class Reassembler:
         session = self._sessions.get(can_id & 0xFFFFFF)
         evicted = None
         if session is None:
+            if not tail & 0x80 and not self.strict:  # libcanard makes states at first frames
+                return self._problem(
+                    Problem.MISSED_START, can_id, data, timestamp, f"transfer id {tail & 0x1F}"
+                )
             session, evicted = self._new_session(shared, can_id, timestamp)
+        if not self.strict:
+            return _join(evicted, self._receive(session, can_id, data, tail, timestamp))
         if tail & 0x80:
             return _join(evicted, self._start(session, can_id, data, tail, timestamp))
         return _join(evicted, self._continue(session, can_id, data, tail, timestamp))
@@ -547,11 +579,14 @@ class Reassembler:
         return session, evicted
 
     def _lost(self, session: _Session, can_id: int, tid: int, timestamp: float) -> None:
-        """Remember transfer ``tid`` as lost: its other frames are now silent."""
+        """Remember transfer ``tid`` as lost: under the strict rules its other frames are now
+        silent; under libcanard's the session expects the next transfer id."""
         session.buffer = None
+        session.toggle = 0
+        session.counted = session.orphan = False
         session.closed = tid + _LOST
         session.closed_at = timestamp
-        session.tid = -1
+        session.tid = (tid + 1) & 0x1F if not self.strict else -1
         self._touch(can_id & 0xFFFFFF)
 
     def _abandon(
@@ -582,6 +617,102 @@ class Reassembler:
         if session.closed == tid + _LOST:
             return timestamp - session.closed_at <= self.timeout
         return False
+
+    def _receive(
+        self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
+    ) -> Outcome:
+        """libcanard's state update (``canardHandleRxFrame``, for one interface), with its
+        refusals as problems.
+
+        The state is libcanard's: the expected transfer id (`_Session.tid`), the expected
+        toggle, the time of the latest accepted first frame (`_Session.start`) and the
+        payload stored. ``orphan`` marks a payload no first frame began: libcanard appends
+        frames matching the expected toggle and transfer id to its state even then, and
+        the last of them fails the CRC. ``counted`` marks a payload not to deliver (an
+        orphan, or one past the type's largest, reported once as `PAYLOAD_TOO_LONG` and
+        no longer stored: libcanard stores it and its decoder refuses it).
+        """
+        tid = tail & 0x1F
+        first = tail & 0x80
+        key = can_id & 0xFFFFFF
+        since = ts - session.start
+        buffer = session.buffer
+        stored = 0 if buffer is None else len(buffer) - (0 if session.orphan else 2)
+        ended = None
+        if (
+            since > self.timeout
+            or (first and ((session.tid - tid) & 0x1F > 1 or stored > _HEAD))
+            or (first and since > _SWITCH_DELAY and (tid - session.tid) & 0x1F < 16)
+        ):
+            if buffer is not None and not session.counted:
+                problem = Problem.TIMEOUT if since > self.timeout else Problem.INTERRUPTED
+                ended = self._report(problem, can_id, data, ts, f"transfer id {session.tid}")
+            buffer = session.buffer = None
+            session.counted = session.orphan = False
+            session.toggle = 0
+            session.tid = tid
+            session.closed_at = ts
+            self._touch(key)
+            if not first:
+                session.tid = (tid + 1) & 0x1F
+                missed = self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
+                return _join(ended, Problems((missed,), None))
+        if first and tail & 0x40:  # a single frame: delivered whatever its toggle
+            if buffer is not None and not session.counted:
+                ended = self._report(
+                    Problem.INTERRUPTED, can_id, data, ts, f"transfer id {session.tid}"
+                )
+            session.buffer = None
+            session.counted = session.orphan = False
+            session.start = ts
+            session.last = data
+            self._touch(key)
+            transfer_id, session.tid = session.tid, tid  # `_deliver` moves on from ``tid``
+            outcome = self._deliver(session, can_id, data[:-1], tid, ts, False)
+            session.tid = (transfer_id + 1) & 0x1F  # libcanard: the expected id, plus one
+            return _join(ended, outcome)
+        if tail & 0x20 != session.toggle:
+            problem = Problem.DUPLICATE_FRAME if data == session.last else Problem.TOGGLE_ERROR
+            detail = f"toggle {tail >> 5 & 1}, expected {session.toggle >> 5}"
+            return _join(ended, self._problem(problem, can_id, data, ts, detail))
+        if tid != session.tid:
+            detail = f"transfer id {tid}, expected {session.tid}"
+            return _join(
+                ended, self._problem(Problem.UNEXPECTED_TRANSFER_ID, can_id, data, ts, detail)
+            )
+        if first:
+            if len(data) <= 3:
+                return _join(
+                    ended,
+                    self._problem(Problem.MALFORMED_FRAME, can_id, data, ts, "short first frame"),
+                )
+            if buffer is not None and not session.counted:
+                ended = self._report(Problem.INTERRUPTED, can_id, data, ts, f"transfer id {tid}")
+            session.buffer = bytearray(data[:-1])
+            session.counted = session.orphan = False
+            session.start = ts
+            session.last = data
+            session.toggle ^= 0x20  # 0 unless it restarts a transfer at an odd frame
+            self._touch(key)
+            return _join(ended, None)
+        if buffer is None:
+            buffer = session.buffer = bytearray()
+            session.counted = session.orphan = True
+        if len(buffer) + len(data) <= session.limit:
+            buffer += data[:-1]
+        else:  # libcanard stores it all: its CRC is no longer known
+            session.crc = None
+            if not session.counted:
+                session.counted = True
+                report = self._report(
+                    Problem.PAYLOAD_TOO_LONG, can_id, data, ts, f"transfer id {tid}"
+                )
+                ended = ended or report  # a restart leaves no payload: never both
+        session.last = data
+        if not tail & 0x40:
+            session.toggle ^= 0x20
+            return _join(ended, None)
+        return _join(ended, self._complete(session, can_id, data, tid))
 
     def _start(self, session: _Session, can_id: int, data: bytes, tail: int, ts: float) -> Outcome:
         """A first frame: close what is in progress, then begin a transfer unless the
@@ -694,8 +825,11 @@ class Reassembler:
         """The last frame of a multi-frame transfer arrived: check the CRC and decode."""
         buffer = session.buffer
         assert buffer is not None
+        if session.counted and not self.strict:  # libcanard's rules: see `_receive`
+            return self._complete_orphan(session, can_id, data, tid)
         payload = bytes(buffer[2:])
         crc = crc_hqx(payload, session.crc_seed)
+        session.crc, session.carried = crc, buffer[0] | buffer[1] << 8
         if crc != buffer[0] | buffer[1] << 8:
             report = None
             if not session.counted:
@@ -709,15 +843,33 @@ class Reassembler:
             self._lost(session, can_id, tid, session.start)
             return _join(report, None)
         session.buffer = None
+        session.toggle = 0
         try:
             message = session.decode_payload(payload)
         except (*DECODE_FALLBACK, DecodeError):  # bad length or content: the checked path decides
             return self._deliver(session, can_id, payload, tid, session.start, session.counted)
         session.closed = tid
         session.tid = (tid + 1) & 0x1F
-        session.counted = False
+        session.counted = session.orphan = False
         self.transfers += 1
         return received(message, can_id, tid, session.start, session.kind, session.data_type_id)
+
+    def _complete_orphan(self, session: _Session, can_id: int, data: Any, tid: int) -> Outcome:
+        """libcanard's rules: the last frame of a payload not to deliver. One past its type's
+        largest was reported already. One no first frame began is checked as libcanard
+        does, against the CRC registers its state kept from before: it fails, unless they
+        happen to match (an empty last frame right after a transfer that passed its CRC)."""
+        payload = bytes(session.buffer or b"")
+        base = session.crc
+        session.crc = None if base is None or not session.orphan else crc_hqx(payload, base)
+        if not session.orphan:
+            self._lost(session, can_id, tid, session.start)
+            return None
+        if session.crc == session.carried:
+            return self._deliver(session, can_id, payload, tid, session.start, False)
+        report = self._report(Problem.CRC_MISMATCH, can_id, data, session.start, "no first frame")
+        self._lost(session, can_id, tid, session.start)
+        return Problems((report,), None)
 
     def _deliver(
         self, session: _Session, can_id: int, payload: Any, tid: int, ts: float, counted: bool
@@ -732,7 +884,8 @@ class Reassembler:
             self._lost(session, can_id, tid, ts)
             return _join(report, None)
         session.buffer = None
-        session.counted = False
+        session.toggle = 0
+        session.counted = session.orphan = False
         session.closed = tid
         session.tid = (tid + 1) & 0x1F
         self.transfers += 1
