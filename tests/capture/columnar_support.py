@@ -268,7 +268,8 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
                 found, payload = BY_CLASS[type(message)], None
                 key = (source, hash(type(message)))
             tid = tids.get(key, draw(st.integers(0, 31)))
-            tid = (tid + draw(st.sampled_from([0, 1, 1, 1, 1, 2]))) % 32
+            # The next transfer id, or the same (a stuck node), one more, or one less.
+            tid = (tid + draw(st.sampled_from([0, 1, 1, 1, 1, 2, 31]))) % 32
             tids[key] = tid
             destination = draw(nodes) if service else None
             if payload is None:
@@ -328,7 +329,8 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
     stamp = 1_700_000_000.0
     human = draw(st.sampled_from([0.0, 0.2]))
     for item in frames:
-        stamp += draw(st.sampled_from([0.0, 0.001, 0.01, 0.5, 3.0]))
+        # 1.5 s: past libcanard's interface switch delay (1 s), within the timeout (2 s).
+        stamp += draw(st.sampled_from([0.0, 0.001, 0.01, 0.5, 1.5, 3.0]))
         if isinstance(item, str):
             lines.append(item)
             continue

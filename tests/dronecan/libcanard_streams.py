@@ -47,10 +47,14 @@ def _raw(count: int) -> Any:
 
 
 def _frames(message: Any, tid: int, node: int = 10) -> list[tuple[int, bytes]]:
-    return [(f.can_id, f.data) for f in dronecan.encode(message, source_node_id=node, transfer_id=tid)]
+    return [
+        (f.can_id, f.data) for f in dronecan.encode(message, source_node_id=node, transfer_id=tid)
+    ]
 
 
-def _timed(transfers: list[list[tuple[int, bytes]]], step: int, start: int = 1_000_000) -> list[Frame]:
+def _timed(
+    transfers: list[list[tuple[int, bytes]]], step: int, start: int = 1_000_000
+) -> list[Frame]:
     """Frames one after the other, ``step`` microseconds apart, on interface 0."""
     frames = [frame for transfer in transfers for frame in transfer]
     return [(start + step * n, 0, can_id, data) for n, (can_id, data) in enumerate(frames)]
@@ -69,17 +73,27 @@ def _hand_made() -> dict[str, list[Frame]]:
         # A node whose transfer id never advances (the StaticPressure capture of issue 35).
         "stuck single frames": _timed([_frames(_status(i), 0) for i in range(17)], 20_000),
         "stuck multi-frame": _timed([_frames(_esc(i), 4) for i in range(5)], 20_000),
-        "stuck multi-frame past the timeout": _timed([_frames(_esc(i), 4) for i in range(4)], 700_000),
+        "stuck multi-frame past the timeout": _timed(
+            [_frames(_esc(i), 4) for i in range(4)], 700_000
+        ),
         "stuck single and multi-frame": _timed(
             [_frames(_raw(n), 2) for n in (2, 7, 3, 7, 7, 1)], 10_000
         ),
-        "the same single frame again": _timed([_frames(_status(1), 2)] * 3 + [_frames(_status(2), 3)], 10_000),
+        "the same single frame again": _timed(
+            [_frames(_status(1), 2)] * 3 + [_frames(_status(2), 3)], 10_000
+        ),
         "in order": _timed([_frames(_esc(i), i % 32) for i in range(40)], 1_000),
         "wrapped": _timed([_frames(_status(i), (30 + i) % 32) for i in range(6)], 10_000),
         "wrapped multi-frame": _timed([_frames(_esc(i), (29 + i) % 32) for i in range(6)], 10_000),
-        "skipped by one": _timed([_frames(_esc(0), 3), _frames(_esc(1), 5), _frames(_esc(2), 6)], 10_000),
-        "skipped by two": _timed([_frames(_esc(0), 3), _frames(_esc(1), 6), _frames(_esc(2), 7)], 10_000),
-        "backwards by one": _timed([_frames(_esc(0), 8), _frames(_esc(1), 7), _frames(_esc(2), 8)], 10_000),
+        "skipped by one": _timed(
+            [_frames(_esc(0), 3), _frames(_esc(1), 5), _frames(_esc(2), 6)], 10_000
+        ),
+        "skipped by two": _timed(
+            [_frames(_esc(0), 3), _frames(_esc(1), 6), _frames(_esc(2), 7)], 10_000
+        ),
+        "backwards by one": _timed(
+            [_frames(_esc(0), 8), _frames(_esc(1), 7), _frames(_esc(2), 8)], 10_000
+        ),
         "backwards by one single frames": _timed(
             [_frames(_status(0), 8), _frames(_status(1), 7), _frames(_status(2), 8)], 10_000
         ),
@@ -91,12 +105,18 @@ def _hand_made() -> dict[str, list[Frame]]:
         "dropped last frame": _timed([esc[0][:2], esc[1], esc[2]], 10_000),
         "toggle flipped": _timed([[esc[0][0], _toggled(esc[0][1]), esc[0][2]], esc[1]], 10_000),
         "toggle set on a first frame": _timed([[_toggled(esc[0][0]), *esc[0][1:]], esc[1]], 10_000),
-        "toggle set on a single frame": _timed([[_toggled(_frames(_status(0), 1)[0])], _frames(_status(1), 2)], 10_000),
-        "frame out of order then resent": _timed([[long[0], long[2], long[1], long[2], long[3], long[4]]], 10_000),
+        "toggle set on a single frame": _timed(
+            [[_toggled(_frames(_status(0), 1)[0])], _frames(_status(1), 2)], 10_000
+        ),
+        "frame out of order then resent": _timed(
+            [[long[0], long[2], long[1], long[2], long[3], long[4]]], 10_000
+        ),
         "interrupted after one frame, same id": _timed([esc[0][:1], _frames(_esc(2), 5)], 10_000),
         "interrupted after two frames, same id": _timed([esc[0][:2], _frames(_esc(2), 5)], 10_000),
         "interrupted by the next id": _timed([esc[0][:2], esc[1], esc[2]], 10_000),
-        "interrupted by a single frame": _timed([raw7[:1], _frames(_raw(2), 9), _frames(_raw(7), 10)], 10_000),
+        "interrupted by a single frame": _timed(
+            [raw7[:1], _frames(_raw(2), 9), _frames(_raw(7), 10)], 10_000
+        ),
         "timeout within a transfer": [
             (1_000_000, 0, *esc[0][0]),
             (1_010_000, 0, *esc[0][1]),
@@ -111,7 +131,9 @@ def _hand_made() -> dict[str, list[Frame]]:
         "interleaved sessions": [
             (1_000_000 + 1_000 * i, 0, *f)
             for i, f in enumerate(
-                x for pair in zip(_frames(_esc(0), 1, 10), _frames(_esc(1), 1, 11), strict=True) for x in pair
+                x
+                for pair in zip(_frames(_esc(0), 1, 10), _frames(_esc(1), 1, 11), strict=True)
+                for x in pair
             )
         ],
         "interleaved transfers of one session": _timed(
@@ -119,7 +141,10 @@ def _hand_made() -> dict[str, list[Frame]]:
         ),
         # Interfaces: veronte4x takes each channel as a bus of its own (see the test).
         "interface switch": [
-            *[(1_000_000 + 10_000 * i, 0, *f) for i, f in enumerate(_frames(_status(0), 0) + _frames(_status(1), 1))],
+            *[
+                (1_000_000 + 10_000 * i, 0, *f)
+                for i, f in enumerate(_frames(_status(0), 0) + _frames(_status(1), 1))
+            ],
             *[(1_100_000 + 10_000 * i, 1, *f) for i, f in enumerate(_frames(_status(2), 2))],
             *[(2_500_000 + 10_000 * i, 1, *f) for i, f in enumerate(_frames(_status(3), 3))],
         ],
@@ -134,7 +159,9 @@ def _hand_made() -> dict[str, list[Frame]]:
 def _faulted(seed: int, rate: float, sessions: int) -> list[Frame]:
     """A stream of `fault_streams` (services among its sessions), ``rate`` of it damaged."""
     _, wire, times = fault_stream(seed, 160, rate, sessions)
-    return [(round(t * 1e6) + 1_000_000, 0, f.can_id, f.data) for f, t in zip(wire, times, strict=True)]
+    return [
+        (round(t * 1e6) + 1_000_000, 0, f.can_id, f.data) for f, t in zip(wire, times, strict=True)
+    ]
 
 
 def streams() -> dict[str, list[Frame]]:
@@ -179,10 +206,11 @@ def _fed(stream: list[Frame], interface: int | None) -> list[int]:
 
 def harness_input(named: dict[str, list[Frame]]) -> str:
     """The harness's input: the accepted types, then each stream once per run."""
+    types = [c.data_type for c in {*BY_ID.values(), *BY_CLASS.values()}]
     lines = sorted(
-        f"sig {c.data_type.data_type_id} {LIBCANARD_KIND[c.data_type.kind]} {c.data_type.signature:x}"
-        for c in {*BY_ID.values(), *BY_CLASS.values()}
-        if c.data_type.full_name.startswith("uavcan.")
+        f"sig {t.data_type_id} {LIBCANARD_KIND[t.kind]} {t.signature:x}"
+        for t in types
+        if t.full_name.startswith("uavcan.")
     )
     for stream in named.values():
         for node, interface in _runs(stream):
@@ -209,10 +237,16 @@ def vectors(named: dict[str, list[Frame]], output: str, commit: str, note: str) 
             for n in _fed(stream, run[1]):
                 fields = lines.pop(0).split()
                 code = int(fields[1])
-                results[run][n] = [code, int(fields[3]), fields[5] if len(fields) > 5 else ""] if len(fields) > 2 else [code]
+                results[run][n] = (
+                    [code, int(fields[3]), fields[5] if len(fields) > 5 else ""]
+                    if len(fields) > 2
+                    else [code]
+                )
         found[name] = {
             "frames": [[t, i, c, d.hex()] for t, i, c, d in stream],
-            "libcanard": [results[_destination(c), None][n] for n, (_, _, c, _) in enumerate(stream)],
+            "libcanard": [
+                results[_destination(c), None][n] for n, (_, _, c, _) in enumerate(stream)
+            ],
         }
         if any(run[1] is not None for run in results):
             found[name]["interfaces_apart"] = [
@@ -227,4 +261,6 @@ if __name__ == "__main__":
         sys.stdout.write(harness_input(streams()))
     else:
         document = vectors(streams(), Path(sys.argv[2]).read_text(), sys.argv[3], sys.argv[4])
-        VECTORS.write_text(json.dumps(document, separators=(",", ":")).replace('],[', '],\n[') + "\n")
+        VECTORS.write_text(
+            json.dumps(document, separators=(",", ":")).replace("],[", "],\n[") + "\n"
+        )

@@ -115,7 +115,7 @@ def test_a_clean_transfer_is_the_transfer_itself() -> None:
 
 
 def test_one_problem() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     ((can_id, data),) = _frames(NODE_STATUS)
     r.push(can_id, data, 1.0)
     outcome = r.push(can_id, data, 1.001)

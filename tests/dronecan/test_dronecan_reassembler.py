@@ -125,7 +125,7 @@ def test_every_good_transfer_comes_out_and_every_broken_one_counts_once(
     sessions: list[tuple[int, int, list[Any]]], faults: list[int], order: list[int]
 ) -> None:
     stream, expected, broken = _stream(sessions, faults, order)
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     out = []
     for i, (can_id, data) in enumerate(stream):
         t = r.feed(can_id, data, timestamp=i * 0.001)
@@ -172,7 +172,7 @@ def test_crc_corruption_is_counted_once() -> None:
 
 
 def test_flipped_toggle_is_counted_once() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     frames = _frames(dronecan.RawCommand(tuple(range(20))), 10, 3)
     flipped = frames[2][1][:-1] + bytes((frames[2][1][-1] ^ 0x20,))
     frames[2] = (frames[2][0], flipped)
@@ -199,7 +199,7 @@ def test_transfer_id_wraps_past_31() -> None:
 
 
 def test_duplicate_single_frame_is_ignored_then_accepted_after_the_timeout() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     ((c, d),) = _frames(dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 0), 5, 7)
     assert r.feed(c, d, timestamp=0.0) is not None
     assert r.feed(c, d, timestamp=1.0) is None
@@ -209,7 +209,7 @@ def test_duplicate_single_frame_is_ignored_then_accepted_after_the_timeout() -> 
 
 
 def test_incomplete_transfer_times_out() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     frames = _frames(dronecan.EscStatus(1, 1.0, 2.0, 3.0, 4, 5, 6), 10, 0)
     assert r.feed(*frames[0], timestamp=0.0) is None
     assert r.feed(*frames[1], timestamp=2.1) is None  # too late: the transfer timed out
@@ -307,7 +307,7 @@ def test_arbitrary_frames_never_raise(frames: list[tuple[int, bytes, float]]) ->
 def test_a_lost_transfer_0_is_not_taken_for_a_delivered_transfer_31() -> None:
     """A lost transfer is marked apart from every transfer id (0..31): transfer 31 right
     after a lost transfer 0 is new, not a repeat of what was delivered last."""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     status = dronecan.EscStatus(1, 1.0, 2.0, 3.0, 4, 5, 6)
     delivered = [r.feed(c, d, timestamp=0.0) for c, d in _frames(status, 10, 30)]
     assert delivered[-1] is not None and delivered[-1].transfer_id == 30

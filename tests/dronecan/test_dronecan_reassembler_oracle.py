@@ -228,7 +228,7 @@ def test_a_small_session_table_stays_bounded(
 
 def test_a_stray_end_frame_does_not_hide_the_next_transfer() -> None:
     """The minimal case: tid 5 delivered, a lone end frame with tid 6, then an intact tid 6."""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     ((can_id, five),) = [
         (f.can_id, f.data)
         for f in dronecan.encode(

@@ -21,7 +21,7 @@ OK, OPERATIONAL = dronecan.Health.OK, dronecan.Mode.OPERATIONAL
 @pytest.mark.parametrize("seed", range(10))
 def test_no_intact_transfer_is_lost_that_could_be_recovered(seed: int, rate: float) -> None:
     sent, wire, times = stream(seed, 4000, rate)
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     results = [r.feed(f.can_id, f.data, t) for f, t in zip(wire, times, strict=True)]
     verdict = check(sent, wire, times, results)
     assert verdict.lost == []
@@ -46,7 +46,7 @@ SEVERAL = dronecan.RawCommand(tuple(range(-8, 8)))
 def test_a_multi_frame_transfer_after_a_single_frame_with_its_transfer_id_is_delivered() -> None:
     """Transfer 6 (one frame) arrives with a tail bit flipped to say 7; the real transfer 7
     (several frames, each naming 7, with a CRC) is taken, not refused as a replay."""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     (damaged,) = _frames(ONE_FRAME, 6)
     assert r.feed(*_with_tid(damaged, 7), 0.0) is not None  # a single frame: no CRC to tell
     frames = _frames(SEVERAL, 7)
@@ -60,7 +60,7 @@ def test_a_multi_frame_transfer_after_a_single_frame_with_its_transfer_id_is_del
 
 
 def test_such_a_transfer_that_fails_its_crc_is_counted_once_and_not_delivered() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     (single,) = _frames(ONE_FRAME, 7)
     assert r.feed(*single, 0.0) is not None
     frames = _frames(SEVERAL, 7)
@@ -74,7 +74,7 @@ def test_such_a_transfer_that_fails_its_crc_is_counted_once_and_not_delivered() 
 def test_a_multi_frame_transfer_again_after_a_multi_frame_one_is_still_a_replay() -> None:
     """Only a single frame delivered last can be the damaged one; two multi-frame transfers
     with one transfer id within the timeout are a replay, whatever their content."""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     first = _frames(SEVERAL, 7)
     assert [r.feed(c, d, 0.0) for c, d in first][-1] is not None
     other = _frames(dronecan.RawCommand(tuple(range(16))), 7)
@@ -84,7 +84,7 @@ def test_a_multi_frame_transfer_again_after_a_multi_frame_one_is_still_a_replay(
 
 def test_a_single_frame_after_a_single_frame_with_its_transfer_id_is_refused() -> None:
     """The case no receiver can recover: which of the two frames is the damaged one?"""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     (damaged,) = _frames(dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 0), 6)
     can_id, data = _with_tid(damaged, 7)
     assert r.feed(can_id, data, 0.0) is not None

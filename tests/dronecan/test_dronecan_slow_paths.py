@@ -42,7 +42,7 @@ def _lost(r: dronecan.Reassembler) -> int:
 
 
 def test_a_short_first_frame_loses_its_transfer_once() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     (c, first), *rest = _frames(ESC)
     assert r.feed(c, first[:5] + first[-1:], 0.0) is None
     assert [r.feed(c, d, 0.0) for c, d in rest] == [None, None]  # silent, not MISSED_START
@@ -54,7 +54,7 @@ def test_a_short_first_frame_loses_its_transfer_once() -> None:
 
 
 def test_a_short_middle_frame_loses_its_transfer_once() -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     frames = _frames(ESC)
     c, middle = frames[1]
     assert r.feed(*frames[0], 0.0) is None
@@ -237,7 +237,7 @@ def test_ordinary_messages_take_the_fast_paths(
 @pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
 def test_timeouts_at_any_epoch(epoch: float, kind: type) -> None:
     """Capture timestamps are often seconds since 1970: only differences may count."""
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     frames = _frames(ESC, tid=3)
     assert [r.feed(c, kind(d), epoch + 0.5 * i) for i, (c, d) in enumerate(frames)][-1]
     late = _frames(ESC, tid=4)
@@ -464,7 +464,7 @@ def test_the_defaults() -> None:
 
 @pytest.mark.parametrize("kind", [bytes, bytearray], ids=["fast", "checked"])
 def test_a_transfer_repeated_at_exactly_the_timeout_is_still_a_repeat(kind: type) -> None:
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     ((can_id, frame),) = _frames(dronecan.NodeStatus(1, OK, OPERATIONAL, 0, 7))
     data = kind(frame)
     assert r.feed(can_id, data, 10.0) is not None

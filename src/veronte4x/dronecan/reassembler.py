@@ -1,23 +1,33 @@
 """Sans-IO reassembly of DroneCAN transfers from a stream of frames.
 
 One receiver state ("session") per transfer descriptor: source node, destination node,
-data type and kind, i.e. the CAN ID without its priority bits. The state update follows
-spec 4.1 "Reception" for a single interface, with one rule on top: every transfer whose
-frames all arrive, once, in order and uncorrupted, with no other frame of its session in
-between and within the transfer-ID timeout, is delivered, unless it repeats the transfer
-id delivered last in its session within the timeout (2 s after the first frame of that
-transfer, by the frames' own timestamps); a multi-frame transfer repeating the id of a
-single frame is taken all the same, since its CRC vouches for it and nothing vouches for
-the single frame (docs/dronecan/reassembly.md, "What cannot be recovered"). So a stray
-frame never makes the next intact transfer look like a repeat. Time comes only from the
-``timestamp`` argument; nothing reads a clock.
+data type and kind, i.e. the CAN ID without its priority bits (spec 4.1 "Reception",
+"State variables"). Two sets of rules decide which frames a session takes:
+
+- by default libcanard's, exactly as its ``canardHandleRxFrame`` on one interface
+  (`Reassembler._receive`): a single frame is always delivered, a multi-frame transfer
+  repeating the transfer id delivered last within the timeout is refused, a frame with an
+  unexpected toggle bit or transfer id is ignored and the transfer goes on;
+- with ``strict=True`` veronte4x's own: every transfer whose frames all arrive, once, in
+  order and uncorrupted, with no other frame of its session in between and within the
+  transfer-ID timeout, is delivered, unless it repeats the transfer id delivered last in
+  its session within the timeout (2 s after the first frame of that transfer, by the
+  frames' own timestamps); a multi-frame transfer repeating the id of a single frame is
+  taken all the same, since its CRC vouches for it and nothing vouches for the single
+  frame (docs/dronecan/reassembly.md, "What cannot be recovered"). So a stray frame never
+  makes the next intact transfer look like a repeat.
+
+Time comes only from the ``timestamp`` argument; nothing reads a clock
+(docs/dronecan/reassembly.md, "Transfer acceptance").
 
 Bus data never raises: what happened to a frame is a value. `Reassembler.push` returns
 the transfer the frame completes, or the `Problems` it caused (with the transfer it
 completed all the same, if any), or None; `Reassembler.feed` returns just the transfer.
 Each problem is also counted in `counts` and recorded as a `ProblemReport` in the bounded
-`problems`. A transfer that started or was seen but never came out is counted exactly
-once, under the first problem that broke it; the rest of its frames are dropped silently.
+`problems`. Under the strict rules a transfer that started or was seen but never came out
+is counted exactly once, under the first problem that broke it, and the rest of its frames
+are dropped silently; under libcanard's each refused frame is reported, and a transfer a
+restart drops as `Problem.INTERRUPTED` or `Problem.TIMEOUT`.
 Arguments of the wrong type are caller mistakes, not bus data: they raise `TypeError`
 (see `Reassembler.push`).
 
@@ -51,7 +61,8 @@ class Problem(enum.Enum):
 
     The members in `TRANSFER_PROBLEMS` mean a transfer was lost, and each lost
     transfer is counted once, under the first problem that hit it. The others mean a frame
-    was ignored and nothing was lost.
+    was ignored and nothing was lost (under the default rules, libcanard's, a frame refused
+    is reported whether or not its transfer was lost already).
     """
 
     MALFORMED_FRAME = (
@@ -63,12 +74,13 @@ class Problem(enum.Enum):
     MISSED_START = "A frame of a transfer whose first frame was not seen."
     TOGGLE_ERROR = (
         "A toggle bit out of sequence that is not a repeat: a frame was lost or reordered; "
-        "the transfer is dropped."
+        "the strict rules drop the transfer, libcanard's ignore the frame."
     )
     DUPLICATE_FRAME = "A repeat of the frame accepted just before; ignored."
     UNEXPECTED_TRANSFER_ID = (
-        "A first frame repeating the transfer id delivered last in its session, within the "
-        "transfer-ID timeout, with other content (a replayed transfer); ignored."
+        "A frame with another transfer id than its session expects, within the transfer-ID "
+        "timeout: a first frame repeating the one delivered last (under the strict rules, "
+        "with other content: a replayed transfer), or a stray frame; ignored."
     )
     CRC_MISMATCH = "The transfer CRC does not match the payload."
     TIMEOUT = "A transfer still incomplete after the transfer-ID timeout."
@@ -90,7 +102,8 @@ TRANSFER_PROBLEMS: frozenset[Problem] = frozenset(
         Problem.EVICTED,
     }
 )
-"""Problems that lose a transfer (MALFORMED_FRAME also does when it hits one in progress)."""
+"""Problems that lose a transfer under the strict rules (MALFORMED_FRAME also does when it
+hits one in progress); under libcanard's, TOGGLE_ERROR and MISSED_START only ignore a frame."""
 
 
 class ProblemReport(NamedTuple):

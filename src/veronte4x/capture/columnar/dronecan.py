@@ -8,8 +8,12 @@ alternate from 0, the transfer id holds within a transfer and differs from the p
 transfer's unless the transfer-ID timeout passed in between, every frame but the last of a
 transfer has 8 bytes, no frame comes later than the timeout after its transfer's first, and
 the payload fits the type. On such a session the reassembler delivers every transfer (or
-reports its CRC mismatch or bad payload) and nothing else, which is what this module
-computes. Every frame of any other session, and every frame the reassembler refuses on its
+reports its CRC mismatch or bad payload) and nothing else, under libcanard's rules (its
+default, the ones `capture.read` uses) as under its strict ones, which is what this module
+computes: with every transfer taken, libcanard's expected transfer id is always the one
+after the previous transfer's, a first frame differing from that one is a restart, and a
+repeat within the timeout (which libcanard refuses for a multi-frame transfer but takes
+for a single frame, moving its expected id on) makes the session irregular. Every frame of any other session, and every frame the reassembler refuses on its
 own (no tail byte, anonymous, unknown type, node id 0), goes to the reassembler itself.
 Sessions interact only through the reassembler's table of `MAX_SESSIONS` sessions per
 channel, which drops the session whose latest transfer began first when a new one comes
