@@ -1,26 +1,27 @@
 """DroneCAN transfers, column-wise: sessions checked, frames joined and CRCs computed for
 whole columns, payloads decoded field by field for all transfers of a type at once.
 
-The per-frame `veronte4x.dronecan.Reassembler` is the reference. A session (a channel and a
-CAN ID without its priority bits, as the reassembler keys them) is *regular* when its
+The per-frame `veronte4x.dronecan.Reassembler` is the reference. A session (a channel and
+a CAN ID without its priority bits, as the reassembler keys them) is *regular* when its
 frames form whole transfers one after the other: a start frame opens each, toggles
 alternate from 0, the transfer id holds within a transfer and differs from the previous
 transfer's unless the transfer-ID timeout passed in between, every frame but the last of a
-transfer has 8 bytes, no frame comes later than the timeout after its transfer's first, and
-the payload fits the type. On such a session the reassembler delivers every transfer (or
-reports its CRC mismatch or bad payload) and nothing else, under libcanard's rules (its
-default, the ones `capture.read` uses) as under its strict ones, which is what this module
-computes: with every transfer taken, libcanard's expected transfer id is always the one
-after the previous transfer's, a first frame differing from that one is a restart, and a
-repeat within the timeout (which libcanard refuses for a multi-frame transfer but takes
-for a single frame, moving its expected id on) makes the session irregular. Every frame of any other session, and every frame the reassembler refuses on its
-own (no tail byte, anonymous, unknown type, node id 0), goes to the reassembler itself.
-Sessions interact only through the reassembler's table of `MAX_SESSIONS` sessions per
-channel, which drops the session whose latest transfer began first when a new one comes
-(see `table_safe`): dropping a regular session between two of its transfers changes
-nothing, so any number of sessions stays column-wise as long as no drop can reach a
-transfer in progress or an irregular session; a channel where one might goes to the
-reassembler whole.
+transfer has 8 bytes, no frame comes later than the timeout after its transfer's first,
+and the payload fits the type. On such a session the reassembler delivers every transfer
+(or reports its CRC mismatch or bad payload) and nothing else, under libcanard's rules
+(its default, the ones `capture.read` uses) as under its strict ones, which is what this
+module computes: with every transfer taken, libcanard's expected transfer id is the one
+after the previous transfer's, a first frame with another (not the previous one) restarts
+the session harmlessly between transfers, and a repeat within the timeout (libcanard
+refuses it for a multi-frame transfer, takes it for a single frame and moves its expected
+id on) makes the session irregular. Every frame of any other session, and every frame the
+reassembler refuses on its own (no tail byte, anonymous, unknown type, node id 0), goes to
+the reassembler itself. Sessions interact only through the reassembler's table of
+`MAX_SESSIONS` sessions per channel, which drops the session whose latest transfer began
+first when a new one comes (see `table_safe`): dropping a regular session between two of
+its transfers changes nothing, so any number of sessions stays column-wise as long as no
+drop can reach a transfer in progress or an irregular session; a channel where one might
+goes to the reassembler whole.
 """
 
 from __future__ import annotations
