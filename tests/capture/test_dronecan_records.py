@@ -37,6 +37,7 @@ def test_problems_are_records_and_the_stream_goes_on() -> None:
     good = _frames(3.0, 24, 8)
     records = list(CaptureDecoder().decode(missed + corrupt + good))
     assert [(r.error, r.node_id) for r in records] == [
+        ("missed start", 22),  # each frame libcanard refuses is one record
         ("missed start", 22),
         ("crc mismatch", 23),
         (None, 24),
