@@ -161,6 +161,7 @@ def test_nothing_is_sent_for_an_allocation_the_table_could_not_store() -> None:
             protocol.receive(can_id, data, time_ + LISTEN_FIRST), time_ + LISTEN_FIRST
         )
     assert protocol.take_frames() == []
+    assert len(allocator.table) == 0  # as the file has it
 
 
 def test_the_allocatee_sends_the_specification_example_requests() -> None:

@@ -249,7 +249,8 @@ class Allocator:
 
         Raises:
             NodeIdConflictError: Another node sends with the allocator's node id.
-            Exception: What ``store`` raised (nothing of that change was sent).
+            Exception: What ``store`` raised (nothing of that change was sent, and the
+                table is as before it).
         """
         out: list[AllocationEvent] = []
         for event in events:
@@ -272,9 +273,12 @@ class Allocator:
             out.append(conflict)
 
     def _grow(self, entry: Entry) -> None:
-        self.table.add(entry)
+        """Add an entry: stored first, so that a failing store leaves the table as the file
+        has it."""
+        grown = AllocationTable((*self.table, entry))
         if self.store is not None:
-            self.store(self.table)
+            self.store(grown)
+        self.table.add(entry)
 
     # -- the nodes on the bus ---------------------------------------------------------------
 

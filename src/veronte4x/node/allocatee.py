@@ -5,8 +5,8 @@ The allocatee's side of DroneCAN dynamic node ID allocation (DroneCAN specificat
 comments of ``uavcan.protocol.dynamic_node_id.Allocation``). It sends its 16-byte unique id
 in anonymous single-frame requests of 6, 6 and 4 bytes, each after the server has answered
 the one before with the unique id so far, and takes the node id of the answer that carries
-its whole unique id. Intervals are drawn from the DSDL's ranges with the ``rng`` given
-(seeded from the unique id unless told otherwise), so a run is reproducible.
+its whole unique id. Intervals are drawn from the DSDL's ranges with the ``rng`` given (by
+default a `random.Random` started from the unique id), so a run is reproducible.
 
 Nothing here reads a clock: every time is an argument.
 """
@@ -86,7 +86,7 @@ class Allocatee:
         unique_id: The node's 16-byte unique id (the one its GetNodeInfo reports).
         preferred_node_id: The node id it asks for, 1..125, or 0 for any.
         start_time: When it starts (rule A: the first request comes a random period later).
-        rng: The source of its random intervals; None: one seeded with ``unique_id``.
+        rng: The source of its random intervals; None: ``random.Random(unique_id)``.
         priority: CAN priority of its requests.
 
     Raises:
