@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import asyncio
 import os
+import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
@@ -79,6 +80,28 @@ from veronte4x.dronecan.messages import GetNodeInfoResponse, Opcode, RawCommand,
 __all__ = ["AsyncBusClient", "AsyncCommandStream"]
 
 T = TypeVar("T")
+
+
+if sys.version_info >= (3, 11):
+
+    async def _next(queue: asyncio.Queue[can.Message], timeout: float) -> can.Message | None:
+        """The next message within ``timeout`` s, else None. A cancellation is never lost:
+        ``asyncio.wait_for`` drops one that comes as the message does, before Python 3.12
+        (CPython gh-86296), and the operation being cancelled went on."""
+        try:
+            async with asyncio.timeout(timeout):
+                return await queue.get()
+        except TimeoutError:
+            return None
+
+else:  # pragma: no cover - Python 3.10 has no asyncio.timeout
+
+    async def _next(queue: asyncio.Queue[can.Message], timeout: float) -> can.Message | None:
+        """The next message within ``timeout`` s, else None."""
+        try:
+            return await asyncio.wait_for(queue.get(), timeout=timeout)
+        except asyncio.TimeoutError:
+            return None
 
 
 class AsyncBusClient(BusAdapter):
@@ -152,13 +175,7 @@ class AsyncBusClient(BusAdapter):
         """
         reader = self._started()
         async with self._reading:  # one reader at a time: frames are fed in bus order
-            message: can.Message | None
-            try:
-                message = await asyncio.wait_for(
-                    reader.buffer.get(), timeout=self.wait_time(max_wait)
-                )
-            except asyncio.TimeoutError:
-                message = None
+            message = await _next(reader.buffer, self.wait_time(max_wait))
             return self.receive(self._waiting(message))
 
     async def run(self, operation: Operation[T]) -> T:
