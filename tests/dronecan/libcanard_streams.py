@@ -71,7 +71,9 @@ def _hand_made() -> dict[str, list[Frame]]:
     long = _frames(_raw(16), 3)  # five frames
     return {
         # A node whose transfer id never advances (the StaticPressure capture of issue 35).
-        "stuck single frames": _timed([_frames(_status(i), 0) for i in range(17)], 20_000),
+        "stuck single frames": _timed(
+            [_frames(dronecan.StaticPressure(101_325.0 + i, 1.0), 0) for i in range(17)], 20_000
+        ),
         "stuck multi-frame": _timed([_frames(_esc(i), 4) for i in range(5)], 20_000),
         "stuck multi-frame past the timeout": _timed(
             [_frames(_esc(i), 4) for i in range(4)], 700_000

@@ -121,7 +121,7 @@ def _count(stream: dict[str, Any], **options: Any) -> int:
 
 
 def test_a_node_whose_transfer_id_never_advances_is_heard_at_every_frame() -> None:
-    """Issue 35: StaticPressure-like frames, all tail 0xC0, 20 ms apart."""
+    """Issue 35: StaticPressure frames, all with tail 0xC0, 20 ms apart."""
     stream = STREAMS["stuck single frames"]
     assert {data[-2:] for _, _, _, data in stream["frames"]} == {"c0"}
     assert _count(stream) == 17
