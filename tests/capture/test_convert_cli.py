@@ -46,7 +46,7 @@ def test_usage_errors_exit_2_with_one_line(tmp_path: Path) -> None:
     result = convert(str(FLIGHT), "--to", "xlsx", str(tmp_path))
     assert (result.returncode, result.stderr) == (
         2,
-        "veronte4x: cannot convert to 'xlsx': the formats are parquet, csv\n",
+        "veronte4x: cannot convert to 'xlsx': the formats are parquet, csv, pydronecan\n",
     )
     missing = tmp_path / "missing.log"
     result = convert(str(FLIGHT), str(missing), "--to", "parquet", str(tmp_path / "out"))

@@ -142,9 +142,9 @@ def test_the_unknown_name_every_format_tried_by_content(tmp_path: Path) -> None:
         registry.unregister("sniffed")
     assert str(raised.value) == (
         f"{other}: in no format veronte4x knows: its content is not candump or gvret or "
-        "dataflash or sniffed, and its suffix is none of .log, .txt, .candump, .asc, .bin, "
-        ".blf, .csv, .db, .mf4, .sniffed, .trc; rename it to the suffix of its format, or "
-        "convert it to candump text"
+        "dataflash or pydronecan or sniffed, and its suffix is none of .log, .txt, .candump, "
+        ".asc, .bin, .blf, .csv, .db, .mf4, .sniffed, .trc; rename it to the suffix of its "
+        "format, or convert it to candump text"
     )
 
 

@@ -48,7 +48,8 @@ def test_resolve_by_suffix_then_by_content(tmp_path: Path) -> None:
     other = tmp_path / "notes.md"
     other.write_text("# not a capture\n")
     with pytest.raises(
-        SourceError, match="its content is not candump or gvret or dataflash, and its suffix"
+        SourceError,
+        match="its content is not candump or gvret or dataflash or pydronecan, and its suffix",
     ):
         capture.read(other)
     garbled = tmp_path / "garbled"

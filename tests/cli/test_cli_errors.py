@@ -51,7 +51,7 @@ def test_an_unknown_format_is_a_usage_error(tmp_path: Path) -> None:
     assert result.returncode == 2
     assert first_error_line(result) == (
         f"veronte4x: {path}: in no format veronte4x knows: its content is not candump or gvret or "
-        "dataflash, "
+        "dataflash or pydronecan, "
         "and its suffix is none of .log, .txt, .candump, .asc, .bin, .blf, .csv, .db, .mf4, .trc; "
         "rename it to the suffix of its format, or convert it to candump text"
     )

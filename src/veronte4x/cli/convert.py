@@ -8,14 +8,14 @@ from typing import Any
 
 from veronte4x import capture
 from veronte4x.capture.busmap import TEXT_FORMS, BusMap
-from veronte4x.cli import aligned
+from veronte4x.cli import aligned, pydronecan_out
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import tell
 from veronte4x.cli.options import add_capture_options, add_renamed_option
 from veronte4x.extras import require
 from veronte4x.times import TIME_FORMS
 
-FORMATS = ("parquet", "csv")
+FORMATS = ("parquet", "csv", "pydronecan")
 """What ``--to`` writes."""
 
 
@@ -32,8 +32,9 @@ def add_parser(commands: Any) -> None:
         nargs=2,
         required=True,
         metavar=("FORMAT", "OUT_DIR"),
-        help="the format and where: parquet and the dataset's directory, or csv and a file "
-        "(with --every or --on)",
+        help="the format and where: parquet and the dataset's directory, csv and a file "
+        "(with --every or --on), or pydronecan and a file (the frames, as pydronecan's "
+        "fileout: driver writes them)",
     )
     parser.add_argument(
         "--scheduler",
@@ -73,6 +74,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         return EXIT_USAGE
     if format_ == "csv":
         return aligned.run_csv(args, bus_map, out_dir)
+    if format_ == "pydronecan":
+        return pydronecan_out.run(args, out_dir)
     client = None
     if args.scheduler:
         distributed = require("distributed", "dask", "--scheduler")

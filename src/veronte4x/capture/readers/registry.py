@@ -246,6 +246,7 @@ _PYTHON_CAN = "veronte4x.capture.readers.pythoncan"
 _MF4 = "veronte4x.capture.columnar.mf4"
 _GVRET = "veronte4x.capture.readers.gvret"
 _DATAFLASH = "veronte4x.capture.readers.dataflash"
+_PYDRONECAN = "veronte4x.capture.readers.pydronecan"
 
 register(
     Reader(
@@ -271,3 +272,4 @@ register(
 )
 register(Reader("gvret", (".csv",), f"{_GVRET}:frames", sniff=f"{_GVRET}:sniff"))
 register(Reader("dataflash", (".bin",), f"{_DATAFLASH}:frames", sniff=f"{_DATAFLASH}:sniff"))
+register(Reader("pydronecan", (), f"{_PYDRONECAN}:frames", sniff=f"{_PYDRONECAN}:sniff"))
