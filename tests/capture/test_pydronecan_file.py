@@ -15,6 +15,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from tests.capture.columnar_support import assert_same_tables
 from veronte4x import capture
 from veronte4x.capture.frames import BadLine, Frame, Truncation
 from veronte4x.capture.readers.pydronecan import parse_pydronecan, record, write
@@ -57,6 +58,7 @@ def test_the_same_frames_and_records_as_in_candump_form(tmp_path: Path) -> None:
     assert list(capture.open_frames(path)) == same
     expected = [r._replace(channel="") for r in capture.read(EXAMPLE)]
     assert list(capture.read(path)) == expected
+    assert_same_tables(capture.read_tables(path), capture.tables_from_records(expected))
 
 
 frames = st.builds(
