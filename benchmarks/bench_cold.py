@@ -19,6 +19,8 @@ average (1 minute) before and after it. The sections:
 - ``DSDL``: ``load_dsdl`` of every vendor root namespace shipped under
   ``src/veronte4x/dronecan/dsdl/`` (each alone, then all at once) and of the `dronecan`
   package's own ``ardupilot`` tree as a user's namespace, against ``import dronecan``;
+- ``first transfer``: in a fresh process, one transfer of each type of the default set
+  decoded by ``decode_frames``, each the first use of its type (the median and slowest);
 - ``monitor``: ``veronte4x monitor FILE --speed 1`` on the vehicle bus (played back at the
   capture's pace): the wall time from the start to the first table that lists every stream
   of the run, and how far that table's capture time (its header) lags the wall clock.
@@ -137,12 +139,44 @@ def child_import_dronecan() -> int:
     return sum(not name.startswith("uavcan.") for name in names)
 
 
-CHILDREN: dict[str, Callable[..., int]] = {
+def child_first_transfers() -> str:
+    """Decode one transfer of each type of the default set, each the type's first use after
+    import (its frames made by the generic serializer, which leaves the fast paths
+    untouched); the median and slowest in microseconds, the slowest type, the types."""
+    from veronte4x import dronecan
+    from veronte4x.dronecan.compiled import can_id_base
+    from veronte4x.dronecan.crc import crc16
+    from veronte4x.dronecan.tail import SINGLE_FRAME_MAX, split_payload
+
+    timings = []
+    for codec in dronecan.default_types().codecs:
+        data_type = codec.data_type
+        payload = codec.generic.encode(data_type.schema.cls())
+        can_id = 16 << 24 | can_id_base(data_type) | 10
+        if data_type.kind is not dronecan.TransferKind.MESSAGE:
+            can_id |= 20 << 8
+        if len(payload) <= SINGLE_FRAME_MAX:
+            frames = [(can_id, payload + b"\xc0")]
+        else:
+            chunks = split_payload(payload, crc16(payload, codec.crc_seed), 0)
+            frames = [(can_id, data) for data in chunks]
+        start = time.perf_counter()
+        dronecan.decode_frames(frames)
+        timings.append(
+            (time.perf_counter() - start, f"{data_type.full_name} {data_type.kind.name}")
+        )
+    slowest = max(timings)
+    median = statistics.median(t for t, _ in timings)
+    return f"{median * 1e6:.0f} {slowest[0] * 1e6:.0f} {slowest[1]} {len(timings)}"
+
+
+CHILDREN: dict[str, Callable[..., object]] = {
     "read_tables": child_read_tables,
     "pydronecan": child_pydronecan,
     "cantools": child_cantools,
     "load_dsdl": child_load_dsdl,
     "import_dronecan": child_import_dronecan,
+    "first_transfers": child_first_transfers,
 }
 
 
@@ -287,6 +321,26 @@ def dsdl(runs: int) -> None:
         print(f"| {name} | {types[name]} | {seconds:.2f} | {reference / seconds:.2f}x |")
 
 
+def first_transfers(runs: int) -> None:
+    """The first transfer of each type of the default set after import, in fresh processes."""
+    before = load()
+    found = [
+        subprocess.run(
+            child("first_transfers"), capture_output=True, text=True, check=True, cwd=ROOT
+        ).stdout.split()
+        for _ in range(runs)
+    ]
+    print(f"\n## first transfer of each type ({runs} processes, load {before} -> {load()})\n")
+    medians_us = statistics.median(float(f[0]) for f in found)
+    slowest = max(found, key=lambda f: float(f[1]))
+    print("| types | median ms | slowest ms | slowest type |")
+    print("|---:|---:|---:|---|")
+    print(
+        f"| {found[0][-1]} | {medians_us / 1e3:.2f} | {float(slowest[1]) / 1e3:.2f}"
+        f" | {' '.join(slowest[2:-1])} |"
+    )
+
+
 def monitor_run(path: Path) -> list[tuple[float, float, int]]:
     """Each table of one ``monitor --speed 1`` run: (wall s since start, capture s, rows)."""
     start = time.perf_counter()
@@ -347,6 +401,7 @@ def main() -> None:
         imports(runs)
         decoding(Path(folder), sizes, runs)
         dsdl(runs)
+        first_transfers(runs)
         monitoring(Path(folder), max(sizes), runs)
 
 

@@ -4,9 +4,23 @@ Hypothesis runs without a deadline: a deadline is a timed assertion, and the sui
 pass on a loaded machine (two cores shared by several test runs). This is the only place
 a deadline is set; no test passes ``deadline=`` of its own (``tests/test_suite_settings.py``
 checks both).
+
+The default DroneCAN type set reads the user's vendor DSDL roots
+(`veronte4x.dronecan.vendor_roots.find_roots`: ``VERONTE4X_DSDL_PATH`` and two directories
+of the home directory): the suite, and every process it starts, runs with none of them, in
+an empty home directory of its own, so that no result depends on the machine's user.
 """
 
+import atexit
+import os
+import shutil
+import tempfile
+
 from hypothesis import settings
+
+os.environ.pop("VERONTE4X_DSDL_PATH", None)
+os.environ["HOME"] = tempfile.mkdtemp(prefix="veronte4x-tests-home-")
+atexit.register(shutil.rmtree, os.environ["HOME"], True)
 
 settings.register_profile("veronte4x", deadline=None)
 settings.register_profile(

@@ -71,7 +71,8 @@ def _run(scratch: Path, *args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [sys.executable, *args],
         cwd=scratch,
-        env={"PYTHONPATH": str(scratch / "src"), "PATH": "/usr/bin:/bin"},
+        # HOME: the scratch directory, whose vendor DSDL directories are none
+        env={"PYTHONPATH": str(scratch / "src"), "PATH": "/usr/bin:/bin", "HOME": str(scratch)},
         capture_output=True,
         text=True,
         timeout=_TIMEOUT,
@@ -306,6 +307,48 @@ def test_adding_a_log_format(scratch: Path) -> None:
     same = _run(scratch, "-m", "veronte4x", "decode", "capture.log")
     assert decoded.stdout == same.stdout  # bad lines are counted, not shown
     assert "NodeStatus" in decoded.stdout and "3 bad" in decoded.stderr
+
+
+_DSDL_BLOCK = re.compile(r"^( *)```text\n *# (\S+): new file\n(.*?)^\1```", re.M | re.S)
+
+_DRONECAN_TYPE_CHECK = """
+import dataclasses, importlib, sys
+from veronte4x import dronecan
+from veronte4x.dronecan import codec, compiled
+
+types = dronecan.default_types()
+Beat = types["ardupilot.example.Beat"]
+assert Beat.__name__ == "Beat" and Beat._FLOAT16_FIELDS_ == {"voltage"}
+assert Beat._TEXT_FIELDS_ == {"name"}
+beat = Beat(counter=7, voltage=12.5, name=b"pump")
+found = types.by_class[Beat]
+assert found.fast_module == "veronte4x.dronecan.fast.ardupilot_example_Beat"
+assert found.data_type.data_type_id == 20990
+assert types.units[Beat] == {"voltage": "Volt"}
+frames = dronecan.encode(beat, source_node_id=9, transfer_id=3)
+assert dronecan.decode_frames(frames).message == beat
+assert sys.modules[found.fast_module]  # the generated fast paths, compiled by nobody
+print("ok")
+"""
+
+
+def test_adding_a_dronecan_type(scratch: Path) -> None:
+    text = PAGE.read_text()
+    start = text.index("## Adding a DroneCAN type\n")
+    section = text[start : text.index("\n## ", start + 1)]
+    (indent, path, code), *more = _DSDL_BLOCK.findall(section)
+    assert not more
+    target = scratch / path
+    target.parent.mkdir(parents=True)
+    target.write_text(
+        textwrap.dedent("".join(line[len(indent) :] for line in code.splitlines(True)))
+    )
+    assert "    python -m veronte4x.dronecan.generate\n" in section
+    generated = _run(scratch, "-m", "veronte4x.dronecan.generate")
+    assert generated.returncode == 0, generated.stderr
+    assert "fast/ardupilot_example_Beat.py" in generated.stdout
+    checked = _run(scratch, "-c", _DRONECAN_TYPE_CHECK)
+    assert (checked.returncode, checked.stdout, checked.stderr) == (0, "ok\n", "")
 
 
 def test_every_block_says_where_it_goes() -> None:

@@ -7,12 +7,14 @@ so in class attributes, each a frozenset of attribute names (absent when empty):
 - ``_FLOAT16_FIELDS_``, ``_FLOAT32_FIELDS_``: the floats the DroneCAN DSDL or the Veronte
   layout declares ``float16`` or ``float32``; every other float is a float64 (a DBC signal,
   a scaled Veronte field);
-- ``_TEXT_FIELDS_``: the ``bytes`` attributes that hold text (`veronte4x.dronecan.types.is_text`);
+- ``_TEXT_FIELDS_``: the ``bytes`` attributes that hold text
+  (`veronte4x.dronecan.generate.is_text`);
 - ``_NAMED_FIELDS_`` (a mapping, not a frozenset): the integer attributes whose values have
   names, to those names by value: a Veronte message's autopilot index (Status ``selected``,
   Score ``autopilot``) to `veronte4x.codec.layouts.AUTOPILOTS`, the one home of the names.
 
-`veronte4x.dronecan.typeset.TypeSet` writes them on the DroneCAN classes it holds, and
+`veronte4x.dronecan.generate` writes the first three in the body of every DroneCAN class
+it generates (ahead of time or at run time), and
 `veronte4x.codec.compiler.FrameLayout` on the Veronte messages it lays out (the names end
 in an underscore, as nunavut's generated metadata does, so no DSDL name can collide). Since
 the facts are on the class, showing a message (`veronte4x.display`) loads nothing of the

@@ -32,6 +32,7 @@ from veronte4x import dronecan as v4
 from veronte4x.dronecan import DsdlError, TypeSet, standard
 from veronte4x.dronecan.generate import plan, usable
 from veronte4x.dronecan.parser import parse_text
+from veronte4x.dronecan.types import DSDL_ROOT
 
 STANDARD = TypeSet.standard()
 STANDARD_NAMES = set(standard.__all__)
@@ -227,7 +228,15 @@ def test_cli_decodes_both_gnss_statuses(tmp_path: Path) -> None:
     dsdl = ("--dsdl", str(ardupilot), "--dsdl", str(com))
     result = _run("decode", str(log), "--output", "jsonl", *dsdl)
     assert result.returncode == 0
-    assert result.stderr.startswith("veronte4x: 2 records, 0 undecoded, 0 bad")
+    *notes, summary = result.stderr.splitlines()
+    assert notes == [  # the test's two types are not the shipped ones: they replace them
+        f"veronte4x: note: {name}: {root.resolve() / path} replaces {DSDL_ROOT / root.name / path}"
+        for name, root, path in (
+            ("ardupilot.gnss.Status", ardupilot, "gnss/20003.Status.uavcan"),
+            ("com.xacti.GnssStatus", com, "xacti/20305.GnssStatus.uavcan"),
+        )
+    ]
+    assert summary.startswith("veronte4x: 2 records, 0 undecoded, 0 bad")
     rows = [json.loads(line) for line in result.stdout.splitlines()]
     assert [{k: r[k] for k in list(r)[4:]} for r in rows] == [
         {"message": "ArdupilotGnssStatus", "error_codes": 70000, "healthy": True},

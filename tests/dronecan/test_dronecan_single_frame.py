@@ -133,6 +133,7 @@ def _without(kind: TransferKind, data_type_id: int) -> TypeSet:
         standard.definitions,
         (),
         standard._names,
+        standard.units,
     )
 
 

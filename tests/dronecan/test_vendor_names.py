@@ -97,12 +97,6 @@ def _write(path: Path, text: str = "uint8 a\n") -> Path:
     return path
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="generate.py (cold's) numbers a clash left at the top of the ladders "
-    "(a_b_c_T_2, a_b_c_T_3) where the issue asks for a DsdlError naming both files "
-    "(/tmp/requests/cold.md)",
-)
 def test_a_clash_that_remains_is_an_error_naming_both_files(tmp_path: Path) -> None:
     """``a.b_c.T`` and ``a_b.c.T`` climb to the same top name ``a_b_c_T`` while ``z.BCT``
     and ``z.CT`` take the steps between."""

@@ -4,7 +4,10 @@ environment variable, in that order, and later roots overriding earlier ones typ
 
 from __future__ import annotations
 
+import dataclasses
 import os
+import shutil
+import warnings
 from pathlib import Path
 
 import pytest
@@ -12,6 +15,7 @@ import pytest
 from veronte4x.dronecan import TypeSet
 from veronte4x.dronecan.parser import DsdlError, parse_namespaces
 from veronte4x.dronecan.types import DSDL_ROOT
+from veronte4x.dronecan.typeset import DsdlOverrideWarning, default_set
 from veronte4x.dronecan.vendor_roots import (
     ENVIRONMENT_VARIABLE,
     SHIPPED,
@@ -106,13 +110,53 @@ def test_two_roots_of_one_name_add_up_in_a_type_set(tmp_path: Path) -> None:
     assert types.definitions["com.acme.Beat"].path == str(root / "acme" / "20990.Beat.uavcan")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    raises=DsdlError,
-    reason="TypeSet.with_dsdl does not yet parse with override=True (typeset.py is cold's: "
-    "/tmp/requests/cold.md)",
-)
 def test_an_override_loads_in_a_type_set(tmp_path: Path) -> None:
     _, replacing = _user_com(tmp_path)
-    types = TypeSet.standard().with_dsdl(*find_roots({}, tmp_path / "home").roots)
+    with pytest.warns(DsdlOverrideWarning) as caught:
+        types = TypeSet.standard().with_dsdl(*find_roots({}, tmp_path / "home").roots)
+    assert [str(w.message) for w in caught] == [
+        f"com.hobbywing.esc.StatusMsg1: {replacing} replaces {DSDL_ROOT / STATUS}"
+    ]
     assert types.definitions["com.hobbywing.esc.StatusMsg1"].path == str(replacing)
+
+
+def test_the_default_set_is_the_shipped_one_then_the_users_roots(tmp_path: Path) -> None:
+    """Shipped roots first (generated ahead of time, names fixed), the user's in a load of
+    their own: a user's type is added, a user's definition of a shipped type replaces it
+    with a note, and no other shipped class changes."""
+    assert default_set({}, tmp_path) is TypeSet.shipped()
+    root, replacing = _user_com(tmp_path)
+    with pytest.warns(DsdlOverrideWarning) as caught:
+        types = default_set({}, tmp_path / "home")
+    assert [str(w.message) for w in caught] == [
+        f"com.hobbywing.esc.StatusMsg1: {replacing} replaces {DSDL_ROOT / STATUS}"
+    ]
+    shipped = TypeSet.shipped()
+    assert types.loads == (*shipped.loads, (root.resolve(),))
+    replaced = types["com.hobbywing.esc.StatusMsg1"]
+    assert replaced is not shipped["com.hobbywing.esc.StatusMsg1"]
+    assert replaced.__name__ == shipped["com.hobbywing.esc.StatusMsg1"].__name__
+    assert [f.name for f in dataclasses.fields(replaced)] == ["only_this"]
+    assert types.definitions["com.hobbywing.esc.StatusMsg1"].path == str(replacing)
+    assert "com.acme.Beat" in types
+    for key, cls in shipped.classes.items():
+        if key != "com.hobbywing.esc.StatusMsg1":
+            assert types[key] is cls, key
+    codec = types.by_class[replaced]
+    assert codec.decode(codec.encode(replaced(only_this=513))) == replaced(only_this=513)
+    assert sum(c.data_type.full_name == "com.hobbywing.esc.StatusMsg1" for c in types.codecs) == 1
+    variable = {
+        ENVIRONMENT_VARIABLE: str(tmp_path / "home" / "dronecan_vendor_specific_types" / "com")
+    }
+    with pytest.warns(DsdlOverrideWarning):
+        assert default_set(variable, tmp_path).loads == types.loads
+
+
+def test_the_same_definition_again_changes_nothing(tmp_path: Path) -> None:
+    """The ``dronecan`` package's own copy of a shipped root (the same files elsewhere)."""
+    copy = tmp_path / "ardupilot"
+    shutil.copytree(DSDL_ROOT / "ardupilot", copy)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        types = TypeSet.shipped().with_dsdl(copy)
+    assert types.classes == TypeSet.shipped().classes

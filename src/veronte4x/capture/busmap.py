@@ -60,7 +60,7 @@ always given their sender, ``external``."""
 
 TextForm = Literal["string", "binary"]
 """How tables give the DroneCAN fields whose DSDL makes them text (their ``text`` option,
-`veronte4x.dronecan.types.is_text`): ``string``, Arrow strings (the default; a value that
+`veronte4x.dronecan.generate.is_text`): ``string``, Arrow strings (the default; a value that
 is not UTF-8 is null, with a ``bad text`` row in ``errors`` holding its bytes);
 ``binary``, every ``uint8`` array as its exact bytes."""
 TEXT_FORMS: tuple[TextForm, ...] = ("string", "binary")

@@ -18,7 +18,8 @@ import argparse
 import contextlib
 import os
 import sys
-from collections.abc import Sequence
+import warnings
+from collections.abc import Callable, Sequence
 from typing import Any, TextIO, cast
 
 from veronte4x.arbiter.errors import ConfigError
@@ -28,6 +29,7 @@ from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import UsageError, check_bus_spelling, with_dbc_options
 from veronte4x.dronecan import DsdlError, load_dsdl
+from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.errors import SourceError
 
 COMMANDS = (
@@ -50,10 +52,26 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return its exit code."""
     stdout = sys.stdout
     sys.stdout = cast(TextIO, _StandardOutput(stdout))
+    shown = warnings.showwarning
+    warnings.showwarning = _notes(shown)
     try:
         return _run(argv)
     finally:
         sys.stdout = stdout
+        warnings.showwarning = shown
+
+
+def _notes(shown: Callable[..., None]) -> Callable[..., None]:
+    """A `warnings.showwarning` that shows a replaced DSDL definition as one line on
+    standard error, and any other warning with ``shown``."""
+
+    def note(message: Warning | str, category: type[Warning], *args: Any, **kwargs: Any) -> None:
+        if issubclass(category, DsdlOverrideWarning):
+            print(f"veronte4x: note: {message}", file=sys.stderr)
+        else:
+            shown(message, category, *args, **kwargs)
+
+    return note
 
 
 def _run(argv: Sequence[str] | None) -> int:

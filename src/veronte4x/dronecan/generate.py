@@ -22,7 +22,8 @@ Naming rules (documented in the DroneCAN types page):
   ``esc_Status``: ``EscStatus`` is the standard one). It stops at the first name that no
   class or enum of the set has, that is no short name of a type in the set, no keyword,
   builtin or name of the generated module; the keys of one clash climb together, so the
-  order of the roots does not matter, and a clash at the top gives ``_2``, ``_3``.
+  order of the roots does not matter; two keys still of one name at the top are a
+  `DsdlError` naming both files.
 - Constants sharing the prefix ``P_`` where ``p`` is an unsigned integer field of the
   same type become an ``enum.IntEnum`` named ``CamelCase(P)``
   (``ActuatorCommand.command_type``: ``CommandType``); where two types would give the same
@@ -55,11 +56,12 @@ import builtins
 import keyword
 import re
 from collections import Counter
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
 from veronte4x.dronecan.parser import (
     ArrayType,
+    Attribute,
     Constant,
     Definition,
     DsdlError,
@@ -226,8 +228,9 @@ def _class_names(
 
     Every key not in ``named`` climbs its `_ladder` while its name is taken, or is the short
     name of a type in ``named``, or is the name of another key; all keys of a clash climb
-    together, so the result does not depend on the order of the definitions. A clash left
-    at the top of the ladders gives ``_2``, ``_3``, ... (keys in order of their names).
+    together, so the result does not depend on the order of the definitions. Two keys left
+    with one name at the top of their ladders are a `DsdlError` naming both files; a key
+    whose whole ladder is taken by names of another set gives ``_2``, ``_3``, ...
     """
     suffixes = ("Request", "Response")
     ladders: dict[str, list[str]] = {}
@@ -255,6 +258,18 @@ def _class_names(
             level[key] += 1
     result = dict(named)
     result.update((key, name) for key, name in names.items() if key not in clashes)
+    sharing = sorted(key for key in clashes if counts[names[key]] > 1)
+    for key in sharing:
+        other = next(k for k in sharing if names[k] == names[key] and k != key)
+        first, second = (
+            definitions[k.removesuffix(".Request").removesuffix(".Response")] for k in (key, other)
+        )
+        raise DsdlError(
+            second.path,
+            None,
+            f"{key} and {other} would both be class {names[key]}; rename one "
+            f"({first.path}, {second.path})",
+        )
     used = claimed | set(result.values())
     for key in sorted(clashes):
         top = next(n for n in reversed(ladders[key]) if usable(n))
@@ -464,6 +479,84 @@ def _literal(value: int | float | bool) -> str:
     return repr(value)
 
 
+TEXT_WORDS = frozenset(
+    {
+        "name",
+        "path",
+        "text",
+        "string",
+        "message",
+        "key",
+        "description",
+        "reason",
+        "label",
+        "source",
+        "ascii",
+        "utf",
+    }
+)
+"""The words that make a ``uint8[<=N]`` field text (see `is_text`)."""
+
+
+def is_text(attribute: Attribute) -> bool:
+    """Whether a field holds text: a dynamic ``uint8`` array whose name or DSDL comment
+    has one of the `TEXT_WORDS` (``name``, ``parameter_name``, ``reason_text``,
+    ``string_value``, ``optional_error_message``, ``source``, or a comment such as "Full
+    data type name" or "in ASCII characters"). Other byte arrays are data (``data``,
+    ``buffer``, ``unique_id``). Only the field's own line counts, not the comment block
+    above it, which often describes the whole type."""
+    t = attribute.type
+    if not (
+        isinstance(t, ArrayType)
+        and t.dynamic
+        and isinstance(t.item, PrimitiveType)
+        and t.item.kind == "uint"
+        and t.item.bits == 8
+    ):
+        return False
+    words = re.findall(r"[a-z]+", f"{attribute.name} {attribute.comment}".lower())
+    return not TEXT_WORDS.isdisjoint(words)
+
+
+def is_float16(attribute: Attribute) -> bool:
+    """Whether a field holds half-precision floats: ``float16``, or an array of them."""
+    return _float_bits(attribute) == 16
+
+
+def is_float32(attribute: Attribute) -> bool:
+    """Whether a field holds single-precision floats: ``float32``, or an array of them."""
+    return _float_bits(attribute) == 32
+
+
+def _float_bits(attribute: Attribute) -> int | None:
+    t = attribute.type
+    item = t.item if isinstance(t, ArrayType) else t
+    return item.bits if isinstance(item, PrimitiveType) and item.kind == "float" else None
+
+
+FACTS: tuple[tuple[str, Callable[[Attribute], bool]], ...] = (
+    ("_TEXT_FIELDS_", is_text),
+    ("_FLOAT16_FIELDS_", is_float16),
+    ("_FLOAT32_FIELDS_", is_float32),
+)
+"""The class attributes a generated class has where some of its fields pass the test
+(read by `veronte4x.values`): each a ``frozenset`` of attribute names, absent when empty
+(a union member's is ``{"value"}``). The trailing ``_`` keeps them apart from any DSDL
+name."""
+
+
+def _fact_lines(tested: Iterable[tuple[str, Attribute]]) -> list[str]:
+    """The `FACTS` of a class body, from its (attribute, field) pairs."""
+    pairs = list(tested)
+    lines = []
+    for fact, test in FACTS:
+        names = sorted({attribute for attribute, a in pairs if test(a)})
+        if names:
+            listed = ", ".join(f'"{n}"' for n in names)
+            lines.append(f"    {fact}: ClassVar[frozenset[str]] = frozenset({{{listed}}})")
+    return lines
+
+
 def _class_source(key: str, p: Plan) -> list[str]:
     d, section = p.sections[key]
     name = p.names[key]
@@ -472,10 +565,12 @@ def _class_source(key: str, p: Plan) -> list[str]:
     if section.doc:
         doc += "\n\n" + section.doc
     lines += _doc(doc, "    ")
-    if section.constants or key in HAND_CONSTANTS:
-        lines.append("")
-    body: dict[str, str] = {}  # each name of the class body, to its DSDL name
     attributes = attribute_names(key, section)
+    facts = _fact_lines((attributes[a.name], a) for a in section.fields if a.name)
+    if section.constants or key in HAND_CONSTANTS or facts:
+        lines.append("")
+    lines += facts
+    body: dict[str, str] = {}  # each name of the class body, to its DSDL name
 
     def claim(attribute: str, dsdl: str, line: int | None) -> str:
         other = body.setdefault(attribute, dsdl)
@@ -680,7 +775,15 @@ def _union_source(key: str, p: Plan, done: set[str]) -> list[str]:
         annotation, default = _python_type(a.type, p, None)
         lines += ["", "", "@dataclass(frozen=True, slots=True)", f"class {member}(HtmlDisplay):"]
         lines += _doc(f"Member ``{a.name}`` of the union ``{d.full_name}``.", "    ")
-        lines += ["", f"    value: {annotation} = {default}"]
+        uses = [  # a member may serve several unions: its facts are those of every use
+            other.fields[index]
+            for union, names in p.members.items()
+            for index, used in enumerate(names)
+            if used == member and union in p.sections
+            for other in (p.sections[union][1],)
+        ]
+        facts = _fact_lines(("value", use) for use in uses)
+        lines += ["", *facts, *([""] if facts else []), f"    value: {annotation} = {default}"]
     lines += ["", "", f"{name}: TypeAlias = {' | '.join(p.members[key])}"]
     lines += _doc(_title(d, key) + "\n\n" + (section.doc or ""), "")
     return lines

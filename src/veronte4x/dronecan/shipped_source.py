@@ -8,9 +8,10 @@ together after it):
 - `veronte4x.dronecan.standard`: the classes of ``uavcan``; `veronte4x.dronecan.vendor`:
   those of the vendor roots (named by `veronte4x.dronecan.generate.plan`, as `load_dsdl`
   names a vendor namespace added to the standard set).
-- `veronte4x.dronecan.shipped`: every top-level type as data (`DataType`: schema, data type
-  id, signature, DSDL file), the signatures of the nested types, the text, float16 and
-  float32 attributes of each class, the units of the DSDL comments, each class's name.
+- `veronte4x.dronecan.standard_data`, `veronte4x.dronecan.vendor_data`: every top-level
+  type as data (`DataType`: schema, data type id, signature, DSDL file), the signatures of
+  the nested types, the units of the DSDL comments, each class's name (the text, float16
+  and float32 attributes are in the class bodies, `veronte4x.dronecan.generate.FACTS`).
 - `veronte4x.dronecan.fast`: one module per top-level type with its fast paths (the code
   `veronte4x.dronecan.compiled` compiles at run time for a type loaded by the user).
 
@@ -41,10 +42,7 @@ from veronte4x.dronecan.schema import Array, DataType, Scalar, Struct, Union
 from veronte4x.dronecan.types import (
     DSDL_ROOT,
     data_types,
-    is_float16,
-    is_float32,
     nested_signatures,
-    text_attributes,
     units_of,
 )
 from veronte4x.dronecan.vendor_roots import shipped_roots
@@ -286,16 +284,7 @@ def _data_source(
     defs = shipped.definitions
     standard = mine is shipped.standard
     roots = ["uavcan"] if standard else shipped.roots[1:]
-    text = text_attributes(defs, classes, members)
-    half = text_attributes(defs, classes, members, is_float16)
-    single = text_attributes(defs, classes, members, is_float32)
     unit_of = units_of(mine, classes, members)
-
-    def facts(table: Mapping[type, frozenset[str]]) -> list[str]:
-        return [
-            f"    {ref(cls)}: frozenset({sorted(names)!r}),"
-            for cls, names in sorted(table.items(), key=lambda item: where[id(item[0])])
-        ]
 
     body = [
         "",
@@ -330,21 +319,6 @@ def _data_source(
         *(f"    {k!r}: {v!r}," for k, v in shipped.names.items() if k in classes),
         "}",
         '"""The class name of each key (full name, ``.Request``/``.Response`` for a half)."""',
-        "",
-        "TEXT_FIELDS: dict[type, frozenset[str]] = {",
-        *facts(text),
-        "}",
-        '"""The attributes of each class that hold text (`veronte4x.dronecan.types.is_text`)."""',
-        "",
-        "FLOAT16_FIELDS: dict[type, frozenset[str]] = {",
-        *facts(half),
-        "}",
-        '"""The attributes of each class that hold float16 values."""',
-        "",
-        "FLOAT32_FIELDS: dict[type, frozenset[str]] = {",
-        *facts(single),
-        "}",
-        '"""The attributes of each class that hold float32 values."""',
         "",
         "UNITS: dict[type, dict[str, str]] = {",
         *(

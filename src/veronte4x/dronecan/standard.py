@@ -466,6 +466,7 @@ class ActuatorCommand(HtmlDisplay):
     Single actuator command.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"command_value"})
     COMMAND_TYPE_UNITLESS: ClassVar[int] = 0
     """[-1, 1]"""
     COMMAND_TYPE_POSITION: ClassVar[int] = 1
@@ -501,6 +502,7 @@ class ActuatorStatus(HtmlDisplay):
     Unknown fields should be set to NAN.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"force", "position", "speed"})
     POWER_RATING_PCT_UNKNOWN: ClassVar[int] = 127
 
     actuator_id: int = 0
@@ -521,6 +523,8 @@ class Solution(HtmlDisplay):
     Inertial data and orientation in body frame.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"angular_velocity", "angular_velocity_covariance", "linear_acceleration", "linear_acceleration_covariance", "orientation_covariance", "orientation_xyzw"})
+
     timestamp: Timestamp = Timestamp()
     orientation_xyzw: tuple[float, ...] = (0.0,) * 4
     orientation_covariance: tuple[float, ...] = ()
@@ -539,6 +543,8 @@ class MagneticFieldStrength(HtmlDisplay):
     This message is deprecated. Use the newer 1002.MagneticFieldStrength2.uavcan message.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"magnetic_field_covariance", "magnetic_field_ga"})
+
     magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
     magnetic_field_covariance: tuple[float, ...] = ()
 
@@ -550,6 +556,8 @@ class MagneticFieldStrength2(HtmlDisplay):
     Magnetic field readings, in Gauss, in body frame.
     SI units are avoided because of float16 range limitations.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"magnetic_field_covariance", "magnetic_field_ga"})
 
     sensor_id: int = 0
     magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
@@ -564,6 +572,9 @@ class RawIMU(HtmlDisplay):
 
     THIS DEFINITION MAY BE CHANGED IN A NON-BACKWARD-COMPATIBLE WAY IN THE FUTURE.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"accelerometer_latest", "covariance", "rate_gyro_latest"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"accelerometer_integral", "integration_interval", "rate_gyro_integral"})
 
     timestamp: Timestamp = Timestamp()
     integration_interval: float = 0.0
@@ -585,6 +596,8 @@ class TrueAirspeed(HtmlDisplay):
     TAS.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"true_airspeed", "true_airspeed_variance"})
+
     true_airspeed: float = 0.0
     """m/s"""
     true_airspeed_variance: float = 0.0
@@ -597,6 +610,8 @@ class IndicatedAirspeed(HtmlDisplay):
 
     IAS.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"indicated_airspeed", "indicated_airspeed_variance"})
 
     indicated_airspeed: float = 0.0
     """m/s"""
@@ -611,6 +626,7 @@ class AngleOfAttack(HtmlDisplay):
     Angle of attack.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"aoa", "aoa_variance"})
     SENSOR_ID_LEFT: ClassVar[int] = 254
     SENSOR_ID_RIGHT: ClassVar[int] = 255
 
@@ -628,6 +644,8 @@ class Sideslip(HtmlDisplay):
     Body sideslip in radians.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"sideslip_angle", "sideslip_angle_variance"})
+
     sideslip_angle: float = 0.0
     """Radians"""
     sideslip_angle_variance: float = 0.0
@@ -641,6 +659,8 @@ class RawAirData(HtmlDisplay):
     Raw Air Data.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"covariance", "differential_pressure_sensor_temperature", "pitot_temperature", "static_air_temperature", "static_pressure_sensor_temperature"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"differential_pressure", "static_pressure"})
     FLAG_HEATER_AVAILABLE: ClassVar[int] = 1
     FLAG_HEATER_WORKING: ClassVar[int] = 2
     FLAG_HEATER_OVERCURRENT: ClassVar[int] = 4
@@ -670,6 +690,9 @@ class StaticPressure(HtmlDisplay):
     Static pressure.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_pressure_variance"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_pressure"})
+
     static_pressure: float = 0.0
     """Pascal"""
     static_pressure_variance: float = 0.0
@@ -682,6 +705,8 @@ class StaticTemperature(HtmlDisplay):
 
     Static temperature.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_temperature", "static_temperature_variance"})
 
     static_temperature: float = 0.0
     """Kelvin"""
@@ -715,6 +740,8 @@ class AngularCommand(HtmlDisplay):
     - COMMAND_MODE_ORIENTATION_FIXED_FRAME
     - COMMAND_MODE_ORIENTATION_BODY_FRAME
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"quaternion_xyzw"})
 
     gimbal_id: int = 0
     mode: CameraGimbalMode = CameraGimbalMode()
@@ -751,6 +778,8 @@ class CameraGimbalStatus(HtmlDisplay):
     Generic gimbal status.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"camera_orientation_in_body_frame_covariance", "camera_orientation_in_body_frame_xyzw"})
+
     gimbal_id: int = 0
     mode: CameraGimbalMode = CameraGimbalMode()
     camera_orientation_in_body_frame_xyzw: tuple[float, ...] = (0.0,) * 4
@@ -765,6 +794,7 @@ class Temperature(HtmlDisplay):
     Generic device temperature
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"temperature"})
     ERROR_FLAG_OVERHEATING: ClassVar[int] = 1
     ERROR_FLAG_OVERCOOLING: ClassVar[int] = 2
 
@@ -810,6 +840,8 @@ class EscStatus(HtmlDisplay):
     Generic ESC status.
     Unknown fields should be set to NAN.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"current", "temperature", "voltage"})
 
     error_count: int = 0
     """Resets when the motor restarts"""
@@ -858,6 +890,7 @@ class Fix(HtmlDisplay):
     This message is deprecated. Use the newer 1063.Fix2.uavcan message.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"ned_velocity", "pdop", "position_covariance", "velocity_covariance"})
     GNSS_TIME_STANDARD_NONE: ClassVar[int] = 0
     """Time is unknown"""
     GNSS_TIME_STANDARD_TAI: ClassVar[int] = 1
@@ -900,6 +933,8 @@ class Auxiliary(HtmlDisplay):
     GNSS low priority auxiliary info.
     Unknown DOP parameters should be set to NAN.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"edop", "gdop", "hdop", "ndop", "pdop", "tdop", "vdop"})
 
     gdop: float = 0.0
     pdop: float = 0.0
@@ -946,6 +981,9 @@ class ECEFPositionVelocity(HtmlDisplay):
     right-handed coordinate system.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"covariance"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"velocity_xyz"})
+
     velocity_xyz: tuple[float, ...] = (0.0,) * 3
     """XYZ velocity in m/s"""
     position_xyz_mm: tuple[int, ...] = (0,) * 3
@@ -961,6 +999,8 @@ class Fix2(HtmlDisplay):
     GNSS ECEF and LLA navigation solution with uncertainty.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"covariance", "pdop"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"ned_velocity"})
     GNSS_TIME_STANDARD_NONE: ClassVar[int] = 0
     """Time is unknown"""
     GNSS_TIME_STANDARD_TAI: ClassVar[int] = 1
@@ -1022,6 +1062,8 @@ class HardpointStatus(HtmlDisplay):
     Generic cargo holder/hardpoint status.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"payload_weight", "payload_weight_variance"})
+
     hardpoint_id: int = 0
     payload_weight: float = 0.0
     """Newton"""
@@ -1036,6 +1078,9 @@ class FuelTankStatus(HtmlDisplay):
     Generic fuel tank status message.
     All fields are required unless stated otherwise. Unpopulated optional fields should be set to NaN.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"fuel_temperature"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"available_fuel_volume_cm3", "fuel_consumption_rate_cm3pm"})
 
     available_fuel_volume_percent: int = 0
     """Unit: percent, from 0% to 100%"""
@@ -1056,6 +1101,8 @@ class CylinderStatus(HtmlDisplay):
     All unknown parameters should be set to NaN.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"cylinder_head_temperature", "exhaust_gas_temperature", "ignition_timing_deg", "injection_time_ms", "lambda_coefficient"})
+
     ignition_timing_deg: float = 0.0
     injection_time_ms: float = 0.0
     cylinder_head_temperature: float = 0.0
@@ -1073,6 +1120,8 @@ class ReciprocatingStatus(HtmlDisplay):
     All floating point fields are optional unless stated otherwise; unknown/unapplicable fields should be set to NaN.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"atmospheric_pressure_kpa", "coolant_temperature", "fuel_pressure", "intake_manifold_pressure_kpa", "intake_manifold_temperature", "oil_pressure", "oil_temperature", "spark_dwell_time_ms"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"estimated_consumed_fuel_volume_cm3", "fuel_consumption_rate_cm3pm"})
     STATE_STOPPED: ClassVar[int] = 0
     STATE_STARTING: ClassVar[int] = 1
     STATE_RUNNING: ClassVar[int] = 2
@@ -1140,6 +1189,8 @@ class BeepCommand(HtmlDisplay):
     Nodes that are capable of producing sounds should obey.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"duration", "frequency"})
+
     frequency: float = 0.0
     """Hz"""
     duration: float = 0.0
@@ -1202,6 +1253,8 @@ class PrimaryPowerSupplyStatus(HtmlDisplay):
     Typical publishing rate should be around 1~2 Hz.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"hours_to_empty_at_10sec_avg_power", "hours_to_empty_at_10sec_avg_power_variance"})
+
     hours_to_empty_at_10sec_avg_power: float = 0.0
     """[Hours]"""
     hours_to_empty_at_10sec_avg_power_variance: float = 0.0
@@ -1220,6 +1273,7 @@ class CircuitStatus(HtmlDisplay):
     Generic electrical circuit info.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"current", "voltage"})
     ERROR_FLAG_OVERVOLTAGE: ClassVar[int] = 1
     ERROR_FLAG_UNDERVOLTAGE: ClassVar[int] = 2
     ERROR_FLAG_OVERCURRENT: ClassVar[int] = 4
@@ -1242,6 +1296,8 @@ class BatteryInfo(HtmlDisplay):
     Please refer to the Smart Battery data specification for some elaboration.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"model_name"})
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"average_power_10sec", "current", "full_charge_capacity_wh", "hours_to_full_charge", "remaining_capacity_wh", "temperature", "voltage"})
     STATUS_FLAG_IN_USE: ClassVar[int] = 1
     """The battery is currently used as a power supply"""
     STATUS_FLAG_CHARGING: ClassVar[int] = 2
@@ -1303,6 +1359,7 @@ class Measurement(HtmlDisplay):
     Generic narrow-beam range sensor data.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"field_of_view", "range"})
     SENSOR_TYPE_UNDEFINED: ClassVar[int] = 0
     SENSOR_TYPE_SONAR: ClassVar[int] = 1
     SENSOR_TYPE_LIDAR: ClassVar[int] = 2
@@ -1349,6 +1406,9 @@ class GlobalNavigationSolution(HtmlDisplay):
 
     Fields marked as optional should be set to NaN if the corresponding value is unknown.
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"linear_acceleration_body", "pose_covariance", "qnh_hpa", "velocity_covariance"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"angular_velocity_body", "height_agl", "height_baro", "height_ellipsoid", "height_msl", "linear_velocity_body", "orientation_xyzw"})
 
     timestamp: Timestamp = Timestamp()
     longitude: float = 0.0
@@ -1457,6 +1517,8 @@ class HardwareVersion(HtmlDisplay):
 class GetNodeInfoResponse(HtmlDisplay):
     """``uavcan.protocol.GetNodeInfo`` response, service 1 (``protocol/1.GetNodeInfo.uavcan``)."""
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
+
     status: NodeStatus = NodeStatus()
     software_version: SoftwareVersion = SoftwareVersion()
     hardware_version: HardwareVersion = HardwareVersion()
@@ -1488,6 +1550,8 @@ class GetDataTypeInfoRequest(HtmlDisplay):
     fields 'kind' and 'id' will be ignored.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
+
     id: int = 0
     """Ignored if 'name' is non-empty"""
     kind: DataTypeKind = DataTypeKind()
@@ -1500,6 +1564,7 @@ class GetDataTypeInfoRequest(HtmlDisplay):
 class GetDataTypeInfoResponse(HtmlDisplay):
     """``uavcan.protocol.GetDataTypeInfo`` response, service 2 (``protocol/2.GetDataTypeInfo.uavcan``)."""
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
     FLAG_KNOWN: ClassVar[int] = 1
     """This data type is defined"""
     FLAG_SUBSCRIBED: ClassVar[int] = 2
@@ -1589,6 +1654,7 @@ class Panic(HtmlDisplay):
     undertaking any emergency actions.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"reason_text"})
     MIN_MESSAGES: ClassVar[int] = 3
     MAX_INTERVAL_MS: ClassVar[int] = 500
 
@@ -1677,6 +1743,9 @@ class KeyValue(HtmlDisplay):
     Generic named parameter (key/value pair).
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"key"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
+
     value: float = 0.0
     key: bytes = b""
 
@@ -1703,6 +1772,8 @@ class LogMessage(HtmlDisplay):
     Generic log message.
     All items are byte aligned.
     """
+
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"source", "text"})
 
     level: LogLevel = LogLevel()
     source: bytes = b""
@@ -1888,6 +1959,7 @@ class BeginRequest(HtmlDisplay):
     This service instructs the node to begin the process of automated enumeration.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"parameter_name"})
     TIMEOUT_CANCEL: ClassVar[int] = 0
     """Stop enumeration immediately"""
     TIMEOUT_INFINITE: ClassVar[int] = 65535
@@ -1935,6 +2007,8 @@ class IntegerValue(HtmlDisplay):
 class RealValue(HtmlDisplay):
     """Member ``real_value`` of the union ``uavcan.protocol.param.NumericValue``."""
 
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
+
     value: float = 0.0
 
 
@@ -1955,6 +2029,8 @@ class Indication(HtmlDisplay):
     This message will be broadcasted when the node receives user input in the process of enumeration.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"parameter_name"})
+
     value: NumericValue = Empty()
     parameter_name: bytes = b""
 
@@ -1970,6 +2046,7 @@ class Path(HtmlDisplay):
     The only valid separator is forward slash.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"path"})
     SEPARATOR: ClassVar[int] = 47
 
     path: bytes = b""
@@ -2003,6 +2080,7 @@ class BeginFirmwareUpdateRequest(HtmlDisplay):
 class BeginFirmwareUpdateResponse(HtmlDisplay):
     """``uavcan.protocol.file.BeginFirmwareUpdate`` response, service 40 (``protocol/file/40.BeginFirmwareUpdate.uavcan``)."""
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"optional_error_message"})
     ERROR_OK: ClassVar[int] = 0
     ERROR_INVALID_MODE: ClassVar[int] = 1
     """Cannot perform the update in the current operating mode or state."""
@@ -2223,6 +2301,8 @@ class BooleanValue(HtmlDisplay):
 class StringValue(HtmlDisplay):
     """Member ``string_value`` of the union ``uavcan.protocol.param.Value``."""
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
+
     value: bytes = b""
 
 
@@ -2245,6 +2325,8 @@ class GetSetRequest(HtmlDisplay):
     discouraged to use it for anything else, because persistent ordering is not guaranteed.
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
+
     index: int = 0
     value: Value = Empty()
     name: bytes = b""
@@ -2253,6 +2335,8 @@ class GetSetRequest(HtmlDisplay):
 @dataclass(frozen=True, slots=True)
 class GetSetResponse(HtmlDisplay):
     """``uavcan.protocol.param.GetSet`` response, service 11 (``protocol/param/11.GetSet.uavcan``)."""
+
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
 
     value: Value = Empty()
     default_value: Value = Empty()

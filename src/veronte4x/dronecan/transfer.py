@@ -373,7 +373,7 @@ def _routes_of(types: object) -> _Routes | None:
     `TypeSet` (the checked path then raises the error)."""
     global _ROUTES
     if types is None:
-        types = _typeset._default
+        types = _typeset.default_types()
     if not isinstance(types, TypeSet):
         return None
     routes = _ROUTES_OF.get(types)

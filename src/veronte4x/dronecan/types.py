@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from pathlib import Path
 
 from veronte4x.dronecan.can_id import TransferKind
@@ -143,85 +143,6 @@ def data_types(
             kind = kinds[i] if d.service else TransferKind.MESSAGE
             found.append(DataType(d.full_name, kind, d.default_id, value, schema, d.path))
     return found
-
-
-TEXT_WORDS = frozenset(
-    {
-        "name",
-        "path",
-        "text",
-        "string",
-        "message",
-        "key",
-        "description",
-        "reason",
-        "label",
-        "source",
-        "ascii",
-        "utf",
-    }
-)
-"""The words that make a ``uint8[<=N]`` field text (see `is_text`)."""
-
-
-def is_text(attribute: Attribute) -> bool:
-    """Whether a field holds text: a dynamic ``uint8`` array whose name or DSDL comment
-    has one of the `TEXT_WORDS` (``name``, ``parameter_name``, ``reason_text``,
-    ``string_value``, ``optional_error_message``, ``source``, or a comment such as "Full
-    data type name" or "in ASCII characters"). Other byte arrays are data (``data``,
-    ``buffer``, ``unique_id``). Only the field's own line counts, not the comment block
-    above it, which often describes the whole type."""
-    t = attribute.type
-    if not (
-        isinstance(t, ArrayType)
-        and t.dynamic
-        and isinstance(t.item, PrimitiveType)
-        and t.item.kind == "uint"
-        and t.item.bits == 8
-    ):
-        return False
-    words = re.findall(r"[a-z]+", f"{attribute.name} {attribute.comment}".lower())
-    return not TEXT_WORDS.isdisjoint(words)
-
-
-def is_float16(attribute: Attribute) -> bool:
-    """Whether a field holds half-precision floats: ``float16``, or an array of them."""
-    return _float_bits(attribute) == 16
-
-
-def is_float32(attribute: Attribute) -> bool:
-    """Whether a field holds single-precision floats: ``float32``, or an array of them."""
-    return _float_bits(attribute) == 32
-
-
-def _float_bits(attribute: Attribute) -> int | None:
-    t = attribute.type
-    item = t.item if isinstance(t, ArrayType) else t
-    return item.bits if isinstance(item, PrimitiveType) and item.kind == "float" else None
-
-
-def text_attributes(
-    definitions: Mapping[str, Definition],
-    classes: Mapping[str, type],
-    members: Mapping[str, tuple[type, ...]],
-    test: Callable[[Attribute], bool] = is_text,
-) -> dict[type, frozenset[str]]:
-    """The attributes of each class whose field passes ``test`` (by default `is_text`: those
-    that hold text); of a union's member, its ``value``."""
-    found: dict[type, set[str]] = {}
-    for d in definitions.values():
-        for key, section in zip(keys(d), d.sections, strict=True):
-            if key not in classes:
-                continue
-            attributes = attribute_names(key, section)
-            for index, a in enumerate(section.fields):
-                if not test(a):
-                    continue
-                if section.union:
-                    found.setdefault(members[key][index], set()).add("value")
-                else:
-                    found.setdefault(classes[key], set()).add(attributes[a.name])
-    return {cls: frozenset(names) for cls, names in found.items()}
 
 
 UNIT = re.compile(r"\[([^\[\]]*[A-Za-z%][^\[\]]*)\]")

@@ -14,29 +14,36 @@ a namespace the user loads are generated from its DSDL by the same code (naming 
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import linecache
 import os
 import sys
 import types as _types
+import warnings
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any
 
 from veronte4x.dronecan import messages, standard, standard_data
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
 from veronte4x.dronecan.generate import keys, module_source, plan
-from veronte4x.dronecan.parser import Definition, DsdlError, check_references, parse_namespaces
+from veronte4x.dronecan.parser import (
+    Definition,
+    DsdlError,
+    check_references,
+    definition_files,
+    nested_name,
+    parse_namespaces,
+)
 from veronte4x.dronecan.types import (
     DSDL_ROOT,
     data_types,
-    is_float16,
-    is_float32,
-    text_attributes,
     units_of,
 )
+from veronte4x.dronecan.vendor_roots import Override, find_roots, overrides
 from veronte4x.errors import argument_type_error
 
 _serial = itertools.count(1)
@@ -61,7 +68,7 @@ class TypeSet:
         definitions: Every parsed definition, by full name (parsed on first use for the
             sets generated ahead of time).
         text_fields: The attributes of each class that hold text
-            (`veronte4x.dronecan.types.is_text`).
+            (`veronte4x.dronecan.generate.is_text`: each class's ``_TEXT_FIELDS_``).
         units: The unit of each attribute whose DSDL comment names one (``# [Volt]``),
             by class.
     """
@@ -75,7 +82,7 @@ class TypeSet:
         definitions: Mapping[str, Definition] | Callable[[], Mapping[str, Definition]],
         loads: tuple[tuple[Path, ...], ...],
         names: Mapping[str, str],
-        facts: Facts | None = None,
+        units: Mapping[type, Mapping[str, str]],
     ) -> None:
         self.codecs = codecs
         self._names = dict(names)
@@ -93,17 +100,12 @@ class TypeSet:
         self.by_id: Mapping[tuple[TransferKind, int], TypeCodec] = _types.MappingProxyType(
             {(c.data_type.kind, c.data_type.data_type_id): c for c in codecs}
         )
-        if facts is None:
-            facts = _facts(self.definitions, classes, members)
-        self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(facts.text)
-        self.units: Mapping[type, Mapping[str, str]] = _types.MappingProxyType(facts.units)
-        for fact, found in (  # the class's facts, read by `veronte4x.values`
-            ("_TEXT_FIELDS_", self.text_fields),
-            ("_FLOAT16_FIELDS_", facts.float16),
-            ("_FLOAT32_FIELDS_", facts.float32),
-        ):
-            for cls, attributes in found.items():
-                setattr(cls, fact, attributes)
+        owners = [c for c in classes.values() if isinstance(c, type)]
+        owners += [m for found in members.values() for m in found]
+        self.text_fields: Mapping[type, frozenset[str]] = _types.MappingProxyType(
+            {c: c._TEXT_FIELDS_ for c in owners if hasattr(c, "_TEXT_FIELDS_")}
+        )
+        self.units: Mapping[type, Mapping[str, str]] = _types.MappingProxyType(dict(units))
 
     @property
     def definitions(self) -> Mapping[str, Definition]:
@@ -161,10 +163,17 @@ class TypeSet:
         first component of the full names. A directory already in the set is skipped. A
         path of bytes (a name that is not UTF-8) is read as `os.fsdecode` reads it.
 
+        A later root overrides an earlier one type by type, as the roots of the default set
+        do (`veronte4x.dronecan.vendor_roots`): a definition of a full name this set or an
+        earlier directory has replaces it, with a `DsdlOverrideWarning` naming both files
+        (the same definition again, in another file, changes nothing). The types that nest
+        a replaced one are compiled again with it; the other classes keep their names.
+
         Raises:
             DsdlError: A malformed definition (file and line), an unknown nested type, a
-                type defined twice, a data type id claimed twice (naming both files), or a
-                root named ``uavcan`` (the standard one cannot be replaced or extended).
+                type defined twice in one root, a data type id claimed twice or two types
+                left with one class name (naming both files), or a root named ``uavcan``
+                (the standard one cannot be replaced or extended).
         """
         roots = [Path(os.fsdecode(d)).resolve() for d in root_namespace_dirs]
         new_roots = [r for r in dict.fromkeys(roots) if r not in self.roots]
@@ -173,19 +182,70 @@ class TypeSet:
         for root in new_roots:
             if root.name == "uavcan":
                 raise DsdlError(root, None, _STANDARD_ROOT)
-        new = parse_namespaces(new_roots)
-        for name, d in new.items():
+        parsed = parse_namespaces(new_roots, override=True)
+        notes = list(overrides(definition_files(new_roots)))
+        new: dict[str, Definition] = {}
+        for name, d in parsed.items():
             other = self.definitions.get(name)
+            if other is not None and dataclasses.replace(d, path=other.path) == other:
+                continue  # the same definition in another file
             if other is not None:
-                raise DsdlError(d.path, None, f"{name} is also defined in {other.path}")
+                notes.append(Override(name, Path(other.path), Path(d.path)))
+            new[name] = d
+        for note in notes:
+            warnings.warn(str(note), DsdlOverrideWarning, stacklevel=2)
         definitions = {**self.definitions, **new}
         check_references(definitions)
-        classes, enums, members, names = _compile(definitions, new, self, new_roots)
+        again = _users(definitions, {name for name in new if name in self.definitions})
+        new = {**{name: definitions[name] for name in again if name not in new}, **new}
+        kept = self._without(again)
+        classes, enums, members, names = _compile(definitions, new, kept, new_roots)
         found = data_types(definitions, new, classes, enums, members)
-        _check_ids(self.data_types, found)
-        codecs = self.codecs + tuple(TypeCodec(t) for t in found)
+        _check_ids(kept.data_types, found)
+        codecs = kept.codecs + tuple(TypeCodec(t) for t in found)
         loads = (*self.loads, tuple(new_roots))
-        return TypeSet(codecs, classes, enums, members, definitions, loads, names)
+        units = {**kept.units, **units_of(new, classes, members)}
+        return TypeSet(codecs, classes, enums, members, definitions, loads, names, units)
+
+    def _without(self, names: set[str]) -> TypeSet:
+        """This set without the types of these full names (replaced by a later root): the
+        tables `with_dsdl` builds on."""
+        if not names:
+            return self
+        gone = {key for key in self.classes if _full_name(key) in names}
+        classes = {k: c for k, c in self.classes.items() if k not in gone}
+        members = {k: m for k, m in self._members.items() if k not in gone}
+        enums = {k: e for k, e in self._enums.items() if k[0] not in gone}
+        left = set(classes.values()) | {m for found in members.values() for m in found}
+        units = {c: found for c, found in self.units.items() if c in left}
+        codecs = tuple(c for c in self.codecs if c.data_type.full_name not in names)
+        names_left = {k: n for k, n in self._names.items() if k not in gone}
+        definitions = {k: d for k, d in self.definitions.items() if k not in names}
+        return TypeSet(codecs, classes, enums, members, definitions, self.loads, names_left, units)
+
+
+class DsdlOverrideWarning(UserWarning):
+    """A definition of a later root replaced one of the same full name (`TypeSet.with_dsdl`)."""
+
+
+def _full_name(key: str) -> str:
+    """The full name of a key (a service half's without ``.Request``/``.Response``)."""
+    return key.removesuffix(".Request").removesuffix(".Response")
+
+
+def _users(definitions: Mapping[str, Definition], names: set[str]) -> set[str]:
+    """``names`` and every definition that nests one of them, however deep."""
+    found = set(names)
+    while True:
+        more = {
+            name
+            for name, d in definitions.items()
+            if name not in found
+            and any(nested_name(a.type) in found for section in d.sections for a in section.fields)
+        }
+        if not more:
+            return found
+        found |= more
 
 
 _STANDARD_ROOT = (
@@ -263,29 +323,6 @@ def _load(loads: tuple[tuple[str, ...], ...]) -> TypeSet:
     return types
 
 
-class Facts(NamedTuple):
-    """What a set knows of each class's attributes."""
-
-    text: dict[type, frozenset[str]]
-    float16: dict[type, frozenset[str]]
-    float32: dict[type, frozenset[str]]
-    units: dict[type, dict[str, str]]
-
-
-def _facts(
-    definitions: Mapping[str, Definition],
-    classes: Mapping[str, type],
-    members: Mapping[str, tuple[type, ...]],
-) -> Facts:
-    """The facts of the classes of a set, from its definitions."""
-    return Facts(
-        text_attributes(definitions, classes, members),
-        text_attributes(definitions, classes, members, is_float16),
-        text_attributes(definitions, classes, members, is_float32),
-        units_of(definitions, classes, members),
-    )
-
-
 def _parse_shipped(roots: Iterable[Path]) -> Callable[[], dict[str, Definition]]:
     """What parses the definitions of a set generated ahead of time, when asked for."""
 
@@ -306,18 +343,15 @@ def _generated_set(
     enums: dict[tuple[str, str], type] = {}
     members: dict[str, tuple[type, ...]] = {}
     names: dict[str, str] = {}
-    facts = Facts({}, {}, {}, {})
+    units: dict[type, dict[str, str]] = {}
     for classes_module, data in modules:
         classes.update(classes_module.CLASSES)
         enums.update(classes_module.ENUMS)
         members.update(classes_module.UNION_MEMBERS)
         names.update(data.CLASS_NAMES)
-        facts.text.update(data.TEXT_FIELDS)
-        facts.float16.update(data.FLOAT16_FIELDS)
-        facts.float32.update(data.FLOAT32_FIELDS)
-        facts.units.update(data.UNITS)
+        units.update(data.UNITS)
     roots = [DSDL_ROOT / "uavcan", *(r for load in loads for r in load)]
-    return TypeSet(codecs, classes, enums, members, _parse_shipped(roots), loads, names, facts)
+    return TypeSet(codecs, classes, enums, members, _parse_shipped(roots), loads, names, units)
 
 
 def _shipped() -> TypeSet:
@@ -337,16 +371,41 @@ def _shipped() -> TypeSet:
 _STANDARD = _generated_set(CODECS, ((standard, standard_data),), ())
 _SHIPPED: TypeSet | None = None
 
-_default = _STANDARD
+_default: TypeSet | None = None
+"""The default set, once `default_types` has built it."""
+
+
+def default_set(
+    environ: Mapping[str, str] | None = None, home: str | os.PathLike[str] | None = None
+) -> TypeSet:
+    """The default set of an environment and home directory: the shipped set
+    (`TypeSet.shipped`, generated ahead of time), then the user's roots of
+    `veronte4x.dronecan.vendor_roots.find_roots` (the subdirectories of
+    ``~/uavcan_vendor_specific_types`` and ``~/dronecan_vendor_specific_types``, then
+    ``VERONTE4X_DSDL_PATH``) in a load of their own, so that they never rename a shipped
+    class; a user's definition of a shipped type replaces it (`TypeSet.with_dsdl`).
+
+    Args:
+        environ: The environment (`os.environ` if None).
+        home: The home directory (`Path.home` if None).
+
+    Raises:
+        DsdlError: A user's root that is no directory, or a malformed definition in one.
+    """
+    return TypeSet.shipped().with_dsdl(*find_roots(environ, home).roots)
 
 
 def default_types() -> TypeSet:
-    """The set used where no ``types=`` is given: the standard one plus `load_dsdl`'s."""
+    """The set used where no ``types=`` is given: `default_set` of this process, built on
+    first use, plus what `load_dsdl` added."""
+    global _default
+    if _default is None:
+        _default = default_set()
     return _default
 
 
 def set_default_types(types: TypeSet) -> None:
-    """Make ``types`` the default set (``TypeSet.standard()`` goes back to the start)."""
+    """Make ``types`` the default set (``default_set()`` goes back to the start)."""
     global _default
     if not isinstance(types, TypeSet):
         raise argument_type_error("set_default_types", "types", "a TypeSet", types)
@@ -357,8 +416,9 @@ def load_dsdl(*root_namespace_dirs: str | bytes | os.PathLike[str] | os.PathLike
     """Add the types of vendor root namespace directories to the default set; return it.
 
     After this, everything that decodes or encodes DroneCAN without an explicit
-    ``types=`` knows them. Loading a directory again does nothing. For two sets side by
-    side, use ``TypeSet.standard().with_dsdl(...)`` and pass it as ``types=``.
+    ``types=`` knows them. Loading a directory again does nothing; a definition of a type
+    the set has replaces it (`TypeSet.with_dsdl`). For two sets side by side, use
+    ``TypeSet.shipped().with_dsdl(...)`` and pass it as ``types=``.
 
     Raises:
         DsdlError: A malformed definition (file and line), an unknown nested type, or a
@@ -366,14 +426,14 @@ def load_dsdl(*root_namespace_dirs: str | bytes | os.PathLike[str] | os.PathLike
             unchanged.
     """
     global _default
-    _default = _default.with_dsdl(*root_namespace_dirs)
+    _default = default_types().with_dsdl(*root_namespace_dirs)
     return _default
 
 
 def types_or_default(types: TypeSet | None, where: str) -> TypeSet:
     """``types``, or the default set for None; TypeError for anything else."""
     if types is None:
-        return _default
+        return _default if _default is not None else default_types()
     if not isinstance(types, TypeSet):
         raise argument_type_error(where, "types", "a TypeSet", types)
     return types

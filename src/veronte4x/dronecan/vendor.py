@@ -246,6 +246,8 @@ class BatteryInfoAux(HtmlDisplay):
     This message is to be used in conjunction with uavcan/equipment/power/1092.BatteryInfo.uavcan
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"max_current", "nominal_voltage", "voltage_cell"})
+
     timestamp: Timestamp = Timestamp()
     voltage_cell: tuple[float, ...] = ()
     """[Volt]"""
@@ -268,6 +270,8 @@ class BatteryContinuous(HtmlDisplay):
     Battery data to be sent continuously
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"state_of_charge", "temperature_cells", "temperature_other", "temperature_pcb"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"capacity_consumed", "current", "voltage"})
     STATUS_FLAG_READY_TO_USE: ClassVar[int] = 1
     STATUS_FLAG_CHARGING: ClassVar[int] = 2
     STATUS_FLAG_CELL_BALANCING: ClassVar[int] = 4
@@ -316,6 +320,10 @@ class BatteryPeriodic(HtmlDisplay):
     Recommend that this message is sent at a maximum of 1Hz and nominally 0.2 Hz (IE: once every 5 seconds.)
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"manufacture_date", "name", "serial_number"})
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"charging_maximum_voltage", "charging_minimum_voltage", "discharge_minimum_voltage", "nominal_voltage"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"charging_maximum_current", "design_capacity", "discharge_maximum_burst_current", "discharge_maximum_current", "full_charge_capacity"})
+
     name: bytes = b""
     """: Formatted as manufacturer_product, 0 terminated"""
     serial_number: bytes = b""
@@ -356,6 +364,8 @@ class BatteryCells(HtmlDisplay):
     Rate: set by parameter on smart battery (default off)
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"voltages"})
+
     voltages: tuple[float, ...] = ()
     """[Volt]"""
     index: int = 0
@@ -369,6 +379,8 @@ class BatteryTag(HtmlDisplay):
     Battery tag information. This is broadcast by a battery tag device
     permanently attached to a battery to record the lifecycle of the battery
     """
+
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"armed_hours"})
 
     serial_number: int = 0
     num_cycles: int = 0
@@ -385,6 +397,7 @@ class Proximity(HtmlDisplay):
     Proximity data
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"distance", "pitch", "yaw"})
     READING_TYPE_NO_DATA: ClassVar[int] = 0
     """Distance is unknown"""
     READING_TYPE_NOT_CONNECTED: ClassVar[int] = 1
@@ -414,6 +427,8 @@ class TrafficReport(HtmlDisplay):
     Network-synchronized timestamp, 0 if not available. Note: not necessarily a UTC time.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"heading", "velocity"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"alt_m"})
     SOURCE_ADSB: ClassVar[int] = 0
     SOURCE_ADSB_UAT: ClassVar[int] = 1
     SOURCE_FLARM: ClassVar[int] = 2
@@ -465,6 +480,8 @@ class TrafficReport(HtmlDisplay):
 class Heading(HtmlDisplay):
     """``ardupilot.gnss.Heading``, message 20002 (``gnss/20002.Heading.uavcan``)."""
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"heading_accuracy_rad", "heading_rad"})
+
     heading_valid: bool = False
     heading_accuracy_valid: bool = False
     heading_rad: float = 0.0
@@ -505,6 +522,9 @@ class RelPosHeading(HtmlDisplay):
 
     timestamp on the gps message
     """
+
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"relative_distance_m", "relative_down_pos_m"})
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"reported_heading_acc_deg", "reported_heading_deg"})
 
     timestamp: Timestamp = Timestamp()
     reported_heading_acc_available: bool = False
@@ -579,6 +599,8 @@ class NotifyState(HtmlDisplay):
 @dataclass(frozen=True, slots=True)
 class FlowMeasurement(HtmlDisplay):
     """``com.hex.equipment.flow.Measurement``, message 20200 (``hex/equipment/flow/20200.Measurement.uavcan``)."""
+
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"flow_integral", "integration_interval", "rate_gyro_integral"})
 
     integration_interval: float = 0.0
     """Integration Interval in seconds"""
@@ -967,6 +989,8 @@ class ServoActuatorStatus(HtmlDisplay):
     Volz servo feedback.
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"actual_position"})
+
     actuator_id: int = 0
     """Unique actuator ID (1..15)"""
     actual_position: float = 0.0
@@ -987,6 +1011,8 @@ class XactiGnssStatus(HtmlDisplay):
 
     Xacti GNSS status
     """
+
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"altitude", "utc_seconds"})
 
     gps_status: int = 0
     order: int = 0
@@ -1040,6 +1066,8 @@ class GimbalAttitudeStatus(HtmlDisplay):
 class CopterAttStatus(HtmlDisplay):
     '``com.xacti.CopterAttStatus``, message 20407 (``xacti/20407.CopterAttStatus.uavcan``).\n\nXacti specific vehicle attitude provided to camera gimbal\nsend periodically 5~10Hz.\n\nquaternion_wxyz_e4[0] = q.w\t(or q.q0) * 1e4f\nquaternion_wxyz_e4[1] = q.x\t(or q.q1) * 1e4f\nquaternion_wxyz_e4[2] = q.y\t(or q.q2) * 1e4f\nquaternion_wxyz_e4[3] = q.z\t(or q.q3) * 1e4f'
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"reserved"})
+
     quaternion_wxyz_e4: tuple[int, ...] = (0,) * 4
     reserved: tuple[float, ...] = ()
 
@@ -1064,6 +1092,7 @@ class CBAT(HtmlDisplay):
     support for CUAV Smart Battery on UAVCAN
     """
 
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"available_energy", "average_current", "average_power", "current", "design_capacity", "full_charge_capacity", "nominal_voltage", "passed_charge", "remaining_capacity", "temperature", "voltage", "voltage_cell"})
     STATUS_FLAG_IN_USE: ClassVar[int] = 1
     """The battery is currently used as a power supply"""
     STATUS_FLAG_CHARGING: ClassVar[int] = 2
@@ -1290,6 +1319,7 @@ class Location(HtmlDisplay):
     see MAVLink XML for detailed description
     """
 
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"altitude_barometric", "altitude_geodetic", "height", "timestamp"})
     ODID_STATUS_UNDECLARED: ClassVar[int] = 0
     """The status of the (UA) Unmanned Aircraft is undefined"""
     ODID_STATUS_GROUND: ClassVar[int] = 1
@@ -1419,6 +1449,7 @@ class SelfID(HtmlDisplay):
     see MAVLink XML for detailed description
     """
 
+    _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"description"})
     ODID_DESC_TYPE_TEXT: ClassVar[int] = 0
     """Free-form text description of the purpose of the flight"""
 
@@ -1435,6 +1466,7 @@ class System(HtmlDisplay):
     see MAVLink XML for detailed description
     """
 
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"area_ceiling", "area_floor", "operator_altitude_geo"})
     ODID_OPERATOR_LOCATION_TYPE_TAKEOFF: ClassVar[int] = 0
     """The location of the operator is the same as the take-off location"""
     ODID_OPERATOR_LOCATION_TYPE_LIVE_GNSS: ClassVar[int] = 1
@@ -1565,6 +1597,8 @@ class Hygrometer(HtmlDisplay):
     support for hygrometer sensors
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"humidity", "temperature"})
+
     temperature: float = 0.0
     humidity: float = 0.0
     id: int = 0
@@ -1576,6 +1610,8 @@ class MagneticFieldStrengthHiRes(HtmlDisplay):
 
     Magnetic field readings, in Gauss, in body frame, high resolution version
     """
+
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"magnetic_field_ga"})
 
     sensor_id: int = 0
     magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
@@ -1622,6 +1658,7 @@ class RPM(HtmlDisplay):
     RPM reading in revolutions per minute
     """
 
+    _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"rpm"})
     FLAGS_UNHEALTHY: ClassVar[int] = 1
     """Sensor is not healthy"""
 
@@ -1637,6 +1674,7 @@ class Stream(HtmlDisplay):
     MPPT streaming data, transmitted at 1Hz
     """
 
+    _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"input_current", "input_power", "input_voltage", "output_current", "output_power", "output_voltage"})
     OV_FAULT: ClassVar[int] = 1
     """over-voltage"""
     UV_FAULT: ClassVar[int] = 2

@@ -334,44 +334,6 @@ CLASS_NAMES: dict[str, str] = {
 }
 """The class name of each key (full name, ``.Request``/``.Response`` for a half)."""
 
-TEXT_FIELDS: dict[type, frozenset[str]] = {
-    _vendor.BatteryPeriodic: frozenset(['manufacture_date', 'name', 'serial_number']),
-    _vendor.SelfID: frozenset(['description']),
-}
-"""The attributes of each class that hold text (`veronte4x.dronecan.types.is_text`)."""
-
-FLOAT16_FIELDS: dict[type, frozenset[str]] = {
-    _vendor.BatteryCells: frozenset(['voltages']),
-    _vendor.BatteryContinuous: frozenset(['state_of_charge', 'temperature_cells', 'temperature_other', 'temperature_pcb']),
-    _vendor.BatteryInfoAux: frozenset(['max_current', 'nominal_voltage', 'voltage_cell']),
-    _vendor.BatteryPeriodic: frozenset(['charging_maximum_voltage', 'charging_minimum_voltage', 'discharge_minimum_voltage', 'nominal_voltage']),
-    _vendor.CopterAttStatus: frozenset(['reserved']),
-    _vendor.Heading: frozenset(['heading_accuracy_rad', 'heading_rad']),
-    _vendor.Hygrometer: frozenset(['humidity', 'temperature']),
-    _vendor.Proximity: frozenset(['distance', 'pitch', 'yaw']),
-    _vendor.RelPosHeading: frozenset(['relative_distance_m', 'relative_down_pos_m']),
-    _vendor.ServoActuatorStatus: frozenset(['actual_position']),
-    _vendor.Stream: frozenset(['input_current', 'input_power', 'input_voltage', 'output_current', 'output_power', 'output_voltage']),
-    _vendor.TrafficReport: frozenset(['heading', 'velocity']),
-}
-"""The attributes of each class that hold float16 values."""
-
-FLOAT32_FIELDS: dict[type, frozenset[str]] = {
-    _vendor.BatteryContinuous: frozenset(['capacity_consumed', 'current', 'voltage']),
-    _vendor.BatteryPeriodic: frozenset(['charging_maximum_current', 'design_capacity', 'discharge_maximum_burst_current', 'discharge_maximum_current', 'full_charge_capacity']),
-    _vendor.BatteryTag: frozenset(['armed_hours']),
-    _vendor.CBAT: frozenset(['available_energy', 'average_current', 'average_power', 'current', 'design_capacity', 'full_charge_capacity', 'nominal_voltage', 'passed_charge', 'remaining_capacity', 'temperature', 'voltage', 'voltage_cell']),
-    _vendor.FlowMeasurement: frozenset(['flow_integral', 'integration_interval', 'rate_gyro_integral']),
-    _vendor.Location: frozenset(['altitude_barometric', 'altitude_geodetic', 'height', 'timestamp']),
-    _vendor.MagneticFieldStrengthHiRes: frozenset(['magnetic_field_ga']),
-    _vendor.RPM: frozenset(['rpm']),
-    _vendor.RelPosHeading: frozenset(['reported_heading_acc_deg', 'reported_heading_deg']),
-    _vendor.System: frozenset(['area_ceiling', 'area_floor', 'operator_altitude_geo']),
-    _vendor.TrafficReport: frozenset(['alt_m']),
-    _vendor.XactiGnssStatus: frozenset(['altitude', 'utc_seconds']),
-}
-"""The attributes of each class that hold float32 values."""
-
 UNITS: dict[type, dict[str, str]] = {
     _vendor.BatteryCells: {'voltages': 'Volt'},
     _vendor.BatteryContinuous: {'capacity_consumed': 'Ah', 'current': 'A', 'state_of_charge': '%', 'temperature_cells': 'C', 'temperature_other': 'C', 'temperature_pcb': 'C', 'voltage': 'V'},

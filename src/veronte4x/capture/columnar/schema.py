@@ -23,7 +23,7 @@ nested structs flattened (``timestamp.usec`` of ``gnss.Fix2``), arrays of struct
 of Arrow structs (``commands`` of ``actuator.ArrayCommand``, enums there by name as at
 the top level), other arrays as lists (``covariance``), ``uint8`` arrays as ``binary``,
 but for text. DSDL v0 has no text type; a ``uint8[<=N]`` field is text by the rule of
-`veronte4x.dronecan.types.is_text` (its name or its comment says so: ``name`` of
+`veronte4x.dronecan.generate.is_text` (its name or its comment says so: ``name`` of
 ``GetNodeInfoResponse``, ``path`` of ``file.Path``, ``text`` and ``source`` of
 ``debug.LogMessage``, the union member ``string_value``), applied here to every type set,
 vendor namespaces included. With the text form ``string`` (`TextForm`, the default) those

@@ -1,7 +1,7 @@
 """DroneCAN text fields as Arrow strings, their bytes never altered.
 
 DSDL v0 has no text type: names, paths and log text are ``uint8`` arrays, text by the rule
-of `veronte4x.dronecan.types.is_text`. With the text form ``string`` (the default,
+of `veronte4x.dronecan.generate.is_text`. With the text form ``string`` (the default,
 `veronte4x.capture.busmap.TextForm`) their columns are Arrow ``string``; bytes that are
 not UTF-8 are not replaced or dropped silently: the value is null, and the row gets a
 ``bad text`` row in the ``errors`` table (same time, channel, CAN ID and sender) whose
