@@ -23,14 +23,18 @@ from libcanard_streams import VECTORS
 from tests.capture.columnar_support import assert_same_tables, write
 
 from veronte4x import capture, dronecan
+from veronte4x.capture import BusMap
 from veronte4x.capture.columnar import engine
 from veronte4x.capture.columnar.sources import read_frames
-from veronte4x.dronecan import Problem, Problems
+from veronte4x.dronecan import Problem, Problems, TypeSet
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID
 from veronte4x.errors import DecodeError
 
 DOCUMENT = json.loads(VECTORS.read_text())
+STANDARD = TypeSet.standard()
+"""The types libcanard was told to accept when it made the vectors (the standard set)."""
+STANDARD_MAP = BusMap().with_types(STANDARD)
 STREAMS: dict[str, Any] = DOCUMENT["streams"]
 
 # libcanard's return codes (canard.h) and the problems that name them.
@@ -87,7 +91,7 @@ def outcomes(stream: dict[str, Any], kind: type = bytes, **options: Any) -> list
     reassemblers: dict[int, dronecan.Reassembler] = {}
     out = []
     for at, interface, can_id, data in stream["frames"]:
-        r = reassemblers.setdefault(interface, dronecan.Reassembler(**options))
+        r = reassemblers.setdefault(interface, dronecan.Reassembler(types=STANDARD, **options))
         out.append(r.push(can_id, kind(bytes.fromhex(data)), at / 1e6))
     return out
 
@@ -157,7 +161,7 @@ def test_read_tables_accepts_what_libcanard_does(name: str, tmp_path: Path) -> N
     stream = STREAMS[name]
     lines = [f"({t / 1e6:.6f}) can{i} {c:08X}#{d.upper()}" for t, i, c, d in stream["frames"]]
     path = write(tmp_path / "capture.log", lines)
-    records = list(capture.read(path))
+    records = list(capture.read(path, types=STANDARD))
     results = stream.get("interfaces_apart", stream["libcanard"])
     want = [
         (f"can{i}", c & 0x7F, found[1])
@@ -165,9 +169,9 @@ def test_read_tables_accepts_what_libcanard_does(name: str, tmp_path: Path) -> N
         if isinstance(found := expected(c, result), tuple)
     ]
     assert [(r.channel, r.node_id, r.message) for r in records if r.message is not None] == want
-    tables = capture.tables_from_records(records)
-    assert_same_tables(capture.read_tables(path), tables)
-    assert_same_tables(engine.decode_into(read_frames(path)).finish(), tables)
+    tables = capture.tables_from_records(records, types=STANDARD)
+    assert_same_tables(capture.read_tables(path, types=STANDARD), tables)
+    assert_same_tables(engine.decode_into(read_frames(path), STANDARD_MAP).finish(), tables)
 
 
 def _pydronecan(stream: dict[str, Any]) -> int:
