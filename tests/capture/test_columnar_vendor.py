@@ -117,7 +117,7 @@ def test_vendor_transfers_are_decoded_column_wise(tmp_path: Path) -> None:
     assert "errors" not in tables and "unknown" not in tables
     # The standard set does not know them: they go frame by frame, as unknown records.
     with mock.patch.object(engine, "per_frame", spy):
-        plain = capture.read_tables(path)
+        plain = capture.read_tables(path, types=TypeSet.standard())
     assert len(seen) == len(_lines(VENDOR_TYPES)) - 3
     assert set(plain) == {"NodeStatus", "unknown"}
 

@@ -11,6 +11,7 @@ roots loaded at run time.
 
 from __future__ import annotations
 
+import itertools
 import re
 import typing
 from typing import Any
@@ -33,6 +34,7 @@ from veronte4x.dronecan.compiled import (
 )
 from veronte4x.dronecan.parser import check_references, parse_namespaces
 from veronte4x.dronecan.schema import DataType
+from veronte4x.dronecan.serializer import EnumValues, enum_table
 from veronte4x.dronecan.types import DSDL_ROOT, data_types, nested_signatures
 from veronte4x.dronecan.typeset import TypeSet
 from veronte4x.dronecan.vendor_roots import shipped_roots
@@ -159,3 +161,21 @@ def test_the_shipped_set_reads_tables_as_the_roots_loaded_at_run_time(
 
 _LOADED = TypeSet.standard().with_dsdl(*shipped_roots())
 """The shipped vendor roots compiled at run time (the reference of the tests above)."""
+
+
+def test_a_wide_enum_field_is_looked_up_not_tabled() -> None:
+    """``ardupilot.gnss.Status.status`` is a ``uint23`` of flags: its table of members by raw
+    value looks each value up (a tuple would hold 8,388,608 entries, built on the type's
+    first transfer), with the tuple's values."""
+    schema = SHIPPED.by_class[SHIPPED["ardupilot.gnss.Status"]].data_type.schema
+    flags = next(f.enum for f in schema.fields if f.enum is not None)
+    table = enum_table(flags, 23)
+    assert isinstance(table, EnumValues) and len(table) == 1 << 23
+    members = {int(m): m for m in flags}  # type: ignore[attr-defined]
+    for value in (0, *members, 3, (1 << 23) - 1):
+        assert table[value] is members.get(value, value) or table[value] == value
+        assert type(table[value]) is (flags if value in members else int)
+    assert list(itertools.islice(table, 5)) == [table[i] for i in range(5)]
+    with pytest.raises(IndexError):
+        table[1 << 23]
+    assert enum_table(flags, 8) == tuple(members.get(i, i) for i in range(256))

@@ -16,6 +16,7 @@ for saturation; `compiled` holds the fast paths.
 from __future__ import annotations
 
 import functools
+from collections.abc import Iterator
 from typing import Any
 
 from veronte4x.dronecan.float16 import (
@@ -101,10 +102,39 @@ class _Reader:
         return int.from_bytes(low.to_bytes(full, "big"), "little") | (top << (8 * full))
 
 
+TABLE_BITS = 16
+"""Widest enum field whose `enum_table` is a tuple (65,536 entries); a wider one's (a
+``uint23`` of flags: ``ardupilot.gnss.Status.status``) is an `EnumValues` that looks each
+value up when asked."""
+
+
+class EnumValues:
+    """The `enum_table` of a wide enum field: each raw value's member, or the int itself,
+    looked up by index (as a tuple's, from 0)."""
+
+    def __init__(self, known: dict[int, Any], bits: int) -> None:
+        self._known = known
+        self._size = 1 << bits
+
+    def __len__(self) -> int:
+        return self._size
+
+    def __getitem__(self, index: int) -> Any:
+        if not 0 <= index < self._size:
+            raise IndexError(index)
+        return self._known.get(index, index)
+
+    def __iter__(self) -> Iterator[Any]:
+        return (self._known.get(i, i) for i in range(self._size))
+
+
 @functools.cache
-def enum_table(enum: type, bits: int) -> tuple[Any, ...]:
-    """Map each raw value to its enum member, or keep the int where the enum has none."""
+def enum_table(enum: type, bits: int) -> tuple[Any, ...] | EnumValues:
+    """Map each raw value to its enum member, or keep the int where the enum has none: a
+    tuple, or an `EnumValues` for a field wider than `TABLE_BITS`."""
     known = {int(member): member for member in enum}  # type: ignore[attr-defined]
+    if bits > TABLE_BITS:
+        return EnumValues(known, bits)
     return tuple(known.get(i, i) for i in range(1 << bits))
 
 
