@@ -43,6 +43,7 @@ fields = [
 [dronecan]
 enabled = false
 text = "binary"
+strict_transfers = true
 """
     )
     bus = BusMap.from_toml(str(path))
@@ -52,6 +53,7 @@ text = "binary"
     assert bus.allow_excess is True
     assert bus.dronecan is False
     assert bus.dronecan_text == "binary"
+    assert bus.strict_transfers is True
     message = bus.codec().decode(bytes.fromhex("093ff681"), sender=codec.Sender.AUTOPILOT)
     assert type(message).__name__ == "CellTemperature"
     assert (message.sensor, round(message.celsius, 1)) == (3, -1.0)  # type: ignore[attr-defined]
@@ -69,6 +71,7 @@ text = "binary"
         ("[[veronte.layouts]]\ncommand = 2\nname = 'X'\n", "command 2 has a public layout"),
         ("[dronecan]\ntext = 'utf-16'\n", "[dronecan] text: 'utf-16' is not one of string"),
         ("[dronecan]\ntext = 1\n", "[dronecan] text: 1 is not one of string, binary"),
+        ("[dronecan]\nstrict_transfers = 1\n", "[dronecan] strict_transfers: 1 is not true"),
         ("x = [", "bus.toml"),
     ],
 )

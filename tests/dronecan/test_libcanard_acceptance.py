@@ -14,7 +14,10 @@ reassembler elsewhere) must give those same transfers, and the same tables.
 
 from __future__ import annotations
 
+import importlib.util
 import json
+import subprocess
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -212,3 +215,32 @@ def test_where_pydronecan_differs_veronte4x_follows_libcanard(
     assert _pydronecan(stream) == pydronecan
     assert sum(len(r) > 1 for r in stream["libcanard"]) == libcanard
     assert _count(stream) == libcanard
+
+
+@pytest.mark.parametrize(("strict", "want"), [(False, 17), (True, 1)])
+def test_strict_transfers_reach_every_way_of_decoding(
+    strict: bool, want: int, tmp_path: Path
+) -> None:
+    """Issue 35's stuck StaticPressure node through `capture.read`, `read_tables` and
+    ``veronte4x decode``: 17 transfers by libcanard's rules, 1 with ``strict_transfers``."""
+    stream = STREAMS["stuck single frames"]
+    lines = [f"({t / 1e6:.6f}) can{i} {c:08X}#{d.upper()}" for t, i, c, d in stream["frames"]]
+    path = write(tmp_path / "capture.log", lines)
+    option = {"strict_transfers": True} if strict else {}
+    records = list(capture.read(path, **option))
+    assert [r.kind for r in records if r.message is not None] == ["StaticPressure"] * want
+    if importlib.util.find_spec("pyarrow") is not None:
+        tables = capture.read_tables(path, **option)
+        assert tables["StaticPressure"].num_rows == want
+        assert_same_tables(tables, capture.tables_from_records(records))
+    flag = ["--strict-transfers"] if strict else []
+    result = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "decode", str(path), *flag],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    # The strict rules refuse the 16 repeats: each is a bad record, which decode skips.
+    summary = f"veronte4x: 17 records, 0 undecoded, {17 - want} bad (skip)\n"
+    assert (result.returncode, result.stderr) == (0, summary)
+    assert sum("StaticPressure(" in line for line in result.stdout.splitlines()) == want

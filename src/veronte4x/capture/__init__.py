@@ -74,6 +74,7 @@ def read(
     channel: str | None = None,
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
+    strict_transfers: bool | None = None,
 ) -> Iterator[Record]:
     """Stream the decoded records of a capture file.
 
@@ -91,6 +92,11 @@ def read(
             ``TypeSet.standard().with_dsdl("dsdl/com")``); None for the bus map's, else
             the default set (the standard one, plus what `veronte4x.dronecan.load_dsdl`
             added).
+        strict_transfers: Reassemble DroneCAN transfers under veronte4x's strict rules
+            (``Reassembler(strict=True)``) instead of libcanard's, which accept a transfer
+            wherever libcanard's ``canardHandleRxFrame`` does; None for the bus map's
+            ``strict_transfers`` (off unless set). See "Transfer acceptance" in the
+            DroneCAN reassembly docs.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows, or
@@ -99,7 +105,7 @@ def read(
             installed.
         OSError: The file cannot be opened.
     """
-    bus_map = with_dbc(bus_map, dbc).with_types(types)
+    bus_map = with_dbc(bus_map, dbc).with_types(types).with_strict_transfers(strict_transfers)
     dbc_decoder = decoder_of(bus_map.dbc, bus_map.dbc_lax) if bus_map.dbc else None
     source = resolve(path)
     records = source.reader.read_records(source, CaptureDecoder(bus_map), channel)
@@ -123,6 +129,7 @@ def read_tables(
     dbc: Iterable[str | os.PathLike[str]] = (),
     types: TypeSet | None = None,
     text: TextForm | None = None,
+    strict_transfers: bool | None = None,
 ) -> dict[str, pyarrow.Table]:
     """Decode whole captures into typed Arrow tables, one per message type.
 
@@ -166,6 +173,11 @@ def read_tables(
             strings, a value that is not UTF-8 null with a ``bad text`` row in ``errors``
             holding its bytes; ``binary``, every ``uint8`` array as its exact bytes. None
             for the bus map's ``dronecan_text`` (``string`` unless set).
+        strict_transfers: Reassemble DroneCAN transfers under veronte4x's strict rules
+            (``Reassembler(strict=True)``) instead of libcanard's, which accept a transfer
+            wherever libcanard's ``canardHandleRxFrame`` does; None for the bus map's
+            ``strict_transfers`` (off unless set). See "Transfer acceptance" in the
+            DroneCAN reassembly docs.
 
     Raises:
         SourceError: The path is a directory or a file in no format veronte4x knows.
@@ -189,6 +201,7 @@ def read_tables(
         ['unknown command']
     """
     bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
+    bus_map = bus_map.with_strict_transfers(strict_transfers)
     if bus_map.dbc:
         decoder_of(bus_map.dbc, bus_map.dbc_lax)  # a bad DBC fails before any decoding
     tables: dict[str, pyarrow.Table] = _columnar().read_tables(
@@ -225,6 +238,7 @@ def to_parquet(
     types: TypeSet | None = None,
     time: TimeForm = "timestamp",
     text: TextForm | None = None,
+    strict_transfers: bool | None = None,
 ) -> Summary:
     """Decode captures into a Parquet dataset, in memory that does not grow with a file.
 
@@ -267,6 +281,7 @@ def to_parquet(
         text: The form of DroneCAN text fields, as in `read_tables`: ``string`` (Parquet
             ``BYTE_ARRAY`` annotated ``STRING``, DuckDB's ``VARCHAR``) or ``binary``
             (``BLOB``); None for the bus map's. Keep one form per dataset, as for ``time``.
+        strict_transfers: The DroneCAN transfer rules, as in `read_tables`.
 
     Returns:
         A ``Summary``: files, frames, rows per table, errors and seconds.
@@ -284,6 +299,7 @@ def to_parquet(
     from veronte4x.capture.columnar.dataset import to_parquet as convert
 
     bus_map = with_dbc(bus_map, dbc).with_types(types).with_text(text)
+    bus_map = bus_map.with_strict_transfers(strict_transfers)
     if bus_map.dbc:
         decoder_of(bus_map.dbc, bus_map.dbc_lax)  # a bad DBC fails before any file
     summary: Summary = convert(source, out_dir, bus_map, client, progress, channel, time_form=time)

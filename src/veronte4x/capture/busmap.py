@@ -25,6 +25,7 @@ standard 11-bit IDs. They are defaults only; a TOML file overrides them::
 
     [dronecan]
     enabled = true                   # 29-bit frames that are not Veronte go to DroneCAN
+    strict_transfers = false         # veronte4x's strict transfer rules, not libcanard's
 
     [dbc]                            # the DBC files given with --dbc (or BusMap.dbc)
     lax = false                      # read files cantools reads only with strict=False
@@ -117,6 +118,9 @@ class BusMap:
         dbc_first: A frame on a CAN ID a DBC file knows is the DBC's, even on a Veronte
             ID or a 29-bit ID DroneCAN would decode. Without it such a DBC message is
             reported once (a ``DbcWarning``) and its frames stay the bus map's.
+        strict_transfers: Reassemble DroneCAN transfers under veronte4x's strict rules
+            (``Reassembler(strict=True)``) rather than libcanard's, the default: see
+            "Transfer acceptance" in docs/dronecan/reassembly.md.
     """
 
     arbiter_id: int = 255
@@ -131,6 +135,7 @@ class BusMap:
     dronecan_text: TextForm = "string"
     dbc_lax: bool = False
     dbc_first: bool = False
+    strict_transfers: bool = False
     _roles: dict[int, tuple[Role, int | None]] = field(
         init=False, repr=False, compare=False, default_factory=dict
     )
@@ -191,6 +196,16 @@ class BusMap:
             raise argument_type_error("BusMap.with_types", "types", "a TypeSet", types)
         return dataclasses.replace(self, dronecan_types=types)
 
+    def with_strict_transfers(self, strict: bool | None) -> BusMap:
+        """This bus map with DroneCAN's strict transfer rules on or off (itself for None)."""
+        if strict is None:
+            return self
+        if not isinstance(strict, bool):
+            raise argument_type_error(
+                "BusMap.with_strict_transfers", "strict", "a bool or None", strict
+            )
+        return dataclasses.replace(self, strict_transfers=strict)
+
     def with_text(self, text: TextForm | None) -> BusMap:
         """This bus map with the DroneCAN text form ``text`` (itself for None).
 
@@ -246,7 +261,7 @@ class BusMap:
             "[veronte]",
         )
         dronecan = _table(top.get("dronecan", {}), "[dronecan]")
-        _only(dronecan, {"enabled", "text"}, "[dronecan]")
+        _only(dronecan, {"enabled", "text", "strict_transfers"}, "[dronecan]")
         dbc = _table(top.get("dbc", {}), "[dbc]")
         _only(dbc, {"lax", "first"}, "[dbc]")
         default = cls()
@@ -281,6 +296,9 @@ class BusMap:
                 layouts=layouts,
                 dronecan=decode_dronecan,
                 dronecan_text=text,
+                strict_transfers=_bool(
+                    dronecan.get("strict_transfers", False), "[dronecan] strict_transfers"
+                ),
                 dbc_lax=_bool(dbc.get("lax", False), "[dbc] lax"),
                 dbc_first=_bool(dbc.get("first", False), "[dbc] first"),
             )

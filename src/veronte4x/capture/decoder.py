@@ -37,8 +37,9 @@ class CaptureDecoder:
     """Decode the frames of a capture into `Record` objects.
 
     Args:
-        bus_map: CAN IDs of the Veronte roles and the codec choices; defaults to Embention's
-            template IDs.
+        bus_map: CAN IDs of the Veronte roles and the codec choices (among them
+            ``strict_transfers``, the rules of every channel's reassembler); defaults to
+            Embention's template IDs.
     """
 
     def __init__(self, bus_map: BusMap | None = None) -> None:
@@ -243,7 +244,7 @@ class CaptureDecoder:
         reassembler = self.reassemblers.get(channel)
         if reassembler is None:
             reassembler = self.reassemblers[channel] = Reassembler(
-                types=self.bus_map.dronecan_types
+                types=self.bus_map.dronecan_types, strict=self.bus_map.strict_transfers
             )
         return reassembler
 

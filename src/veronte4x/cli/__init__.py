@@ -27,7 +27,12 @@ from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
 from veronte4x.cli import list as list_command
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
-from veronte4x.cli.options import UsageError, check_bus_spelling, with_dbc_options
+from veronte4x.cli.options import (
+    UsageError,
+    check_bus_spelling,
+    with_dbc_options,
+    with_transfer_rules,
+)
 from veronte4x.dronecan import DsdlError, load_dsdl
 from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.errors import SourceError
@@ -82,7 +87,7 @@ def _run(argv: Sequence[str] | None) -> int:
         bus_map = BusMap.from_toml(args.bus_map) if args.bus_map else BusMap()
         if getattr(args, "dsdl", None):
             bus_map = bus_map.with_types(load_dsdl(*args.dsdl))
-        bus_map = with_dbc_options(args, bus_map)
+        bus_map = with_transfer_rules(args, with_dbc_options(args, bus_map))
         result: int = args.run(args, bus_map)
         return result
     except KeyboardInterrupt:

@@ -56,7 +56,19 @@ def add_capture_options(parser: argparse.ArgumentParser) -> None:
         help="a CAN ID a --dbc file knows is the DBC's, even a Veronte ID or a 29-bit ID "
         "DroneCAN would decode",
     )
+    parser.add_argument(
+        "--strict-transfers",
+        action="store_true",
+        help="reassemble DroneCAN transfers under veronte4x's strict rules instead of "
+        "libcanard's (the default): a first frame repeating the transfer id just delivered, "
+        "even a single frame, is refused within the 2 s timeout",
+    )
     add_dsdl_option(parser)
+
+
+def with_transfer_rules(args: argparse.Namespace, bus_map: BusMap) -> BusMap:
+    """``bus_map`` with ``--strict-transfers`` if given (else the bus map's own choice)."""
+    return bus_map.with_strict_transfers(True if getattr(args, "strict_transfers", False) else None)
 
 
 def with_dbc_options(args: argparse.Namespace, bus_map: BusMap) -> BusMap:

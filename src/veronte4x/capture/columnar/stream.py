@@ -400,7 +400,7 @@ class StreamDecoder:
             reassembler = self.decoder.reassemblers.get(name)
             if reassembler is None:
                 reassembler = self.decoder.reassemblers[name] = Reassembler(
-                    types=self.bus_map.dronecan_types
+                    types=self.bus_map.dronecan_types, strict=self.bus_map.strict_transfers
                 )
             at = start
             while at < len(rows) and context[rows[at]]:  # the last whole transfer, again
