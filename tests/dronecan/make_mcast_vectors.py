@@ -20,6 +20,7 @@ import tempfile
 import time
 from importlib.metadata import version
 from pathlib import Path
+from typing import Any
 
 from dronecan.driver.common import CANFrame
 
@@ -53,7 +54,7 @@ listener.settimeout(10)
 
 driver = dronecan.driver.make_driver(f"mcast:{BUS}")
 time.sleep(1.0)  # its io process connects after 0.1 s
-sent = []
+sent: list[dict[str, Any]] = []
 for can_id, data, ext, fd in frames:
     driver.send_frame(CANFrame(can_id, bytearray.fromhex(data), ext, canfd=fd))
     datagram, _ = listener.recvfrom(200)
@@ -66,13 +67,16 @@ out = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
 out.connect((GROUP, PORT))
 
 
-def crc(b):
+def crc(data: bytes) -> int:
+    """pydronecan's CRC-16-CCITT."""
     from dronecan.dsdl.common import crc16_from_bytes
 
-    return crc16_from_bytes(b)
+    value: int = crc16_from_bytes(data)
+    return value
 
 
-def pkt(flags, mid, data, magic=0x2934, bad_crc=False):
+def pkt(flags: int, mid: int, data: bytes, magic: int = 0x2934, bad_crc: bool = False) -> bytes:
+    """A datagram made by hand (a wrong magic or CRC if asked)."""
     body = struct.pack("<HI", flags, mid) + data
     c = crc(body) ^ (1 if bad_crc else 0)
     return struct.pack("<HH", magic, c) + body
