@@ -16,7 +16,7 @@ from veronte4x import codec, dronecan
 from veronte4x.codec import layouts
 from veronte4x.codegen import slot_builder
 from veronte4x.dronecan.codec import BY_CLASS
-from veronte4x.dronecan.compiled import SlowPath
+from veronte4x.dronecan.fast_base import SlowPath
 from veronte4x.errors import DecodeError
 
 
@@ -34,22 +34,28 @@ def test_dronecan_error_in_generated_code_shows_its_line() -> None:
     with pytest.raises(SlowPath) as caught:
         fast.decode(bytes(4))  # a struct item cut short: the generated code hands over
     text = "".join(traceback.format_exception(caught.value))
-    assert "<veronte4x generated fast paths uavcan.equipment.indication.LightsCommand #" in text
+    assert "dronecan/fast/uavcan_equipment_indication_LightsCommand.py" in text
     assert "raise SlowPath" in text
     assert "def decode(buf):" in inspect.getsource(fast.decode)
 
 
-def test_dronecan_types_compile_on_first_use() -> None:
+def test_shipped_types_compile_nothing_and_import_their_fast_paths_on_first_use() -> None:
     code = (
-        "import linecache, veronte4x.dronecan as d\n"
-        "def count():\n"
-        "    return sum('generated fast paths' in name for name in linecache.cache)\n"
-        "before = count()\n"
+        "import linecache, sys, veronte4x.dronecan as d\n"
+        "def state():\n"
+        "    fast = [m for m in sys.modules if m.startswith('veronte4x.dronecan.fast.')]\n"
+        "    compiled = sum('generated fast paths' in name for name in linecache.cache)\n"
+        "    return f'{sorted(fast)}/{compiled}'\n"
+        "before = state()\n"
         "d.decode_frames([(0x1015505, bytes(7) + b'\\xc0')])\n"
-        "print(before, count())\n"
+        "print(before, state())\n"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert done.stdout.split() == ["0", "1"]  # nothing at import, then NodeStatus alone
+    # Nothing at import, then NodeStatus's checked-in module alone; nothing compiled.
+    assert done.stdout.split() == [
+        "[]/0",
+        "['veronte4x.dronecan.fast.uavcan_protocol_NodeStatus']/0",
+    ]
 
 
 def test_getsource_of_generated_functions() -> None:

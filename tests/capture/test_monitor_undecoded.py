@@ -14,7 +14,7 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 FOREIGN = (
     "(1763737200.100000) can0 123#0102\n"
     "(1763737200.200000) can0 123#0304\n"
-    "(1763737200.300000) can0 104E2015#01C0\n"  # DroneCAN data type 20000 from node 21
+    "(1763737200.300000) can0 104E2815#01C0\n"  # data type 20008 (none shipped), node 21
 )
 
 
@@ -29,7 +29,7 @@ def test_foreign_frames_get_a_row_each(tmp_path: Path) -> None:
     rows = state.rows()
     foreign = [(r.sender, r.kind, r.can_id, r.count, r.errors, r.fields) for r in rows[-2:]]
     assert foreign == [
-        ("node 21", "DroneCAN data type 20000", 0x104E2015, 1, 0, "[01 c0]"),
+        ("node 21", "DroneCAN data type 20008", 0x104E2815, 1, 0, "[01 c0]"),
         ("unknown", "11-bit CAN ID 0x123", 0x123, 2, 0, "[03 04]"),
     ]
     assert [(r.sender, r.kind, r.count, r.fields) for r in rows[:-2]] == [

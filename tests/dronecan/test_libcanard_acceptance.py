@@ -226,11 +226,10 @@ def test_strict_transfers_reach_every_way_of_decoding(
     stream = STREAMS["stuck single frames"]
     lines = [f"({t / 1e6:.6f}) can{i} {c:08X}#{d.upper()}" for t, i, c, d in stream["frames"]]
     path = write(tmp_path / "capture.log", lines)
-    option = {"strict_transfers": True} if strict else {}
-    records = list(capture.read(path, **option))
+    records = list(capture.read(path, strict_transfers=strict))
     assert [r.kind for r in records if r.message is not None] == ["StaticPressure"] * want
     if importlib.util.find_spec("pyarrow") is not None:
-        tables = capture.read_tables(path, **option)
+        tables = capture.read_tables(path, strict_transfers=strict)
         assert tables["StaticPressure"].num_rows == want
         assert_same_tables(tables, capture.tables_from_records(records))
     flag = ["--strict-transfers"] if strict else []
