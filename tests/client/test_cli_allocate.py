@@ -126,6 +126,16 @@ def test_a_table_that_binds_one_unique_id_twice_is_refused_in_one_line(tmp_path:
     )
 
 
+def test_a_table_in_a_missing_directory_is_refused_before_serving(tmp_path: Path) -> None:
+    table = tmp_path / "no such folder" / "t.jsonl"
+    result = veronte4x("esc", "allocate", str(table), "-i", "virtual", "-c", "test-cli-allocate")
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == (
+        f"veronte4x: {table}: the directory {table.parent} does not exist or cannot be "
+        "written: give a table path in a writable directory\n"
+    )
+
+
 def test_a_preferred_node_id_needs_a_dynamic_one(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["simulate", "esc", "--preferred-node-id", "5", "-i", "virtual", "-c", "x"]) == 2
     assert capsys.readouterr().err == "veronte4x: --preferred-node-id needs --dynamic-node-id\n"

@@ -95,6 +95,7 @@ def run(client: BusClient, args: argparse.Namespace) -> int:
         elif not isinstance(event, AllocationConflict):
             print(_text(event), flush=True)
 
+    allocation_table.check_storable(args.table)  # one line before anything is sent
     entries = len(allocation_table.load(args.table))  # a bad table: one line, nothing sent
     print(
         f"veronte4x: allocation server at node {client.node_id}, table {args.table} "

@@ -205,6 +205,21 @@ def load(path: str | os.PathLike[str]) -> AllocationTable:
     return loads(text, os.fspath(path))
 
 
+def check_storable(path: str | os.PathLike[str]) -> None:
+    """Refuse a table path whose directory does not exist or cannot be written, before a
+    server starts (`save` writes a new file beside it and renames it).
+
+    Raises:
+        AllocationTableError: The directory is missing, not a directory, or not writable.
+    """
+    folder = Path(path).absolute().parent
+    if not folder.is_dir() or not os.access(folder, os.W_OK | os.X_OK):
+        raise AllocationTableError(
+            f"{os.fspath(path)}: the directory {folder} does not exist or cannot be "
+            "written: give a table path in a writable directory"
+        )
+
+
 def save(path: str | os.PathLike[str], table: AllocationTable) -> None:
     """Write the table to ``path`` whole: a new file beside it, flushed to the disk, then
     renamed over the old one (and the directory flushed), so that a crash at any point
