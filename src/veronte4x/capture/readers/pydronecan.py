@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING
 
 from veronte4x.capture.frames import BadLine, Frame, Truncation, micros, micros_seconds
 from veronte4x.dronecan.crc import crc16
-from veronte4x.dronecan.mcast import FD_LENGTHS
+from veronte4x.dronecan.mcast import FD_LENGTHS, ID_EXTENDED
 from veronte4x.errors import SourceError
 
 if TYPE_CHECKING:
@@ -48,7 +48,6 @@ RECORD = struct.Struct("<HQHHHI")
 """magic, timestamp, crc, length, flags, id: the 20 bytes before the data."""
 FLAG_FD = 0x0001
 """``flags`` bit of a CAN FD frame (``FILE_FLAG_CANFD``)."""
-ID_EXTENDED = 1 << 31
 _MAGIC_BYTES = MAGIC.to_bytes(2, "little")
 _LONGEST = RECORD.size + 64
 _CHUNK = 1 << 20
