@@ -61,7 +61,7 @@ from veronte4x.codec.fields import Field, FieldKind
 from veronte4x.codec.layouts import AUTOPILOT_FIELDS, AUTOPILOTS
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.schema import Array, Member, Scalar, Struct, StructField, Union
-from veronte4x.dronecan.serializer import enum_table
+from veronte4x.dronecan.serializer import TABLE_BITS, enum_table
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.units import unit
 
@@ -328,8 +328,10 @@ def field_type(f: StructField) -> pa.DataType:
 
 
 def field_enum_names(f: StructField) -> tuple[str, ...] | None:
-    """The `enum_names` of an enum field; None for another field."""
-    if f.enum is None or not isinstance(f.type, Scalar):
+    """The `enum_names` of an enum field; None for another field, and for an enum field
+    wider than `TABLE_BITS` (``ardupilot.gnss.Status.status``, 23 bits of flags): its column
+    holds the number, as a dictionary of every wire value would not fit."""
+    if f.enum is None or not isinstance(f.type, Scalar) or f.type.bits > TABLE_BITS:
         return None
     return enum_names(f.enum, f.type.bits)
 
