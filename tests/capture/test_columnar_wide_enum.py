@@ -5,6 +5,7 @@ its 8,388,608 wire values cost every `read_tables` seconds, the type seen or not
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pyarrow as pa
 
@@ -16,7 +17,7 @@ from veronte4x.dronecan.typeset import default_types
 def test_a_wide_enum_field_is_its_number(tmp_path: Path) -> None:
     types = default_types()
     cls = types["ardupilot.gnss.Status"]
-    message = dronecan.from_builtin(
+    message: Any = dronecan.from_builtin(
         cls, {"error_codes": 7, "healthy": True, "status": 0x400003}, types
     )
     frames = dronecan.encode(message, source_node_id=10, transfer_id=0)
