@@ -90,3 +90,10 @@ def test_every_class_built_with_its_defaults_encodes_and_decodes_back(cls: type)
         message, source_node_id=5, transfer_id=0, destination_node_id=destination
     )
     assert dronecan.decode_frames([(f.can_id, f.data) for f in frames]).message == message
+
+
+def test_the_constants_of_the_public_dsdl_that_the_dronecan_package_lacks() -> None:
+    """dronecan/DSDL b4653c7 added BatteryInfo's STATE_OF_CHARGE_UNKNOWN; the ``dronecan``
+    package 1.0.27 has only STATE_OF_HEALTH_UNKNOWN."""
+    assert standard.BatteryInfo.STATE_OF_CHARGE_UNKNOWN == 127
+    assert standard.BatteryInfo.STATE_OF_HEALTH_UNKNOWN == 127

@@ -1322,6 +1322,8 @@ class BatteryInfo(HtmlDisplay):
     """Keep zero"""
     STATE_OF_HEALTH_UNKNOWN: ClassVar[int] = 127
     """Use this constant if SOH cannot be estimated"""
+    STATE_OF_CHARGE_UNKNOWN: ClassVar[int] = 127
+    """Use this constant if SoC cannot be estimated"""
 
     temperature: float = 0.0
     """[Kelvin]"""
