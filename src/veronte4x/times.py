@@ -11,9 +11,15 @@ never as a time of 1970.
 from __future__ import annotations
 
 import datetime as _dt
-from fractions import Fraction
+import functools
 from typing import Literal
 
+FIRST_MICROS = -62_135_596_800_000_000
+"""0001-01-01 00:00:00 UTC in microseconds since the epoch: the first time a table holds,
+and the first with an ISO 8601 form."""
+END_MICROS = 253_402_300_800_000_000
+"""10000-01-01 00:00:00 UTC in microseconds: times from here on have no table value and no
+ISO 8601 form."""
 EPOCH_THRESHOLD = 1e8
 """Timestamps at or above this many seconds (March 1973) are read as Unix time, printed as
 ISO 8601 in UTC; smaller ones are a capture's own clock (seconds since its start), printed
@@ -64,29 +70,54 @@ def utc_text(seconds: float) -> str:
 
     The microseconds are the log's (`whole_micros`): a float of python-can's readers that
     holds less than a microsecond more is rounded to the nearest, as the tables are;
-    ``decode --time seconds`` writes that float itself.
+    ``decode --time seconds`` writes that float itself. In integer arithmetic: a full bus
+    writes thousands a second.
+
+    Raises:
+        OverflowError: The time is outside the years 1 to 9999.
 
     Examples:
         >>> utc_text(1763737200.123456)
         '2025-11-21T15:00:00.123456Z'
     """
-    return _moment(seconds).strftime("%Y-%m-%dT%H:%M:%S.%fZ")
+    micros = whole_micros(seconds)
+    if not FIRST_MICROS <= micros < END_MICROS:
+        raise OverflowError("date value out of range")
+    days, micros = divmod(micros, 86_400_000_000)
+    second, micro = divmod(micros, 1_000_000)
+    minute, second = divmod(second, 60)
+    hour, minute = divmod(minute, 60)
+    return f"{_date_text(days)}T{hour:02d}:{minute:02d}:{second:02d}.{micro:06d}Z"
+
+
+@functools.lru_cache(maxsize=16)
+def _date_text(days: int) -> str:
+    """The date ``days`` after 1970-01-01 as ISO 8601 (``YYYY-MM-DD``), kept for the few
+    days a capture spans."""
+    day = _dt.date.fromordinal(_EPOCH_ORDINAL + days)
+    return f"{day.year:04d}-{day.month:02d}-{day.day:02d}"
 
 
 def whole_micros(seconds: float) -> int:
     """A finite timestamp in whole microseconds: those the log wrote where the reader kept
     them beside the float (`veronte4x.capture.frames.Seconds`), else the nearest to the
-    float, half to even.
+    float, half to even (from the float's exact ratio of integers).
 
     Examples:
         >>> whole_micros(1763737200.0000005), whole_micros(12.5)
         (1763737200000000, 12500000)
     """
-    kept = getattr(seconds, "micros", None)
-    return kept if isinstance(kept, int) else round(Fraction(seconds) * 1_000_000)
+    if type(seconds) is not float:
+        kept = getattr(seconds, "micros", None)
+        if isinstance(kept, int):
+            return kept
+    numerator, denominator = seconds.as_integer_ratio()  # exact; the denominator is 2**k
+    whole, rest = divmod(numerator * 1_000_000, denominator)
+    return whole + (2 * rest > denominator or (2 * rest == denominator and whole % 2 == 1))
 
 
 _EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
+_EPOCH_ORDINAL = _EPOCH.toordinal()
 
 
 def utc_datetime(seconds: float) -> _dt.datetime | None:

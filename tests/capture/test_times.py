@@ -22,7 +22,8 @@ from hypothesis import strategies as st
 from tests.capture.columnar_support import assert_same_tables
 from veronte4x import capture
 from veronte4x.capture import BusMap
-from veronte4x.capture.frames import END_MICROS, FIRST_MICROS, Seconds, micros, text_seconds
+from veronte4x.capture.frames import Seconds, micros, text_seconds
+from veronte4x.times import END_MICROS, FIRST_MICROS
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "capture.log"

@@ -6,7 +6,7 @@ import math
 from fractions import Fraction
 from typing import NamedTuple
 
-from veronte4x.times import whole_micros
+from veronte4x.times import END_MICROS, FIRST_MICROS, whole_micros
 
 
 class Frame(NamedTuple):
@@ -68,10 +68,6 @@ class Truncation(BadLine):
     __slots__ = ()
 
 
-FIRST_MICROS = -62_135_596_800_000_000
-"""0001-01-01 00:00:00 UTC in microseconds since the epoch: the first time a table holds."""
-END_MICROS = 253_402_300_800_000_000
-"""10000-01-01 00:00:00 UTC in microseconds: times from here on have no table value."""
 _SAFE = 8_589_934_592.0
 """2**33 seconds (year 2242): below, a float of at most six decimals gives them back."""
 

@@ -13,14 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
-from veronte4x.capture.frames import (
-    END_MICROS,
-    FIRST_MICROS,
-    BadLine,
-    Frame,
-    Seconds,
-    micros,
-)
+from veronte4x.capture.frames import BadLine, Frame, Seconds, micros
+from veronte4x.times import END_MICROS, FIRST_MICROS
 
 MAX_DATA = 8
 """Data bytes a row of `FrameColumns.data` holds; longer (CAN FD) data lives in `long_data`."""
