@@ -1,18 +1,19 @@
 """What `veronte4x monitor` shows: the latest of every message type per sender (sans-IO).
 
 `MonitorState` takes decoded records and keeps, per stream (sender, message type and
-channel: a node's NodeStatus on ``can0`` and on ``can1`` are two rows), the latest fields
-(for people, as `veronte4x.capture.readable.shown` gives them: enums by name, units), the
-count, the rate over the stream's last complete intervals (`stream_rate`) and the errors;
-and the arbiter's state from its Status and Score frames (Veronte Autopilot 4x Software
-Manual, the arbiter's CAN messages). Each row also keeps its timing as
+channel: a node's NodeStatus on ``can0`` and on ``can1`` are two rows), the latest message,
+the count, the rate over the stream's last complete intervals (`stream_rate`) and the
+errors; and the arbiter's state from its Status and Score frames (Veronte Autopilot 4x
+Software Manual, the arbiter's CAN messages). A record is only kept and counted: the
+latest fields are shown for people (as `veronte4x.capture.readable.shown` gives them: enums
+by name, units) when the table is asked for (`MonitorState.rows`), a few times a second
+live, so that a full bus costs the reader no text. Each row also keeps its timing as
 `veronte4x.capture.rates` counts a stream: usual period, jitter, longest gap, and the flags
 ``stopped`` (silent for more than 3 periods: a DroneCAN node whose NodeStatus is stopped is
-offline) and ``slow``; the table
-shows them with ``rates=True`` (``monitor --rates``). Time is the records' own timestamps,
-so a capture and a live bus give the same table; "now", for the silence of a stream, is
-the latest timestamp unless the caller gives it. `render_text` writes the table as plain
-text; the terminal view is drawn by the CLI.
+offline) and ``slow``; the table shows them with ``rates=True`` (``monitor --rates``). Time
+is the records' own timestamps, so a capture and a live bus give the same table; "now", for
+the silence of a stream, is the latest timestamp unless the caller gives it. `render_text`
+writes the table as plain text; the terminal view is drawn by the CLI.
 """
 
 from __future__ import annotations
@@ -124,7 +125,7 @@ class _Entry:
     can_id: int
     count: int = 0
     errors: int = 0
-    fields: str = ""
+    latest: object = None  # the latest message, or undecoded traffic's bytes; None: none yet
     last_seen: float | None = None
     times: deque[float] = field(default_factory=deque)
     timing: Stream = field(default_factory=Stream)
@@ -227,7 +228,7 @@ class MonitorState:
         self._by_id[(sender, channel, record.can_id)] = key
         entry.can_id = record.can_id
         entry.count += 1
-        entry.fields = hex_bytes(record.data) if message is None else fields_text(message)
+        entry.latest = record.data if message is None else message  # shown by `rows`
         entry.last_seen = stamp
         if stamp is not None:
             if not entry.timing.count or stamp >= entry.timing.last:
@@ -268,7 +269,7 @@ class MonitorState:
                     e.count,
                     e.errors,
                     rate,
-                    e.fields,
+                    _fields(e.latest),
                     e.last_seen,
                     math.nan if usual is None else usual,
                     e.timing.jitter(),
@@ -287,6 +288,13 @@ class MonitorState:
         lost = None if self.loss is None else self.loss.text()
         text = f"{counted(self.records, 'record')}, {self.errors} bad{span}"
         return text + (f", {lost}" if lost else "")
+
+
+def _fields(latest: object) -> str:
+    """A row's fields: the latest message's (`fields_text`), undecoded bytes in hex."""
+    if latest is None:
+        return ""
+    return hex_bytes(latest) if type(latest) is bytes else fields_text(latest)
 
 
 def seconds_text(value: float) -> str:
