@@ -84,22 +84,39 @@ rpm=1200 rpm, power_rating_pct=40 %, esc_index=2)'
 def _format(message: Any, top: str, prefix: str) -> str:
     owner = type(message)
     parts = []
-    for attr in field_names(owner):
+    for attr, symbol in _plan(owner, top, prefix):
         value = getattr(message, attr)
-        if is_message(value):
-            text = _format(value, top, f"{prefix}{attr}.")
-        elif type(value) is tuple:
+        kind = type(value)
+        if kind is int or kind is bool:  # most fields: as `_scalar` shows them, sooner
+            text = f"{value}{symbol}"
+        elif kind is tuple:
             text = "(" + ", ".join(_item(owner, attr, item, top, prefix) for item in value) + ")"
+        elif is_message(value):
+            text = _format(value, top, f"{prefix}{attr}.")
         else:
-            text = _scalar(owner, attr, value)
-            symbol = unit(top, prefix + attr)
-            if symbol is not None:
-                text = f"{text} {symbol}"
+            text = _scalar(owner, attr, value) + symbol
         parts.append(f"{attr}={text}")
     return f"{owner.__name__}({', '.join(parts)})"
 
 
+_PLANS: dict[tuple[type, str, str], tuple[tuple[str, str], ...]] = {}
+
+
+def _plan(owner: type, top: str, prefix: str) -> tuple[tuple[str, str], ...]:
+    """Each field of ``owner`` (within ``top`` at ``prefix``) with the text after a scalar
+    value of it: its unit (`` V``) or nothing; made once per class and place."""
+    key = (owner, top, prefix)
+    plan = _PLANS.get(key)
+    if plan is None:
+        units = ((attr, unit(top, prefix + attr)) for attr in field_names(owner))
+        plan = _PLANS[key] = tuple((attr, "" if u is None else f" {u}") for attr, u in units)
+    return plan
+
+
 def _item(owner: type, attr: str, item: Any, top: str, prefix: str) -> str:
+    kind = type(item)
+    if kind is int or kind is bool:
+        return str(item)
     if is_message(item):  # an array of structs or unions
         return _format(item, top, f"{prefix}{attr}.")
     return _scalar(owner, attr, item)
