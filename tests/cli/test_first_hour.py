@@ -279,3 +279,79 @@ def test_a_jitter_below_a_millisecond_is_shown_in_microseconds(tmp_path: Path) -
     assert "  can0 0x123: 5 at 100 Hz, jitter 57.74 µs, longest gap 10.05 ms" in (
         result.stdout.splitlines()
     )
+
+
+HIDING = r"""
+import importlib.abc, runpy, sys
+hidden = set(sys.argv.pop(1).split(","))
+
+class NotInstalled(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name.partition(".")[0] in hidden:
+            raise ModuleNotFoundError(f"No module named {name!r}", name=name)
+        return None
+
+sys.meta_path.insert(0, NotInstalled())
+sys.argv[0] = "veronte4x"
+runpy.run_module("veronte4x", run_name="__main__", alter_sys=True)
+"""
+"""``python -m veronte4x`` in a process where the modules of its first argument (``can,msgpack``)
+are not installed: a finder in front of ``sys.meta_path`` refuses them."""
+
+UDP = ["--interface", "udp_multicast", "--channel", "239.74.163.9"]
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["esc", "nodes", *UDP],
+        ["simulate", "esc", "--nodes", "41", *UDP],
+        ["monitor", *UDP, "--duration", "0.1"],
+        ["play", str(CAPTURE), *UDP],
+        ["decode", *UDP, "--duration", "0.1"],
+    ],
+)
+@pytest.mark.parametrize("hidden", ["can,msgpack", "msgpack"])
+def test_a_udp_multicast_bus_names_the_one_extra_that_brings_all_it_needs(
+    command: list[str], hidden: str
+) -> None:
+    """Without python-can, the error names ``bench`` (python-can and msgpack) rather than
+    ``can``, after which a second install would still be missing msgpack."""
+    result = subprocess.run(
+        [sys.executable, "-c", HIDING, hidden, *command],
+        capture_output=True,
+        text=True,
+        timeout=HANG_GUARD,
+        check=False,
+    )
+    missing = hidden.partition(",")[0]
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        f"veronte4x: python-can's udp_multicast bus needs the '{missing}' package: "
+        "pip install 'veronte4x[bench]'\n",
+    )
+
+
+@pytest.mark.parametrize(
+    ("command", "needs"),
+    [
+        (["esc", "nodes"], "veronte4x esc"),
+        (["simulate", "esc", "--nodes", "41"], "veronte4x simulate"),
+        (["monitor", "--interface", "virtual", "--duration", "0.1"], "a live CAN bus"),
+        (["esc", "nodes", "--interface", "virtual"], "a live CAN bus"),
+    ],
+)
+def test_another_bus_without_python_can_names_the_can_extra(command: list[str], needs: str) -> None:
+    result = subprocess.run(
+        [sys.executable, "-c", HIDING, "can", *command],
+        capture_output=True,
+        text=True,
+        timeout=HANG_GUARD,
+        check=False,
+    )
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        f"veronte4x: {needs} needs the 'can' package: pip install 'veronte4x[can]'\n",
+    )

@@ -26,10 +26,13 @@ from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
 from veronte4x.cli import list as list_command
+from veronte4x.cli.buses import require_bus_packages
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import (
     UsageError,
+    bus_settings,
     check_bus_spelling,
+    live,
     with_dbc_options,
     with_transfer_rules,
 )
@@ -84,6 +87,10 @@ def _run(argv: Sequence[str] | None) -> int:
         parser = _parser()
         args = parser.parse_args(argv)
         check_bus_spelling(args)
+        if hasattr(args, "interface") and live(args):
+            # before the command shows anything: a live source opens its bus in the thread
+            # that reads it, once the command has started (the monitor's table among them)
+            require_bus_packages(bus_settings(args), "a live CAN bus")
         bus_map = BusMap.from_toml(args.bus_map) if args.bus_map else BusMap()
         if getattr(args, "dsdl", None):
             bus_map = bus_map.with_types(load_dsdl(*args.dsdl))

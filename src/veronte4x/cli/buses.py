@@ -20,16 +20,33 @@ def open_bus(**settings: Any) -> Any:
 
     Raises:
         BusOpenError: Nothing names a bus (`NO_BUS`), or python-can could not open it.
-        MissingExtraError: A udp_multicast bus without msgpack (the ``bench`` extra).
+        MissingExtraError: python-can is not installed, or msgpack for a udp_multicast bus
+            (`require_bus_packages`).
     """
+    require_bus_packages(settings, "a live CAN bus")
     from veronte4x.canbus import BusOpenError
     from veronte4x.canbus import open_bus as open_python_can_bus
 
     if not _names_a_bus(settings):
         raise BusOpenError(NO_BUS)
-    if settings.get("interface") == "udp_multicast":
-        require("msgpack", "bench", "python-can's udp_multicast bus")
     return _Guarded(open_python_can_bus(**settings))
+
+
+def require_bus_packages(settings: dict[str, Any], needed_for: str) -> None:
+    """Check that the packages the bus of these settings needs are installed.
+
+    python-can's ``udp_multicast`` bus (the README's ground station) needs python-can and
+    msgpack, which the ``bench`` extra brings both of: its error names ``bench`` first, so
+    that one install is enough. Any other bus needs the ``can`` extra.
+
+    Raises:
+        MissingExtraError: A package is missing; it names the extra to install.
+    """
+    if settings.get("interface") == "udp_multicast":
+        require("can", "bench", "python-can's udp_multicast bus")
+        require("msgpack", "bench", "python-can's udp_multicast bus")
+    else:
+        require("can", "can", needed_for)
 
 
 NO_BUS = (

@@ -71,7 +71,6 @@ from veronte4x.dronecan.messages import (
     SoftwareVersionFlag,
 )
 from veronte4x.errors import EncodeError
-from veronte4x.extras import require
 from veronte4x.node.requests import DEFAULT_RETRIES, DEFAULT_TIMEOUT
 from veronte4x.words import counted
 
@@ -293,10 +292,11 @@ def _error(message: str) -> None:
 
 def _runner(action: Action) -> Callable[[argparse.Namespace, BusMap | None], int]:
     def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
-        require("can", "can", "veronte4x esc")
+        from veronte4x.cli.buses import open_bus, require_bus_packages
+
+        require_bus_packages(bus_settings(args), "veronte4x esc")
         import can
 
-        from veronte4x.cli.buses import open_bus
         from veronte4x.client.bus import BusClient
 
         bus = open_bus(**bus_settings(args))

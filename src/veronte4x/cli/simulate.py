@@ -12,7 +12,6 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.fleet import node_list
 from veronte4x.cli.options import add_bus_options, bus_settings
-from veronte4x.extras import require
 from veronte4x.simulator.esc import COMMAND_TIMEOUT, FILE_REQUEST_TIMEOUT
 
 
@@ -116,8 +115,9 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace, bus_map: BusMap | None) -> int:
     """Serve the bus until Ctrl-C (exit code 130), SIGTERM or the duration (0)."""
-    require("can", "can", "veronte4x simulate")
-    from veronte4x.cli.buses import open_bus
+    from veronte4x.cli.buses import open_bus, require_bus_packages
+
+    require_bus_packages(bus_settings(args), "veronte4x simulate")
     from veronte4x.errors import EncodeError
     from veronte4x.simulator import SimulatedEsc
     from veronte4x.simulator.can_node import EscBus
