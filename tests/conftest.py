@@ -8,7 +8,8 @@ checks both).
 The default DroneCAN type set reads the user's vendor DSDL roots
 (`veronte4x.dronecan.vendor_roots.find_roots`: ``VERONTE4X_DSDL_PATH`` and two directories
 of the home directory): the suite, and every process it starts, runs with none of them, in
-an empty home directory of its own, so that no result depends on the machine's user.
+an empty home directory of its own, so that no result depends on the machine's user; the
+disk cache of compiled user DSDL (`veronte4x.dronecan.dsdl_cache`) is in that home too.
 """
 
 import atexit
@@ -21,6 +22,7 @@ from hypothesis import settings
 os.environ.pop("VERONTE4X_DSDL_PATH", None)
 os.environ["HOME"] = tempfile.mkdtemp(prefix="veronte4x-tests-home-")
 atexit.register(shutil.rmtree, os.environ["HOME"], True)
+os.environ["VERONTE4X_CACHE_DIR"] = os.path.join(os.environ["HOME"], "cache")
 
 settings.register_profile("veronte4x", deadline=None)
 settings.register_profile(

@@ -9,12 +9,14 @@ The standard set and the vendor namespaces shipped with the package were generat
 of time (`veronte4x.dronecan.shipped_source`): building them parses no DSDL. The classes of
 a namespace the user loads are generated from its DSDL by the same code (naming rules in
 `veronte4x.dronecan.generate`), into a module of their own, with the source in
-``linecache`` for tracebacks.
+``linecache`` for tracebacks, and kept with their fast paths in the disk cache
+(`veronte4x.dronecan.dsdl_cache`, `veronte4x.dronecan.compiled_load`) for the next process.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 import linecache
 import os
@@ -25,7 +27,7 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from veronte4x.dronecan import messages, standard, standard_data
+from veronte4x.dronecan import compiled_load, dsdl_cache, messages, standard, standard_data
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
@@ -174,6 +176,10 @@ class TypeSet:
                 type defined twice in one root, a data type id claimed twice or two types
                 left with one class name (naming both files), or a root named ``uavcan``
                 (the standard one cannot be replaced or extended).
+
+        What a load compiles is kept on disk (`veronte4x.dronecan.dsdl_cache`, in the
+        user's cache directory): a later load of the same files into the same set, in any
+        process, reads it back instead of parsing and compiling again.
         """
         roots = [Path(os.fsdecode(d)).resolve() for d in root_namespace_dirs]
         new_roots = [r for r in dict.fromkeys(roots) if r not in self.roots]
@@ -182,30 +188,57 @@ class TypeSet:
         for root in new_roots:
             if root.name == "uavcan":
                 raise DsdlError(root, None, _STANDARD_ROOT)
-        parsed = parse_namespaces(new_roots, override=True)
-        notes = list(overrides(definition_files(new_roots)))
-        new: dict[str, Definition] = {}
-        for name, d in parsed.items():
-            other = self.definitions.get(name)
-            if other is not None and dataclasses.replace(d, path=other.path) == other:
-                continue  # the same definition in another file
-            if other is not None:
-                notes.append(Override(name, Path(other.path), Path(d.path)))
-            new[name] = d
-        for note in notes:
-            warnings.warn(str(note), DsdlOverrideWarning, stacklevel=2)
-        definitions = {**self.definitions, **new}
-        check_references(definitions)
-        again = _users(definitions, {name for name in new if name in self.definitions})
-        new = {**{name: definitions[name] for name in again if name not in new}, **new}
+        folder = dsdl_cache.directory()
+        key = None if folder is None else dsdl_cache.load_key(self.loads, new_roots)
+        data = None if folder is None or key is None else dsdl_cache.read(folder, key)
+        if data is not None:
+            for note in data["notes"]:
+                warnings.warn(note, DsdlOverrideWarning, stacklevel=2)
+            kept = self._without(set(data["again"]))
+            module = _run(data["classes"], kept, new_roots)
+            lazy = functools.partial(_merged, self, new_roots)
+            return self._from_entry(data, kept, module, lazy, new_roots)
+        data, kept, module, definitions = self._compiled(new_roots, key is not None)
+        types = self._from_entry(data, kept, module, definitions, new_roots)
+        # Kept only if no file changed since the key was made (the entry is of the key's).
+        now = None if key is None else dsdl_cache.load_key(self.loads, new_roots)
+        if folder is not None and key is not None and key == now:
+            dsdl_cache.write(folder, key, data)
+        return types
+
+    def _compiled(
+        self, new_roots: list[Path], fast: bool
+    ) -> tuple[dict[str, Any], TypeSet, _types.ModuleType, dict[str, Definition]]:
+        """Parse and compile a load (`with_dsdl`): its entry (`compiled_load.entry`, fast
+        paths in it with ``fast``), the set it builds on, its module of classes and the
+        definitions of the new set."""
+        definitions, new, notes, again = _planned(self, new_roots, warn=True)
         kept = self._without(again)
-        classes, enums, members, names = _compile(definitions, new, kept, new_roots)
-        found = data_types(definitions, new, classes, enums, members)
+        module, made, names = _compile(definitions, new, kept, new_roots)
+        tables = _tables(kept, module)
+        found = data_types(definitions, new, *tables)
+        units = units_of(new, tables[0], tables[2])
+        data = compiled_load.entry(made, names, notes, again, found, units, tables, fast)
+        return data, kept, module, definitions
+
+    def _from_entry(
+        self,
+        data: dict[str, Any],
+        kept: TypeSet,
+        module: _types.ModuleType,
+        definitions: Mapping[str, Definition] | Callable[[], Mapping[str, Definition]],
+        new_roots: list[Path],
+    ) -> TypeSet:
+        """The set this one and a load of ``new_roots`` make (``data`` its entry, ``kept``
+        this set less what it replaces, ``module`` its classes)."""
+        tables = _tables(kept, module)
+        found = compiled_load.data_types(data, tables)
         _check_ids(kept.data_types, found)
-        codecs = kept.codecs + tuple(TypeCodec(t) for t in found)
+        codecs = kept.codecs + compiled_load.codecs(data, found, tables)
         loads = (*self.loads, tuple(new_roots))
-        units = {**kept.units, **units_of(new, classes, members)}
-        return TypeSet(codecs, classes, enums, members, definitions, loads, names, units)
+        units = {**kept.units, **compiled_load.units(data, tables)}
+        names = {**kept._names, **data["names"]}
+        return TypeSet(codecs, *tables, definitions, loads, names, units)
 
     def _without(self, names: set[str]) -> TypeSet:
         """This set without the types of these full names (replaced by a later root): the
@@ -220,8 +253,16 @@ class TypeSet:
         units = {c: found for c, found in self.units.items() if c in left}
         codecs = tuple(c for c in self.codecs if c.data_type.full_name not in names)
         names_left = {k: n for k, n in self._names.items() if k not in gone}
-        definitions = {k: d for k, d in self.definitions.items() if k not in names}
-        return TypeSet(codecs, classes, enums, members, definitions, self.loads, names_left, units)
+        return TypeSet(
+            codecs,
+            classes,
+            enums,
+            members,
+            lambda: {k: d for k, d in self.definitions.items() if k not in names},
+            self.loads,
+            names_left,
+            units,
+        )
 
 
 class DsdlOverrideWarning(UserWarning):
@@ -272,15 +313,52 @@ def _check_ids(old: Iterable[DataType], new: Iterable[DataType]) -> None:
         claimed[where] = t
 
 
-def _compile(
-    definitions: dict[str, Definition],
-    new: dict[str, Definition],
-    base: TypeSet,
-    roots: list[Path],
-) -> tuple[
-    dict[str, type], dict[tuple[str, str], type], dict[str, tuple[type, ...]], dict[str, str]
-]:
-    """Generate and run the source of the classes of ``new``; the tables of the whole set."""
+def _planned(
+    base: TypeSet, new_roots: list[Path], warn: bool
+) -> tuple[dict[str, Definition], dict[str, Definition], list[str], set[str]]:
+    """What loading ``new_roots`` into ``base`` parses (`TypeSet.with_dsdl`): the
+    definitions of the new set, those to compile, the overrides (warned of with ``warn``,
+    before the references are checked) and the full names of ``base`` compiled again."""
+    parsed = parse_namespaces(new_roots, override=True)
+    notes = list(overrides(definition_files(new_roots)))
+    new: dict[str, Definition] = {}
+    for name, d in parsed.items():
+        other = base.definitions.get(name)
+        if other is not None and dataclasses.replace(d, path=other.path) == other:
+            continue  # the same definition in another file
+        if other is not None:
+            notes.append(Override(name, Path(other.path), Path(d.path)))
+        new[name] = d
+    if warn:
+        for note in notes:
+            warnings.warn(str(note), DsdlOverrideWarning, stacklevel=4)
+    definitions = {**base.definitions, **new}
+    check_references(definitions)
+    again = _users(definitions, {name for name in new if name in base.definitions})
+    new = {**{name: definitions[name] for name in again if name not in new}, **new}
+    return definitions, new, [str(note) for note in notes], again
+
+
+def _merged(base: TypeSet, new_roots: list[Path]) -> dict[str, Definition]:
+    """The definitions of ``base`` with ``new_roots`` loaded (parsed on first use by a set
+    read from the cache)."""
+    return _planned(base, new_roots, warn=False)[0]
+
+
+def _tables(
+    kept: TypeSet, module: _types.ModuleType
+) -> tuple[dict[str, type], dict[tuple[str, str], type], dict[str, tuple[type, ...]]]:
+    """The classes, enums and union members of ``kept`` and those of a load's module."""
+    return (
+        {**kept.classes, **module.CLASSES},
+        {**kept._enums, **module.ENUMS},
+        {**kept._members, **module.UNION_MEMBERS},
+    )
+
+
+def _known(base: TypeSet) -> dict[str, Any]:
+    """The names a load's module of classes finds its nested types under: the standard
+    classes, `veronte4x.dronecan.messages`, and the classes, members and enums of ``base``."""
     known: dict[str, Any] = {name: getattr(standard, name) for name in standard.__all__} | {
         name: getattr(messages, name) for name in dir(messages) if not name.startswith("_")
     }
@@ -291,25 +369,48 @@ def _compile(
             known.setdefault(cls.__name__, cls)
     for enum in base._enums.values():
         known.setdefault(enum.__name__, enum)
+    return known
+
+
+def _compile(
+    definitions: dict[str, Definition],
+    new: dict[str, Definition],
+    base: TypeSet,
+    roots: list[Path],
+) -> tuple[_types.ModuleType, tuple[str, str, Any], dict[str, str]]:
+    """Generate and run the source of the classes of ``new``: the module, its file name,
+    source and code, and the class name of each of its keys."""
+    known = _known(base)
     p = plan(definitions, known, base._names)
     for key, member_classes in base._members.items():
         p.members[key] = tuple(c.__name__ for c in member_classes)
     generate = [k for d in new.values() for k in keys(d)]
     names = ", ".join(r.name for r in roots)
-    module_name = f"veronte4x.dronecan.loaded.{'_'.join(r.name for r in roots)}_{next(_serial)}"
-    doc = f"The types of the DSDL namespaces {names}, compiled at run time ({module_name})."
+    doc = f"The types of the DSDL namespaces {names}, compiled at run time."
     source = module_source(p, generate, doc, {})
     filename = f"<dsdl {', '.join(str(r) for r in roots)}>"
-    module = _types.ModuleType(module_name, doc)
-    module.__dict__.update(known)
+    code = compile(source, filename, "exec")  # the source generated above
+    made = (filename, source, code)
+    return _run(made, base, roots, known), made, {k: p.names[k] for k in generate}
+
+
+def _run(
+    made: tuple[str, str, Any],
+    base: TypeSet,
+    roots: list[Path],
+    known: dict[str, Any] | None = None,
+) -> _types.ModuleType:
+    """Run the code of a load's module of classes (file name, source, code) in a module of
+    its own, with the names of ``base`` (`_known`); the source goes to ``linecache``."""
+    filename, source, code = made
+    module_name = f"veronte4x.dronecan.loaded.{'_'.join(r.name for r in roots)}_{next(_serial)}"
+    module = _types.ModuleType(module_name)
+    module.__dict__.update(_known(base) if known is None else known)
     module.__file__ = filename
     linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
     sys.modules[module_name] = module  # dataclasses look the module up
-    exec(compile(source, filename, "exec"), module.__dict__)  # the source generated above
-    classes = {**base.classes, **module.CLASSES}
-    enums = {**base._enums, **module.ENUMS}
-    members = {**base._members, **module.UNION_MEMBERS}
-    return classes, enums, members, p.names
+    exec(code, module.__dict__)  # generated by `_compile`, or read back from the cache
+    return module
 
 
 def _load(loads: tuple[tuple[str, ...], ...]) -> TypeSet:

@@ -1,0 +1,314 @@
+"""The disk cache of user DSDL (`veronte4x.dronecan.dsdl_cache`): a second load reads what
+the first compiled; any change to a file or to veronte4x is another key; a directory that
+cannot be written, or is missing, costs nothing but the compile; two processes fill it at
+once; an entry whose bytes are not those its manifest names is never run, and is made again.
+
+The user root is a copy of the shipped ``ardupilot`` tree (14 types), loaded into the
+standard set (the shipped set has the same definitions, and so would compile nothing).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import marshal
+import os
+import random
+import shutil
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+from typing import Any
+
+import pytest
+from tests.plain_data import same
+
+from veronte4x import dronecan as v4
+from veronte4x.dronecan import TypeSet, dsdl_cache, typeset
+from veronte4x.dronecan.types import DSDL_ROOT
+from veronte4x.errors import DecodeError
+
+
+@pytest.fixture
+def root(tmp_path: Path) -> Path:
+    """A user's copy of the shipped ``ardupilot`` root."""
+    return Path(shutil.copytree(DSDL_ROOT / "ardupilot", tmp_path / "user" / "ardupilot"))
+
+
+@pytest.fixture
+def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The cache directory of the test (`dsdl_cache.ENVIRONMENT_VARIABLE` set to it)."""
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, str(tmp_path / "cache"))
+    return tmp_path / "cache" / "dronecan"
+
+
+def _no_compiling(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make any compile of DSDL fail: a load that succeeds read the cache."""
+
+    def refuse(*args: Any) -> str:
+        raise AssertionError("compiled DSDL instead of reading the cache")
+
+    monkeypatch.setattr(typeset, "module_source", refuse)
+
+
+def _manifests(cache: Path) -> list[Path]:
+    return sorted(cache.glob("*.manifest"))
+
+
+def _entry(cache: Path) -> Path:
+    [manifest] = _manifests(cache)
+    return cache / f"{manifest.read_text().split()[-1]}.entry"
+
+
+def _payloads(codec: v4.TypeCodec, count: int, seed: int) -> list[bytes]:
+    """Payloads of every length up to the type's largest (at most 40 bytes), random bytes."""
+    rng = random.Random(seed)
+    longest = min(codec.max_payload, 40)
+    return [rng.randbytes(rng.randint(0, longest)) for _ in range(count)]
+
+
+def _decoded(types: TypeSet, seed: int = 7) -> list[Any]:
+    """What each vendor type of ``types`` makes of the same payloads, as plain data: each
+    value and its payload again, or the error's text (after the type's name, id, signature
+    and file name)."""
+    found: list[Any] = []
+    for codec in types.codecs:
+        if not codec.data_type.full_name.startswith("ardupilot."):
+            continue
+        t = codec.data_type
+        found.append((t.full_name, t.kind.name, t.data_type_id, t.signature, Path(t.path).name))
+        for payload in _payloads(codec, 30, seed):
+            try:
+                message = codec.decode(payload)
+            except DecodeError as error:
+                found.append(str(error))
+                continue
+            found.append((v4.to_builtin(message, types), codec.encode(message)))
+    return found
+
+
+def test_the_second_load_reads_the_cache_and_decodes_as_the_first(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    first = TypeSet.standard().with_dsdl(root)
+    assert len(_manifests(cache)) == 1 and _entry(cache).is_file()
+    _no_compiling(monkeypatch)
+    second = TypeSet.standard().with_dsdl(root)
+    assert second.classes.keys() == first.classes.keys()
+    assert second.roots == first.roots
+    assert second._names == first._names
+    named = [(k, c.__name__) for k, c in first.classes.items() if isinstance(c, type)]
+    assert named == [(k, c.__name__) for k, c in second.classes.items() if isinstance(c, type)]
+    assert same(_decoded(second), _decoded(first))
+    units = {c.__name__: u for c, u in second.units.items()}
+    assert units == {c.__name__: u for c, u in first.units.items()}
+    assert second.definitions.keys() == first.definitions.keys()  # parsed on first use
+
+
+def test_cached_and_uncached_loads_decode_identically(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    TypeSet.standard().with_dsdl(root)
+    cached = TypeSet.standard().with_dsdl(root)
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, dsdl_cache.OFF)
+    uncached = TypeSet.standard().with_dsdl(root)
+    assert len(_decoded(cached, 3)) > 14 * 30
+    assert same(_decoded(cached, 3), _decoded(uncached, 3))
+    for a, b in zip(cached.codecs, uncached.codecs, strict=True):
+        assert (a.max_payload, a.crc_seed) == (b.max_payload, b.crc_seed)
+
+
+def test_a_changed_byte_of_a_dsdl_file_is_another_entry(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    TypeSet.standard().with_dsdl(root)
+    heading = root / "gnss" / "20002.Heading.uavcan"
+    heading.write_text(heading.read_text().replace("heading_rad", "heading_raX"))
+    changed = TypeSet.standard().with_dsdl(root)
+    assert len(_manifests(cache)) == 2
+    fields = {f.name for f in dataclasses.fields(changed["ardupilot.gnss.Heading"])}
+    assert "heading_raX" in fields and "heading_rad" not in fields
+    _no_compiling(monkeypatch)
+    again = TypeSet.standard().with_dsdl(root)
+    assert "heading_raX" in {f.name for f in dataclasses.fields(again["ardupilot.gnss.Heading"])}
+
+
+def test_a_changed_generator_or_format_is_another_entry(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    TypeSet.standard().with_dsdl(root)
+    monkeypatch.setattr(dsdl_cache, "source_digest", lambda: b"another veronte4x")
+    TypeSet.standard().with_dsdl(root)
+    assert len(_manifests(cache)) == 2
+    monkeypatch.setattr(dsdl_cache, "FORMAT", dsdl_cache.FORMAT + 1)
+    TypeSet.standard().with_dsdl(root)
+    assert len(_manifests(cache)) == 3
+
+
+def test_the_key_covers_every_file_the_roots_and_veronte4x(root: Path) -> None:
+    key = dsdl_cache.load_key((), [root])
+    assert key == dsdl_cache.load_key((), [root])
+    assert key != dsdl_cache.load_key(((root,),), [root.parent])
+    (root / "gnss" / "20099.New.uavcan").write_text("uint8 x\n")
+    assert key != dsdl_cache.load_key((), [root])
+    assert len(dsdl_cache.source_digest()) == 32
+
+
+def test_a_missing_cache_directory_is_made_for_this_user_alone(root: Path, cache: Path) -> None:
+    assert not cache.parent.exists()
+    TypeSet.standard().with_dsdl(root)
+    assert cache.stat().st_mode & 0o777 == 0o700
+    assert _entry(cache).stat().st_mode & 0o777 == 0o600
+
+
+def test_a_cache_that_cannot_be_written_warns_once_and_compiles(
+    root: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    blocked = tmp_path / "a file"
+    blocked.write_text("not a directory")
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, str(blocked / "cache"))
+    monkeypatch.setattr(dsdl_cache, "_warned", False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        first = TypeSet.standard().with_dsdl(root)
+        second = TypeSet.standard().with_dsdl(root)
+    assert [w.category for w in caught] == [dsdl_cache.DsdlCacheWarning]
+    assert dsdl_cache.ENVIRONMENT_VARIABLE in str(caught[0].message)
+    assert same(_decoded(first), _decoded(second))
+
+
+def test_a_read_only_cache_is_read_and_never_fails_a_load(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    TypeSet.standard().with_dsdl(root)
+    cache.chmod(0o500)
+    other = Path(shutil.copytree(root, root.parent.parent / "other" / "ardupilot"))
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            compiled = TypeSet.standard().with_dsdl(other)  # a miss: cannot be written
+            _no_compiling(monkeypatch)
+            read = TypeSet.standard().with_dsdl(root)  # a hit in the read-only directory
+    finally:
+        cache.chmod(0o700)
+    assert len(caught) <= 1  # none where the user may write anyway (root)
+    assert same(_decoded(compiled), _decoded(read))
+
+
+def test_a_directory_others_may_write_is_not_trusted(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    TypeSet.standard().with_dsdl(root)
+    cache.chmod(0o770)
+    monkeypatch.setattr(dsdl_cache, "_warned", False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert dsdl_cache.read(cache, _manifests(cache)[0].stem) is None
+        types = TypeSet.standard().with_dsdl(root)  # compiled: the entry is not read
+    assert [w.category for w in caught] == [dsdl_cache.DsdlCacheWarning]
+    assert "ardupilot.gnss.Heading" in types
+
+
+def _tampered(cache: Path, marker: Path) -> dict[str, Any]:
+    """The cache's entry with code that makes ``marker`` in its module of classes and in
+    every fast path."""
+    entry: dict[str, Any] = marshal.loads(_entry(cache).read_bytes())
+    attack = f"\nopen({str(marker)!r}, 'w').close()\n"
+    filename, source, _ = entry["classes"]
+    entry["classes"] = (filename, source + attack, compile(source + attack, filename, "exec"))
+    entry["fast"] = tuple(
+        (f[0], f[1] + attack, compile(f[1] + attack, f[0], "exec"), f[3]) if f else f
+        for f in entry["fast"]
+    )
+    return entry
+
+
+def test_a_tampered_entry_is_never_run_and_is_made_again(
+    root: Path, cache: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    reference = _decoded(TypeSet.standard().with_dsdl(root))
+    marker = tmp_path / "tampered code ran"
+    path = _entry(cache)
+    path.write_bytes(marshal.dumps(_tampered(cache, marker)))
+    types = TypeSet.standard().with_dsdl(root)
+    assert same(_decoded(types), reference)
+    assert not marker.exists()
+    assert _entry(cache) == path and dsdl_cache.read(cache, _manifests(cache)[0].stem)
+    _no_compiling(monkeypatch)  # made again: the next load reads it
+    assert same(_decoded(TypeSet.standard().with_dsdl(root)), reference)
+    assert not marker.exists()
+
+
+def test_an_entry_others_may_write_is_never_run(root: Path, cache: Path, tmp_path: Path) -> None:
+    """Even with a manifest that names its bytes: a file others may write is not ours."""
+    TypeSet.standard().with_dsdl(root)
+    marker = tmp_path / "tampered code ran"
+    [manifest] = _manifests(cache)
+    data = marshal.dumps({**_tampered(cache, marker), "key": manifest.stem})
+    digest = hashlib.sha256(data).hexdigest()
+    (cache / f"{digest}.entry").write_bytes(data)
+    (cache / f"{digest}.entry").chmod(0o666)
+    manifest.write_text(manifest.read_text().replace(_entry(cache).stem, digest))
+    types = TypeSet.standard().with_dsdl(root)
+    assert not marker.exists()
+    assert "ardupilot.gnss.Heading" in types
+
+
+_CHILD = """
+import sys
+from veronte4x.dronecan import TypeSet
+types = TypeSet.standard().with_dsdl(sys.argv[1])
+print(sum(c.data_type.full_name.startswith("ardupilot.") for c in types.codecs))
+"""
+
+
+def test_two_processes_fill_the_cache_at_once(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)}
+    children = [
+        subprocess.Popen(
+            [sys.executable, "-c", _CHILD, str(root)], env=env, stdout=subprocess.PIPE, text=True
+        )
+        for _ in range(2)
+    ]
+    outputs = [child.communicate(timeout=600)[0] for child in children]
+    assert [child.returncode for child in children] == [0, 0]
+    assert outputs == ["14\n", "14\n"]
+    assert len(_manifests(cache)) == 1
+    assert not list(cache.glob(".tmp-*"))
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, dsdl_cache.OFF)
+    uncached = TypeSet.standard().with_dsdl(root)
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, str(cache.parent))
+    _no_compiling(monkeypatch)
+    assert same(_decoded(TypeSet.standard().with_dsdl(root)), _decoded(uncached))
+
+
+@pytest.mark.parametrize(
+    ("environ", "platform", "expected"),
+    [
+        ({"HOME": "/h"}, "linux", "/h/.cache/veronte4x/dronecan"),
+        ({"HOME": "/h", "XDG_CACHE_HOME": "/x"}, "linux", "/x/veronte4x/dronecan"),
+        ({"HOME": "/h", "XDG_CACHE_HOME": "relative"}, "linux", "/h/.cache/veronte4x/dronecan"),
+        ({"HOME": "/h"}, "darwin", "/h/Library/Caches/veronte4x/dronecan"),
+        ({"HOME": "/h", "LOCALAPPDATA": "/l"}, "win32", "/l/veronte4x/Cache/dronecan"),
+        ({"HOME": "/h", "VERONTE4X_CACHE_DIR": "/c"}, "linux", "/c/dronecan"),
+        ({"HOME": "/h", "VERONTE4X_CACHE_DIR": "off"}, "linux", None),
+    ],
+)
+def test_the_cache_directory_of_each_platform(
+    environ: dict[str, str], platform: str, expected: str | None
+) -> None:
+    found = dsdl_cache.directory(environ, platform)
+    assert (None if found is None else found.as_posix()) == expected
+
+
+def test_no_cache_reads_or_writes_nothing(
+    root: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, dsdl_cache.OFF)
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    monkeypatch.delenv("XDG_CACHE_HOME", raising=False)
+    TypeSet.standard().with_dsdl(root)
+    assert not (tmp_path / "home").exists()
