@@ -15,7 +15,9 @@ from pathlib import Path
 import can
 
 from tests.client.cli_support import HANG_GUARD, free_port
+from veronte4x import capture
 from veronte4x.canbus import BusOpenError, open_bus
+from veronte4x.dronecan import NodeStatus
 from veronte4x.dronecan.mcast import McastFrame, encode, group
 
 PEER = Path(__file__).with_name("pydronecan_mcast_peer.py")
@@ -126,3 +128,37 @@ def test_a_pydronecan_node_sees_and_asks_the_simulated_esc() -> None:
     lines = dict(line.split(" ", 1) for line in watcher.stdout.splitlines())
     assert lines["esc_status"] == "0 0"  # no error, not spinning
     assert lines["node_info"] == "iq_motion.esc"  # the simulated Vertiq module's name
+
+
+def test_record_writes_what_pydronecan_plays_from_a_pydronecan_node(tmp_path: Path) -> None:
+    out = tmp_path / "bus.can"
+    with _peer("103", "publish") as node:
+        assert node.stdout is not None and node.stdout.readline() == "ready\n"
+        recorded = subprocess.run(
+            [sys.executable, "-m", "veronte4x", "record", "-i", "mcast", "-c", "103",
+             "--count", "2", "--to", "pydronecan", str(out)],
+            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
+        )  # fmt: skip
+    assert (recorded.returncode, recorded.stderr) == (
+        0,
+        f"veronte4x: 2 frames in {out}, 0 frames lost by the bus layer\n",
+    )
+    from dronecan.driver.file import file as pydronecan_file
+
+    player = pydronecan_file(os.fspath(out), readonly=True)
+    played = []
+    while (item := player._read_frame())[0] is not None:
+        played.append((item[1], item[0].id, bytes(item[0].data), item[0].extended))
+    player.close()
+    player.file = None  # its __del__ would flush the closed file again
+    assert [
+        (can_id >> 8 & 0xFFFF, can_id & 0x7F, extended) for _, can_id, _, extended in played
+    ] == [
+        (341, 42, True),  # node 42's NodeStatus, every second
+        (341, 42, True),
+    ]
+    records = list(capture.read(out))
+    assert [(r.timestamp, r.can_id, r.node_id) for r in records] == [
+        (stamp, can_id, 42) for stamp, can_id, _, _ in played
+    ]
+    assert all(isinstance(r.message, NodeStatus) for r in records)

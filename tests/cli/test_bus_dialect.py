@@ -1,5 +1,5 @@
 """One bus dialect for every command that opens a bus (issue 37, item 7): the same options
-with the same meanings for decode, stats, replay, monitor, play, esc and simulate; the
+with the same meanings for decode, stats, replay, monitor, play, record, esc and simulate; the
 capture's channel filter is ``--only-channel``; the old spellings are refused in one line
 naming the new one."""
 
@@ -20,6 +20,7 @@ LIVE_COMMANDS = [
     ["replay"],
     ["monitor"],
     ["play", str(CAPTURE)],
+    ["record", "--to", "pydronecan", "bus.can"],
     ["esc", "nodes"],
     ["simulate", "esc"],
 ]

@@ -181,3 +181,36 @@ def test_play_with_a_channel_map_that_is_not_captured_equals_sent() -> None:
         "",
         "veronte4x: --channel-map 'can0': expected CAPTURED=SENT, e.g. can0=vcan1\n",
     )
+
+
+@pytest.mark.parametrize(
+    ("arguments", "line"),
+    [
+        (
+            ("--to", "pydronecan", "out.can"),
+            "record reads a live bus: give --interface and --channel (e.g. --interface mcast "
+            "--channel 0) or --can-config FILE",
+        ),
+        (
+            ("--to", "candump", "out.log", "-i", "mcast"),
+            "--to candump: record writes pydronecan",
+        ),
+    ],
+)
+def test_record_without_a_bus_or_with_a_format_it_does_not_write(
+    tmp_path: Path, arguments: tuple[str, ...], line: str
+) -> None:
+    result = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "record", *arguments],
+        capture_output=True, text=True, timeout=HANG_GUARD, check=False, cwd=tmp_path,
+    )  # fmt: skip
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"veronte4x: {line}\n")
+    assert list(tmp_path.iterdir()) == []  # no file left behind
+
+
+def test_record_a_count_of_no_frames() -> None:
+    result = veronte4x("record", "--count", "0", "--to", "pydronecan", "out.can")
+    assert result.returncode == 2
+    assert result.stderr.endswith(
+        "veronte4x record: error: argument --count: '0' is not a number of frames (1 or more)\n"
+    )

@@ -24,7 +24,19 @@ from typing import Any, TextIO, cast
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import convert, decode, esc, export, monitor, play, plot, replay, simulate, stats
+from veronte4x.cli import (
+    convert,
+    decode,
+    esc,
+    export,
+    monitor,
+    play,
+    plot,
+    record,
+    replay,
+    simulate,
+    stats,
+)
 from veronte4x.cli import list as list_command
 from veronte4x.cli.buses import require_bus_packages
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
@@ -52,6 +64,7 @@ COMMANDS = (
     convert,
     export,
     play,
+    record,
 )
 """The command modules, in the order ``--help`` lists them."""
 

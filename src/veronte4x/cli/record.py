@@ -1,0 +1,108 @@
+"""``veronte4x record``: a live bus's frames into a file, as pydronecan's ``fileout:`` driver
+records them (`veronte4x.capture.readers.pydronecan`): pydronecan's ``filein:`` plays it, and
+every command of veronte4x reads it."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+import threading
+from typing import Any
+
+from veronte4x.capture.busmap import BusMap
+from veronte4x.capture.frames import Frame
+from veronte4x.capture.readers.live import BusLoss
+from veronte4x.capture.readers.pydronecan import record
+from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.interrupts import Interrupts
+from veronte4x.cli.options import UsageError, add_live_options, live, open_frame_source
+from veronte4x.errors import SourceError
+from veronte4x.words import counted
+
+FORMATS = ("pydronecan",)
+"""What ``--to`` writes."""
+
+
+def add_parser(commands: Any) -> None:
+    """Register the command."""
+    parser = commands.add_parser(
+        "record", help="record a live bus's frames into a file (pydronecan's capture file)"
+    )
+    parser.add_argument(
+        "--to",
+        nargs=2,
+        required=True,
+        metavar=("FORMAT", "FILE"),
+        help="pydronecan and a file: the frames as pydronecan's fileout: driver writes them",
+    )
+    parser.add_argument(
+        "--count",
+        type=_count,
+        metavar="N",
+        help="stop after N frames (default: at the end of --duration, or Ctrl-C)",
+    )
+    add_live_options(parser)
+    parser.set_defaults(run=run, file=None, bus_map=None)
+
+
+def _count(text: str) -> int:
+    """A ``--count``: a whole number of frames, 1 or more."""
+    try:
+        count = int(text)
+    except ValueError:
+        count = 0
+    if count < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of frames (1 or more)")
+    return count
+
+
+def run(args: argparse.Namespace, bus_map: BusMap) -> int:
+    """Write the bus's frames into the file until ``--count``, ``--duration`` or Ctrl-C; the
+    remote and error frames, which the file cannot hold, are left out and counted."""
+    format_, out = args.to
+    if format_ not in FORMATS:
+        raise UsageError(f"--to {format_}: record writes {', '.join(FORMATS)}")
+    if not live(args):
+        raise UsageError(
+            "record reads a live bus: give --interface and --channel (e.g. --interface mcast "
+            "--channel 0) or --can-config FILE"
+        )
+    loss = BusLoss()
+    stop = threading.Event()
+    written = left_out = 0
+    interrupted = False
+    try:
+        with open(out, "wb") as file, Interrupts() as interrupts:
+            for frame in open_frame_source(args, stop, loss):
+                if type(frame) is not Frame or frame.remote or frame.error:
+                    left_out += 1
+                    continue
+                with interrupts.whole:  # a record is in the file whole, or not at all
+                    try:
+                        file.write(record(frame))
+                    except SourceError:
+                        left_out += 1
+                        continue
+                    file.flush()
+                    written += 1
+                if written == args.count:
+                    stop.set()  # the bus is closed as the reading ends
+    except KeyboardInterrupt:
+        interrupted = True
+    except Exception:
+        if not written:  # the bus could not be opened, or failed at once: no empty file
+            with contextlib.suppress(OSError):
+                os.remove(out)
+        raise
+    summary = f"{counted(written, 'frame')} in {out}"
+    if left_out:
+        summary += f", {left_out} left out (remote, error or not a CAN frame)"
+    if lost := loss.text():
+        summary += f", {lost}"
+    if interrupted:
+        print(f"veronte4x: interrupted after {summary}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    print(f"veronte4x: {summary}", file=sys.stderr)
+    return EXIT_OK
