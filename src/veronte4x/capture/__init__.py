@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from veronte4x.capture.aio import stream
 from veronte4x.capture.align import AlignError, align
+from veronte4x.capture.arbitration import replay
 from veronte4x.capture.busmap import BusMap, BusMapError, Role, TextForm
 from veronte4x.capture.dataframe import fields, to_dataframe
 from veronte4x.capture.datasets import dataset_files, dataset_tables, open_dataset
@@ -59,6 +60,7 @@ __all__ = [
     "open_frames",
     "read",
     "read_tables",
+    "replay",
     "stats",
     "stream",
     "tables_from_records",

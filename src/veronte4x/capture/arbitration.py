@@ -22,14 +22,16 @@ __all__ = ["captured_frames", "replay"]
 
 
 def replay(
-    path: str | os.PathLike[str],
+    source: str | os.PathLike[str] | Iterable[Frame | BadLine],
     config: ArbiterConfig | str | os.PathLike[str],
     channel: str | None = None,
 ) -> ReplayResult:
-    """Run a capture through the arbiter model and compare it with the real arbiter.
+    """Run a capture through the arbiter model and compare it with the real arbiter, as
+    ``veronte4x replay`` does.
 
     Args:
-        path: The capture file (any format `veronte4x.capture.open_frames` reads).
+        source: The capture file (any format `veronte4x.capture.open_frames` reads), or its
+            frames (what `open_frames` gives, filtered or joined as wanted).
         config: The captured vehicle's arbiter configuration, or the path of its TOML file
             (`veronte4x.arbiter.config_file.load_config`). ``ArbiterConfig()`` is the
             default configuration, with which disagreements may come from the
@@ -47,13 +49,22 @@ def replay(
 
     Examples:
         >>> from veronte4x import capture
-        >>> result = capture.replay("examples/flight.log", "examples/arbiter.toml")
-        ... # doctest: +SKIP
-        >>> print(result.timeline())  # doctest: +SKIP
+        >>> result = capture.replay("examples/capture.log", "examples/arbiter.toml")
+        >>> switch = next(d for d in result.decisions if "->" in d.reason)
+        >>> switch.reason
+        'AP1 -> AP2: AP2 0.0257 < AP1 0.057 x (1 - 0.3)'
+        >>> switch.utc.isoformat()
+        '2025-11-21T15:00:00.028000+00:00'
     """
     if not isinstance(config, ArbiterConfig):
         config = load_config(config)
-    return replay_frames(captured_frames(open_frames(path, channel), config), config)
+    if isinstance(source, (str, os.PathLike)):
+        frames = open_frames(source, channel)
+    else:
+        frames = (
+            f for f in source if channel is None or (isinstance(f, Frame) and f.channel == channel)
+        )
+    return replay_frames(captured_frames(frames, config), config)
 
 
 def captured_frames(
