@@ -143,7 +143,7 @@ def test_generated_source_is_in_linecache() -> None:
     import inspect
 
     source = inspect.getsource(TYPES["com.example.motor.Telemetry"])
-    assert source.startswith("@dataclass(frozen=True, slots=True)\nclass Telemetry(HtmlDisplay):")
+    assert source.startswith("@frozen_dataclass\nclass Telemetry(HtmlDisplay):")
     assert "message 20990" in source
 
 

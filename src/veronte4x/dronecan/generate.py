@@ -164,7 +164,8 @@ _RESERVED = {
 _MODULE_NAMES = {
     "annotations",
     "enum",
-    "dataclass",
+    "frozen_dataclass",
+    "_setattr",
     "Any",
     "ClassVar",
     "TypeAlias",
@@ -560,7 +561,7 @@ def _fact_lines(tested: Iterable[tuple[str, Attribute]]) -> list[str]:
 def _class_source(key: str, p: Plan) -> list[str]:
     d, section = p.sections[key]
     name = p.names[key]
-    lines = ["", "", "@dataclass(frozen=True, slots=True)", f"class {name}(HtmlDisplay):"]
+    lines = ["", "", "@frozen_dataclass", f"class {name}(HtmlDisplay):"]
     doc = _title(d, key)
     if section.doc:
         doc += "\n\n" + section.doc
@@ -587,11 +588,10 @@ def _class_source(key: str, p: Plan) -> list[str]:
     for constant, value, comment in HAND_CONSTANTS.get(key, ()):
         lines.append(f"    {claim(constant, constant, None)}: ClassVar[int] = {value}")
         lines += _doc(comment, "    ")
-    fields = [a for a in section.fields if a.name]
-    if fields:
-        lines.append("")
     hidden: dict[str, str] = {}
-    for a in fields:
+    written: list[tuple[str, str, str]] = []
+    comments: list[str | None] = []
+    for a in (a for a in section.fields if a.name):
         enum = p.enums.get((key, a.name))
         enum_name = enum[0] if enum is not None and enum[1] == "IntEnum" else None
         annotation, default = _python_type(a.type, p, enum_name)
@@ -600,12 +600,32 @@ def _class_source(key: str, p: Plan) -> list[str]:
         if _names(default) & body.keys():  # an attribute above hides a class the default calls
             hidden[a.name] = default
             default = f"_defaults[{a.name!r}]"
-        attribute = claim(attributes[a.name], a.name, a.line)
-        lines.append(f"    {attribute}: {annotation} = {default}")
-        if a.comment:
-            lines += _doc(a.comment, "    ")
+        written.append((claim(attributes[a.name], a.name, a.line), annotation, default))
+        comments.append(a.comment)
     if hidden:  # made before the class, where the names are the module's
         lines[2:2] = ["_defaults = {", *(f"    {f!r}: {v}," for f, v in hidden.items()), "}"]
+    return lines + _slots_and_init(written, comments)
+
+
+def _slots_and_init(
+    written: list[tuple[str, str, str]], comments: list[str | None] | None = None
+) -> list[str]:
+    """The ``__slots__``, field annotations and ``__init__`` of a class body, from each
+    field's (attribute, annotation, default): what `veronte4x.dronecan.written` needs to
+    make the class a dataclass without compiling anything at import."""
+    slots = "".join(f'"{attribute}", ' for attribute, _, _ in written).rstrip()
+    lines = ["", f"    __slots__ = ({slots})", ""]
+    for (attribute, annotation, _), comment in zip(
+        written, comments or [None] * len(written), strict=True
+    ):
+        lines.append(f"    {attribute}: {annotation}")
+        if comment:
+            lines += _doc(comment, "    ")
+    this = "_self" if any(attribute == "self" for attribute, _, _ in written) else "self"
+    lines += ["", "    def __init__(", f"        {this},"]
+    lines += [f"        {a}: {annotation} = {default}," for a, annotation, default in written]
+    lines.append("    ) -> None:")
+    lines += [f'        _setattr({this}, "{a}", {a})' for a, _, _ in written] or ["        pass"]
     return lines
 
 
@@ -712,10 +732,10 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
         "from __future__ import annotations",
         "",
         "import enum",
-        "from dataclasses import dataclass",
         "from typing import Any, ClassVar, TypeAlias",
         "",
         "from veronte4x.display import HtmlDisplay",
+        "from veronte4x.dronecan.written import frozen_dataclass",
     ]
     by_module: dict[str, list[str]] = {}
     for name, module in sorted(imports.items()):
@@ -724,6 +744,11 @@ def module_source(p: Plan, generate: Iterable[str], docstring: str, imports: dic
         head.append(f"from {module} import (")
         head += [f"    {n}," for n in sorted(names)]
         head.append(")")
+    head += [
+        "",
+        "_setattr = object.__setattr__",
+        '"""How each ``__init__`` sets a frozen field."""',
+    ]
     body: list[str] = []
     for (key, _), (name, kind, constants, prefix) in p.enums.items():
         if key in generated:
@@ -773,7 +798,7 @@ def _union_source(key: str, p: Plan, done: set[str]) -> list[str]:
             continue
         done.add(member)
         annotation, default = _python_type(a.type, p, None)
-        lines += ["", "", "@dataclass(frozen=True, slots=True)", f"class {member}(HtmlDisplay):"]
+        lines += ["", "", "@frozen_dataclass", f"class {member}(HtmlDisplay):"]
         lines += _doc(f"Member ``{a.name}`` of the union ``{d.full_name}``.", "    ")
         uses = [  # a member may serve several unions: its facts are those of every use
             other.fields[index]
@@ -783,7 +808,8 @@ def _union_source(key: str, p: Plan, done: set[str]) -> list[str]:
             for other in (p.sections[union][1],)
         ]
         facts = _fact_lines(("value", use) for use in uses)
-        lines += ["", *facts, *([""] if facts else []), f"    value: {annotation} = {default}"]
+        lines += ["", *facts] if facts else []
+        lines += _slots_and_init([("value", annotation, default)])
     lines += ["", "", f"{name}: TypeAlias = {' | '.join(p.members[key])}"]
     lines += _doc(_title(d, key) + "\n\n" + (section.doc or ""), "")
     return lines

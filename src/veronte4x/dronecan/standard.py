@@ -9,10 +9,13 @@ re-exports the classes veronte4x had before the DSDL compiler.
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
 from typing import Any, ClassVar, TypeAlias
 
 from veronte4x.display import HtmlDisplay
+from veronte4x.dronecan.written import frozen_dataclass
+
+_setattr = object.__setattr__
+"""How each ``__init__`` sets a frozen field."""
 
 
 class TemperatureErrorFlag(enum.IntFlag):
@@ -417,7 +420,7 @@ class FileError(enum.IntEnum):
     NOT_IMPLEMENTED = 38
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class CoarseOrientation(HtmlDisplay):
     """``uavcan.CoarseOrientation`` (nested; ``CoarseOrientation.uavcan``).
 
@@ -437,12 +440,22 @@ class CoarseOrientation(HtmlDisplay):
 
     ANGLE_MULTIPLIER: ClassVar[float] = 4.7746482927568605
 
-    fixed_axis_roll_pitch_yaw: tuple[int, ...] = (0,) * 3
-    orientation_defined: bool = False
+    __slots__ = ("fixed_axis_roll_pitch_yaw", "orientation_defined",)
+
+    fixed_axis_roll_pitch_yaw: tuple[int, ...]
+    orientation_defined: bool
     """False if the orientation is actually not defined"""
 
+    def __init__(
+        self,
+        fixed_axis_roll_pitch_yaw: tuple[int, ...] = (0,) * 3,
+        orientation_defined: bool = False,
+    ) -> None:
+        _setattr(self, "fixed_axis_roll_pitch_yaw", fixed_axis_roll_pitch_yaw)
+        _setattr(self, "orientation_defined", orientation_defined)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Timestamp(HtmlDisplay):
     """``uavcan.Timestamp`` (nested; ``Timestamp.uavcan``).
 
@@ -454,11 +467,19 @@ class Timestamp(HtmlDisplay):
 
     UNKNOWN: ClassVar[int] = 0
 
-    usec: int = 0
+    __slots__ = ("usec",)
+
+    usec: int
     """Microseconds"""
 
+    def __init__(
+        self,
+        usec: int = 0,
+    ) -> None:
+        _setattr(self, "usec", usec)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class ActuatorCommand(HtmlDisplay):
     """``uavcan.equipment.actuator.Command`` (nested; ``equipment/actuator/Command.uavcan``).
 
@@ -478,12 +499,24 @@ class ActuatorCommand(HtmlDisplay):
     COMMAND_TYPE_PWM: ClassVar[int] = 4
     """PWM microsecond signal"""
 
-    actuator_id: int = 0
-    command_type: CommandType | int = 0
-    command_value: float = 0.0
+    __slots__ = ("actuator_id", "command_type", "command_value",)
+
+    actuator_id: int
+    command_type: CommandType | int
+    command_value: float
+
+    def __init__(
+        self,
+        actuator_id: int = 0,
+        command_type: CommandType | int = 0,
+        command_value: float = 0.0,
+    ) -> None:
+        _setattr(self, "actuator_id", actuator_id)
+        _setattr(self, "command_type", command_type)
+        _setattr(self, "command_value", command_value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ArrayCommand(HtmlDisplay):
     """``uavcan.equipment.actuator.ArrayCommand``, message 1010 (``equipment/actuator/1010.ArrayCommand.uavcan``).
 
@@ -491,10 +524,18 @@ class ArrayCommand(HtmlDisplay):
     The system supports up to 256 actuators; up to 15 of them can be commanded with one message.
     """
 
-    commands: tuple[ActuatorCommand, ...] = ()
+    __slots__ = ("commands",)
+
+    commands: tuple[ActuatorCommand, ...]
+
+    def __init__(
+        self,
+        commands: tuple[ActuatorCommand, ...] = (),
+    ) -> None:
+        _setattr(self, "commands", commands)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ActuatorStatus(HtmlDisplay):
     """``uavcan.equipment.actuator.Status``, message 1011 (``equipment/actuator/1011.Status.uavcan``).
 
@@ -505,18 +546,34 @@ class ActuatorStatus(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"force", "position", "speed"})
     POWER_RATING_PCT_UNKNOWN: ClassVar[int] = 127
 
-    actuator_id: int = 0
-    position: float = 0.0
+    __slots__ = ("actuator_id", "position", "force", "speed", "power_rating_pct",)
+
+    actuator_id: int
+    position: float
     """meter or radian"""
-    force: float = 0.0
+    force: float
     """Newton or Newton metre"""
-    speed: float = 0.0
+    speed: float
     """meter per second or radian per second"""
-    power_rating_pct: int = 0
+    power_rating_pct: int
     """0 - unloaded, 100 - full load"""
 
+    def __init__(
+        self,
+        actuator_id: int = 0,
+        position: float = 0.0,
+        force: float = 0.0,
+        speed: float = 0.0,
+        power_rating_pct: int = 0,
+    ) -> None:
+        _setattr(self, "actuator_id", actuator_id)
+        _setattr(self, "position", position)
+        _setattr(self, "force", force)
+        _setattr(self, "speed", speed)
+        _setattr(self, "power_rating_pct", power_rating_pct)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Solution(HtmlDisplay):
     """``uavcan.equipment.ahrs.Solution``, message 1000 (``equipment/ahrs/1000.Solution.uavcan``).
 
@@ -525,16 +582,36 @@ class Solution(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"angular_velocity", "angular_velocity_covariance", "linear_acceleration", "linear_acceleration_covariance", "orientation_covariance", "orientation_xyzw"})
 
-    timestamp: Timestamp = Timestamp()
-    orientation_xyzw: tuple[float, ...] = (0.0,) * 4
-    orientation_covariance: tuple[float, ...] = ()
-    angular_velocity: tuple[float, ...] = (0.0,) * 3
-    angular_velocity_covariance: tuple[float, ...] = ()
-    linear_acceleration: tuple[float, ...] = (0.0,) * 3
-    linear_acceleration_covariance: tuple[float, ...] = ()
+    __slots__ = ("timestamp", "orientation_xyzw", "orientation_covariance", "angular_velocity", "angular_velocity_covariance", "linear_acceleration", "linear_acceleration_covariance",)
+
+    timestamp: Timestamp
+    orientation_xyzw: tuple[float, ...]
+    orientation_covariance: tuple[float, ...]
+    angular_velocity: tuple[float, ...]
+    angular_velocity_covariance: tuple[float, ...]
+    linear_acceleration: tuple[float, ...]
+    linear_acceleration_covariance: tuple[float, ...]
+
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        orientation_xyzw: tuple[float, ...] = (0.0,) * 4,
+        orientation_covariance: tuple[float, ...] = (),
+        angular_velocity: tuple[float, ...] = (0.0,) * 3,
+        angular_velocity_covariance: tuple[float, ...] = (),
+        linear_acceleration: tuple[float, ...] = (0.0,) * 3,
+        linear_acceleration_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "orientation_xyzw", orientation_xyzw)
+        _setattr(self, "orientation_covariance", orientation_covariance)
+        _setattr(self, "angular_velocity", angular_velocity)
+        _setattr(self, "angular_velocity_covariance", angular_velocity_covariance)
+        _setattr(self, "linear_acceleration", linear_acceleration)
+        _setattr(self, "linear_acceleration_covariance", linear_acceleration_covariance)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class MagneticFieldStrength(HtmlDisplay):
     """``uavcan.equipment.ahrs.MagneticFieldStrength``, message 1001 (``equipment/ahrs/1001.MagneticFieldStrength.uavcan``).
 
@@ -545,11 +622,21 @@ class MagneticFieldStrength(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"magnetic_field_covariance", "magnetic_field_ga"})
 
-    magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
-    magnetic_field_covariance: tuple[float, ...] = ()
+    __slots__ = ("magnetic_field_ga", "magnetic_field_covariance",)
+
+    magnetic_field_ga: tuple[float, ...]
+    magnetic_field_covariance: tuple[float, ...]
+
+    def __init__(
+        self,
+        magnetic_field_ga: tuple[float, ...] = (0.0,) * 3,
+        magnetic_field_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "magnetic_field_ga", magnetic_field_ga)
+        _setattr(self, "magnetic_field_covariance", magnetic_field_covariance)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class MagneticFieldStrength2(HtmlDisplay):
     """``uavcan.equipment.ahrs.MagneticFieldStrength2``, message 1002 (``equipment/ahrs/1002.MagneticFieldStrength2.uavcan``).
 
@@ -559,12 +646,24 @@ class MagneticFieldStrength2(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"magnetic_field_covariance", "magnetic_field_ga"})
 
-    sensor_id: int = 0
-    magnetic_field_ga: tuple[float, ...] = (0.0,) * 3
-    magnetic_field_covariance: tuple[float, ...] = ()
+    __slots__ = ("sensor_id", "magnetic_field_ga", "magnetic_field_covariance",)
+
+    sensor_id: int
+    magnetic_field_ga: tuple[float, ...]
+    magnetic_field_covariance: tuple[float, ...]
+
+    def __init__(
+        self,
+        sensor_id: int = 0,
+        magnetic_field_ga: tuple[float, ...] = (0.0,) * 3,
+        magnetic_field_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "sensor_id", sensor_id)
+        _setattr(self, "magnetic_field_ga", magnetic_field_ga)
+        _setattr(self, "magnetic_field_covariance", magnetic_field_covariance)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RawIMU(HtmlDisplay):
     """``uavcan.equipment.ahrs.RawIMU``, message 1003 (``equipment/ahrs/1003.RawIMU.uavcan``).
 
@@ -576,20 +675,40 @@ class RawIMU(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"accelerometer_latest", "covariance", "rate_gyro_latest"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"accelerometer_integral", "integration_interval", "rate_gyro_integral"})
 
-    timestamp: Timestamp = Timestamp()
-    integration_interval: float = 0.0
-    rate_gyro_latest: tuple[float, ...] = (0.0,) * 3
+    __slots__ = ("timestamp", "integration_interval", "rate_gyro_latest", "rate_gyro_integral", "accelerometer_latest", "accelerometer_integral", "covariance",)
+
+    timestamp: Timestamp
+    integration_interval: float
+    rate_gyro_latest: tuple[float, ...]
     """Latest sample, radian/second"""
-    rate_gyro_integral: tuple[float, ...] = (0.0,) * 3
+    rate_gyro_integral: tuple[float, ...]
     """Integrated samples, radian"""
-    accelerometer_latest: tuple[float, ...] = (0.0,) * 3
+    accelerometer_latest: tuple[float, ...]
     """Latest sample, meter/(second^2)"""
-    accelerometer_integral: tuple[float, ...] = (0.0,) * 3
+    accelerometer_integral: tuple[float, ...]
     """Integrated samples, meter/second"""
-    covariance: tuple[float, ...] = ()
+    covariance: tuple[float, ...]
+
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        integration_interval: float = 0.0,
+        rate_gyro_latest: tuple[float, ...] = (0.0,) * 3,
+        rate_gyro_integral: tuple[float, ...] = (0.0,) * 3,
+        accelerometer_latest: tuple[float, ...] = (0.0,) * 3,
+        accelerometer_integral: tuple[float, ...] = (0.0,) * 3,
+        covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "integration_interval", integration_interval)
+        _setattr(self, "rate_gyro_latest", rate_gyro_latest)
+        _setattr(self, "rate_gyro_integral", rate_gyro_integral)
+        _setattr(self, "accelerometer_latest", accelerometer_latest)
+        _setattr(self, "accelerometer_integral", accelerometer_integral)
+        _setattr(self, "covariance", covariance)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class TrueAirspeed(HtmlDisplay):
     """``uavcan.equipment.air_data.TrueAirspeed``, message 1020 (``equipment/air_data/1020.TrueAirspeed.uavcan``).
 
@@ -598,13 +717,23 @@ class TrueAirspeed(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"true_airspeed", "true_airspeed_variance"})
 
-    true_airspeed: float = 0.0
+    __slots__ = ("true_airspeed", "true_airspeed_variance",)
+
+    true_airspeed: float
     """m/s"""
-    true_airspeed_variance: float = 0.0
+    true_airspeed_variance: float
     """(m/s)^2"""
 
+    def __init__(
+        self,
+        true_airspeed: float = 0.0,
+        true_airspeed_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "true_airspeed", true_airspeed)
+        _setattr(self, "true_airspeed_variance", true_airspeed_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class IndicatedAirspeed(HtmlDisplay):
     """``uavcan.equipment.air_data.IndicatedAirspeed``, message 1021 (``equipment/air_data/1021.IndicatedAirspeed.uavcan``).
 
@@ -613,13 +742,23 @@ class IndicatedAirspeed(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"indicated_airspeed", "indicated_airspeed_variance"})
 
-    indicated_airspeed: float = 0.0
+    __slots__ = ("indicated_airspeed", "indicated_airspeed_variance",)
+
+    indicated_airspeed: float
     """m/s"""
-    indicated_airspeed_variance: float = 0.0
+    indicated_airspeed_variance: float
     """(m/s)^2"""
 
+    def __init__(
+        self,
+        indicated_airspeed: float = 0.0,
+        indicated_airspeed_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "indicated_airspeed", indicated_airspeed)
+        _setattr(self, "indicated_airspeed_variance", indicated_airspeed_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class AngleOfAttack(HtmlDisplay):
     """``uavcan.equipment.air_data.AngleOfAttack``, message 1025 (``equipment/air_data/1025.AngleOfAttack.uavcan``).
 
@@ -630,14 +769,26 @@ class AngleOfAttack(HtmlDisplay):
     SENSOR_ID_LEFT: ClassVar[int] = 254
     SENSOR_ID_RIGHT: ClassVar[int] = 255
 
-    sensor_id: SensorId | int = 0
-    aoa: float = 0.0
+    __slots__ = ("sensor_id", "aoa", "aoa_variance",)
+
+    sensor_id: SensorId | int
+    aoa: float
     """Radians"""
-    aoa_variance: float = 0.0
+    aoa_variance: float
     """Radians^2"""
 
+    def __init__(
+        self,
+        sensor_id: SensorId | int = 0,
+        aoa: float = 0.0,
+        aoa_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "sensor_id", sensor_id)
+        _setattr(self, "aoa", aoa)
+        _setattr(self, "aoa_variance", aoa_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Sideslip(HtmlDisplay):
     """``uavcan.equipment.air_data.Sideslip``, message 1026 (``equipment/air_data/1026.Sideslip.uavcan``).
 
@@ -646,13 +797,23 @@ class Sideslip(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"sideslip_angle", "sideslip_angle_variance"})
 
-    sideslip_angle: float = 0.0
+    __slots__ = ("sideslip_angle", "sideslip_angle_variance",)
+
+    sideslip_angle: float
     """Radians"""
-    sideslip_angle_variance: float = 0.0
+    sideslip_angle_variance: float
     """Radians^2"""
 
+    def __init__(
+        self,
+        sideslip_angle: float = 0.0,
+        sideslip_angle_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "sideslip_angle", sideslip_angle)
+        _setattr(self, "sideslip_angle_variance", sideslip_angle_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class RawAirData(HtmlDisplay):
     """``uavcan.equipment.air_data.RawAirData``, message 1027 (``equipment/air_data/1027.RawAirData.uavcan``).
 
@@ -666,24 +827,46 @@ class RawAirData(HtmlDisplay):
     FLAG_HEATER_OVERCURRENT: ClassVar[int] = 4
     FLAG_HEATER_OPENCIRCUIT: ClassVar[int] = 8
 
-    flags: int = 0
-    static_pressure: float = 0.0
+    __slots__ = ("flags", "static_pressure", "differential_pressure", "static_pressure_sensor_temperature", "differential_pressure_sensor_temperature", "static_air_temperature", "pitot_temperature", "covariance",)
+
+    flags: int
+    static_pressure: float
     """Pascal"""
-    differential_pressure: float = 0.0
+    differential_pressure: float
     """Pascal"""
-    static_pressure_sensor_temperature: float = 0.0
+    static_pressure_sensor_temperature: float
     """Kelvin"""
-    differential_pressure_sensor_temperature: float = 0.0
+    differential_pressure_sensor_temperature: float
     """Kelvin"""
-    static_air_temperature: float = 0.0
+    static_air_temperature: float
     """Kelvin"""
-    pitot_temperature: float = 0.0
+    pitot_temperature: float
     """Kelvin"""
-    covariance: tuple[float, ...] = ()
+    covariance: tuple[float, ...]
     """order of diagonal elements :"""
 
+    def __init__(
+        self,
+        flags: int = 0,
+        static_pressure: float = 0.0,
+        differential_pressure: float = 0.0,
+        static_pressure_sensor_temperature: float = 0.0,
+        differential_pressure_sensor_temperature: float = 0.0,
+        static_air_temperature: float = 0.0,
+        pitot_temperature: float = 0.0,
+        covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "flags", flags)
+        _setattr(self, "static_pressure", static_pressure)
+        _setattr(self, "differential_pressure", differential_pressure)
+        _setattr(self, "static_pressure_sensor_temperature", static_pressure_sensor_temperature)
+        _setattr(self, "differential_pressure_sensor_temperature", differential_pressure_sensor_temperature)
+        _setattr(self, "static_air_temperature", static_air_temperature)
+        _setattr(self, "pitot_temperature", pitot_temperature)
+        _setattr(self, "covariance", covariance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class StaticPressure(HtmlDisplay):
     """``uavcan.equipment.air_data.StaticPressure``, message 1028 (``equipment/air_data/1028.StaticPressure.uavcan``).
 
@@ -693,13 +876,23 @@ class StaticPressure(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_pressure_variance"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_pressure"})
 
-    static_pressure: float = 0.0
+    __slots__ = ("static_pressure", "static_pressure_variance",)
+
+    static_pressure: float
     """Pascal"""
-    static_pressure_variance: float = 0.0
+    static_pressure_variance: float
     """Pascal^2"""
 
+    def __init__(
+        self,
+        static_pressure: float = 0.0,
+        static_pressure_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "static_pressure", static_pressure)
+        _setattr(self, "static_pressure_variance", static_pressure_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class StaticTemperature(HtmlDisplay):
     """``uavcan.equipment.air_data.StaticTemperature``, message 1029 (``equipment/air_data/1029.StaticTemperature.uavcan``).
 
@@ -708,13 +901,23 @@ class StaticTemperature(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"static_temperature", "static_temperature_variance"})
 
-    static_temperature: float = 0.0
+    __slots__ = ("static_temperature", "static_temperature_variance",)
+
+    static_temperature: float
     """Kelvin"""
-    static_temperature_variance: float = 0.0
+    static_temperature_variance: float
     """Kelvin^2"""
 
+    def __init__(
+        self,
+        static_temperature: float = 0.0,
+        static_temperature_variance: float = 0.0,
+    ) -> None:
+        _setattr(self, "static_temperature", static_temperature)
+        _setattr(self, "static_temperature_variance", static_temperature_variance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class CameraGimbalMode(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.Mode`` (nested; ``equipment/camera_gimbal/Mode.uavcan``).
 
@@ -726,10 +929,18 @@ class CameraGimbalMode(HtmlDisplay):
     COMMAND_MODE_ORIENTATION_BODY_FRAME: ClassVar[int] = 2
     COMMAND_MODE_GEO_POI: ClassVar[int] = 3
 
-    command_mode: CommandMode | int = 0
+    __slots__ = ("command_mode",)
+
+    command_mode: CommandMode | int
+
+    def __init__(
+        self,
+        command_mode: CommandMode | int = 0,
+    ) -> None:
+        _setattr(self, "command_mode", command_mode)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class AngularCommand(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.AngularCommand``, message 1040 (``equipment/camera_gimbal/1040.AngularCommand.uavcan``).
 
@@ -743,12 +954,24 @@ class AngularCommand(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"quaternion_xyzw"})
 
-    gimbal_id: int = 0
-    mode: CameraGimbalMode = CameraGimbalMode()
-    quaternion_xyzw: tuple[float, ...] = (0.0,) * 4
+    __slots__ = ("gimbal_id", "mode", "quaternion_xyzw",)
+
+    gimbal_id: int
+    mode: CameraGimbalMode
+    quaternion_xyzw: tuple[float, ...]
+
+    def __init__(
+        self,
+        gimbal_id: int = 0,
+        mode: CameraGimbalMode = CameraGimbalMode(),
+        quaternion_xyzw: tuple[float, ...] = (0.0,) * 4,
+    ) -> None:
+        _setattr(self, "gimbal_id", gimbal_id)
+        _setattr(self, "mode", mode)
+        _setattr(self, "quaternion_xyzw", quaternion_xyzw)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GEOPOICommand(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.GEOPOICommand``, message 1041 (``equipment/camera_gimbal/1041.GEOPOICommand.uavcan``).
 
@@ -761,17 +984,35 @@ class GEOPOICommand(HtmlDisplay):
     HEIGHT_REFERENCE_ELLIPSOID: ClassVar[int] = 0
     HEIGHT_REFERENCE_MEAN_SEA_LEVEL: ClassVar[int] = 1
 
-    gimbal_id: int = 0
-    mode: CameraGimbalMode = CameraGimbalMode()
-    longitude_deg_1e7: int = 0
+    __slots__ = ("gimbal_id", "mode", "longitude_deg_1e7", "latitude_deg_1e7", "height_cm", "height_reference",)
+
+    gimbal_id: int
+    mode: CameraGimbalMode
+    longitude_deg_1e7: int
     """1 LSB = 1e-7 deg"""
-    latitude_deg_1e7: int = 0
-    height_cm: int = 0
+    latitude_deg_1e7: int
+    height_cm: int
     """1 LSB = 10 mm"""
-    height_reference: HeightReference | int = 0
+    height_reference: HeightReference | int
+
+    def __init__(
+        self,
+        gimbal_id: int = 0,
+        mode: CameraGimbalMode = CameraGimbalMode(),
+        longitude_deg_1e7: int = 0,
+        latitude_deg_1e7: int = 0,
+        height_cm: int = 0,
+        height_reference: HeightReference | int = 0,
+    ) -> None:
+        _setattr(self, "gimbal_id", gimbal_id)
+        _setattr(self, "mode", mode)
+        _setattr(self, "longitude_deg_1e7", longitude_deg_1e7)
+        _setattr(self, "latitude_deg_1e7", latitude_deg_1e7)
+        _setattr(self, "height_cm", height_cm)
+        _setattr(self, "height_reference", height_reference)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class CameraGimbalStatus(HtmlDisplay):
     """``uavcan.equipment.camera_gimbal.Status``, message 1044 (``equipment/camera_gimbal/1044.Status.uavcan``).
 
@@ -780,14 +1021,28 @@ class CameraGimbalStatus(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"camera_orientation_in_body_frame_covariance", "camera_orientation_in_body_frame_xyzw"})
 
-    gimbal_id: int = 0
-    mode: CameraGimbalMode = CameraGimbalMode()
-    camera_orientation_in_body_frame_xyzw: tuple[float, ...] = (0.0,) * 4
-    camera_orientation_in_body_frame_covariance: tuple[float, ...] = ()
+    __slots__ = ("gimbal_id", "mode", "camera_orientation_in_body_frame_xyzw", "camera_orientation_in_body_frame_covariance",)
+
+    gimbal_id: int
+    mode: CameraGimbalMode
+    camera_orientation_in_body_frame_xyzw: tuple[float, ...]
+    camera_orientation_in_body_frame_covariance: tuple[float, ...]
     """+inf for non-existent axes"""
 
+    def __init__(
+        self,
+        gimbal_id: int = 0,
+        mode: CameraGimbalMode = CameraGimbalMode(),
+        camera_orientation_in_body_frame_xyzw: tuple[float, ...] = (0.0,) * 4,
+        camera_orientation_in_body_frame_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "gimbal_id", gimbal_id)
+        _setattr(self, "mode", mode)
+        _setattr(self, "camera_orientation_in_body_frame_xyzw", camera_orientation_in_body_frame_xyzw)
+        _setattr(self, "camera_orientation_in_body_frame_covariance", camera_orientation_in_body_frame_covariance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Temperature(HtmlDisplay):
     """``uavcan.equipment.device.Temperature``, message 1110 (``equipment/device/1110.Temperature.uavcan``).
 
@@ -798,13 +1053,25 @@ class Temperature(HtmlDisplay):
     ERROR_FLAG_OVERHEATING: ClassVar[int] = 1
     ERROR_FLAG_OVERCOOLING: ClassVar[int] = 2
 
-    device_id: int = 0
-    temperature: float = 0.0
+    __slots__ = ("device_id", "temperature", "error_flags",)
+
+    device_id: int
+    temperature: float
     """in kelvin"""
-    error_flags: int = 0
+    error_flags: int
+
+    def __init__(
+        self,
+        device_id: int = 0,
+        temperature: float = 0.0,
+        error_flags: int = 0,
+    ) -> None:
+        _setattr(self, "device_id", device_id)
+        _setattr(self, "temperature", temperature)
+        _setattr(self, "error_flags", error_flags)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RawCommand(HtmlDisplay):
     """``uavcan.equipment.esc.RawCommand``, message 1030 (``equipment/esc/1030.RawCommand.uavcan``).
 
@@ -815,10 +1082,18 @@ class RawCommand(HtmlDisplay):
     motor wiring, or propeller direction. ESCs which do not allow reverse rotation shall clamp negative commands to zero.
     """
 
-    cmd: tuple[int, ...] = ()
+    __slots__ = ("cmd",)
+
+    cmd: tuple[int, ...]
+
+    def __init__(
+        self,
+        cmd: tuple[int, ...] = (),
+    ) -> None:
+        _setattr(self, "cmd", cmd)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RPMCommand(HtmlDisplay):
     """``uavcan.equipment.esc.RPMCommand``, message 1031 (``equipment/esc/1031.RPMCommand.uavcan``).
 
@@ -830,10 +1105,18 @@ class RPMCommand(HtmlDisplay):
     motor wiring, or propeller direction. ESCs which do not allow reverse rotation shall clamp negative RPMs to zero.
     """
 
-    rpm: tuple[int, ...] = ()
+    __slots__ = ("rpm",)
+
+    rpm: tuple[int, ...]
+
+    def __init__(
+        self,
+        rpm: tuple[int, ...] = (),
+    ) -> None:
+        _setattr(self, "rpm", rpm)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class EscStatus(HtmlDisplay):
     """``uavcan.equipment.esc.Status``, message 1034 (``equipment/esc/1034.Status.uavcan``).
 
@@ -843,23 +1126,43 @@ class EscStatus(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"current", "temperature", "voltage"})
 
-    error_count: int = 0
+    __slots__ = ("error_count", "voltage", "current", "temperature", "rpm", "power_rating_pct", "esc_index",)
+
+    error_count: int
     """Resets when the motor restarts"""
-    voltage: float = 0.0
+    voltage: float
     """Volt"""
-    current: float = 0.0
+    current: float
     """Ampere. Can be negative in case of a regenerative braking."""
-    temperature: float = 0.0
+    temperature: float
     """Kelvin"""
-    rpm: int = 0
+    rpm: int
     """Current value, with the same sign convention as RPMCommand. For example, a typical"""
-    power_rating_pct: int = 0
+    power_rating_pct: int
     """Instant demand factor in percent (percent of maximum power); range 0% to 127%."""
-    esc_index: int = 0
+    esc_index: int
     """zero is first ESC. This should match the index into the cmd[] array in RawCommand"""
 
+    def __init__(
+        self,
+        error_count: int = 0,
+        voltage: float = 0.0,
+        current: float = 0.0,
+        temperature: float = 0.0,
+        rpm: int = 0,
+        power_rating_pct: int = 0,
+        esc_index: int = 0,
+    ) -> None:
+        _setattr(self, "error_count", error_count)
+        _setattr(self, "voltage", voltage)
+        _setattr(self, "current", current)
+        _setattr(self, "temperature", temperature)
+        _setattr(self, "rpm", rpm)
+        _setattr(self, "power_rating_pct", power_rating_pct)
+        _setattr(self, "esc_index", esc_index)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class StatusExtended(HtmlDisplay):
     """``uavcan.equipment.esc.StatusExtended``, message 1036 (``equipment/esc/1036.StatusExtended.uavcan``).
 
@@ -868,21 +1171,39 @@ class StatusExtended(HtmlDisplay):
     Transmitted at a lower rate.
     """
 
-    input_pct: int = 0
+    __slots__ = ("input_pct", "output_pct", "motor_temperature_degC", "motor_angle", "status_flags", "esc_index",)
+
+    input_pct: int
     """Absolute input command to ESC, in percent, which is commanded using the setpoint messages. Range 0% to 100%."""
-    output_pct: int = 0
+    output_pct: int
     """Absolute output command from ESC to motor, in percent. Range 0% to 100%."""
-    motor_temperature_degC: int = 0
+    motor_temperature_degC: int
     """Temperature of connected motor, in Celsius. Range is -256 to +255 C."""
-    motor_angle: int = 0
+    motor_angle: int
     """Measured angle of connected angle sensor, in degrees. Range is 0 to 360. The angle increases as the"""
-    status_flags: int = 0
+    status_flags: int
     """Manufacturer-specific status flags currently active."""
-    esc_index: int = 0
+    esc_index: int
     """Index of currently reporting ESC."""
 
+    def __init__(
+        self,
+        input_pct: int = 0,
+        output_pct: int = 0,
+        motor_temperature_degC: int = 0,
+        motor_angle: int = 0,
+        status_flags: int = 0,
+        esc_index: int = 0,
+    ) -> None:
+        _setattr(self, "input_pct", input_pct)
+        _setattr(self, "output_pct", output_pct)
+        _setattr(self, "motor_temperature_degC", motor_temperature_degC)
+        _setattr(self, "motor_angle", motor_angle)
+        _setattr(self, "status_flags", status_flags)
+        _setattr(self, "esc_index", esc_index)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Fix(HtmlDisplay):
     """``uavcan.equipment.gnss.Fix``, message 1060 (``equipment/gnss/1060.Fix.uavcan``).
 
@@ -902,31 +1223,65 @@ class Fix(HtmlDisplay):
     STATUS_2D_FIX: ClassVar[int] = 2
     STATUS_3D_FIX: ClassVar[int] = 3
 
-    timestamp: Timestamp = Timestamp()
+    __slots__ = ("timestamp", "gnss_timestamp", "gnss_time_standard", "num_leap_seconds", "longitude_deg_1e8", "latitude_deg_1e8", "height_ellipsoid_mm", "height_msl_mm", "ned_velocity", "sats_used", "status", "pdop", "position_covariance", "velocity_covariance",)
+
+    timestamp: Timestamp
     """Global network-synchronized time, if available, otherwise zero"""
-    gnss_timestamp: Timestamp = Timestamp()
-    gnss_time_standard: FixGnssTimeStandard | int = 0
-    num_leap_seconds: int = 0
-    longitude_deg_1e8: int = 0
+    gnss_timestamp: Timestamp
+    gnss_time_standard: FixGnssTimeStandard | int
+    num_leap_seconds: int
+    longitude_deg_1e8: int
     """Longitude degrees multiplied by 1e8 (approx. 1 mm per LSB)"""
-    latitude_deg_1e8: int = 0
+    latitude_deg_1e8: int
     """Latitude degrees multiplied by 1e8 (approx. 1 mm per LSB on equator)"""
-    height_ellipsoid_mm: int = 0
+    height_ellipsoid_mm: int
     """Height above ellipsoid in millimeters"""
-    height_msl_mm: int = 0
+    height_msl_mm: int
     """Height above mean sea level in millimeters"""
-    ned_velocity: tuple[float, ...] = (0.0,) * 3
+    ned_velocity: tuple[float, ...]
     """NED frame (north-east-down) in meters per second"""
-    sats_used: int = 0
-    status: FixStatus = FixStatus(0)
-    pdop: float = 0.0
-    position_covariance: tuple[float, ...] = ()
+    sats_used: int
+    status: FixStatus
+    pdop: float
+    position_covariance: tuple[float, ...]
     """m^2"""
-    velocity_covariance: tuple[float, ...] = ()
+    velocity_covariance: tuple[float, ...]
     """(m/s)^2"""
 
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        gnss_timestamp: Timestamp = Timestamp(),
+        gnss_time_standard: FixGnssTimeStandard | int = 0,
+        num_leap_seconds: int = 0,
+        longitude_deg_1e8: int = 0,
+        latitude_deg_1e8: int = 0,
+        height_ellipsoid_mm: int = 0,
+        height_msl_mm: int = 0,
+        ned_velocity: tuple[float, ...] = (0.0,) * 3,
+        sats_used: int = 0,
+        status: FixStatus = FixStatus(0),
+        pdop: float = 0.0,
+        position_covariance: tuple[float, ...] = (),
+        velocity_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "gnss_timestamp", gnss_timestamp)
+        _setattr(self, "gnss_time_standard", gnss_time_standard)
+        _setattr(self, "num_leap_seconds", num_leap_seconds)
+        _setattr(self, "longitude_deg_1e8", longitude_deg_1e8)
+        _setattr(self, "latitude_deg_1e8", latitude_deg_1e8)
+        _setattr(self, "height_ellipsoid_mm", height_ellipsoid_mm)
+        _setattr(self, "height_msl_mm", height_msl_mm)
+        _setattr(self, "ned_velocity", ned_velocity)
+        _setattr(self, "sats_used", sats_used)
+        _setattr(self, "status", status)
+        _setattr(self, "pdop", pdop)
+        _setattr(self, "position_covariance", position_covariance)
+        _setattr(self, "velocity_covariance", velocity_covariance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Auxiliary(HtmlDisplay):
     """``uavcan.equipment.gnss.Auxiliary``, message 1061 (``equipment/gnss/1061.Auxiliary.uavcan``).
 
@@ -936,20 +1291,44 @@ class Auxiliary(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"edop", "gdop", "hdop", "ndop", "pdop", "tdop", "vdop"})
 
-    gdop: float = 0.0
-    pdop: float = 0.0
-    hdop: float = 0.0
-    vdop: float = 0.0
-    tdop: float = 0.0
-    ndop: float = 0.0
-    edop: float = 0.0
-    sats_visible: int = 0
+    __slots__ = ("gdop", "pdop", "hdop", "vdop", "tdop", "ndop", "edop", "sats_visible", "sats_used",)
+
+    gdop: float
+    pdop: float
+    hdop: float
+    vdop: float
+    tdop: float
+    ndop: float
+    edop: float
+    sats_visible: int
     """All visible sats of all available GNSS (e.g. GPS, GLONASS, etc)"""
-    sats_used: int = 0
+    sats_used: int
     """All used sats of all available GNSS"""
 
+    def __init__(
+        self,
+        gdop: float = 0.0,
+        pdop: float = 0.0,
+        hdop: float = 0.0,
+        vdop: float = 0.0,
+        tdop: float = 0.0,
+        ndop: float = 0.0,
+        edop: float = 0.0,
+        sats_visible: int = 0,
+        sats_used: int = 0,
+    ) -> None:
+        _setattr(self, "gdop", gdop)
+        _setattr(self, "pdop", pdop)
+        _setattr(self, "hdop", hdop)
+        _setattr(self, "vdop", vdop)
+        _setattr(self, "tdop", tdop)
+        _setattr(self, "ndop", ndop)
+        _setattr(self, "edop", edop)
+        _setattr(self, "sats_visible", sats_visible)
+        _setattr(self, "sats_used", sats_used)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class RTCMStream(HtmlDisplay):
     """``uavcan.equipment.gnss.RTCMStream``, message 1062 (``equipment/gnss/1062.RTCMStream.uavcan``).
 
@@ -961,11 +1340,21 @@ class RTCMStream(HtmlDisplay):
     PROTOCOL_ID_RTCM2: ClassVar[int] = 2
     PROTOCOL_ID_RTCM3: ClassVar[int] = 3
 
-    protocol_id: ProtocolId | int = 0
-    data: bytes = b""
+    __slots__ = ("protocol_id", "data",)
+
+    protocol_id: ProtocolId | int
+    data: bytes
+
+    def __init__(
+        self,
+        protocol_id: ProtocolId | int = 0,
+        data: bytes = b"",
+    ) -> None:
+        _setattr(self, "protocol_id", protocol_id)
+        _setattr(self, "data", data)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ECEFPositionVelocity(HtmlDisplay):
     """``uavcan.equipment.gnss.ECEFPositionVelocity`` (nested; ``equipment/gnss/ECEFPositionVelocity.uavcan``).
 
@@ -984,15 +1373,27 @@ class ECEFPositionVelocity(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"covariance"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"velocity_xyz"})
 
-    velocity_xyz: tuple[float, ...] = (0.0,) * 3
+    __slots__ = ("velocity_xyz", "position_xyz_mm", "covariance",)
+
+    velocity_xyz: tuple[float, ...]
     """XYZ velocity in m/s"""
-    position_xyz_mm: tuple[int, ...] = (0,) * 3
+    position_xyz_mm: tuple[int, ...]
     """XYZ-axis coordinates in mm"""
-    covariance: tuple[float, ...] = ()
+    covariance: tuple[float, ...]
     """Position and velocity covariance in the ECEF frame. Units are m^2 for position,"""
 
+    def __init__(
+        self,
+        velocity_xyz: tuple[float, ...] = (0.0,) * 3,
+        position_xyz_mm: tuple[int, ...] = (0,) * 3,
+        covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "velocity_xyz", velocity_xyz)
+        _setattr(self, "position_xyz_mm", position_xyz_mm)
+        _setattr(self, "covariance", covariance)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Fix2(HtmlDisplay):
     """``uavcan.equipment.gnss.Fix2``, message 1063 (``equipment/gnss/1063.Fix2.uavcan``).
 
@@ -1020,42 +1421,90 @@ class Fix2(HtmlDisplay):
     SUB_MODE_RTK_FLOAT: ClassVar[int] = 0
     SUB_MODE_RTK_FIXED: ClassVar[int] = 1
 
-    timestamp: Timestamp = Timestamp()
-    gnss_timestamp: Timestamp = Timestamp()
-    gnss_time_standard: Fix2GnssTimeStandard | int = 0
-    num_leap_seconds: int = 0
-    longitude_deg_1e8: int = 0
+    __slots__ = ("timestamp", "gnss_timestamp", "gnss_time_standard", "num_leap_seconds", "longitude_deg_1e8", "latitude_deg_1e8", "height_ellipsoid_mm", "height_msl_mm", "ned_velocity", "sats_used", "status", "mode", "sub_mode", "covariance", "pdop", "ecef_position_velocity",)
+
+    timestamp: Timestamp
+    gnss_timestamp: Timestamp
+    gnss_time_standard: Fix2GnssTimeStandard | int
+    num_leap_seconds: int
+    longitude_deg_1e8: int
     """Longitude degrees multiplied by 1e8 (approx. 1 mm per LSB)"""
-    latitude_deg_1e8: int = 0
+    latitude_deg_1e8: int
     """Latitude degrees multiplied by 1e8 (approx. 1 mm per LSB on equator)"""
-    height_ellipsoid_mm: int = 0
+    height_ellipsoid_mm: int
     """Height above ellipsoid in millimeters"""
-    height_msl_mm: int = 0
+    height_msl_mm: int
     """Height above mean sea level in millimeters"""
-    ned_velocity: tuple[float, ...] = (0.0,) * 3
+    ned_velocity: tuple[float, ...]
     """NED frame (north-east-down) in meters per second"""
-    sats_used: int = 0
-    status: Fix2Status = Fix2Status(0)
-    mode: Fix2Mode | int = 0
-    sub_mode: int = 0
-    covariance: tuple[float, ...] = ()
+    sats_used: int
+    status: Fix2Status
+    mode: Fix2Mode | int
+    sub_mode: int
+    covariance: tuple[float, ...]
     """Position and velocity covariance. Units are"""
-    pdop: float = 0.0
-    ecef_position_velocity: tuple[ECEFPositionVelocity, ...] = ()
+    pdop: float
+    ecef_position_velocity: tuple[ECEFPositionVelocity, ...]
+
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        gnss_timestamp: Timestamp = Timestamp(),
+        gnss_time_standard: Fix2GnssTimeStandard | int = 0,
+        num_leap_seconds: int = 0,
+        longitude_deg_1e8: int = 0,
+        latitude_deg_1e8: int = 0,
+        height_ellipsoid_mm: int = 0,
+        height_msl_mm: int = 0,
+        ned_velocity: tuple[float, ...] = (0.0,) * 3,
+        sats_used: int = 0,
+        status: Fix2Status = Fix2Status(0),
+        mode: Fix2Mode | int = 0,
+        sub_mode: int = 0,
+        covariance: tuple[float, ...] = (),
+        pdop: float = 0.0,
+        ecef_position_velocity: tuple[ECEFPositionVelocity, ...] = (),
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "gnss_timestamp", gnss_timestamp)
+        _setattr(self, "gnss_time_standard", gnss_time_standard)
+        _setattr(self, "num_leap_seconds", num_leap_seconds)
+        _setattr(self, "longitude_deg_1e8", longitude_deg_1e8)
+        _setattr(self, "latitude_deg_1e8", latitude_deg_1e8)
+        _setattr(self, "height_ellipsoid_mm", height_ellipsoid_mm)
+        _setattr(self, "height_msl_mm", height_msl_mm)
+        _setattr(self, "ned_velocity", ned_velocity)
+        _setattr(self, "sats_used", sats_used)
+        _setattr(self, "status", status)
+        _setattr(self, "mode", mode)
+        _setattr(self, "sub_mode", sub_mode)
+        _setattr(self, "covariance", covariance)
+        _setattr(self, "pdop", pdop)
+        _setattr(self, "ecef_position_velocity", ecef_position_velocity)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class HardpointCommand(HtmlDisplay):
     """``uavcan.equipment.hardpoint.Command``, message 1070 (``equipment/hardpoint/1070.Command.uavcan``).
 
     Generic cargo holder/hardpoint command.
     """
 
-    hardpoint_id: int = 0
-    command: int = 0
+    __slots__ = ("hardpoint_id", "command",)
+
+    hardpoint_id: int
+    command: int
+
+    def __init__(
+        self,
+        hardpoint_id: int = 0,
+        command: int = 0,
+    ) -> None:
+        _setattr(self, "hardpoint_id", hardpoint_id)
+        _setattr(self, "command", command)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class HardpointStatus(HtmlDisplay):
     """``uavcan.equipment.hardpoint.Status``, message 1071 (``equipment/hardpoint/1071.Status.uavcan``).
 
@@ -1064,14 +1513,28 @@ class HardpointStatus(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"payload_weight", "payload_weight_variance"})
 
-    hardpoint_id: int = 0
-    payload_weight: float = 0.0
+    __slots__ = ("hardpoint_id", "payload_weight", "payload_weight_variance", "status",)
+
+    hardpoint_id: int
+    payload_weight: float
     """Newton"""
-    payload_weight_variance: float = 0.0
-    status: int = 0
+    payload_weight_variance: float
+    status: int
+
+    def __init__(
+        self,
+        hardpoint_id: int = 0,
+        payload_weight: float = 0.0,
+        payload_weight_variance: float = 0.0,
+        status: int = 0,
+    ) -> None:
+        _setattr(self, "hardpoint_id", hardpoint_id)
+        _setattr(self, "payload_weight", payload_weight)
+        _setattr(self, "payload_weight_variance", payload_weight_variance)
+        _setattr(self, "status", status)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class FuelTankStatus(HtmlDisplay):
     """``uavcan.equipment.ice.FuelTankStatus``, message 1129 (``equipment/ice/1129.FuelTankStatus.uavcan``).
 
@@ -1082,16 +1545,32 @@ class FuelTankStatus(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"fuel_temperature"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"available_fuel_volume_cm3", "fuel_consumption_rate_cm3pm"})
 
-    available_fuel_volume_percent: int = 0
+    __slots__ = ("available_fuel_volume_percent", "available_fuel_volume_cm3", "fuel_consumption_rate_cm3pm", "fuel_temperature", "fuel_tank_id",)
+
+    available_fuel_volume_percent: int
     """Unit: percent, from 0% to 100%"""
-    available_fuel_volume_cm3: float = 0.0
+    available_fuel_volume_cm3: float
     """Unit: centimeter^3"""
-    fuel_consumption_rate_cm3pm: float = 0.0
-    fuel_temperature: float = 0.0
-    fuel_tank_id: int = 0
+    fuel_consumption_rate_cm3pm: float
+    fuel_temperature: float
+    fuel_tank_id: int
+
+    def __init__(
+        self,
+        available_fuel_volume_percent: int = 0,
+        available_fuel_volume_cm3: float = 0.0,
+        fuel_consumption_rate_cm3pm: float = 0.0,
+        fuel_temperature: float = 0.0,
+        fuel_tank_id: int = 0,
+    ) -> None:
+        _setattr(self, "available_fuel_volume_percent", available_fuel_volume_percent)
+        _setattr(self, "available_fuel_volume_cm3", available_fuel_volume_cm3)
+        _setattr(self, "fuel_consumption_rate_cm3pm", fuel_consumption_rate_cm3pm)
+        _setattr(self, "fuel_temperature", fuel_temperature)
+        _setattr(self, "fuel_tank_id", fuel_tank_id)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class CylinderStatus(HtmlDisplay):
     """``uavcan.equipment.ice.reciprocating.CylinderStatus`` (nested; ``equipment/ice/reciprocating/CylinderStatus.uavcan``).
 
@@ -1103,14 +1582,30 @@ class CylinderStatus(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"cylinder_head_temperature", "exhaust_gas_temperature", "ignition_timing_deg", "injection_time_ms", "lambda_coefficient"})
 
-    ignition_timing_deg: float = 0.0
-    injection_time_ms: float = 0.0
-    cylinder_head_temperature: float = 0.0
-    exhaust_gas_temperature: float = 0.0
-    lambda_coefficient: float = 0.0
+    __slots__ = ("ignition_timing_deg", "injection_time_ms", "cylinder_head_temperature", "exhaust_gas_temperature", "lambda_coefficient",)
+
+    ignition_timing_deg: float
+    injection_time_ms: float
+    cylinder_head_temperature: float
+    exhaust_gas_temperature: float
+    lambda_coefficient: float
+
+    def __init__(
+        self,
+        ignition_timing_deg: float = 0.0,
+        injection_time_ms: float = 0.0,
+        cylinder_head_temperature: float = 0.0,
+        exhaust_gas_temperature: float = 0.0,
+        lambda_coefficient: float = 0.0,
+    ) -> None:
+        _setattr(self, "ignition_timing_deg", ignition_timing_deg)
+        _setattr(self, "injection_time_ms", injection_time_ms)
+        _setattr(self, "cylinder_head_temperature", cylinder_head_temperature)
+        _setattr(self, "exhaust_gas_temperature", exhaust_gas_temperature)
+        _setattr(self, "lambda_coefficient", lambda_coefficient)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ReciprocatingStatus(HtmlDisplay):
     """``uavcan.equipment.ice.reciprocating.Status``, message 1120 (``equipment/ice/reciprocating/1120.Status.uavcan``).
 
@@ -1162,27 +1657,69 @@ class ReciprocatingStatus(HtmlDisplay):
     SPARK_PLUG_SECOND_ACTIVE: ClassVar[int] = 2
     SPARK_PLUG_BOTH_ACTIVE: ClassVar[int] = 3
 
-    state: State = State(0)
-    flags: int = 0
-    engine_load_percent: int = 0
-    engine_speed_rpm: int = 0
-    spark_dwell_time_ms: float = 0.0
-    atmospheric_pressure_kpa: float = 0.0
-    intake_manifold_pressure_kpa: float = 0.0
-    intake_manifold_temperature: float = 0.0
-    coolant_temperature: float = 0.0
-    oil_pressure: float = 0.0
-    oil_temperature: float = 0.0
-    fuel_pressure: float = 0.0
-    fuel_consumption_rate_cm3pm: float = 0.0
-    estimated_consumed_fuel_volume_cm3: float = 0.0
-    throttle_position_percent: int = 0
-    ecu_index: int = 0
-    spark_plug_usage: int = 0
-    cylinder_status: tuple[CylinderStatus, ...] = ()
+    __slots__ = ("state", "flags", "engine_load_percent", "engine_speed_rpm", "spark_dwell_time_ms", "atmospheric_pressure_kpa", "intake_manifold_pressure_kpa", "intake_manifold_temperature", "coolant_temperature", "oil_pressure", "oil_temperature", "fuel_pressure", "fuel_consumption_rate_cm3pm", "estimated_consumed_fuel_volume_cm3", "throttle_position_percent", "ecu_index", "spark_plug_usage", "cylinder_status",)
+
+    state: State
+    flags: int
+    engine_load_percent: int
+    engine_speed_rpm: int
+    spark_dwell_time_ms: float
+    atmospheric_pressure_kpa: float
+    intake_manifold_pressure_kpa: float
+    intake_manifold_temperature: float
+    coolant_temperature: float
+    oil_pressure: float
+    oil_temperature: float
+    fuel_pressure: float
+    fuel_consumption_rate_cm3pm: float
+    estimated_consumed_fuel_volume_cm3: float
+    throttle_position_percent: int
+    ecu_index: int
+    spark_plug_usage: int
+    cylinder_status: tuple[CylinderStatus, ...]
+
+    def __init__(
+        self,
+        state: State = State(0),
+        flags: int = 0,
+        engine_load_percent: int = 0,
+        engine_speed_rpm: int = 0,
+        spark_dwell_time_ms: float = 0.0,
+        atmospheric_pressure_kpa: float = 0.0,
+        intake_manifold_pressure_kpa: float = 0.0,
+        intake_manifold_temperature: float = 0.0,
+        coolant_temperature: float = 0.0,
+        oil_pressure: float = 0.0,
+        oil_temperature: float = 0.0,
+        fuel_pressure: float = 0.0,
+        fuel_consumption_rate_cm3pm: float = 0.0,
+        estimated_consumed_fuel_volume_cm3: float = 0.0,
+        throttle_position_percent: int = 0,
+        ecu_index: int = 0,
+        spark_plug_usage: int = 0,
+        cylinder_status: tuple[CylinderStatus, ...] = (),
+    ) -> None:
+        _setattr(self, "state", state)
+        _setattr(self, "flags", flags)
+        _setattr(self, "engine_load_percent", engine_load_percent)
+        _setattr(self, "engine_speed_rpm", engine_speed_rpm)
+        _setattr(self, "spark_dwell_time_ms", spark_dwell_time_ms)
+        _setattr(self, "atmospheric_pressure_kpa", atmospheric_pressure_kpa)
+        _setattr(self, "intake_manifold_pressure_kpa", intake_manifold_pressure_kpa)
+        _setattr(self, "intake_manifold_temperature", intake_manifold_temperature)
+        _setattr(self, "coolant_temperature", coolant_temperature)
+        _setattr(self, "oil_pressure", oil_pressure)
+        _setattr(self, "oil_temperature", oil_temperature)
+        _setattr(self, "fuel_pressure", fuel_pressure)
+        _setattr(self, "fuel_consumption_rate_cm3pm", fuel_consumption_rate_cm3pm)
+        _setattr(self, "estimated_consumed_fuel_volume_cm3", estimated_consumed_fuel_volume_cm3)
+        _setattr(self, "throttle_position_percent", throttle_position_percent)
+        _setattr(self, "ecu_index", ecu_index)
+        _setattr(self, "spark_plug_usage", spark_plug_usage)
+        _setattr(self, "cylinder_status", cylinder_status)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BeepCommand(HtmlDisplay):
     """``uavcan.equipment.indication.BeepCommand``, message 1080 (``equipment/indication/1080.BeepCommand.uavcan``).
 
@@ -1191,13 +1728,23 @@ class BeepCommand(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"duration", "frequency"})
 
-    frequency: float = 0.0
+    __slots__ = ("frequency", "duration",)
+
+    frequency: float
     """Hz"""
-    duration: float = 0.0
+    duration: float
     """Sec"""
 
+    def __init__(
+        self,
+        frequency: float = 0.0,
+        duration: float = 0.0,
+    ) -> None:
+        _setattr(self, "frequency", frequency)
+        _setattr(self, "duration", duration)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class RGB565(HtmlDisplay):
     """``uavcan.equipment.indication.RGB565`` (nested; ``equipment/indication/RGB565.uavcan``).
 
@@ -1206,12 +1753,24 @@ class RGB565(HtmlDisplay):
     Monocolor lights should interpret this as brightness setpoint: from zero (0, 0, 0) to full brightness (31, 63, 31).
     """
 
-    red: int = 0
-    green: int = 0
-    blue: int = 0
+    __slots__ = ("red", "green", "blue",)
+
+    red: int
+    green: int
+    blue: int
+
+    def __init__(
+        self,
+        red: int = 0,
+        green: int = 0,
+        blue: int = 0,
+    ) -> None:
+        _setattr(self, "red", red)
+        _setattr(self, "green", green)
+        _setattr(self, "blue", blue)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class SingleLightCommand(HtmlDisplay):
     """``uavcan.equipment.indication.SingleLightCommand`` (nested; ``equipment/indication/SingleLightCommand.uavcan``).
 
@@ -1230,22 +1789,40 @@ class SingleLightCommand(HtmlDisplay):
     LIGHT_ID_LANDING: ClassVar[int] = 254
     LIGHT_ID_FORMATION: ClassVar[int] = 255
 
-    light_id: LightId | int = 0
-    color: RGB565 = RGB565()
+    __slots__ = ("light_id", "color",)
+
+    light_id: LightId | int
+    color: RGB565
     """Monocolor lights should interpret this as brightness"""
 
+    def __init__(
+        self,
+        light_id: LightId | int = 0,
+        color: RGB565 = RGB565(),
+    ) -> None:
+        _setattr(self, "light_id", light_id)
+        _setattr(self, "color", color)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class LightsCommand(HtmlDisplay):
     """``uavcan.equipment.indication.LightsCommand``, message 1081 (``equipment/indication/1081.LightsCommand.uavcan``).
 
     Lights control command.
     """
 
-    commands: tuple[SingleLightCommand, ...] = ()
+    __slots__ = ("commands",)
+
+    commands: tuple[SingleLightCommand, ...]
+
+    def __init__(
+        self,
+        commands: tuple[SingleLightCommand, ...] = (),
+    ) -> None:
+        _setattr(self, "commands", commands)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class PrimaryPowerSupplyStatus(HtmlDisplay):
     """``uavcan.equipment.power.PrimaryPowerSupplyStatus``, message 1090 (``equipment/power/1090.PrimaryPowerSupplyStatus.uavcan``).
 
@@ -1255,18 +1832,34 @@ class PrimaryPowerSupplyStatus(HtmlDisplay):
 
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"hours_to_empty_at_10sec_avg_power", "hours_to_empty_at_10sec_avg_power_variance"})
 
-    hours_to_empty_at_10sec_avg_power: float = 0.0
+    __slots__ = ("hours_to_empty_at_10sec_avg_power", "hours_to_empty_at_10sec_avg_power_variance", "external_power_available", "remaining_energy_pct", "remaining_energy_pct_stdev",)
+
+    hours_to_empty_at_10sec_avg_power: float
     """[Hours]"""
-    hours_to_empty_at_10sec_avg_power_variance: float = 0.0
+    hours_to_empty_at_10sec_avg_power_variance: float
     """[Hours^2]"""
-    external_power_available: bool = False
-    remaining_energy_pct: int = 0
+    external_power_available: bool
+    remaining_energy_pct: int
     """[Percent]     Required"""
-    remaining_energy_pct_stdev: int = 0
+    remaining_energy_pct_stdev: int
     """[Percent]     Error standard deviation. Use best guess if unknown."""
 
+    def __init__(
+        self,
+        hours_to_empty_at_10sec_avg_power: float = 0.0,
+        hours_to_empty_at_10sec_avg_power_variance: float = 0.0,
+        external_power_available: bool = False,
+        remaining_energy_pct: int = 0,
+        remaining_energy_pct_stdev: int = 0,
+    ) -> None:
+        _setattr(self, "hours_to_empty_at_10sec_avg_power", hours_to_empty_at_10sec_avg_power)
+        _setattr(self, "hours_to_empty_at_10sec_avg_power_variance", hours_to_empty_at_10sec_avg_power_variance)
+        _setattr(self, "external_power_available", external_power_available)
+        _setattr(self, "remaining_energy_pct", remaining_energy_pct)
+        _setattr(self, "remaining_energy_pct_stdev", remaining_energy_pct_stdev)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class CircuitStatus(HtmlDisplay):
     """``uavcan.equipment.power.CircuitStatus``, message 1091 (``equipment/power/1091.CircuitStatus.uavcan``).
 
@@ -1279,13 +1872,27 @@ class CircuitStatus(HtmlDisplay):
     ERROR_FLAG_OVERCURRENT: ClassVar[int] = 4
     ERROR_FLAG_UNDERCURRENT: ClassVar[int] = 8
 
-    circuit_id: int = 0
-    voltage: float = 0.0
-    current: float = 0.0
-    error_flags: int = 0
+    __slots__ = ("circuit_id", "voltage", "current", "error_flags",)
+
+    circuit_id: int
+    voltage: float
+    current: float
+    error_flags: int
+
+    def __init__(
+        self,
+        circuit_id: int = 0,
+        voltage: float = 0.0,
+        current: float = 0.0,
+        error_flags: int = 0,
+    ) -> None:
+        _setattr(self, "circuit_id", circuit_id)
+        _setattr(self, "voltage", voltage)
+        _setattr(self, "current", current)
+        _setattr(self, "error_flags", error_flags)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BatteryInfo(HtmlDisplay):
     """``uavcan.equipment.power.BatteryInfo``, message 1092 (``equipment/power/1092.BatteryInfo.uavcan``).
 
@@ -1325,36 +1932,70 @@ class BatteryInfo(HtmlDisplay):
     STATE_OF_CHARGE_UNKNOWN: ClassVar[int] = 127
     """Use this constant if SoC cannot be estimated"""
 
-    temperature: float = 0.0
+    __slots__ = ("temperature", "voltage", "current", "average_power_10sec", "remaining_capacity_wh", "full_charge_capacity_wh", "hours_to_full_charge", "status_flags", "state_of_health_pct", "state_of_charge_pct", "state_of_charge_pct_stdev", "battery_id", "model_instance_id", "model_name",)
+
+    temperature: float
     """[Kelvin]"""
-    voltage: float = 0.0
+    voltage: float
     """[Volt]"""
-    current: float = 0.0
+    current: float
     """[Ampere]"""
-    average_power_10sec: float = 0.0
+    average_power_10sec: float
     """[Watt]        Average power consumption over the last 10 seconds"""
-    remaining_capacity_wh: float = 0.0
+    remaining_capacity_wh: float
     """[Watt hours]  Will be increasing during charging"""
-    full_charge_capacity_wh: float = 0.0
+    full_charge_capacity_wh: float
     """[Watt hours]  Predicted battery capacity when it is fully charged. Falls with aging"""
-    hours_to_full_charge: float = 0.0
+    hours_to_full_charge: float
     """[Hours]       Charging is expected to complete in this time; zero if not charging"""
-    status_flags: int = 0
-    state_of_health_pct: int = 0
+    status_flags: int
+    state_of_health_pct: int
     """Health of the battery, in percent, optional"""
-    state_of_charge_pct: int = 0
+    state_of_charge_pct: int
     """Percent of the full charge [0, 100]. This field is required"""
-    state_of_charge_pct_stdev: int = 0
+    state_of_charge_pct_stdev: int
     """SOC error standard deviation; use best guess if unknown"""
-    battery_id: int = 0
+    battery_id: int
     """Identifies the battery within this vehicle, e.g. 0 - primary battery"""
-    model_instance_id: int = 0
+    model_instance_id: int
     """Set to zero if not applicable"""
-    model_name: bytes = b""
+    model_name: bytes
     """Battery model name"""
 
+    def __init__(
+        self,
+        temperature: float = 0.0,
+        voltage: float = 0.0,
+        current: float = 0.0,
+        average_power_10sec: float = 0.0,
+        remaining_capacity_wh: float = 0.0,
+        full_charge_capacity_wh: float = 0.0,
+        hours_to_full_charge: float = 0.0,
+        status_flags: int = 0,
+        state_of_health_pct: int = 0,
+        state_of_charge_pct: int = 0,
+        state_of_charge_pct_stdev: int = 0,
+        battery_id: int = 0,
+        model_instance_id: int = 0,
+        model_name: bytes = b"",
+    ) -> None:
+        _setattr(self, "temperature", temperature)
+        _setattr(self, "voltage", voltage)
+        _setattr(self, "current", current)
+        _setattr(self, "average_power_10sec", average_power_10sec)
+        _setattr(self, "remaining_capacity_wh", remaining_capacity_wh)
+        _setattr(self, "full_charge_capacity_wh", full_charge_capacity_wh)
+        _setattr(self, "hours_to_full_charge", hours_to_full_charge)
+        _setattr(self, "status_flags", status_flags)
+        _setattr(self, "state_of_health_pct", state_of_health_pct)
+        _setattr(self, "state_of_charge_pct", state_of_charge_pct)
+        _setattr(self, "state_of_charge_pct_stdev", state_of_charge_pct_stdev)
+        _setattr(self, "battery_id", battery_id)
+        _setattr(self, "model_instance_id", model_instance_id)
+        _setattr(self, "model_name", model_name)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Measurement(HtmlDisplay):
     """``uavcan.equipment.range_sensor.Measurement``, message 1050 (``equipment/range_sensor/1050.Measurement.uavcan``).
 
@@ -1375,18 +2016,38 @@ class Measurement(HtmlDisplay):
     READING_TYPE_TOO_FAR: ClassVar[int] = 3
     """Range field contains max range for the sensor"""
 
-    timestamp: Timestamp = Timestamp()
-    sensor_id: int = 0
-    beam_orientation_in_body_frame: CoarseOrientation = CoarseOrientation()
-    field_of_view: float = 0.0
+    __slots__ = ("timestamp", "sensor_id", "beam_orientation_in_body_frame", "field_of_view", "sensor_type", "reading_type", "range",)
+
+    timestamp: Timestamp
+    sensor_id: int
+    beam_orientation_in_body_frame: CoarseOrientation
+    field_of_view: float
     """Radians"""
-    sensor_type: SensorType | int = 0
-    reading_type: ReadingType | int = 0
-    range: float = 0.0
+    sensor_type: SensorType | int
+    reading_type: ReadingType | int
+    range: float
     """Meters"""
 
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        sensor_id: int = 0,
+        beam_orientation_in_body_frame: CoarseOrientation = CoarseOrientation(),
+        field_of_view: float = 0.0,
+        sensor_type: SensorType | int = 0,
+        reading_type: ReadingType | int = 0,
+        range: float = 0.0,
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "sensor_id", sensor_id)
+        _setattr(self, "beam_orientation_in_body_frame", beam_orientation_in_body_frame)
+        _setattr(self, "field_of_view", field_of_view)
+        _setattr(self, "sensor_type", sensor_type)
+        _setattr(self, "reading_type", reading_type)
+        _setattr(self, "range", range)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class ArmingStatus(HtmlDisplay):
     """``uavcan.equipment.safety.ArmingStatus``, message 1100 (``equipment/safety/1100.ArmingStatus.uavcan``).
 
@@ -1397,10 +2058,18 @@ class ArmingStatus(HtmlDisplay):
     STATUS_DISARMED: ClassVar[int] = 0
     STATUS_FULLY_ARMED: ClassVar[int] = 255
 
-    status: ArmingStatusStatus | int = 0
+    __slots__ = ("status",)
+
+    status: ArmingStatusStatus | int
+
+    def __init__(
+        self,
+        status: ArmingStatusStatus | int = 0,
+    ) -> None:
+        _setattr(self, "status", status)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GlobalNavigationSolution(HtmlDisplay):
     """``uavcan.navigation.GlobalNavigationSolution``, message 2000 (``navigation/2000.GlobalNavigationSolution.uavcan``).
 
@@ -1412,30 +2081,64 @@ class GlobalNavigationSolution(HtmlDisplay):
     _FLOAT16_FIELDS_: ClassVar[frozenset[str]] = frozenset({"linear_acceleration_body", "pose_covariance", "qnh_hpa", "velocity_covariance"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"angular_velocity_body", "height_agl", "height_baro", "height_ellipsoid", "height_msl", "linear_velocity_body", "orientation_xyzw"})
 
-    timestamp: Timestamp = Timestamp()
-    longitude: float = 0.0
+    __slots__ = ("timestamp", "longitude", "latitude", "height_ellipsoid", "height_msl", "height_agl", "height_baro", "qnh_hpa", "orientation_xyzw", "pose_covariance", "linear_velocity_body", "angular_velocity_body", "linear_acceleration_body", "velocity_covariance",)
+
+    timestamp: Timestamp
+    longitude: float
     """required"""
-    latitude: float = 0.0
+    latitude: float
     """required"""
-    height_ellipsoid: float = 0.0
+    height_ellipsoid: float
     """Above ellipsoid (required)"""
-    height_msl: float = 0.0
+    height_msl: float
     """Above the mean sea level (required)"""
-    height_agl: float = 0.0
+    height_agl: float
     """Above ground level (provided by radar altimeter or LIDAR) (optional)"""
-    height_baro: float = 0.0
+    height_baro: float
     """Barometric height (optional)"""
-    qnh_hpa: float = 0.0
+    qnh_hpa: float
     """optional"""
-    orientation_xyzw: tuple[float, ...] = (0.0,) * 4
-    pose_covariance: tuple[float, ...] = ()
-    linear_velocity_body: tuple[float, ...] = (0.0,) * 3
-    angular_velocity_body: tuple[float, ...] = (0.0,) * 3
-    linear_acceleration_body: tuple[float, ...] = (0.0,) * 3
-    velocity_covariance: tuple[float, ...] = ()
+    orientation_xyzw: tuple[float, ...]
+    pose_covariance: tuple[float, ...]
+    linear_velocity_body: tuple[float, ...]
+    angular_velocity_body: tuple[float, ...]
+    linear_acceleration_body: tuple[float, ...]
+    velocity_covariance: tuple[float, ...]
+
+    def __init__(
+        self,
+        timestamp: Timestamp = Timestamp(),
+        longitude: float = 0.0,
+        latitude: float = 0.0,
+        height_ellipsoid: float = 0.0,
+        height_msl: float = 0.0,
+        height_agl: float = 0.0,
+        height_baro: float = 0.0,
+        qnh_hpa: float = 0.0,
+        orientation_xyzw: tuple[float, ...] = (0.0,) * 4,
+        pose_covariance: tuple[float, ...] = (),
+        linear_velocity_body: tuple[float, ...] = (0.0,) * 3,
+        angular_velocity_body: tuple[float, ...] = (0.0,) * 3,
+        linear_acceleration_body: tuple[float, ...] = (0.0,) * 3,
+        velocity_covariance: tuple[float, ...] = (),
+    ) -> None:
+        _setattr(self, "timestamp", timestamp)
+        _setattr(self, "longitude", longitude)
+        _setattr(self, "latitude", latitude)
+        _setattr(self, "height_ellipsoid", height_ellipsoid)
+        _setattr(self, "height_msl", height_msl)
+        _setattr(self, "height_agl", height_agl)
+        _setattr(self, "height_baro", height_baro)
+        _setattr(self, "qnh_hpa", qnh_hpa)
+        _setattr(self, "orientation_xyzw", orientation_xyzw)
+        _setattr(self, "pose_covariance", pose_covariance)
+        _setattr(self, "linear_velocity_body", linear_velocity_body)
+        _setattr(self, "angular_velocity_body", angular_velocity_body)
+        _setattr(self, "linear_acceleration_body", linear_acceleration_body)
+        _setattr(self, "velocity_covariance", velocity_covariance)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetNodeInfoRequest(HtmlDisplay):
     """``uavcan.protocol.GetNodeInfo`` request, service 1 (``protocol/1.GetNodeInfo.uavcan``).
 
@@ -1443,8 +2146,16 @@ class GetNodeInfoRequest(HtmlDisplay):
     Note that all fields of the response section are byte-aligned.
     """
 
+    __slots__ = ()
 
-@dataclass(frozen=True, slots=True)
+
+    def __init__(
+        self,
+    ) -> None:
+        pass
+
+
+@frozen_dataclass
 class NodeStatus(HtmlDisplay):
     """``uavcan.protocol.NodeStatus``, message 341 (``protocol/341.NodeStatus.uavcan``).
 
@@ -1475,14 +2186,30 @@ class NodeStatus(HtmlDisplay):
     MODE_OFFLINE: ClassVar[int] = 7
     """The node is no longer available."""
 
-    uptime_sec: int = 0
-    health: Health = Health(0)
-    mode: Mode | int = 0
-    sub_mode: int = 0
-    vendor_specific_status_code: int = 0
+    __slots__ = ("uptime_sec", "health", "mode", "sub_mode", "vendor_specific_status_code",)
+
+    uptime_sec: int
+    health: Health
+    mode: Mode | int
+    sub_mode: int
+    vendor_specific_status_code: int
+
+    def __init__(
+        self,
+        uptime_sec: int = 0,
+        health: Health = Health(0),
+        mode: Mode | int = 0,
+        sub_mode: int = 0,
+        vendor_specific_status_code: int = 0,
+    ) -> None:
+        _setattr(self, "uptime_sec", uptime_sec)
+        _setattr(self, "health", health)
+        _setattr(self, "mode", mode)
+        _setattr(self, "sub_mode", sub_mode)
+        _setattr(self, "vendor_specific_status_code", vendor_specific_status_code)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class SoftwareVersion(HtmlDisplay):
     """``uavcan.protocol.SoftwareVersion`` (nested; ``protocol/SoftwareVersion.uavcan``).
 
@@ -1493,14 +2220,30 @@ class SoftwareVersion(HtmlDisplay):
     OPTIONAL_FIELD_FLAG_VCS_COMMIT: ClassVar[int] = 1
     OPTIONAL_FIELD_FLAG_IMAGE_CRC: ClassVar[int] = 2
 
-    major: int = 0
-    minor: int = 0
-    optional_field_flags: int = 0
-    vcs_commit: int = 0
-    image_crc: int = 0
+    __slots__ = ("major", "minor", "optional_field_flags", "vcs_commit", "image_crc",)
+
+    major: int
+    minor: int
+    optional_field_flags: int
+    vcs_commit: int
+    image_crc: int
+
+    def __init__(
+        self,
+        major: int = 0,
+        minor: int = 0,
+        optional_field_flags: int = 0,
+        vcs_commit: int = 0,
+        image_crc: int = 0,
+    ) -> None:
+        _setattr(self, "major", major)
+        _setattr(self, "minor", minor)
+        _setattr(self, "optional_field_flags", optional_field_flags)
+        _setattr(self, "vcs_commit", vcs_commit)
+        _setattr(self, "image_crc", image_crc)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class HardwareVersion(HtmlDisplay):
     """``uavcan.protocol.HardwareVersion`` (nested; ``protocol/HardwareVersion.uavcan``).
 
@@ -1509,25 +2252,53 @@ class HardwareVersion(HtmlDisplay):
     These values should remain unchanged for the device's lifetime.
     """
 
-    major: int = 0
-    minor: int = 0
-    unique_id: bytes = bytes(16)
-    certificate_of_authenticity: bytes = b""
+    __slots__ = ("major", "minor", "unique_id", "certificate_of_authenticity",)
+
+    major: int
+    minor: int
+    unique_id: bytes
+    certificate_of_authenticity: bytes
+
+    def __init__(
+        self,
+        major: int = 0,
+        minor: int = 0,
+        unique_id: bytes = bytes(16),
+        certificate_of_authenticity: bytes = b"",
+    ) -> None:
+        _setattr(self, "major", major)
+        _setattr(self, "minor", minor)
+        _setattr(self, "unique_id", unique_id)
+        _setattr(self, "certificate_of_authenticity", certificate_of_authenticity)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetNodeInfoResponse(HtmlDisplay):
     """``uavcan.protocol.GetNodeInfo`` response, service 1 (``protocol/1.GetNodeInfo.uavcan``)."""
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
 
-    status: NodeStatus = NodeStatus()
-    software_version: SoftwareVersion = SoftwareVersion()
-    hardware_version: HardwareVersion = HardwareVersion()
-    name: bytes = b""
+    __slots__ = ("status", "software_version", "hardware_version", "name",)
+
+    status: NodeStatus
+    software_version: SoftwareVersion
+    hardware_version: HardwareVersion
+    name: bytes
+
+    def __init__(
+        self,
+        status: NodeStatus = NodeStatus(),
+        software_version: SoftwareVersion = SoftwareVersion(),
+        hardware_version: HardwareVersion = HardwareVersion(),
+        name: bytes = b"",
+    ) -> None:
+        _setattr(self, "status", status)
+        _setattr(self, "software_version", software_version)
+        _setattr(self, "hardware_version", hardware_version)
+        _setattr(self, "name", name)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class DataTypeKind(HtmlDisplay):
     """``uavcan.protocol.DataTypeKind`` (nested; ``protocol/DataTypeKind.uavcan``).
 
@@ -1537,10 +2308,18 @@ class DataTypeKind(HtmlDisplay):
     SERVICE: ClassVar[int] = 0
     MESSAGE: ClassVar[int] = 1
 
-    value: DataTypeKindValue | int = 0
+    __slots__ = ("value",)
+
+    value: DataTypeKindValue | int
+
+    def __init__(
+        self,
+        value: DataTypeKindValue | int = 0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetDataTypeInfoRequest(HtmlDisplay):
     """``uavcan.protocol.GetDataTypeInfo`` request, service 2 (``protocol/2.GetDataTypeInfo.uavcan``).
 
@@ -1554,15 +2333,27 @@ class GetDataTypeInfoRequest(HtmlDisplay):
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
 
-    id: int = 0
+    __slots__ = ("id", "kind", "name",)
+
+    id: int
     """Ignored if 'name' is non-empty"""
-    kind: DataTypeKind = DataTypeKind()
+    kind: DataTypeKind
     """Ignored if 'name' is non-empty"""
-    name: bytes = b""
+    name: bytes
     """Full data type name, e.g. "uavcan.protocol.GetDataTypeInfo" """
 
+    def __init__(
+        self,
+        id: int = 0,
+        kind: DataTypeKind = DataTypeKind(),
+        name: bytes = b"",
+    ) -> None:
+        _setattr(self, "id", id)
+        _setattr(self, "kind", kind)
+        _setattr(self, "name", name)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class GetDataTypeInfoResponse(HtmlDisplay):
     """``uavcan.protocol.GetDataTypeInfo`` response, service 2 (``protocol/2.GetDataTypeInfo.uavcan``)."""
 
@@ -1576,54 +2367,104 @@ class GetDataTypeInfoResponse(HtmlDisplay):
     FLAG_SERVING: ClassVar[int] = 8
     """Providing service of this type"""
 
-    signature: int = 0
+    __slots__ = ("signature", "id", "kind", "flags", "name",)
+
+    signature: int
     """Data type signature; valid only if the data type is known (see FLAG_KNOWN)"""
-    id: int = 0
+    id: int
     """Valid only if the data type is known (see FLAG_KNOWN)"""
-    kind: DataTypeKind = DataTypeKind()
+    kind: DataTypeKind
     """Ditto"""
-    flags: int = 0
-    name: bytes = b""
+    flags: int
+    name: bytes
     """Full data type name"""
 
+    def __init__(
+        self,
+        signature: int = 0,
+        id: int = 0,
+        kind: DataTypeKind = DataTypeKind(),
+        flags: int = 0,
+        name: bytes = b"",
+    ) -> None:
+        _setattr(self, "signature", signature)
+        _setattr(self, "id", id)
+        _setattr(self, "kind", kind)
+        _setattr(self, "flags", flags)
+        _setattr(self, "name", name)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class GetTransportStatsRequest(HtmlDisplay):
     """``uavcan.protocol.GetTransportStats`` request, service 4 (``protocol/4.GetTransportStats.uavcan``).
 
     Get transport statistics.
     """
 
+    __slots__ = ()
 
-@dataclass(frozen=True, slots=True)
+
+    def __init__(
+        self,
+    ) -> None:
+        pass
+
+
+@frozen_dataclass
 class CANIfaceStats(HtmlDisplay):
     """``uavcan.protocol.CANIfaceStats`` (nested; ``protocol/CANIfaceStats.uavcan``).
 
     Single CAN iface statistics.
     """
 
-    frames_tx: int = 0
+    __slots__ = ("frames_tx", "frames_rx", "errors",)
+
+    frames_tx: int
     """Number of transmitted CAN frames."""
-    frames_rx: int = 0
+    frames_rx: int
     """Number of received CAN frames."""
-    errors: int = 0
+    errors: int
     """Number of errors in the CAN layer."""
 
+    def __init__(
+        self,
+        frames_tx: int = 0,
+        frames_rx: int = 0,
+        errors: int = 0,
+    ) -> None:
+        _setattr(self, "frames_tx", frames_tx)
+        _setattr(self, "frames_rx", frames_rx)
+        _setattr(self, "errors", errors)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class GetTransportStatsResponse(HtmlDisplay):
     """``uavcan.protocol.GetTransportStats`` response, service 4 (``protocol/4.GetTransportStats.uavcan``)."""
 
-    transfers_tx: int = 0
+    __slots__ = ("transfers_tx", "transfers_rx", "transfer_errors", "can_iface_stats",)
+
+    transfers_tx: int
     """Number of transmitted transfers."""
-    transfers_rx: int = 0
+    transfers_rx: int
     """Number of received transfers."""
-    transfer_errors: int = 0
+    transfer_errors: int
     """Number of errors detected in the UAVCAN transport layer."""
-    can_iface_stats: tuple[CANIfaceStats, ...] = ()
+    can_iface_stats: tuple[CANIfaceStats, ...]
+
+    def __init__(
+        self,
+        transfers_tx: int = 0,
+        transfers_rx: int = 0,
+        transfer_errors: int = 0,
+        can_iface_stats: tuple[CANIfaceStats, ...] = (),
+    ) -> None:
+        _setattr(self, "transfers_tx", transfers_tx)
+        _setattr(self, "transfers_rx", transfers_rx)
+        _setattr(self, "transfer_errors", transfer_errors)
+        _setattr(self, "can_iface_stats", can_iface_stats)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GlobalTimeSync(HtmlDisplay):
     """``uavcan.protocol.GlobalTimeSync``, message 4 (``protocol/4.GlobalTimeSync.uavcan``).
 
@@ -1640,11 +2481,19 @@ class GlobalTimeSync(HtmlDisplay):
     RECOMMENDED_BROADCASTER_TIMEOUT_MS: ClassVar[int] = 2200
     """Milliseconds"""
 
-    previous_transmission_timestamp_usec: int = 0
+    __slots__ = ("previous_transmission_timestamp_usec",)
+
+    previous_transmission_timestamp_usec: int
     """Microseconds"""
 
+    def __init__(
+        self,
+        previous_transmission_timestamp_usec: int = 0,
+    ) -> None:
+        _setattr(self, "previous_transmission_timestamp_usec", previous_transmission_timestamp_usec)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class Panic(HtmlDisplay):
     """``uavcan.protocol.Panic``, message 5 (``protocol/5.Panic.uavcan``).
 
@@ -1660,10 +2509,18 @@ class Panic(HtmlDisplay):
     MIN_MESSAGES: ClassVar[int] = 3
     MAX_INTERVAL_MS: ClassVar[int] = 500
 
-    reason_text: bytes = b""
+    __slots__ = ("reason_text",)
+
+    reason_text: bytes
+
+    def __init__(
+        self,
+        reason_text: bytes = b"",
+    ) -> None:
+        _setattr(self, "reason_text", reason_text)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RestartNodeRequest(HtmlDisplay):
     """``uavcan.protocol.RestartNode`` request, service 5 (``protocol/5.RestartNode.uavcan``).
 
@@ -1676,17 +2533,33 @@ class RestartNodeRequest(HtmlDisplay):
 
     MAGIC_NUMBER: ClassVar[int] = 742196058910
 
-    magic_number: int = 0
+    __slots__ = ("magic_number",)
+
+    magic_number: int
+
+    def __init__(
+        self,
+        magic_number: int = 0,
+    ) -> None:
+        _setattr(self, "magic_number", magic_number)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RestartNodeResponse(HtmlDisplay):
     """``uavcan.protocol.RestartNode`` response, service 5 (``protocol/5.RestartNode.uavcan``)."""
 
-    ok: bool = False
+    __slots__ = ("ok",)
+
+    ok: bool
+
+    def __init__(
+        self,
+        ok: bool = False,
+    ) -> None:
+        _setattr(self, "ok", ok)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class AccessCommandShellRequest(HtmlDisplay):
     """``uavcan.protocol.AccessCommandShell`` request, service 6 (``protocol/6.AccessCommandShell.uavcan``).
 
@@ -1716,11 +2589,21 @@ class AccessCommandShellRequest(HtmlDisplay):
     FLAG_READ_STDERR: ClassVar[int] = 128
     """Output will be extended with stderr"""
 
-    flags: int = 0
-    input: bytes = b""
+    __slots__ = ("flags", "input",)
+
+    flags: int
+    input: bytes
+
+    def __init__(
+        self,
+        flags: int = 0,
+        input: bytes = b"",
+    ) -> None:
+        _setattr(self, "flags", flags)
+        _setattr(self, "input", input)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class AccessCommandShellResponse(HtmlDisplay):
     """``uavcan.protocol.AccessCommandShell`` response, service 6 (``protocol/6.AccessCommandShell.uavcan``)."""
 
@@ -1733,12 +2616,24 @@ class AccessCommandShellResponse(HtmlDisplay):
     FLAG_HAS_PENDING_STDERR: ClassVar[int] = 128
     """There is more stderr to read"""
 
-    last_exit_status: int = 0
-    flags: int = 0
-    output: bytes = b""
+    __slots__ = ("last_exit_status", "flags", "output",)
+
+    last_exit_status: int
+    flags: int
+    output: bytes
+
+    def __init__(
+        self,
+        last_exit_status: int = 0,
+        flags: int = 0,
+        output: bytes = b"",
+    ) -> None:
+        _setattr(self, "last_exit_status", last_exit_status)
+        _setattr(self, "flags", flags)
+        _setattr(self, "output", output)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class KeyValue(HtmlDisplay):
     """``uavcan.protocol.debug.KeyValue``, message 16370 (``protocol/debug/16370.KeyValue.uavcan``).
 
@@ -1748,11 +2643,21 @@ class KeyValue(HtmlDisplay):
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"key"})
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
 
-    value: float = 0.0
-    key: bytes = b""
+    __slots__ = ("value", "key",)
+
+    value: float
+    key: bytes
+
+    def __init__(
+        self,
+        value: float = 0.0,
+        key: bytes = b"",
+    ) -> None:
+        _setattr(self, "value", value)
+        _setattr(self, "key", key)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class LogLevel(HtmlDisplay):
     """``uavcan.protocol.debug.LogLevel`` (nested; ``protocol/debug/LogLevel.uavcan``).
 
@@ -1764,10 +2669,18 @@ class LogLevel(HtmlDisplay):
     WARNING: ClassVar[int] = 2
     ERROR: ClassVar[int] = 3
 
-    value: LogLevelValue | int = 0
+    __slots__ = ("value",)
+
+    value: LogLevelValue | int
+
+    def __init__(
+        self,
+        value: LogLevelValue | int = 0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class LogMessage(HtmlDisplay):
     """``uavcan.protocol.debug.LogMessage``, message 16383 (``protocol/debug/16383.LogMessage.uavcan``).
 
@@ -1777,12 +2690,24 @@ class LogMessage(HtmlDisplay):
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"source", "text"})
 
-    level: LogLevel = LogLevel()
-    source: bytes = b""
-    text: bytes = b""
+    __slots__ = ("level", "source", "text",)
+
+    level: LogLevel
+    source: bytes
+    text: bytes
+
+    def __init__(
+        self,
+        level: LogLevel = LogLevel(),
+        source: bytes = b"",
+        text: bytes = b"",
+    ) -> None:
+        _setattr(self, "level", level)
+        _setattr(self, "source", source)
+        _setattr(self, "text", text)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Allocation(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.Allocation``, message 1 (``protocol/dynamic_node_id/1.Allocation.uavcan``).
 
@@ -1856,12 +2781,24 @@ class Allocation(HtmlDisplay):
     MAX_LENGTH_OF_UNIQUE_ID_IN_REQUEST: ClassVar[int] = 6
     ANY_NODE_ID: ClassVar[int] = 0
 
-    node_id: int = 0
-    first_part_of_unique_id: bool = False
-    unique_id: bytes = b""
+    __slots__ = ("node_id", "first_part_of_unique_id", "unique_id",)
+
+    node_id: int
+    first_part_of_unique_id: bool
+    unique_id: bytes
+
+    def __init__(
+        self,
+        node_id: int = 0,
+        first_part_of_unique_id: bool = False,
+        unique_id: bytes = b"",
+    ) -> None:
+        _setattr(self, "node_id", node_id)
+        _setattr(self, "first_part_of_unique_id", first_part_of_unique_id)
+        _setattr(self, "unique_id", unique_id)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Entry(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.Entry`` (nested; ``protocol/dynamic_node_id/server/Entry.uavcan``).
 
@@ -1872,15 +2809,27 @@ class Entry(HtmlDisplay):
     Please refer to the specification for details.
     """
 
-    term: int = 0
+    __slots__ = ("term", "unique_id", "node_id",)
+
+    term: int
     """Refer to the Raft paper for explanation."""
-    unique_id: bytes = bytes(16)
+    unique_id: bytes
     """Unique ID of this allocation."""
-    node_id: int = 0
+    node_id: int
     """Node ID of this allocation."""
 
+    def __init__(
+        self,
+        term: int = 0,
+        unique_id: bytes = bytes(16),
+        node_id: int = 0,
+    ) -> None:
+        _setattr(self, "term", term)
+        _setattr(self, "unique_id", unique_id)
+        _setattr(self, "node_id", node_id)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class AppendEntriesRequest(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` request, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``).
 
@@ -1893,22 +2842,48 @@ class AppendEntriesRequest(HtmlDisplay):
     DEFAULT_MIN_ELECTION_TIMEOUT_MS: ClassVar[int] = 2000
     DEFAULT_MAX_ELECTION_TIMEOUT_MS: ClassVar[int] = 4000
 
-    term: int = 0
-    prev_log_term: int = 0
-    prev_log_index: int = 0
-    leader_commit: int = 0
-    entries: tuple[Entry, ...] = ()
+    __slots__ = ("term", "prev_log_term", "prev_log_index", "leader_commit", "entries",)
+
+    term: int
+    prev_log_term: int
+    prev_log_index: int
+    leader_commit: int
+    entries: tuple[Entry, ...]
+
+    def __init__(
+        self,
+        term: int = 0,
+        prev_log_term: int = 0,
+        prev_log_index: int = 0,
+        leader_commit: int = 0,
+        entries: tuple[Entry, ...] = (),
+    ) -> None:
+        _setattr(self, "term", term)
+        _setattr(self, "prev_log_term", prev_log_term)
+        _setattr(self, "prev_log_index", prev_log_index)
+        _setattr(self, "leader_commit", leader_commit)
+        _setattr(self, "entries", entries)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class AppendEntriesResponse(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.AppendEntries`` response, service 30 (``protocol/dynamic_node_id/server/30.AppendEntries.uavcan``)."""
 
-    term: int = 0
-    success: bool = False
+    __slots__ = ("term", "success",)
+
+    term: int
+    success: bool
+
+    def __init__(
+        self,
+        term: int = 0,
+        success: bool = False,
+    ) -> None:
+        _setattr(self, "term", term)
+        _setattr(self, "success", success)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RequestVoteRequest(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.RequestVote`` request, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``).
 
@@ -1918,20 +2893,42 @@ class RequestVoteRequest(HtmlDisplay):
     Please refer to the specification for details.
     """
 
-    term: int = 0
-    last_log_term: int = 0
-    last_log_index: int = 0
+    __slots__ = ("term", "last_log_term", "last_log_index",)
+
+    term: int
+    last_log_term: int
+    last_log_index: int
+
+    def __init__(
+        self,
+        term: int = 0,
+        last_log_term: int = 0,
+        last_log_index: int = 0,
+    ) -> None:
+        _setattr(self, "term", term)
+        _setattr(self, "last_log_term", last_log_term)
+        _setattr(self, "last_log_index", last_log_index)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RequestVoteResponse(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.RequestVote`` response, service 31 (``protocol/dynamic_node_id/server/31.RequestVote.uavcan``)."""
 
-    term: int = 0
-    vote_granted: bool = False
+    __slots__ = ("term", "vote_granted",)
+
+    term: int
+    vote_granted: bool
+
+    def __init__(
+        self,
+        term: int = 0,
+        vote_granted: bool = False,
+    ) -> None:
+        _setattr(self, "term", term)
+        _setattr(self, "vote_granted", vote_granted)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Discovery(HtmlDisplay):
     """``uavcan.protocol.dynamic_node_id.server.Discovery``, message 390 (``protocol/dynamic_node_id/server/390.Discovery.uavcan``).
 
@@ -1950,11 +2947,21 @@ class Discovery(HtmlDisplay):
 
     BROADCASTING_PERIOD_MS: ClassVar[int] = 1000
 
-    configured_cluster_size: int = 0
-    known_nodes: bytes = b""
+    __slots__ = ("configured_cluster_size", "known_nodes",)
+
+    configured_cluster_size: int
+    known_nodes: bytes
+
+    def __init__(
+        self,
+        configured_cluster_size: int = 0,
+        known_nodes: bytes = b"",
+    ) -> None:
+        _setattr(self, "configured_cluster_size", configured_cluster_size)
+        _setattr(self, "known_nodes", known_nodes)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BeginRequest(HtmlDisplay):
     """``uavcan.protocol.enumeration.Begin`` request, service 15 (``protocol/enumeration/15.Begin.uavcan``).
 
@@ -1967,12 +2974,22 @@ class BeginRequest(HtmlDisplay):
     TIMEOUT_INFINITE: ClassVar[int] = 65535
     """Do not stop until explicitly requested"""
 
-    timeout_sec: int = 0
+    __slots__ = ("timeout_sec", "parameter_name",)
+
+    timeout_sec: int
     """[Seconds]"""
-    parameter_name: bytes = b""
+    parameter_name: bytes
+
+    def __init__(
+        self,
+        timeout_sec: int = 0,
+        parameter_name: bytes = b"",
+    ) -> None:
+        _setattr(self, "timeout_sec", timeout_sec)
+        _setattr(self, "parameter_name", parameter_name)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BeginResponse(HtmlDisplay):
     """``uavcan.protocol.enumeration.Begin`` response, service 15 (``protocol/enumeration/15.Begin.uavcan``)."""
 
@@ -1987,31 +3004,63 @@ class BeginResponse(HtmlDisplay):
     ERROR_UNKNOWN: ClassVar[int] = 255
     """Generic error"""
 
-    error: Error | int = 0
+    __slots__ = ("error",)
+
+    error: Error | int
+
+    def __init__(
+        self,
+        error: Error | int = 0,
+    ) -> None:
+        _setattr(self, "error", error)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Empty(HtmlDisplay):
     """``uavcan.protocol.param.Empty`` (nested; ``protocol/param/Empty.uavcan``).
 
     Ex nihilo nihil fit.
     """
 
+    __slots__ = ()
 
-@dataclass(frozen=True, slots=True)
+
+    def __init__(
+        self,
+    ) -> None:
+        pass
+
+
+@frozen_dataclass
 class IntegerValue(HtmlDisplay):
     """Member ``integer_value`` of the union ``uavcan.protocol.param.NumericValue``."""
 
-    value: int = 0
+    __slots__ = ("value",)
+
+    value: int
+
+    def __init__(
+        self,
+        value: int = 0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class RealValue(HtmlDisplay):
     """Member ``real_value`` of the union ``uavcan.protocol.param.NumericValue``."""
 
     _FLOAT32_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
 
-    value: float = 0.0
+    __slots__ = ("value",)
+
+    value: float
+
+    def __init__(
+        self,
+        value: float = 0.0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
 NumericValue: TypeAlias = Empty | IntegerValue | RealValue
@@ -2024,7 +3073,7 @@ The structure is prefixed with tag - a selector value that indicates which parti
 """
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Indication(HtmlDisplay):
     """``uavcan.protocol.enumeration.Indication``, message 380 (``protocol/enumeration/380.Indication.uavcan``).
 
@@ -2033,11 +3082,21 @@ class Indication(HtmlDisplay):
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"parameter_name"})
 
-    value: NumericValue = Empty()
-    parameter_name: bytes = b""
+    __slots__ = ("value", "parameter_name",)
+
+    value: NumericValue
+    parameter_name: bytes
+
+    def __init__(
+        self,
+        value: NumericValue = Empty(),
+        parameter_name: bytes = b"",
+    ) -> None:
+        _setattr(self, "value", value)
+        _setattr(self, "parameter_name", parameter_name)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Path(HtmlDisplay):
     """``uavcan.protocol.file.Path`` (nested; ``protocol/file/Path.uavcan``).
 
@@ -2051,10 +3110,18 @@ class Path(HtmlDisplay):
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"path"})
     SEPARATOR: ClassVar[int] = 47
 
-    path: bytes = b""
+    __slots__ = ("path",)
+
+    path: bytes
+
+    def __init__(
+        self,
+        path: bytes = b"",
+    ) -> None:
+        _setattr(self, "path", path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BeginFirmwareUpdateRequest(HtmlDisplay):
     """``uavcan.protocol.file.BeginFirmwareUpdate`` request, service 40 (``protocol/file/40.BeginFirmwareUpdate.uavcan``).
 
@@ -2073,12 +3140,22 @@ class BeginFirmwareUpdateRequest(HtmlDisplay):
     MODE_SOFTWARE_UPDATE.
     """
 
-    source_node_id: int = 0
+    __slots__ = ("source_node_id", "image_file_remote_path",)
+
+    source_node_id: int
     """If this field is zero, the caller's Node ID will be used instead."""
-    image_file_remote_path: Path = Path()
+    image_file_remote_path: Path
+
+    def __init__(
+        self,
+        source_node_id: int = 0,
+        image_file_remote_path: Path = Path(),
+    ) -> None:
+        _setattr(self, "source_node_id", source_node_id)
+        _setattr(self, "image_file_remote_path", image_file_remote_path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BeginFirmwareUpdateResponse(HtmlDisplay):
     """``uavcan.protocol.file.BeginFirmwareUpdate`` response, service 40 (``protocol/file/40.BeginFirmwareUpdate.uavcan``)."""
 
@@ -2090,22 +3167,40 @@ class BeginFirmwareUpdateResponse(HtmlDisplay):
     """Firmware update is already in progress, and the slave doesn't want to restart."""
     ERROR_UNKNOWN: ClassVar[int] = 255
 
-    error: FirmwareUpdateError | int = 0
-    optional_error_message: bytes = b""
+    __slots__ = ("error", "optional_error_message",)
+
+    error: FirmwareUpdateError | int
+    optional_error_message: bytes
     """Detailed description of the error."""
 
+    def __init__(
+        self,
+        error: FirmwareUpdateError | int = 0,
+        optional_error_message: bytes = b"",
+    ) -> None:
+        _setattr(self, "error", error)
+        _setattr(self, "optional_error_message", optional_error_message)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class FileGetInfoRequest(HtmlDisplay):
     """``uavcan.protocol.file.GetInfo`` request, service 45 (``protocol/file/45.GetInfo.uavcan``).
 
     Request info about a remote file system entry (file, directory, etc).
     """
 
-    path: Path = Path()
+    __slots__ = ("path",)
+
+    path: Path
+
+    def __init__(
+        self,
+        path: Path = Path(),
+    ) -> None:
+        _setattr(self, "path", path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class FileErrorCode(HtmlDisplay):
     """``uavcan.protocol.file.Error`` (nested; ``protocol/file/Error.uavcan``).
 
@@ -2126,10 +3221,18 @@ class FileErrorCode(HtmlDisplay):
     OUT_OF_SPACE: ClassVar[int] = 28
     NOT_IMPLEMENTED: ClassVar[int] = 38
 
-    value: int = 0
+    __slots__ = ("value",)
+
+    value: int
+
+    def __init__(
+        self,
+        value: int = 0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class EntryType(HtmlDisplay):
     """``uavcan.protocol.file.EntryType`` (nested; ``protocol/file/EntryType.uavcan``).
 
@@ -2147,19 +3250,39 @@ class EntryType(HtmlDisplay):
     FLAG_READABLE: ClassVar[int] = 8
     FLAG_WRITEABLE: ClassVar[int] = 16
 
-    flags: int = 0
+    __slots__ = ("flags",)
+
+    flags: int
+
+    def __init__(
+        self,
+        flags: int = 0,
+    ) -> None:
+        _setattr(self, "flags", flags)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class FileGetInfoResponse(HtmlDisplay):
     """``uavcan.protocol.file.GetInfo`` response, service 45 (``protocol/file/45.GetInfo.uavcan``)."""
 
-    size: int = 0
-    error: FileErrorCode = FileErrorCode()
-    entry_type: EntryType = EntryType()
+    __slots__ = ("size", "error", "entry_type",)
+
+    size: int
+    error: FileErrorCode
+    entry_type: EntryType
+
+    def __init__(
+        self,
+        size: int = 0,
+        error: FileErrorCode = FileErrorCode(),
+        entry_type: EntryType = EntryType(),
+    ) -> None:
+        _setattr(self, "size", size)
+        _setattr(self, "error", error)
+        _setattr(self, "entry_type", entry_type)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetDirectoryEntryInfoRequest(HtmlDisplay):
     """``uavcan.protocol.file.GetDirectoryEntryInfo`` request, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``).
 
@@ -2172,21 +3295,43 @@ class GetDirectoryEntryInfoRequest(HtmlDisplay):
     sorting criteria does not matter as long as it provides the same ordering for subsequent service calls.
     """
 
-    entry_index: int = 0
-    directory_path: Path = Path()
+    __slots__ = ("entry_index", "directory_path",)
+
+    entry_index: int
+    directory_path: Path
+
+    def __init__(
+        self,
+        entry_index: int = 0,
+        directory_path: Path = Path(),
+    ) -> None:
+        _setattr(self, "entry_index", entry_index)
+        _setattr(self, "directory_path", directory_path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetDirectoryEntryInfoResponse(HtmlDisplay):
     """``uavcan.protocol.file.GetDirectoryEntryInfo`` response, service 46 (``protocol/file/46.GetDirectoryEntryInfo.uavcan``)."""
 
-    error: FileErrorCode = FileErrorCode()
-    entry_type: EntryType = EntryType()
-    entry_full_path: Path = Path()
+    __slots__ = ("error", "entry_type", "entry_full_path",)
+
+    error: FileErrorCode
+    entry_type: EntryType
+    entry_full_path: Path
     """Ignored/Empty if such entry does not exist."""
 
+    def __init__(
+        self,
+        error: FileErrorCode = FileErrorCode(),
+        entry_type: EntryType = EntryType(),
+        entry_full_path: Path = Path(),
+    ) -> None:
+        _setattr(self, "error", error)
+        _setattr(self, "entry_type", entry_type)
+        _setattr(self, "entry_full_path", entry_full_path)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class DeleteRequest(HtmlDisplay):
     """``uavcan.protocol.file.Delete`` request, service 47 (``protocol/file/47.Delete.uavcan``).
 
@@ -2194,17 +3339,33 @@ class DeleteRequest(HtmlDisplay):
     If the remote entry is a directory, all nested entries will be removed too.
     """
 
-    path: Path = Path()
+    __slots__ = ("path",)
+
+    path: Path
+
+    def __init__(
+        self,
+        path: Path = Path(),
+    ) -> None:
+        _setattr(self, "path", path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class DeleteResponse(HtmlDisplay):
     """``uavcan.protocol.file.Delete`` response, service 47 (``protocol/file/47.Delete.uavcan``)."""
 
-    error: FileErrorCode = FileErrorCode()
+    __slots__ = ("error",)
+
+    error: FileErrorCode
+
+    def __init__(
+        self,
+        error: FileErrorCode = FileErrorCode(),
+    ) -> None:
+        _setattr(self, "error", error)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class FileReadRequest(HtmlDisplay):
     """``uavcan.protocol.file.Read`` request, service 48 (``protocol/file/48.Read.uavcan``).
 
@@ -2221,22 +3382,42 @@ class FileReadRequest(HtmlDisplay):
     will be returned, and data array will be empty.
     """
 
-    offset: int = 0
-    path: Path = Path()
+    __slots__ = ("offset", "path",)
+
+    offset: int
+    path: Path
+
+    def __init__(
+        self,
+        offset: int = 0,
+        path: Path = Path(),
+    ) -> None:
+        _setattr(self, "offset", offset)
+        _setattr(self, "path", path)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class FileReadResponse(HtmlDisplay):
     """``uavcan.protocol.file.Read`` response, service 48 (``protocol/file/48.Read.uavcan``)."""
 
     MAX_DATA: ClassVar[int] = 256
     """Most bytes of ``data`` in one response (its DSDL array size)."""
 
-    error: FileErrorCode = FileErrorCode()
-    data: bytes = b""
+    __slots__ = ("error", "data",)
+
+    error: FileErrorCode
+    data: bytes
+
+    def __init__(
+        self,
+        error: FileErrorCode = FileErrorCode(),
+        data: bytes = b"",
+    ) -> None:
+        _setattr(self, "error", error)
+        _setattr(self, "data", data)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class WriteRequest(HtmlDisplay):
     """``uavcan.protocol.file.Write`` request, service 49 (``protocol/file/49.Write.uavcan``).
 
@@ -2256,19 +3437,39 @@ class WriteRequest(HtmlDisplay):
     example by means of creating a staging area for uncompleted writes (like FTP servers do).
     """
 
-    offset: int = 0
-    path: Path = Path()
-    data: bytes = b""
+    __slots__ = ("offset", "path", "data",)
+
+    offset: int
+    path: Path
+    data: bytes
+
+    def __init__(
+        self,
+        offset: int = 0,
+        path: Path = Path(),
+        data: bytes = b"",
+    ) -> None:
+        _setattr(self, "offset", offset)
+        _setattr(self, "path", path)
+        _setattr(self, "data", data)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class WriteResponse(HtmlDisplay):
     """``uavcan.protocol.file.Write`` response, service 49 (``protocol/file/49.Write.uavcan``)."""
 
-    error: FileErrorCode = FileErrorCode()
+    __slots__ = ("error",)
+
+    error: FileErrorCode
+
+    def __init__(
+        self,
+        error: FileErrorCode = FileErrorCode(),
+    ) -> None:
+        _setattr(self, "error", error)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ExecuteOpcodeRequest(HtmlDisplay):
     """``uavcan.protocol.param.ExecuteOpcode`` request, service 10 (``protocol/param/10.ExecuteOpcode.uavcan``).
 
@@ -2280,32 +3481,68 @@ class ExecuteOpcodeRequest(HtmlDisplay):
     OPCODE_ERASE: ClassVar[int] = 1
     """Clear the non-volatile storage; some changes may take effect only after reboot."""
 
-    opcode: Opcode | int = 0
-    argument: int = 0
+    __slots__ = ("opcode", "argument",)
+
+    opcode: Opcode | int
+    argument: int
+
+    def __init__(
+        self,
+        opcode: Opcode | int = 0,
+        argument: int = 0,
+    ) -> None:
+        _setattr(self, "opcode", opcode)
+        _setattr(self, "argument", argument)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class ExecuteOpcodeResponse(HtmlDisplay):
     """``uavcan.protocol.param.ExecuteOpcode`` response, service 10 (``protocol/param/10.ExecuteOpcode.uavcan``)."""
 
-    argument: int = 0
-    ok: bool = False
+    __slots__ = ("argument", "ok",)
+
+    argument: int
+    ok: bool
+
+    def __init__(
+        self,
+        argument: int = 0,
+        ok: bool = False,
+    ) -> None:
+        _setattr(self, "argument", argument)
+        _setattr(self, "ok", ok)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class BooleanValue(HtmlDisplay):
     """Member ``boolean_value`` of the union ``uavcan.protocol.param.Value``."""
 
-    value: int = 0
+    __slots__ = ("value",)
+
+    value: int
+
+    def __init__(
+        self,
+        value: int = 0,
+    ) -> None:
+        _setattr(self, "value", value)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class StringValue(HtmlDisplay):
     """Member ``string_value`` of the union ``uavcan.protocol.param.Value``."""
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"value"})
 
-    value: bytes = b""
+    __slots__ = ("value",)
+
+    value: bytes
+
+    def __init__(
+        self,
+        value: bytes = b"",
+    ) -> None:
+        _setattr(self, "value", value)
 
 
 Value: TypeAlias = Empty | IntegerValue | RealValue | BooleanValue | StringValue
@@ -2318,7 +3555,7 @@ The structure is prefixed with tag - a selector value that indicates which parti
 """
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetSetRequest(HtmlDisplay):
     """``uavcan.protocol.param.GetSet`` request, service 11 (``protocol/param/11.GetSet.uavcan``).
 
@@ -2329,28 +3566,56 @@ class GetSetRequest(HtmlDisplay):
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
 
-    index: int = 0
-    value: Value = Empty()
-    name: bytes = b""
+    __slots__ = ("index", "value", "name",)
+
+    index: int
+    value: Value
+    name: bytes
+
+    def __init__(
+        self,
+        index: int = 0,
+        value: Value = Empty(),
+        name: bytes = b"",
+    ) -> None:
+        _setattr(self, "index", index)
+        _setattr(self, "value", value)
+        _setattr(self, "name", name)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class GetSetResponse(HtmlDisplay):
     """``uavcan.protocol.param.GetSet`` response, service 11 (``protocol/param/11.GetSet.uavcan``)."""
 
     _TEXT_FIELDS_: ClassVar[frozenset[str]] = frozenset({"name"})
 
-    value: Value = Empty()
-    default_value: Value = Empty()
+    __slots__ = ("value", "default_value", "max_value", "min_value", "name",)
+
+    value: Value
+    default_value: Value
     """Optional"""
-    max_value: NumericValue = Empty()
+    max_value: NumericValue
     """Optional, not applicable for bool/string"""
-    min_value: NumericValue = Empty()
+    min_value: NumericValue
     """Optional, not applicable for bool/string"""
-    name: bytes = b""
+    name: bytes
+
+    def __init__(
+        self,
+        value: Value = Empty(),
+        default_value: Value = Empty(),
+        max_value: NumericValue = Empty(),
+        min_value: NumericValue = Empty(),
+        name: bytes = b"",
+    ) -> None:
+        _setattr(self, "value", value)
+        _setattr(self, "default_value", default_value)
+        _setattr(self, "max_value", max_value)
+        _setattr(self, "min_value", min_value)
+        _setattr(self, "name", name)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Protocol(HtmlDisplay):
     """``uavcan.tunnel.Protocol`` (nested; ``tunnel/Protocol.uavcan``).
 
@@ -2367,10 +3632,18 @@ class Protocol(HtmlDisplay):
     UNDEFINED: ClassVar[int] = 255
     """Undefined"""
 
-    protocol: ProtocolProtocol | int = 0
+    __slots__ = ("protocol",)
+
+    protocol: ProtocolProtocol | int
+
+    def __init__(
+        self,
+        protocol: ProtocolProtocol | int = 0,
+    ) -> None:
+        _setattr(self, "protocol", protocol)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Broadcast(HtmlDisplay):
     """``uavcan.tunnel.Broadcast``, message 2010 (``tunnel/2010.Broadcast.uavcan``).
 
@@ -2380,25 +3653,49 @@ class Broadcast(HtmlDisplay):
     The channelID allows for additional routing between the source and target nodes.
     """
 
-    protocol: Protocol = Protocol()
-    channel_id: int = 0
-    buffer: bytes = b""
+    __slots__ = ("protocol", "channel_id", "buffer",)
+
+    protocol: Protocol
+    channel_id: int
+    buffer: bytes
     """TAO rules apply"""
 
+    def __init__(
+        self,
+        protocol: Protocol = Protocol(),
+        channel_id: int = 0,
+        buffer: bytes = b"",
+    ) -> None:
+        _setattr(self, "protocol", protocol)
+        _setattr(self, "channel_id", channel_id)
+        _setattr(self, "buffer", buffer)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class SerialConfig(HtmlDisplay):
     """``uavcan.tunnel.SerialConfig``, message 2011 (``tunnel/2011.SerialConfig.uavcan``).
 
     This message carries baudrate for tunnel channel_id
     """
 
-    channel_id: int = 0
-    baud: int = 0
-    options: int = 0
+    __slots__ = ("channel_id", "baud", "options",)
+
+    channel_id: int
+    baud: int
+    options: int
+
+    def __init__(
+        self,
+        channel_id: int = 0,
+        baud: int = 0,
+        options: int = 0,
+    ) -> None:
+        _setattr(self, "channel_id", channel_id)
+        _setattr(self, "baud", baud)
+        _setattr(self, "options", options)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class Targetted(HtmlDisplay):
     """``uavcan.tunnel.Targetted``, message 3001 (``tunnel/3001.Targetted.uavcan``).
 
@@ -2412,15 +3709,33 @@ class Targetted(HtmlDisplay):
 
     OPTION_LOCK_PORT: ClassVar[int] = 1
 
-    protocol: Protocol = Protocol()
-    target_node: int = 0
-    serial_id: int = 0
-    options: int = 0
-    baudrate: int = 0
-    buffer: bytes = b""
+    __slots__ = ("protocol", "target_node", "serial_id", "options", "baudrate", "buffer",)
+
+    protocol: Protocol
+    target_node: int
+    serial_id: int
+    options: int
+    baudrate: int
+    buffer: bytes
+
+    def __init__(
+        self,
+        protocol: Protocol = Protocol(),
+        target_node: int = 0,
+        serial_id: int = 0,
+        options: int = 0,
+        baudrate: int = 0,
+        buffer: bytes = b"",
+    ) -> None:
+        _setattr(self, "protocol", protocol)
+        _setattr(self, "target_node", target_node)
+        _setattr(self, "serial_id", serial_id)
+        _setattr(self, "options", options)
+        _setattr(self, "baudrate", baudrate)
+        _setattr(self, "buffer", buffer)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen_dataclass
 class CallRequest(HtmlDisplay):
     """``uavcan.tunnel.Call`` request, service 63 (``tunnel/63.Call.uavcan``).
 
@@ -2431,18 +3746,38 @@ class CallRequest(HtmlDisplay):
     additional routing between the source and target nodes.
     """
 
-    protocol: Protocol = Protocol()
-    channel_id: int = 0
-    buffer: bytes = b""
+    __slots__ = ("protocol", "channel_id", "buffer",)
+
+    protocol: Protocol
+    channel_id: int
+    buffer: bytes
     """TAO rules apply"""
 
+    def __init__(
+        self,
+        protocol: Protocol = Protocol(),
+        channel_id: int = 0,
+        buffer: bytes = b"",
+    ) -> None:
+        _setattr(self, "protocol", protocol)
+        _setattr(self, "channel_id", channel_id)
+        _setattr(self, "buffer", buffer)
 
-@dataclass(frozen=True, slots=True)
+
+@frozen_dataclass
 class CallResponse(HtmlDisplay):
     """``uavcan.tunnel.Call`` response, service 63 (``tunnel/63.Call.uavcan``)."""
 
-    buffer: bytes = b""
+    __slots__ = ("buffer",)
+
+    buffer: bytes
     """TAO rules apply"""
+
+    def __init__(
+        self,
+        buffer: bytes = b"",
+    ) -> None:
+        _setattr(self, "buffer", buffer)
 
 
 __all__ = [
