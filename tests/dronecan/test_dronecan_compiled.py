@@ -25,6 +25,7 @@ from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK
+from veronte4x.dronecan.fast_base import int_array_tables
 from veronte4x.dronecan.schema import Scalar, Struct, Union, tao_min_bits
 from veronte4x.errors import DecodeError, EncodeError
 
@@ -301,3 +302,18 @@ def test_float16_fields_in_array_items_keep_the_array(tmp_path: Path) -> None:
     payload = codec.fast.payload(message)  # valid values never leave the generated code
     assert payload == codec.generic.encode(message)
     assert codec.fast.decode(payload) == message
+
+
+@pytest.mark.parametrize("bits", range(9, 17))
+def test_int_array_tables_by_their_definition(bits: int) -> None:
+    """The tables of an int array made of ranges are those of their definition: each
+    value's low byte, then its top bits (RawCommand's int14 is a 14-bit case)."""
+    low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+    to_stream, from_stream = int_array_tables(low, high)
+    mask, rest = (1 << bits) - 1, bits - 8
+    expected = [((v & 0xFF) << rest) | ((v & mask) >> 8) for v in range(low, high + 1)]
+    assert list(to_stream) == expected
+    assert [from_stream[piece] for piece in expected] == list(range(low, high + 1))
+    assert len(from_stream) == 1 << bits
+    with pytest.raises(ValueError, match="no int type"):
+        int_array_tables(low + 1, high)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import binascii
 import functools
+import itertools
 import struct
 from collections.abc import Callable
 from typing import Any
@@ -77,17 +78,31 @@ def half_tables(kind: str, bits: int) -> tuple[tuple[int, ...], tuple[int, ...]]
 @functools.cache
 def int_array_tables(low: int, high: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
     """The two tables of an array of 9..16-bit ints (RawCommand's int14) from ``low`` to
-    ``high``: item value (less ``low``) to its stream bits (low byte first, then the top
-    bits), and stream bits to item value."""
+    ``high``, the whole range of the type: item value (less ``low``) to its stream bits
+    (low byte first, then the top bits), and stream bits to item value.
+
+    Made of ranges, not item by item (under a millisecond for 16,384 entries, where a
+    loop takes ten): the unsigned value ``256 h + l`` has the stream bits
+    ``l << (bits - 8) | h``, so for each ``h`` the stream bits of every ``l`` are one
+    range, and for each ``l`` the values of every ``h`` are two (below zero from the
+    sign bit on).
+    """
     bits = (high - low).bit_length()
-    rest = bits - 8
-    to_stream = tuple(
-        ((v & 0xFF) << rest) | ((v & ((1 << bits) - 1)) >> 8) for v in range(low, high + 1)
+    rest, half = bits - 8, 1 << (bits - 1)
+    if (low, high) != (-half, half - 1) or rest < 1:
+        raise ValueError(f"no int type of 9 to 16 bits ranges from {low} to {high}")
+    by_unsigned = list(
+        itertools.chain.from_iterable(range(h, 256 << rest, 1 << rest) for h in range(1 << rest))
     )
-    from_stream = [0] * (1 << bits)
-    for v, piece in zip(range(low, high + 1), to_stream, strict=True):
-        from_stream[piece] = v
-    return to_stream, tuple(from_stream)
+    to_stream = tuple(by_unsigned[half:] + by_unsigned[:half])  # from the lowest value
+    from_stream = tuple(
+        itertools.chain.from_iterable(
+            values
+            for byte in range(256)
+            for values in (range(byte, half, 256), range(byte - half, 0, 256))
+        )
+    )
+    return to_stream, from_stream
 
 
 def shared_table(decode: Callable[[bytes], Any], size: int) -> tuple[Any, ...]:
