@@ -34,12 +34,15 @@ def fmt_message(kind: int, name: str, fields: str, labels: str) -> bytes:
     return b"\xa3\x95\x80" + body
 
 
+FMT_OF_FMT = b"\xa3\x95\x80" + FORMAT.pack(
+    128, 89, b"FMT", b"BBnNZ", b"Type,Length,Name,Format,Columns"
+)
+"""The ``FMT`` message of ``FMT``, with which every log starts."""
+
+
 def header() -> bytes:
     """The ``FMT`` of ``FMT``, then those of ``PARM``, ``CANF`` and ``CAFD``."""
-    fmt_of_fmt = b"\xa3\x95\x80" + FORMAT.pack(
-        128, 89, b"FMT", b"BBnNZ", b"Type,Length,Name,Format,Columns"
-    )
-    return fmt_of_fmt + b"".join(fmt_message(*t) for t in (PARM, CANF, CAFD))
+    return FMT_OF_FMT + b"".join(fmt_message(*t) for t in (PARM, CANF, CAFD))
 
 
 def parm(time_us: int, name: str, value: float) -> bytes:

@@ -4,6 +4,7 @@ the same frames and records as the same frames in candump form, through every en
 from __future__ import annotations
 
 import gzip
+import struct
 import subprocess
 import sys
 from pathlib import Path
@@ -13,9 +14,15 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from tests.capture.columnar_support import assert_same_tables
-from tests.capture.dataflash_support import dataflash_log, fmt_message, header, parm
+from tests.capture.dataflash_support import (
+    FMT_OF_FMT,
+    dataflash_log,
+    fmt_message,
+    header,
+    parm,
+)
 from veronte4x import capture
-from veronte4x.capture.frames import BadLine, Frame, Truncation
+from veronte4x.capture.frames import BadLine, Frame, Truncation, micros
 from veronte4x.capture.readers.dataflash import parse_dataflash
 from veronte4x.errors import SourceError
 
@@ -140,6 +147,29 @@ def test_fields_are_found_by_the_logs_own_fmt() -> None:
     ]
     lacking = header() + fmt_message(60, "CANF", "QBI", "TimeUS,Bus,Id") + body[:16]
     assert list(parse_dataflash(iter([lacking]), "x")) == []
+
+
+SCRIPT_CANF = ("QIBIBBBBBBBB", "TimeUS,Id,DLC,FC,B0,B1,B2,B3,B4,B5,B6,B7")
+"""The CANF of ArduPilot's Lua scripts (CAN_logger.lua): ``logger:write("CANF",
+'Id,DLC,FC,B0,...,B7', 'IBIBBBBBBBB', ...)``, with the ``TimeUS`` that ``logger:write``
+puts first."""
+
+
+def test_the_canf_of_a_lua_script_reads_with_no_bus(tmp_path: Path) -> None:
+    same = [f._replace(channel="") for f in capture.open_frames(EXAMPLE) if type(f) is Frame]
+    body = struct.Struct("<QIBI8B")
+    log = FMT_OF_FMT + fmt_message(60, "CANF", *SCRIPT_CANF)
+    for count, frame in enumerate(same):
+        assert frame.timestamp is not None
+        ident = frame.can_id | (1 << 31 if frame.extended else 0)
+        fields = (micros(frame.timestamp), ident, len(frame.data), count)
+        log += b"\xa3\x95\x3c" + body.pack(*fields, *frame.data.ljust(8, b"\0"))
+    path = tmp_path / "00000007.BIN"
+    path.write_bytes(log)
+    assert _frames(path) == same
+    expected = [r._replace(channel="") for r in capture.read(EXAMPLE)]
+    assert list(capture.read(path)) == expected
+    assert_same_tables(capture.read_tables(path), capture.tables_from_records(expected))
 
 
 _classic = st.builds(

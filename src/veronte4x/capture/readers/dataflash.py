@@ -25,6 +25,12 @@ message. The fields are found here by the labels of the log's own ``FMT``, not a
   are those seconds since boot, not Unix time (the log's GPS messages would give UTC;
   veronte4x does not join them), so text output shows them as seconds.
 
+ArduPilot's Lua scripts that log the frames of a scripting CAN driver
+(``libraries/AP_Scripting/examples/CAN_logger.lua`` and the CAN drivers among the
+scripts, before ArduPilot replaced them with ``CAN_Pn_OPTIONS``) write another ``CANF``,
+``Id,DLC,FC,B0..B7`` (``IBIBBBBBBBB``, ``FC`` a frame count), to which ``logger:write``
+puts ``TimeUS`` first: it names no bus, so its frames' channel is ``""``.
+
 Bytes that are no message of a type the log describes (a corrupt block) are skipped to the
 next ``A3 95`` and counted as one `BadLine`, as pymavlink skips them; a message cut by the
 end of the file ends the frames with a `Truncation`.
@@ -83,7 +89,8 @@ class _CanLayout:
     """Where a ``CANF`` or ``CAFD`` message holds a frame, from its ``FMT``."""
 
     fields: struct.Struct
-    """TimeUS, Bus, Id and DLC, from the message's start (its header included)."""
+    """TimeUS, Bus (where the message has it), Id and DLC, from the message's start (its
+    header included)."""
     data: int
     """The offset of the data bytes."""
     fd: bool
@@ -215,29 +222,36 @@ def _layout(format_: str, labels: list[str], length: int, fd: bool) -> _CanLayou
             return None
         offsets[label], codes[label] = at, char
         at += size
-    wanted = ("TimeUS", "Bus", "Id", "DLC")
+    wanted: tuple[str, ...] = ("TimeUS", "Bus", "Id", "DLC")
+    kinds = "QBIB"
+    if "Bus" not in offsets and not fd:  # a Lua script's CANF
+        wanted, kinds = ("TimeUS", "Id", "DLC"), "QIB"
     first, data_bytes = ("D0", 64) if fd else ("B0", 8)
     if any(label not in offsets for label in (*wanted, first)):
         return None
     places = [offsets[label] for label in wanted]
-    if [codes[label] for label in wanted] != list("QBIB") or places != sorted(places):
+    if [codes[label] for label in wanted] != list(kinds) or places != sorted(places):
         return None
     if offsets[first] + data_bytes > length:
         return None
     spec, position = "<", 0
-    for label, code in zip(wanted, "QBIB", strict=True):
+    for label, code in zip(wanted, kinds, strict=True):
         spec += f"{offsets[label] - position}x{code}"
         position = offsets[label] + SIZES[code]
     return _CanLayout(struct.Struct(spec), offsets[first], fd)
 
 
 def _frame(buffer: bytes, at: int, layout: _CanLayout) -> Frame:
-    time_us, bus, ident, dlc = layout.fields.unpack_from(buffer, at)
+    values = layout.fields.unpack_from(buffer, at)
+    if len(values) == 4:
+        time_us, bus, ident, dlc = values
+        channel = f"can{bus}"
+    else:  # a Lua script's CANF: no bus
+        (time_us, ident, dlc), channel = values, ""
     extended = bool(ident & FLAG_EXTENDED)
     can_id = ident & (_EXTENDED_MASK if extended else _STANDARD_MASK)
     start = at + layout.data
     timestamp = micros_seconds(time_us)
-    channel = f"can{bus}"
     if ident & FLAG_REMOTE:
         return Frame(timestamp, channel, can_id, b"", extended, remote=True, dlc=dlc)
     size = FD_LENGTHS[dlc & 0xF] if layout.fd else min(dlc, 8)
