@@ -19,6 +19,12 @@ average (1 minute) before and after it. The sections:
 - ``DSDL``: ``load_dsdl`` of every vendor root namespace shipped under
   ``src/veronte4x/dronecan/dsdl/`` (each alone, then all at once) and of the `dronecan`
   package's own ``ardupilot`` tree as a user's namespace, against ``import dronecan``;
+- ``user DSDL``: a copy of the shipped ``ardupilot`` tree (14 types) as a user's root,
+  loaded into the standard set by ``TypeSet.with_dsdl`` and each type's fast paths used
+  once: the first run (an empty cache directory each time), the next (read from the disk
+  cache, `veronte4x.dronecan.dsdl_cache`) and without the cache (``VERONTE4X_CACHE_DIR=off``),
+  against the `dronecan` package parsing the same tree; the time in the process after the
+  import (what the cache saves) and the whole process;
 - ``first transfer``: in a fresh process, one transfer of each type of the default set
   decoded by ``decode_frames``, each the first use of its type (the median and slowest);
 - ``monitor``: ``veronte4x monitor FILE --speed 1`` on the vehicle bus (played back at the
@@ -131,6 +137,31 @@ def child_load_dsdl(*roots: str) -> int:
     return sum(not name.startswith("uavcan.") for name in names)
 
 
+def child_user_dsdl(root: str) -> str:
+    """Load a user root into the standard set (the cache of ``VERONTE4X_CACHE_DIR``) and
+    use each of its types' fast paths once; the milliseconds of that after the import, and
+    the types."""
+    from veronte4x.dronecan import TypeSet
+
+    start = time.perf_counter()
+    types = TypeSet.standard().with_dsdl(root)
+    mine = [c for c in types.codecs if c.data_type.full_name.startswith(Path(root).name + ".")]
+    for codec in mine:
+        assert codec.fast is not None
+    return f"{(time.perf_counter() - start) * 1e3:.1f} {len(mine)}"
+
+
+def child_dronecan_parse(root: str) -> str:
+    """Parse a root with the `dronecan` package's parser (after ``import dronecan``, which
+    parses its own DSDL); the milliseconds of the parse, and the types."""
+    import dronecan
+
+    standard = Path(dronecan.__file__).parent / "dsdl_specs" / "uavcan"
+    start = time.perf_counter()
+    found = dronecan.dsdl.parse_namespaces([root], [str(standard)])
+    return f"{(time.perf_counter() - start) * 1e3:.1f} {len(found)}"
+
+
 def child_import_dronecan() -> int:
     """Import the `dronecan` package (it parses its DSDL); the types outside ``uavcan``."""
     import dronecan
@@ -176,6 +207,8 @@ CHILDREN: dict[str, Callable[..., object]] = {
     "cantools": child_cantools,
     "load_dsdl": child_load_dsdl,
     "import_dronecan": child_import_dronecan,
+    "user_dsdl": child_user_dsdl,
+    "dronecan_parse": child_dronecan_parse,
     "first_transfers": child_first_transfers,
 }
 
@@ -321,6 +354,50 @@ def dsdl(runs: int) -> None:
         print(f"| {name} | {types[name]} | {seconds:.2f} | {reference / seconds:.2f}x |")
 
 
+def user_dsdl(folder: Path, runs: int) -> None:
+    """A user's root loaded the first time, from the cache and without it, against the
+    `dronecan` package's parser on the same tree, in fresh processes taking turns."""
+    import shutil
+
+    root = str(shutil.copytree(SHIPPED_DSDL / "ardupilot", folder / "user" / "ardupilot"))
+    warm = str(folder / "cache-warm")
+    load_it = child("user_dsdl", root)
+    environ = {**os.environ, "VERONTE4X_CACHE_DIR": warm}
+    subprocess.run(load_it, env=environ, check=True, capture_output=True)
+    # Each run: the command, and its VERONTE4X_CACHE_DIR (a new empty one for a first run).
+    runs_of: dict[str, tuple[Command, Callable[[int], str]]] = {
+        "veronte4x, first run (empty cache)": (load_it, lambda n: str(folder / f"cold-{n}")),
+        "veronte4x, from the cache": (load_it, lambda n: warm),
+        "veronte4x, no cache (VERONTE4X_CACHE_DIR=off)": (load_it, lambda n: "off"),
+        "dronecan package: parse the tree (after import dronecan)": (
+            child("dronecan_parse", root),
+            lambda n: "off",
+        ),
+    }
+    rows: dict[str, list[tuple[float, float]]] = {name: [] for name in runs_of}
+    types: dict[str, str] = {}
+    before = load()
+    for run in range(runs):
+        for name, (command, cache) in runs_of.items():
+            env = {**os.environ, "VERONTE4X_CACHE_DIR": cache(run)}
+            start = time.perf_counter()
+            done = subprocess.run(command, env=env, check=True, capture_output=True, text=True)
+            whole = time.perf_counter() - start
+            ms, types[name] = done.stdout.split()
+            rows[name].append((float(ms), whole))
+    print(f"\n## user DSDL (median of {runs}, load {before} -> {load()})\n")
+    reference = statistics.median(t for t, _ in rows[list(rows)[-1]])
+    print("| run | types | ms after import | ms per type | whole process s | dronecan / this |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for name, found in rows.items():
+        inside = statistics.median(t for t, _ in found)
+        whole = statistics.median(w for _, w in found)
+        print(
+            f"| {name} | {types[name]} | {inside:.1f} | {inside / int(types[name]):.2f}"
+            f" | {whole:.2f} | {reference / inside:.2f}x |"
+        )
+
+
 def first_transfers(runs: int) -> None:
     """The first transfer of each type of the default set after import, in fresh processes."""
     before = load()
@@ -401,6 +478,7 @@ def main() -> None:
         imports(runs)
         decoding(Path(folder), sizes, runs)
         dsdl(runs)
+        user_dsdl(Path(folder), runs)
         first_transfers(runs)
         monitoring(Path(folder), max(sizes), runs)
 

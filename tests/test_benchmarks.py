@@ -73,6 +73,7 @@ RUNS = [
             "pydronecan script",
             "python-can + cantools",
             "load_dsdl user ardupilot",
+            "veronte4x, from the cache",
             "veronte4x monitor --speed 1",
         ],
     ),

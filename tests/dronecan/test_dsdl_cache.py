@@ -312,3 +312,23 @@ def test_no_cache_reads_or_writes_nothing(
     monkeypatch.delenv("XDG_CACHE_HOME", raising=False)
     TypeSet.standard().with_dsdl(root)
     assert not (tmp_path / "home").exists()
+
+
+def test_the_command_line_says_in_one_line_that_the_cache_cannot_be_written(
+    tmp_path: Path,
+) -> None:
+    blocked = tmp_path / "a file"
+    blocked.write_text("not a directory")
+    log = tmp_path / "empty.log"
+    log.write_text("")
+    root = shutil.copytree(DSDL_ROOT / "ardupilot", tmp_path / "user" / "ardupilot")
+    env = {**os.environ, dsdl_cache.ENVIRONMENT_VARIABLE: str(blocked / "cache")}
+    done = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "decode", str(log), "--dsdl", str(root)],
+        env={**env, "PYTHONPATH": os.pathsep.join(sys.path)},
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stderr
+    [line] = [line for line in done.stderr.splitlines() if "warning" in line.lower()]
+    assert line.startswith(f"veronte4x: warning: cannot write the DSDL cache in {blocked}")

@@ -49,6 +49,7 @@ from veronte4x.cli.options import (
     with_transfer_rules,
 )
 from veronte4x.dronecan import DsdlError, load_dsdl
+from veronte4x.dronecan.dsdl_cache import DsdlCacheWarning
 from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.errors import SourceError
 
@@ -83,12 +84,15 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _notes(shown: Callable[..., None]) -> Callable[..., None]:
-    """A `warnings.showwarning` that shows a replaced DSDL definition as one line on
-    standard error, and any other warning with ``shown``."""
+    """A `warnings.showwarning` that shows a replaced DSDL definition, and a DSDL cache
+    that cannot be written, as one line on standard error, and any other warning with
+    ``shown``."""
 
     def note(message: Warning | str, category: type[Warning], *args: Any, **kwargs: Any) -> None:
         if issubclass(category, DsdlOverrideWarning):
             print(f"veronte4x: note: {message}", file=sys.stderr)
+        elif issubclass(category, DsdlCacheWarning):
+            print(f"veronte4x: warning: {message}", file=sys.stderr)
         else:
             shown(message, category, *args, **kwargs)
 
