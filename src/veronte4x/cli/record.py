@@ -15,7 +15,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.readers.pydronecan import record
-from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
+from veronte4x.cli.exit_codes import EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
 from veronte4x.cli.options import UsageError, add_live_options, live, open_frame_source
 from veronte4x.errors import SourceError
@@ -59,8 +59,9 @@ def _count(text: str) -> int:
 
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
-    """Write the bus's frames into the file until ``--count``, ``--duration`` or Ctrl-C; the
-    remote and error frames, which the file cannot hold, are left out and counted."""
+    """Write the bus's frames into the file until ``--count``, ``--duration`` or Ctrl-C (each
+    a normal end: exit code 0); the remote and error frames, which the file cannot hold, are
+    left out and counted."""
     format_, out = args.to
     if format_ not in FORMATS:
         raise UsageError(f"--to {format_}: record writes {', '.join(FORMATS)}")
@@ -72,7 +73,6 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     loss = BusLoss()
     stop = threading.Event()
     written = left_out = 0
-    interrupted = False
     try:
         with open(out, "wb") as file, Interrupts() as interrupts:
             for frame in open_frame_source(args, stop, loss):
@@ -89,8 +89,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                     written += 1
                 if written == args.count:
                     stop.set()  # the bus is closed as the reading ends
-    except KeyboardInterrupt:
-        interrupted = True
+    except KeyboardInterrupt:  # the way to stop a recording: as the bus reader takes it
+        pass
     except Exception:
         if not written:  # the bus could not be opened, or failed at once: no empty file
             with contextlib.suppress(OSError):
@@ -101,8 +101,5 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         summary += f", {left_out} left out (remote, error or not a CAN frame)"
     if lost := loss.text():
         summary += f", {lost}"
-    if interrupted:
-        print(f"veronte4x: interrupted after {summary}", file=sys.stderr)
-        return EXIT_INTERRUPTED
     print(f"veronte4x: {summary}", file=sys.stderr)
     return EXIT_OK
