@@ -39,8 +39,6 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from veronte4x.dronecan.parser import DsdlError, definition_files
-
 ENVIRONMENT_VARIABLE = "VERONTE4X_CACHE_DIR"
 """The environment variable that moves the cache to another directory, or turns it off
 with the value `OFF`."""
@@ -119,14 +117,27 @@ def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[Path, bytes]]) ->
 
 def load_key(loads: Iterable[Iterable[Path]], new: Iterable[Path]) -> str | None:
     """The `key` of loading the roots ``new`` into a set of ``loads``, or None where a file
-    cannot be listed or read (the load itself then says what is wrong)."""
+    cannot be read (the load itself then says what is wrong)."""
     everything = (*(tuple(load) for load in loads), tuple(new))
     try:
-        listed = definition_files(root for load in everything for root in load)
-        files = [(path, path.read_bytes()) for _, path, _ in listed]
-    except (OSError, DsdlError):
+        files = [(path, path.read_bytes()) for load in everything for path in _files(load)]
+    except OSError:
         return None
     return key(everything, files)
+
+
+def _files(roots: Iterable[Path]) -> list[Path]:
+    """Every ``.uavcan`` file under each root, as `veronte4x.dronecan.parser` finds them
+    (symbolic links to directories not followed), sorted within each root."""
+    found: list[Path] = []
+    for root in roots:
+        found += sorted(
+            Path(folder, name)
+            for folder, _, names in os.walk(root)
+            for name in names
+            if name.endswith(".uavcan")
+        )
+    return found
 
 
 def _trusted(status: os.stat_result) -> bool:
