@@ -59,10 +59,10 @@ def traffic(seed: int) -> tuple[Traffic, dict[str, list[float]]]:
 
     status = codec.encode(codec.Status(1, True, (True,) * 4, (True,) * 4))
     stamps = [i * 0.01 + rng.uniform(-0.001, 0.001) for i in range(1000)]
-    stream("arbiter 0x0FF Status", stamps, [[(255, status, False)]] * len(stamps))
+    stream("arbiter 0FF Status", stamps, [[(255, status, False)]] * len(stamps))
     score = codec.encode(codec.Score(0, 0.5))
     stamps = [i * 0.05 + 0.003 for i in range(200)]
-    stream("arbiter 0x0FF Score 0", stamps, [[(255, score, False)]] * len(stamps))
+    stream("arbiter 0FF Score 0", stamps, [[(255, score, False)]] * len(stamps))
     stamps = [i * 1.0 + 0.0005 for i in range(6)]
     made = [[(f.can_id, f.data, True) for f in node_status(20, i)] for i in range(6)]
     stream("uavcan.protocol.NodeStatus from node 20", stamps, made)
@@ -117,7 +117,7 @@ def test_generated_traffic_with_known_periods(seed: int) -> None:
     assert got["uavcan.equipment.esc.Status from node 21"].flags == ("slow",)
     # Every 50 ms period after the drop is longer than 3 usual (10 ms) ones.
     assert got["uavcan.equipment.esc.Status from node 21"].gaps == 99
-    assert got["arbiter 0x0FF Status"].flags == got["arbiter 0x0FF Score 0"].flags == ()
+    assert got["arbiter 0FF Status"].flags == got["arbiter 0FF Score 0"].flags == ()
     (load,) = tracker.load()
     bits = sum(frame_bits(len(d), e) for _, _, d, e in frames)
     span = frames[-1][0] - frames[0][0]
@@ -230,5 +230,5 @@ def test_monitor_rates_after_its_table(tmp_path: Path) -> None:
     )
     assert done.returncode == 0
     lines = done.stdout.splitlines()
-    assert "  can0 AP1 0x008 Ready: 1 at -, jitter -, longest gap 0 ms" in lines
+    assert "  can0 AP1 008 Ready: 1 at -, jitter -, longest gap 0 ms" in lines
     assert lines[-1] == "  can0: 39 frames, 6.51 % of 125 kbit/s (detected: the lowest that fits)"

@@ -72,7 +72,7 @@ def test_fd_phases_at_their_own_bit_rates() -> None:
     assert load.percent == pytest.approx(100 * busy / 0.01, rel=1e-12)
     assert (load.bitrate, load.data_bitrate, load.reason) == (500_000, 2_000_000, "")
     (stream,) = tracker.streams()
-    assert (stream.label, stream.count) == ("0x100", 2)  # FD data frames are a stream
+    assert (stream.label, stream.count) == ("100", 2)  # FD data frames are a stream
 
 
 def test_brs_without_a_data_bit_rate_says_so() -> None:
@@ -96,7 +96,7 @@ def test_four_kinds_of_frame_in_the_load_and_its_span() -> None:
     assert load.seconds == 0.003
     busy = (135 + 55 + 34 + 23) / 500_000 + 113 / 2_000_000
     assert load.percent == pytest.approx(100 * busy / 0.003, rel=1e-12)  # 18.35 %
-    assert [s.label for s in tracker.streams()] == ["0x100", "0x102"]
+    assert [s.label for s in tracker.streams()] == ["100", "102"]
 
 
 def test_detection_says_frames_are_too_close() -> None:

@@ -95,7 +95,7 @@ def test_the_rates_report_counts_remote_frames_in_the_load_only(tmp_path: Path) 
     assert result.returncode == 0, result.stderr
     assert result.stdout.splitlines()[-4:] == [
         "rates:",
-        "  can0 0x123: 2 at 100 Hz, jitter -, longest gap 10 ms",
+        "  can0 123: 2 at 100 Hz, jitter -, longest gap 10 ms",
         "bus load (worst-case bit stuffing):",
         # 55 bits (remote, 11-bit ID) + 2 x 75 (2 data bytes) in 20 ms at 125 kbit/s
         "  can0: 3 frames, 8.2 % of 125 kbit/s (detected: the lowest that fits)",

@@ -276,7 +276,7 @@ def test_a_jitter_below_a_millisecond_is_shown_in_microseconds(tmp_path: Path) -
     capture_file.write_text("".join(f"({t}) can0 123#01\n" for t in times))
     result = _run("stats", str(capture_file), "--rates")
     assert result.returncode == 0, result.stderr
-    assert "  can0 0x123: 5 at 100 Hz, jitter 57.74 µs, longest gap 10.05 ms" in (
+    assert "  can0 123: 5 at 100 Hz, jitter 57.74 µs, longest gap 10.05 ms" in (
         result.stdout.splitlines()
     )
 

@@ -132,3 +132,28 @@ def test_can_ids_print_as_candump_prints_them_and_line_up(unix: Path) -> None:
     # From the first 29-bit ID on, an 11-bit ID is indented to its width, as candump does.
     assert lines[3].startswith("0.300000 can0      0FF arbiter   VersionRequest()")
     assert lines[2].index(" node 20") == lines[3].index(" arbiter") == lines[4].index(" missed")
+
+
+def test_a_29_bit_id_below_0x800_keeps_its_8_digits_in_every_output(tmp_path: Path) -> None:
+    """A record holds no IDE bit: where the bus map leaves 29-bit frames undecoded, their
+    detail (``29-bit CAN ID 0x7f``) tells ``decode``'s text and the record's HTML that
+    ``0000007F`` is not ``07F``; the rates of ``stats`` read the frame's own flag."""
+    log = tmp_path / "small.log"
+    log.write_text("(1.000000) can0 0000007F#01\n(1.010000) can0 07F#02\n", encoding="ascii")
+    bus_map = tmp_path / "map.toml"
+    bus_map.write_text("[dronecan]\nenabled = false\n", encoding="ascii")
+    lines = _decode(log, "--bus-map", str(bus_map))
+    assert [line.split()[2] for line in lines] == ["0000007F", "07F"]
+    assert lines[1].startswith("1.010000 can0      07F unknown")
+
+    result = _run("stats", str(log), "--bus-map", str(bus_map), "--rates")
+    assert (result.returncode, result.stderr) == (0, "")
+    rates = result.stdout.split("rates:\n")[1].splitlines()[:2]
+    assert rates == [
+        "  can0 0000007F: 1 at -, jitter -, longest gap 0 ms",
+        "  can0 07F: 1 at -, jitter -, longest gap 0 ms",
+    ]
+
+    wide, narrow = capture.read(log, capture.BusMap(dronecan=False))
+    assert "<td>0000007F</td>" in wide._repr_html_()
+    assert "<td>07F</td>" in narrow._repr_html_()

@@ -58,6 +58,7 @@ from dataclasses import dataclass, field
 
 from veronte4x.capture.busmap import AUTOPILOT_NAMES, BusMap, Role
 from veronte4x.capture.dbc import command_names
+from veronte4x.capture.readable import can_id_text
 from veronte4x.dronecan.can_id import TransferKind, parse_can_id
 from veronte4x.dronecan.definitions import DATA_TYPES
 
@@ -492,7 +493,7 @@ def _session(can_id: int) -> int:
 
 
 def _label(bus_map: BusMap, can_id: int, extended: bool, role: Role) -> str:
-    ident = f"0x{can_id:08X}" if extended else f"0x{can_id:03X}"
+    ident = can_id_text(can_id, extended)
     if role is Role.ARBITER:
         return f"arbiter {ident}"
     if role is Role.AUTOPILOT:

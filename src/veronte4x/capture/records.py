@@ -76,12 +76,32 @@ class Record(NamedTuple):
         return record_html(self)
 
 
+def extended_id(record: Record, veronte_extended: bool = False) -> bool:
+    """Whether the record came on a 29-bit CAN ID, which a record does not hold as a flag:
+    every DroneCAN record, a Veronte one where the bus map's IDs are 29-bit
+    (``veronte_extended``, `veronte4x.capture.BusMap.extended`), any ID above 0x7FF, and
+    traffic outside the bus map whose detail says so (``29-bit CAN ID 0x7f``), so that an
+    extended frame with a small ID prints with 8 digits as candump prints it.
+
+    Examples:
+        >>> from veronte4x import capture
+        >>> records = list(capture.read("examples/capture.log"))
+        >>> extended_id(records[0]), extended_id(records[0], veronte_extended=True)
+        (False, True)
+    """
+    if record.role is Role.DRONECAN:
+        return True
+    if record.role is Role.ARBITER or record.role is Role.AUTOPILOT:
+        return veronte_extended
+    return record.can_id > 0x7FF or record.detail.startswith("29-bit")
+
+
 def record_html(record: Record) -> str:
     """A record as HTML: where and when it came from, then its message's fields."""
     head: list[Cells] = [
         ("time", format_time(record.timestamp)),
         ("channel", record.channel),
-        ("CAN ID", can_id_text(record.can_id, record.role is Role.DRONECAN)),
+        ("CAN ID", can_id_text(record.can_id, extended_id(record))),
         ("sender", record.sender),
     ]
     if record.destination_node_id is not None:

@@ -28,10 +28,10 @@ from collections.abc import Callable, Iterable
 from typing import Any, TextIO
 
 from veronte4x import capture
-from veronte4x.capture.busmap import BusMap, Role
+from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, readable_fields
 from veronte4x.capture.readers.live import BusLoss
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, extended_id
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
@@ -115,7 +115,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                             close()
                             out.flush()
                             can_id = can_id_text(
-                                record.can_id, _is_extended(record, bus_map.extended)
+                                record.can_id, extended_id(record, bus_map.extended)
                             )
                             print(f"veronte4x: {_describe(record, clock, can_id)}", file=sys.stderr)
                             status = EXIT_BAD_FRAME
@@ -195,20 +195,10 @@ class _Ids:
 
     def text(self, record: Record) -> str:
         """The record's CAN ID, right-aligned in the column."""
-        wide = _is_extended(record, self.extended)
+        wide = extended_id(record, self.extended)
         if wide:
             self.width = 8
         return f"{can_id_text(record.can_id, wide):>{self.width}}"
-
-
-def _is_extended(record: Record, veronte_extended: bool) -> bool:
-    """Whether the record came on a 29-bit ID: every DroneCAN frame, a Veronte frame where
-    the bus map's IDs are, any ID above 0x7FF, undecoded traffic its detail says is."""
-    if record.role is Role.DRONECAN:
-        return True
-    if record.role is Role.ARBITER or record.role is Role.AUTOPILOT:
-        return veronte_extended
-    return record.can_id > 0x7FF or record.detail.startswith("29-bit")
 
 
 def _describe(record: Record, clock: _Clock, can_id: str) -> str:
