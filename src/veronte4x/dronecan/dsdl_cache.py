@@ -12,8 +12,10 @@ parsing and compiling again.
   value ``off``. Never beside the user's files.
 - Key (`key`): a SHA-256 of the path and bytes of every ``.uavcan`` file of the set's roots
   and of the new ones, the roots in order, the source of veronte4x's own modules that make
-  and run the code (`source_digest`: the version's code, so any change to veronte4x) and
-  the Python version. Any change to any of them is another key; old entries are left
+  and run the code (`source_digest`: it stands for the version, since any release that
+  changes that code changes it, and it catches a copy edited in place; the version string
+  itself is not read, its lookup through `importlib.metadata` costing more than a whole
+  load from the cache) and the Python version. Any change to any of them is another key; old entries are left
   (delete the directory to clear it).
 - Files: ``<key>.manifest`` names the SHA-256 of the entry's bytes;
   ``<sha256>.entry`` holds them. Both are written to a temporary file and moved in place
@@ -141,11 +143,13 @@ def _files(roots: Iterable[Path]) -> list[Path]:
 
 
 def _trusted(status: os.stat_result) -> bool:
-    """Whether a file or directory is this user's and no one else may write it."""
-    if status.st_mode & (stat.S_IWGRP | stat.S_IWOTH):
-        return False
-    getuid = getattr(os, "getuid", None)
-    return getuid is None or status.st_uid == getuid()
+    """Whether a file or directory is this user's and no one else may write it (on
+    Windows, where modes are emulated and owners not reported, the user's local
+    application data directory is theirs)."""
+    if os.name == "nt":
+        return True
+    writable = status.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+    return not writable and status.st_uid == os.getuid()
 
 
 def _read(path: Path) -> bytes:
