@@ -153,3 +153,25 @@ def test_convert_writes_what_pydronecan_plays(tmp_path: Path) -> None:
         for f in capture.open_frames(EXAMPLE)
         if type(f) is Frame
     ]
+
+
+def test_convert_notes_the_channels_it_merges(tmp_path: Path) -> None:
+    two = tmp_path / "two.log"
+    two.write_text("(1.000000) can0 123#11\n(1.000100) can1 1001552A#05000000000000C3\n")
+    out = tmp_path / "two.can"
+    converted = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "convert", str(two), "--to", "pydronecan", str(out)],
+        capture_output=True, text=True, timeout=_TIMEOUT, check=False,
+    )  # fmt: skip
+    assert (converted.returncode, converted.stderr) == (
+        0,
+        f"veronte4x: 2 frames in {out}\n"
+        "veronte4x: note: the frames of 2 channels (can0, can1) are in one file, which names "
+        "no bus; --only-channel CHANNEL writes one\n",
+    )
+    one = subprocess.run(
+        [sys.executable, "-m", "veronte4x", "convert", str(two), "--to", "pydronecan", str(out),
+         "--only-channel", "can1"],
+        capture_output=True, text=True, timeout=_TIMEOUT, check=False,
+    )  # fmt: skip
+    assert (one.returncode, one.stderr) == (0, f"veronte4x: 1 frame in {out}\n")
