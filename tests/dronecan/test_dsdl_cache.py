@@ -123,10 +123,12 @@ def test_a_changed_byte_of_a_dsdl_file_is_another_entry(
     root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     TypeSet.standard().with_dsdl(root)
+    before, entry = _manifests(cache), _entry(cache)
     heading = root / "gnss" / "20002.Heading.uavcan"
     heading.write_text(heading.read_text().replace("heading_rad", "heading_raX"))
     changed = TypeSet.standard().with_dsdl(root)
-    assert len(_manifests(cache)) == 2
+    assert len(_manifests(cache)) == 1 and _manifests(cache) != before  # the old one removed
+    assert not entry.exists()
     fields = {f.name for f in dataclasses.fields(changed["ardupilot.gnss.Heading"])}
     assert "heading_raX" in fields and "heading_rad" not in fields
     _no_compiling(monkeypatch)
@@ -137,21 +139,27 @@ def test_a_changed_byte_of_a_dsdl_file_is_another_entry(
 def test_a_changed_generator_or_format_is_another_entry(
     root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    keys = [dsdl_cache.load_key((), [root])]
     TypeSet.standard().with_dsdl(root)
     monkeypatch.setattr(dsdl_cache, "source_digest", lambda: b"another veronte4x")
+    keys.append(dsdl_cache.load_key((), [root]))
     TypeSet.standard().with_dsdl(root)
-    assert len(_manifests(cache)) == 2
     monkeypatch.setattr(dsdl_cache, "FORMAT", dsdl_cache.FORMAT + 1)
+    keys.append(dsdl_cache.load_key((), [root]))
     TypeSet.standard().with_dsdl(root)
-    assert len(_manifests(cache)) == 3
+    assert len(set(keys)) == 3
+    assert [m.stem for m in _manifests(cache)] == keys[-1:]  # one entry for the roots
 
 
 def test_the_key_covers_every_file_the_roots_and_veronte4x(root: Path) -> None:
     key = dsdl_cache.load_key((), [root])
-    assert key == dsdl_cache.load_key((), [root])
-    assert key != dsdl_cache.load_key(((root,),), [root.parent])
+    assert key is not None and key == dsdl_cache.load_key((), [root])
+    other = dsdl_cache.load_key(((root,),), [root.parent])
+    assert other is not None and other.partition("-")[0] != key.partition("-")[0]
     (root / "gnss" / "20099.New.uavcan").write_text("uint8 x\n")
-    assert key != dsdl_cache.load_key((), [root])
+    changed = dsdl_cache.load_key((), [root])
+    assert changed is not None and changed != key
+    assert changed.partition("-")[0] == key.partition("-")[0]  # the same roots
     assert len(dsdl_cache.source_digest()) == 32
 
 
@@ -229,12 +237,13 @@ def test_a_tampered_entry_is_never_run_and_is_made_again(
 ) -> None:
     reference = _decoded(TypeSet.standard().with_dsdl(root))
     marker = tmp_path / "tampered code ran"
-    path = _entry(cache)
-    path.write_bytes(marshal.dumps(_tampered(cache, marker)))
+    tampered = marshal.dumps(_tampered(cache, marker))
+    _entry(cache).write_bytes(tampered)
     types = TypeSet.standard().with_dsdl(root)
     assert same(_decoded(types), reference)
     assert not marker.exists()
-    assert _entry(cache) == path and dsdl_cache.read(cache, _manifests(cache)[0].stem)
+    assert _entry(cache).read_bytes() != tampered  # made again (marshal's bytes may differ)
+    assert dsdl_cache.read(cache, _manifests(cache)[0].stem) is not None
     _no_compiling(monkeypatch)  # made again: the next load reads it
     assert same(_decoded(TypeSet.standard().with_dsdl(root)), reference)
     assert not marker.exists()

@@ -15,8 +15,10 @@ parsing and compiling again.
   and run the code (`source_digest`: it stands for the version, since any release that
   changes that code changes it, and it catches a copy edited in place; the version string
   itself is not read, its lookup through `importlib.metadata` costing more than a whole
-  load from the cache) and the Python version. Any change to any of them is another key; old entries are left
-  (delete the directory to clear it).
+  load from the cache) and the Python version. Any change to any of them is another key.
+  A key starts with a hash of the roots alone: writing an entry removes those of the same
+  roots under other keys, so the cache holds one entry per set of roots (delete the
+  directory to clear it).
 - Files: ``<key>.manifest`` names the SHA-256 of the entry's bytes;
   ``<sha256>.entry`` holds them. Both are written to a temporary file and moved in place
   (`os.replace`), so two processes filling the cache at once each leave a whole file, and
@@ -103,18 +105,22 @@ def source_digest() -> bytes:
 
 def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[Path, bytes]]) -> str:
     """The key of a load: ``loads`` the root namespace directories of the set and then the
-    new ones, ``files`` the path and bytes of every DSDL file under them."""
+    new ones, ``files`` the path and bytes of every DSDL file under them. It starts with a
+    hash of the roots alone, shared by every key of the same roots (`write` keeps one)."""
+    roots = b"".join(
+        b"\1" + "\0".join(str(root) for root in load).encode("utf-8", "surrogateescape")
+        for load in loads
+    )
     digest = hashlib.sha256(
         f"veronte4x DSDL cache {FORMAT} {sys.implementation.cache_tag}\0".encode()
     )
     digest.update(source_digest())
-    for load in loads:
-        digest.update(b"\1" + "\0".join(str(root) for root in load).encode("utf-8", "replace"))
+    digest.update(roots)
     for path, data in files:
         name = str(path).encode("utf-8", "surrogateescape")
         digest.update(b"\2%d\0%s%d\0" % (len(name), name, len(data)))
         digest.update(data)
-    return digest.hexdigest()
+    return f"{hashlib.sha256(roots).hexdigest()[:16]}-{digest.hexdigest()}"
 
 
 def load_key(loads: Iterable[Iterable[Path]], new: Iterable[Path]) -> str | None:
@@ -200,6 +206,7 @@ def write(folder: Path, entry_key: str, entry: dict[str, Any]) -> None:
             raise PermissionError("another user may write it")
         _replace(folder / f"{digest}.entry", data)
         _replace(folder / f"{entry_key}.manifest", manifest)
+        _prune(folder, entry_key, digest)
     except OSError as error:
         global _warned
         if not _warned:
@@ -210,6 +217,22 @@ def write(folder: Path, entry_key: str, entry: dict[str, Any]) -> None:
                 DsdlCacheWarning,
                 stacklevel=3,
             )
+
+
+def _prune(folder: Path, entry_key: str, digest: str) -> None:
+    """Remove the entries of the same roots under other keys (a file changed since, another
+    veronte4x): one entry per set of roots."""
+    roots = entry_key.partition("-")[0]
+    for other in folder.glob(f"{roots}-*.manifest"):
+        if other.stem == entry_key:
+            continue
+        try:
+            old = other.read_text("ascii").split()[-1]
+            other.unlink()
+            if old != digest and len(old) == 64 and old.isalnum():
+                (folder / f"{old}.entry").unlink(missing_ok=True)
+        except (OSError, ValueError, IndexError):
+            continue  # another process's, or gone already
 
 
 def _replace(path: Path, data: bytes) -> None:
