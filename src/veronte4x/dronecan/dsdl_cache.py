@@ -103,7 +103,7 @@ def source_digest() -> bytes:
     return digest.digest()
 
 
-def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[Path, bytes]]) -> str:
+def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[str | Path, bytes]]) -> str:
     """The key of a load: ``loads`` the root namespace directories of the set and then the
     new ones, ``files`` the path and bytes of every DSDL file under them. It starts with a
     hash of the roots alone, shared by every key of the same roots (`write` keeps one)."""
@@ -127,20 +127,24 @@ def load_key(loads: Iterable[Iterable[Path]], new: Iterable[Path]) -> str | None
     """The `key` of loading the roots ``new`` into a set of ``loads``, or None where a file
     cannot be read (the load itself then says what is wrong)."""
     everything = (*(tuple(load) for load in loads), tuple(new))
+    files = []
     try:
-        files = [(path, path.read_bytes()) for load in everything for path in _files(load)]
+        for path in _files(root for load in everything for root in load):
+            with open(path, "rb") as file:
+                files.append((path, file.read()))
     except OSError:
         return None
     return key(everything, files)
 
 
-def _files(roots: Iterable[Path]) -> list[Path]:
+def _files(roots: Iterable[Path]) -> list[str]:
     """Every ``.uavcan`` file under each root, as `veronte4x.dronecan.parser` finds them
-    (symbolic links to directories not followed), sorted within each root."""
-    found: list[Path] = []
+    (symbolic links to directories not followed), sorted within each root (plain strings:
+    a `Path` each costs more than reading the file)."""
+    found: list[str] = []
     for root in roots:
         found += sorted(
-            Path(folder, name)
+            os.path.join(folder, name)
             for folder, _, names in os.walk(root)
             for name in names
             if name.endswith(".uavcan")
