@@ -6,11 +6,14 @@ time (the times are `benchmarks/bench_cold.py`'s)."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from tests.dsdl_support import write_namespace
 
 ROOT = Path(__file__).resolve().parent.parent
 CAPTURE = ROOT / "examples" / "capture.log"
@@ -61,17 +64,22 @@ print(json.dumps(found))
 """
 
 
-def heavy_after(steps: list[tuple[str, str]]) -> dict[str, set[str]]:
-    """Run ``steps`` (name, code) in turn in one fresh interpreter; the heavy modules loaded
-    after each. Importing is monotonic: a module that a step alone would import is loaded
-    after that step here too, so a step that adds nothing proves its code alone imports
-    none."""
+def heavy_after(
+    steps: list[tuple[str, str]],
+    heavy: frozenset[str] = HEAVY,
+    environ: dict[str, str] | None = None,
+) -> dict[str, set[str]]:
+    """Run ``steps`` (name, code) in turn in one fresh interpreter (with ``environ`` for
+    its environment if given); the ``heavy`` modules loaded after each. Importing is
+    monotonic: a module that a step alone would import is loaded after that step here
+    too, so a step that adds nothing proves its code alone imports none."""
     done = subprocess.run(
-        [sys.executable, "-c", PROBE, json.dumps(sorted(HEAVY)), json.dumps(steps)],
+        [sys.executable, "-c", PROBE, json.dumps(sorted(heavy)), json.dumps(steps)],
         capture_output=True,
         text=True,
         cwd=ROOT,
         timeout=300,
+        env=environ,
     )
     assert done.returncode == 0, done.stderr[-2000:]
     found: dict[str, list[str]] = json.loads(done.stdout.splitlines()[-1])
@@ -110,3 +118,39 @@ def test_arrow_calls_import_only_what_they_need(call: str, tmp_path: Path) -> No
     # pandas is pyarrow's: pyarrow (pandas-shim.pxi) imports it, when it is installed, on
     # building its first array in a process; nothing of veronte4x asks for it.
     assert found[call] - {"pandas"} == {"numpy", "pyarrow"}
+
+
+DSDL_COMPILER = frozenset({"veronte4x.dronecan.generate", "veronte4x.dronecan.types"})
+"""What turns DSDL into classes and schemas: needed for the user's DSDL only (every shipped
+type was generated ahead of time)."""
+
+
+def test_the_dsdl_compiler_loads_for_user_dsdl_only(tmp_path: Path) -> None:
+    root = write_namespace(tmp_path, "com", {"20990.Ping": "uint8 count\n"})
+    environ = {
+        **os.environ,
+        "HOME": str(tmp_path),  # no vendor root of the user's own home directory
+        "VERONTE4X_CACHE_DIR": "off",
+    }
+    environ.pop("VERONTE4X_DSDL_PATH", None)
+    decode = (
+        "import contextlib, io; from veronte4x.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    main(['decode', {str(CAPTURE)!r}])"
+    )
+    found = heavy_after(
+        [
+            ("imports", "; ".join(f"import {module}" for module in PUBLIC)),
+            ("default set", "from veronte4x import dronecan; dronecan.default_types()"),
+            ("veronte4x decode", decode),
+            ("load_dsdl", f"from veronte4x import dronecan; dronecan.load_dsdl({str(root)!r})"),
+        ],
+        DSDL_COMPILER,
+        environ,
+    )
+    assert found == {
+        "imports": set(),
+        "default set": set(),
+        "veronte4x decode": set(),
+        "load_dsdl": DSDL_COMPILER,
+    }

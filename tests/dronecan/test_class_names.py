@@ -32,7 +32,7 @@ from veronte4x import dronecan as v4
 from veronte4x.dronecan import DsdlError, TypeSet, standard
 from veronte4x.dronecan.generate import plan, usable
 from veronte4x.dronecan.parser import parse_text
-from veronte4x.dronecan.types import DSDL_ROOT
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT
 
 STANDARD = TypeSet.standard()
 STANDARD_NAMES = set(standard.__all__)

@@ -35,9 +35,9 @@ from veronte4x.dronecan.compiled import (
 from veronte4x.dronecan.parser import check_references, parse_namespaces
 from veronte4x.dronecan.schema import DataType
 from veronte4x.dronecan.serializer import EnumValues, enum_table
-from veronte4x.dronecan.types import DSDL_ROOT, data_types, nested_signatures
+from veronte4x.dronecan.types import data_types, nested_signatures
 from veronte4x.dronecan.typeset import TypeSet
-from veronte4x.dronecan.vendor_roots import shipped_roots
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT, shipped_roots
 
 SHIPPED = TypeSet.shipped()
 _IDS = [f"{c.data_type.full_name}-{c.data_type.kind.name}" for c in SHIPPED.codecs]

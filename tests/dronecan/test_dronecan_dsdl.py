@@ -23,7 +23,8 @@ from veronte4x.dronecan.parser import (
     parse_namespaces,
     signature,
 )
-from veronte4x.dronecan.types import DSDL_ROOT, standard_definitions
+from veronte4x.dronecan.types import standard_definitions
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT
 
 
 def test_the_standard_set_is_package_data_with_its_licence() -> None:

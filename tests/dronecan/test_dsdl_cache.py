@@ -25,8 +25,8 @@ import pytest
 from tests.plain_data import same
 
 from veronte4x import dronecan as v4
-from veronte4x.dronecan import TypeSet, dsdl_cache, typeset
-from veronte4x.dronecan.types import DSDL_ROOT
+from veronte4x.dronecan import TypeSet, dsdl_cache, generate
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT
 from veronte4x.errors import DecodeError
 
 
@@ -49,7 +49,7 @@ def _no_compiling(monkeypatch: pytest.MonkeyPatch) -> None:
     def refuse(*args: Any) -> str:
         raise AssertionError("compiled DSDL instead of reading the cache")
 
-    monkeypatch.setattr(typeset, "module_source", refuse)
+    monkeypatch.setattr(generate, "module_source", refuse)  # what typeset compiles with
 
 
 def _manifests(cache: Path) -> list[Path]:

@@ -13,8 +13,7 @@ import pytest
 from veronte4x import capture, dronecan
 from veronte4x.dronecan import TypeSet
 from veronte4x.dronecan.parser import DsdlError
-from veronte4x.dronecan.types import DSDL_ROOT
-from veronte4x.dronecan.vendor_roots import SHIPPED
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT, SHIPPED
 
 ORDERS = [SHIPPED[i:] + SHIPPED[:i] for i in range(len(SHIPPED))] + [SHIPPED[::-1]]
 """Every root first once, and the reverse order (all 120 orders take seconds)."""

@@ -13,15 +13,16 @@ from pathlib import Path
 import pytest
 
 from veronte4x.dronecan import TypeSet
-from veronte4x.dronecan.parser import DsdlError, parse_namespaces
-from veronte4x.dronecan.types import DSDL_ROOT
+from veronte4x.dronecan.parser import DsdlError, definition_files, parse_namespaces
 from veronte4x.dronecan.typeset import DsdlOverrideWarning, default_set
 from veronte4x.dronecan.vendor_roots import (
+    DSDL_ROOT,
     ENVIRONMENT_VARIABLE,
     SHIPPED,
     Override,
     Roots,
     find_roots,
+    overrides,
     shipped_roots,
     user_roots,
 )
@@ -38,6 +39,7 @@ def _write(path: Path, text: str = "uint8 a\n") -> Path:
 
 def test_the_shipped_roots_alone(tmp_path: Path) -> None:
     assert find_roots({}, tmp_path) == Roots(shipped_roots(), ())
+    assert overrides(definition_files(shipped_roots())) == ()  # find_roots counts on it
     assert [p.name for p in shipped_roots()] == list(SHIPPED)
     assert all((DSDL_ROOT / name).is_dir() for name in SHIPPED)
     assert sorted(p.name for p in DSDL_ROOT.iterdir() if p.is_dir()) == sorted(

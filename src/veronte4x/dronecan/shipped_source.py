@@ -39,13 +39,8 @@ from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.generate import module_source, plan
 from veronte4x.dronecan.parser import Definition, check_references, parse_namespaces
 from veronte4x.dronecan.schema import Array, DataType, Scalar, Struct, Union
-from veronte4x.dronecan.types import (
-    DSDL_ROOT,
-    data_types,
-    nested_signatures,
-    units_of,
-)
-from veronte4x.dronecan.vendor_roots import shipped_roots
+from veronte4x.dronecan.types import data_types, nested_signatures, units_of
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT, shipped_roots
 
 PACKAGE = Path(__file__).parent
 """The directory of `veronte4x.dronecan`, where the generated modules go."""
@@ -342,7 +337,7 @@ def _data_source(
         "",
         "import veronte4x.dronecan.schema as _schema",
         "from veronte4x.dronecan.can_id import TransferKind as _TransferKind",
-        "from veronte4x.dronecan.types import DSDL_ROOT as _DSDL_ROOT",
+        "from veronte4x.dronecan.vendor_roots import DSDL_ROOT as _DSDL_ROOT",
     ]
     head += [f"import {module} as {_alias(module)}" for module in sorted(imports)]
     head += [

@@ -11,7 +11,6 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Mapping
-from pathlib import Path
 
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.generate import attribute_names, keys
@@ -34,9 +33,7 @@ from veronte4x.dronecan.schema import (
     StructField,
     Union,
 )
-
-DSDL_ROOT = Path(__file__).with_name("dsdl")
-"""The standard DSDL shipped with the package: ``uavcan/`` and its ``LICENSE``."""
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT
 
 
 @functools.cache

@@ -31,7 +31,6 @@ from veronte4x.dronecan import compiled_load, dsdl_cache, messages, standard, st
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
-from veronte4x.dronecan.generate import keys, module_source, plan
 from veronte4x.dronecan.parser import (
     Definition,
     DsdlError,
@@ -40,12 +39,7 @@ from veronte4x.dronecan.parser import (
     nested_name,
     parse_namespaces,
 )
-from veronte4x.dronecan.types import (
-    DSDL_ROOT,
-    data_types,
-    units_of,
-)
-from veronte4x.dronecan.vendor_roots import Override, find_roots, overrides
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT, Override, find_roots, overrides
 from veronte4x.errors import argument_type_error
 
 _serial = itertools.count(1)
@@ -212,6 +206,8 @@ class TypeSet:
         """Parse and compile a load (`with_dsdl`): its entry (`compiled_load.entry`, fast
         paths in it with ``fast``), the set it builds on, its module of classes and the
         definitions of the new set."""
+        from veronte4x.dronecan.types import data_types, units_of  # for user DSDL only
+
         definitions, new, notes, again = _planned(self, new_roots, warn=True)
         kept = self._without(again)
         module, made, names = _compile(definitions, new, kept, new_roots)
@@ -380,6 +376,8 @@ def _compile(
 ) -> tuple[_types.ModuleType, tuple[str, str, Any], dict[str, str]]:
     """Generate and run the source of the classes of ``new``: the module, its file name,
     source and code, and the class name of each of its keys."""
+    from veronte4x.dronecan.generate import keys, module_source, plan  # for user DSDL only
+
     known = _known(base)
     p = plan(definitions, known, base._names)
     for key, member_classes in base._members.items():

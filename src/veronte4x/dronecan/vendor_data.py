@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import veronte4x.dronecan.schema as _schema
 from veronte4x.dronecan.can_id import TransferKind as _TransferKind
-from veronte4x.dronecan.types import DSDL_ROOT as _DSDL_ROOT
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT as _DSDL_ROOT
 import veronte4x.dronecan.standard as _standard
 import veronte4x.dronecan.vendor as _vendor
 

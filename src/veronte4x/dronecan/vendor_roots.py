@@ -27,8 +27,9 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from veronte4x.dronecan.parser import definition_files
-from veronte4x.dronecan.types import DSDL_ROOT
+DSDL_ROOT = Path(__file__).with_name("dsdl")
+"""The DSDL shipped with the package: the standard ``uavcan/`` and its ``LICENSE``, the
+vendor roots of `SHIPPED`, and ``UPSTREAM.md``."""
 
 SHIPPED = ("ardupilot", "com", "cuav", "dronecan", "mppt")
 """The vendor root namespaces shipped with the package, in the order they load."""
@@ -134,4 +135,8 @@ def find_roots(
         if root.resolve() not in seen:
             seen.add(root.resolve())
             roots.append(root)
+    if len(roots) == len(SHIPPED):  # the shipped roots override nothing (a test checks)
+        return Roots(tuple(roots), ())
+    from veronte4x.dronecan.parser import definition_files  # the DSDL parser, for user roots
+
     return Roots(tuple(roots), overrides(definition_files(roots)))
