@@ -65,6 +65,51 @@ def test_code_in_a_table_cell_never_breaks_inside_a_word() -> None:
 
 def test_units_in_the_generated_tables() -> None:
     types = dronecan.type_tables()
-    assert "| 32 | 16 | float16 | `voltage` | V |  |" in types
+    assert "| 32 | 16 | `float16` | `voltage` | V |  |" in types
     assert "| `status.uptime_sec` | s |" in types
     assert "| `EscStatus` | `temperature` | K | kelvin |" in capture.units_table()
+
+
+def test_no_dotted_name_in_a_generated_table_cell_is_outside_code() -> None:
+    """The DroneCAN types pages: a type name out of code
+    (``uavcan.equipment.actuator.Command[<=15]`` in a DSDL column) may break where the page is
+    narrow; in code it stays on one line (the rule above)."""
+    dotted = re.compile(r"[A-Za-z_]\w*\.[A-Za-z_]")
+    loose = []
+    tables = (dronecan.types_table(), dronecan.union_tables(), dronecan.type_tables())
+    for line in "\n".join(tables).splitlines():
+        if not line.startswith("|"):
+            continue
+        for cell in line.strip("|").split("|"):
+            if dotted.search(re.sub(r"`[^`]*`", "", cell)) and "](" not in cell:
+                loose.append(cell.strip())
+    assert loose == []
+
+
+API_ORDER = re.compile(
+    r"^::: (\S+)\n    options:\n(?:      .*\n)*?      members:\n((?:        - \S+\n)+)",
+    re.MULTILINE,
+)
+"""A ``:::`` directive of an API page with its ``members`` list (the order shown)."""
+
+
+def test_api_pages_list_what_users_call_first_and_miss_nothing() -> None:
+    """The package pages list their members by use (``read`` before ``AlignError``, not the
+    theme's constants first): each list holds the package's ``__all__``, each name once."""
+    import importlib
+
+    lists = {}
+    for page in sorted((DOCS / "api").glob("*.md")):
+        for module, members in API_ORDER.findall(page.read_text()):
+            names = re.findall(r"- (\S+)", members)
+            assert sorted(names) == sorted(importlib.import_module(module).__all__), module
+            lists[module] = names
+    assert {m: names[0] for m, names in lists.items()} == {
+        "veronte4x.capture": "read",
+        "veronte4x.client": "ClientProtocol",
+        "veronte4x.client.bus": "BusClient",
+        "veronte4x.codec": "decode",
+        "veronte4x.simulator": "SimulatedEsc",
+    }
+    client = (DOCS / "api" / "client.md").read_text()
+    assert client.index("::: veronte4x.client.bus") < client.index("::: veronte4x.client\n")

@@ -111,7 +111,7 @@ def _rows(
             offset = _rows(t, f"{name}.", offset, tao and i == last, rows, top)
             continue
         where = "variable" if offset is None else str(offset)
-        dsdl = t.dsdl if not isinstance(t, Union) else f"`{t.name.split('.')[-1]}` union"
+        dsdl = f"`{t.dsdl}`" if not isinstance(t, Union) else f"`{t.name.split('.')[-1]}` union"
         width = max_bits(t, tao and i == last)
         fixed = min_bits(t) == width
         size = str(width) if fixed else f"{min_bits(t) if not (tao and i == last) else 0}..{width}"
@@ -150,7 +150,7 @@ def union_tables() -> str:
             (
                 tag,
                 f"`{m.name}`",
-                m.type.dsdl if not isinstance(m.type, Struct) else "Empty",
+                f"`{m.type.dsdl}`" if not isinstance(m.type, Struct) else "Empty",
                 f"`{m.cls.__name__}`",
             )
             for tag, m in enumerate(union.members)
