@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers import parse_candump
-from veronte4x.capture.readers.candump import CAN_ERR_FLAG, parse_line
+from veronte4x.capture.readers.candump import CAN_ERR_FLAG, log_line, parse_line
 from veronte4x.capture.source import open_frames
 
 ODD = Path(__file__).with_name("data") / "odd.log"
@@ -200,3 +200,54 @@ def test_every_candump_form_with_11_and_29_bit_ids(
     assert list(parse_candump([line + "\n"])) == [expected]
     assert parse_line(line, 1) == expected
     assert list(parse_candump([line], "other")) == []
+
+
+_stamps = st.integers(0, 2**42).map(lambda us: us / 1_000_000)
+_channels = st.sampled_from(["can0", "vcan1", "mcast:0", "slcan0"])
+_written = st.one_of(
+    st.builds(
+        lambda t, c, ext, ident, data: Frame(
+            t, c, ident & (0x1FFFFFFF if ext else 0x7FF), data, ext
+        ),
+        _stamps, _channels, st.booleans(), st.integers(0, 0x1FFFFFFF), st.binary(max_size=8),
+    ),
+    st.builds(
+        lambda t, c, ext, ident, dlc: Frame(
+            t, c, ident & (0x1FFFFFFF if ext else 0x7FF), b"", ext, remote=True, dlc=dlc
+        ),
+        _stamps, _channels, st.booleans(), st.integers(0, 0x1FFFFFFF), st.integers(0, 8),
+    ),
+    st.builds(
+        lambda t, c, ext, ident, data, brs, esi: Frame(
+            t, c, ident & (0x1FFFFFFF if ext else 0x7FF), data, ext, fd=True, brs=brs, esi=esi
+        ),
+        _stamps, _channels, st.booleans(), st.integers(0, 0x1FFFFFFF),
+        st.sampled_from([0, 1, 8, 12, 64]).flatmap(lambda n: st.binary(min_size=n, max_size=n)),
+        st.booleans(), st.booleans(),
+    ),
+    st.builds(
+        lambda t, c, ident, data: Frame(t, c, ident, data, True, error=True),
+        _stamps, _channels, st.integers(0, 0x1FFFFFFF), st.binary(min_size=8, max_size=8),
+    ),
+)  # fmt: skip
+
+
+@given(_written)
+def test_a_written_log_line_reads_back_as_its_frame(frame: Frame) -> None:
+    assert parse_line(log_line(frame), 1) == frame
+
+
+def test_log_lines_as_candump_writes_them() -> None:
+    assert [
+        log_line(Frame(1436509052.249713, "can0", 0xFF, bytes.fromhex("00ff8177ffff"))),
+        log_line(Frame(7.5, "can1", 0x1004D42A, b"\xc0", True)),
+        log_line(Frame(0.0, "can0", 0x123, b"", remote=True, dlc=3)),
+        log_line(Frame(1.0, "can0", 0x123, bytes.fromhex("deadbeef"), fd=True, brs=True)),
+        log_line(Frame(1.0, "can0", 0x80, bytes(8), True, error=True)),
+    ] == [
+        "(1436509052.249713) can0 0FF#00FF8177FFFF",
+        "(0000000007.500000) can1 1004D42A#C0",
+        "(0000000000.000000) can0 123#R3",
+        "(0000000001.000000) can0 123##1DEADBEEF",
+        "(0000000001.000000) can0 20000080#0000000000000000",
+    ]

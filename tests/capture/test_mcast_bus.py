@@ -162,3 +162,25 @@ def test_record_writes_what_pydronecan_plays_from_a_pydronecan_node(tmp_path: Pa
         (stamp, can_id, 42) for stamp, can_id, _, _ in played
     ]
     assert all(isinstance(r.message, NodeStatus) for r in records)
+
+
+def test_record_writes_candump_text_that_python_can_reads(tmp_path: Path) -> None:
+    out = tmp_path / "bus.log"
+    with _peer("104", "publish") as node:
+        assert node.stdout is not None and node.stdout.readline() == "ready\n"
+        recorded = subprocess.run(
+            [sys.executable, "-m", "veronte4x", "record", "-i", "mcast", "-c", "104",
+             "--count", "2", "--to", "candump", str(out)],
+            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
+        )  # fmt: skip
+    assert (recorded.returncode, recorded.stderr) == (
+        0,
+        f"veronte4x: 2 frames in {out}, 0 frames lost by the bus layer\n",
+    )
+    read = [(m.timestamp, m.channel, m.arbitration_id, bytes(m.data)) for m in can.LogReader(out)]
+    records = list(capture.read(out))
+    assert [(r.timestamp, r.channel, r.can_id, r.data) for r in records] == read
+    assert [(r.channel, r.node_id, type(r.message)) for r in records] == [
+        ("mcast:104", 42, NodeStatus),
+        ("mcast:104", 42, NodeStatus),
+    ]

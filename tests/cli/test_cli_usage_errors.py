@@ -192,8 +192,8 @@ def test_play_with_a_channel_map_that_is_not_captured_equals_sent() -> None:
             "--channel 0) or --can-config FILE",
         ),
         (
-            ("--to", "candump", "out.log", "-i", "mcast"),
-            "--to candump: record writes pydronecan",
+            ("--to", "asc", "out.asc", "-i", "mcast"),
+            "--to asc: record writes pydronecan or candump",
         ),
     ],
 )

@@ -22,7 +22,7 @@ COMMANDS = {
     "message type in it",
     "export": "write the bus map's Veronte frames for other tools (DBC)",
     "play": "send a capture's frames onto a CAN bus with their original spacing",
-    "record": "record a live bus's frames into a file (pydronecan's capture file)",
+    "record": "record a live bus's frames into a file (pydronecan's capture file or candump text)",
 }
 ESC_ACTIONS = {
     "nodes": "list the nodes on the bus, from their NodeStatus",

@@ -1,6 +1,7 @@
 """``veronte4x record``: a live bus's frames into a file, as pydronecan's ``fileout:`` driver
-records them (`veronte4x.capture.readers.pydronecan`): pydronecan's ``filein:`` plays it, and
-every command of veronte4x reads it."""
+records them (`veronte4x.capture.readers.pydronecan`), which pydronecan's ``filein:`` plays,
+or as ``candump -L`` text (`veronte4x.capture.readers.candump.log_line`), which can-utils,
+python-can and SavvyCAN read; every command of veronte4x reads either."""
 
 from __future__ import annotations
 
@@ -9,10 +10,12 @@ import contextlib
 import os
 import sys
 import threading
+from collections.abc import Callable
 from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.frames import Frame
+from veronte4x.capture.readers.candump import log_line
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.readers.pydronecan import record
 from veronte4x.cli.exit_codes import EXIT_OK
@@ -21,21 +24,29 @@ from veronte4x.cli.options import UsageError, add_live_options, live, open_frame
 from veronte4x.errors import SourceError
 from veronte4x.words import counted
 
-FORMATS = ("pydronecan",)
-"""What ``--to`` writes."""
+
+def _candump(frame: Frame) -> bytes:
+    return (log_line(frame) + "\n").encode("ascii")
+
+
+WRITERS: dict[str, Callable[[Frame], bytes]] = {"pydronecan": record, "candump": _candump}
+"""What ``--to`` writes, and the bytes of one frame in it (`SourceError` for a frame the
+format cannot hold)."""
 
 
 def add_parser(commands: Any) -> None:
     """Register the command."""
     parser = commands.add_parser(
-        "record", help="record a live bus's frames into a file (pydronecan's capture file)"
+        "record",
+        help="record a live bus's frames into a file (pydronecan's capture file or candump text)",
     )
     parser.add_argument(
         "--to",
         nargs=2,
         required=True,
         metavar=("FORMAT", "FILE"),
-        help="pydronecan and a file: the frames as pydronecan's fileout: driver writes them",
+        help="pydronecan and a file (the frames as pydronecan's fileout: driver writes them) "
+        "or candump and a file (candump -L text)",
     )
     parser.add_argument(
         "--count",
@@ -60,11 +71,12 @@ def _count(text: str) -> int:
 
 def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Write the bus's frames into the file until ``--count``, ``--duration`` or Ctrl-C (each
-    a normal end: exit code 0); the remote and error frames, which the file cannot hold, are
-    left out and counted."""
+    a normal end: exit code 0); the frames the format cannot hold (a pydronecan file's remote
+    and error frames) are left out and counted."""
     format_, out = args.to
-    if format_ not in FORMATS:
-        raise UsageError(f"--to {format_}: record writes {', '.join(FORMATS)}")
+    if format_ not in WRITERS:
+        raise UsageError(f"--to {format_}: record writes {' or '.join(WRITERS)}")
+    write = WRITERS[format_]
     if not live(args):
         raise UsageError(
             "record reads a live bus: give --interface and --channel (e.g. --interface mcast "
@@ -76,12 +88,12 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     try:
         with open(out, "wb") as file, Interrupts() as interrupts:
             for frame in open_frame_source(args, stop, loss):
-                if type(frame) is not Frame or frame.remote or frame.error:
+                if type(frame) is not Frame:
                     left_out += 1
                     continue
                 with interrupts.whole:  # a record is in the file whole, or not at all
                     try:
-                        file.write(record(frame))
+                        file.write(write(frame))
                     except SourceError:
                         left_out += 1
                         continue
@@ -98,7 +110,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         raise
     summary = f"{counted(written, 'frame')} in {out}"
     if left_out:
-        summary += f", {left_out} left out (remote, error or not a CAN frame)"
+        summary += f", {left_out} left out that {format_} cannot hold"
     if lost := loss.text():
         summary += f", {lost}"
     print(f"veronte4x: {summary}", file=sys.stderr)

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 
 from veronte4x.capture.frames import BadLine, Frame, Seconds, micros, text_seconds
 from veronte4x.capture.readers.registry import SNIFF_BYTES
+from veronte4x.errors import SourceError
 
 if TYPE_CHECKING:
     from veronte4x.capture.decoder import CaptureDecoder
@@ -145,6 +146,35 @@ def parse_candump(
             result = parse_line(line, number, parts)
             if isinstance(result, BadLine) or channel is None or result.channel == channel:
                 yield result
+
+
+def log_line(frame: Frame) -> str:
+    """The ``candump -L`` line of a frame (without its newline), as can-utils writes it and
+    `parse_line` reads it back: an error frame's identifier with ``CAN_ERR_FLAG``, in 8
+    digits (so it reads back as extended); a remote frame's DLC where it asks for 1 to 8.
+
+    Raises:
+        SourceError: The frame has no timestamp, one before 1970 or past the year 9999, or
+            a channel that is empty or holds a space.
+    """
+    stamp = None if frame.timestamp is None else micros(frame.timestamp)
+    if stamp is None or stamp < 0:
+        raise SourceError(f"a frame at {frame.timestamp} s: candump text needs a time since 1970")
+    if not frame.channel or any(c.isspace() for c in frame.channel):
+        raise SourceError(f"a frame on channel {frame.channel!r}: candump text needs a name")
+    seconds, fraction = divmod(stamp, 1_000_000)
+    if frame.error:
+        ident = f"{frame.can_id | CAN_ERR_FLAG:08X}"
+    else:
+        ident = f"{frame.can_id:08X}" if frame.extended else f"{frame.can_id:03X}"
+    if frame.remote:
+        body = "R" + (str(frame.dlc) if 0 < frame.dlc <= 8 else "")
+    elif frame.fd:
+        flags = (CANFD_BRS if frame.brs else 0) | (CANFD_ESI if frame.esi else 0)
+        body = f"#{flags:X}{frame.data.hex().upper()}"
+    else:
+        body = frame.data.hex().upper()
+    return f"({seconds:010d}.{fraction:06d}) {frame.channel} {ident}#{body}"
 
 
 def parse_line(line: str, number: int, parts: list[str] | None = None) -> Frame | BadLine:
