@@ -43,3 +43,12 @@ def test_every_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
     assert (tmp_path / "veronte.dbc").exists()
     assert (tmp_path / "installation.dbc").read_text() != (tmp_path / "veronte.dbc").read_text()
     assert (tmp_path / "flight.csv").read_text().startswith('"time",')
+
+
+def test_the_page_says_where_the_files_its_blocks_use_are() -> None:
+    """``--dbc payload.dbc`` is runnable only where the reader finds the file: the page
+    names the one the test above copies, and it is there."""
+    text = PAGE.read_text()
+    assert "`tests/capture/data/payload.dbc`" in text
+    assert text.index("`tests/capture/data/payload.dbc`") < text.index("--dbc payload.dbc")
+    assert (ROOT / "tests/capture/data/payload.dbc").is_file()
