@@ -27,7 +27,7 @@ from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, encode
 from veronte4x.errors import Veronte4xError
 from veronte4x.mcastbus import INTERFACE, McastBus
-from veronte4x.sockets import frame_socket
+from veronte4x.sockets import frame_socket, receive_buffer
 
 __all__ = [
     "RECEIVE_BUFFER",
@@ -118,13 +118,14 @@ def widen_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> None:
     buffer (about 200 kB on Linux) holds some 200 frames and drops the rest, while 8 nodes
     served at once take 300 frames in one burst (38 per 256-byte file read), and each lost
     frame costs a node its request timeout; a full 1 Mbit/s bus sends 8,800 frames a
-    second. `open_bus` calls it on every bus it opens.
+    second. `open_bus` calls it on every bus it opens; the live commands say so where the
+    system gave less (`veronte4x.capture.readers.live.BusLoss`).
     """
     duplicate = frame_socket(bus)
     if duplicate is None:
         return  # no socket behind it (virtual, a vendor library) or no socket to share
     with duplicate, contextlib.suppress(OSError):
-        if duplicate.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF) >= size:
+        if receive_buffer(duplicate) >= size:
             return
         if sys.platform == "linux":
             with contextlib.suppress(OSError):  # not allowed: as far as rmem_max then

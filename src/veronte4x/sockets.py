@@ -13,7 +13,7 @@ import struct
 import sys
 from typing import Any
 
-__all__ = ["SO_MEMINFO", "frame_socket", "kernel_drops"]
+__all__ = ["SO_MEMINFO", "frame_socket", "kernel_drops", "receive_buffer"]
 
 
 def frame_socket(bus: Any) -> socket.socket | None:
@@ -48,3 +48,10 @@ def kernel_drops(frames: socket.socket) -> int | None:
     except OSError:
         return None
     return _MEMINFO.unpack_from(raw)[8] if len(raw) >= _MEMINFO.size else None
+
+
+def receive_buffer(frames: socket.socket) -> int:
+    """Bytes of receive buffer a socket has: ``SO_RCVBUF``, halved on Linux, which reports
+    twice the size set, its bookkeeping included (``man 7 socket``)."""
+    size: int = frames.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF)
+    return size // 2 if sys.platform == "linux" else size

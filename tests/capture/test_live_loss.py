@@ -11,12 +11,14 @@ from __future__ import annotations
 import json
 import os
 import queue
+import shutil
 import signal
 import socket
 import subprocess
 import sys
 import threading
 from collections.abc import Iterator
+from pathlib import Path
 
 import can
 import pytest
@@ -171,3 +173,46 @@ def test_decode_on_a_live_bus_says_every_frame_it_lost(sender: tuple[can.BusABC,
         f"veronte4x: interrupted after {counts}",
     )
     assert process.returncode == (0 if errors.endswith("(skip)\n") else 130)
+
+
+AS_ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
+
+
+def _rmem_max() -> int:
+    limit = Path("/proc/sys/net/core/rmem_max")
+    return int(limit.read_text()) if limit.exists() else 0
+
+
+@linux_only
+@pytest.mark.skipif(
+    not 0 < _rmem_max() < RECEIVE_BUFFER, reason="needs a net.core.rmem_max under 16 MiB"
+)
+@pytest.mark.skipif(AS_ROOT and shutil.which("setpriv") is None, reason="root needs setpriv")
+def test_a_receive_buffer_smaller_than_asked_for_is_said() -> None:
+    """Without CAP_NET_ADMIN the kernel gives a socket at most net.core.rmem_max: every
+    summary says so beside the loss it counts."""
+    port = free_port()
+    drop = ["setpriv", "--bounding-set=-net_admin"] if AS_ROOT else []  # no SO_RCVBUFFORCE
+    command = [*drop, sys.executable, "-m", "veronte4x", "decode", *bus_args(port)]
+    done = subprocess.run(
+        [*command, "--duration", "0.1"], capture_output=True, text=True, timeout=GUARD
+    )
+    given = f"{_rmem_max() / 2**20:.3g} MiB" if _rmem_max() >= 2**20 else None
+    assert done.returncode == 0, done.stderr
+    said = done.stderr.splitlines()[-1]
+    assert said.startswith("veronte4x: 0 records, 0 undecoded, 0 bad, 0 frames lost by the bus ")
+    assert said.endswith(
+        ", not the 16 MiB asked for: the system's limit, net.core.rmem_max on Linux) (skip)"
+    )
+    assert given is None or f"a receive buffer of {given}," in said
+
+
+def test_the_receive_buffer_is_said_only_where_it_is_short() -> None:
+    loss = BusLoss()
+    loss.counted = True
+    assert loss.text() == "0 frames lost by the bus layer"
+    loss.short_buffer = (212_992, RECEIVE_BUFFER)
+    assert loss.text() == (
+        "0 frames lost by the bus layer (a receive buffer of 208 KiB, not the 16 MiB asked "
+        "for: the system's limit, net.core.rmem_max on Linux)"
+    )

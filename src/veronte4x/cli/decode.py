@@ -92,8 +92,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     counts = Stats()
     loss = BusLoss()
     watch = InputWatch(None if live_bus(args) else args.file)
-    records = watch.records(open_records(args, bus_map, loss=loss))
     out = sys.stdout
+    bus = live_bus(args)  # written out whenever no frame is waiting, not once a record
+    records = watch.records(open_records(args, bus_map, loss=loss, idle=out.flush if bus else None))
     clock = _Clock(args.time)
     if args.output == "csv":
         write, close = _csv_writer(out, clock, _csv_columns(args, bus_map))
@@ -101,7 +102,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         write, close = _jsonl_writer(out, clock)
     else:
         write, close = _text_writer(out, clock, _Ids(bus_map))
-    live = args.file == "-" or live_bus(args)
+    piped = args.file == "-" and not bus  # standard input: each record at once
     status = EXIT_OK
     try:
         with Interrupts() as interrupts:
@@ -121,7 +122,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                             status = EXIT_BAD_FRAME
                             break
                     write(record)
-                    if live:
+                    if piped:
                         out.flush()
     except KeyboardInterrupt:
         close()

@@ -7,7 +7,7 @@ import dataclasses
 import sys
 import threading
 import warnings
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
 from veronte4x import capture
@@ -240,11 +240,14 @@ def open_records(
     bus_map: BusMap,
     stop: threading.Event | None = None,
     loss: BusLoss | None = None,
+    idle: Callable[[], object] | None = None,
 ) -> Iterator[Record]:
     """The records of the command's source: the capture file, or the live bus if one is set.
 
     A live bus is read until its ``--duration`` ends, Ctrl-C or ``stop`` is set; ``loss``
-    counts the frames its bus layer dropped meanwhile.
+    counts the frames its bus layer dropped meanwhile; ``idle`` is called whenever the
+    records so far are all handed out and the bus has no frame waiting
+    (`veronte4x.capture.readers.live.read_bus`).
 
     Raises:
         SourceError: Both a file and a bus, or neither.
@@ -254,7 +257,8 @@ def open_records(
         if args.file is None:
             raise SourceError(NO_SOURCE)
         return capture.read(args.file, bus_map, args.only_channel, getattr(args, "dbc", ()))
-    return with_dbc(args, CaptureDecoder(bus_map).decode(open_frame_source(args, stop, loss)))
+    frames = open_frame_source(args, stop, loss, idle)
+    return with_dbc(args, CaptureDecoder(bus_map).decode(frames))
 
 
 def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Record]:
@@ -264,10 +268,14 @@ def with_dbc(args: argparse.Namespace, records: Iterator[Record]) -> Iterator[Re
 
 
 def open_frame_source(
-    args: argparse.Namespace, stop: threading.Event | None = None, loss: BusLoss | None = None
+    args: argparse.Namespace,
+    stop: threading.Event | None = None,
+    loss: BusLoss | None = None,
+    idle: Callable[[], object] | None = None,
 ) -> Iterator[Frame | BadLine]:
     """The frames of the command's source: the capture file, or the live bus if one is set
-    (``loss`` counting the frames its bus layer drops).
+    (``loss`` counting the frames its bus layer drops, ``idle`` called when it has none
+    waiting).
 
     Raises:
         SourceError: Both a file and a bus, or neither.
@@ -278,19 +286,30 @@ def open_frame_source(
         return open_frames(args.file, args.only_channel)
     if args.file not in (None, "-"):
         raise SourceError(f"give a capture file ({args.file}) or --interface, not both")
-    return _live_frames(args, stop, loss)
+    return _live_frames(args, stop, loss, idle)
 
 
 def _live_frames(
-    args: argparse.Namespace, stop: threading.Event | None, loss: BusLoss | None
+    args: argparse.Namespace,
+    stop: threading.Event | None,
+    loss: BusLoss | None,
+    idle: Callable[[], object] | None,
 ) -> Iterator[Frame | BadLine]:
+    from veronte4x.canbus import RECEIVE_BUFFER
     from veronte4x.capture.readers.live import read_bus
     from veronte4x.cli.buses import open_bus
+    from veronte4x.sockets import frame_socket, receive_buffer
 
     bus = open_bus(**bus_settings(args))
     try:
+        duplicate = frame_socket(bus) if loss is not None else None
+        if duplicate is not None:
+            with duplicate:
+                given = receive_buffer(duplicate)
+            if loss is not None and given < RECEIVE_BUFFER:  # open_bus asked for it
+                loss.short_buffer = (given, RECEIVE_BUFFER)
         channel = args.channel or args.interface
-        frames = read_bus(bus, channel, args.duration, stop=stop, loss=loss)
+        frames = read_bus(bus, channel, args.duration, stop=stop, loss=loss, idle=idle)
         only = getattr(args, "only_channel", None)
         yield from frames if only is None else (f for f in frames if f.channel == only)
     finally:
