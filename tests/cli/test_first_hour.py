@@ -355,3 +355,20 @@ def test_another_bus_without_python_can_names_the_can_extra(command: list[str], 
         "",
         f"veronte4x: {needs} needs the 'can' package: pip install 'veronte4x[can]'\n",
     )
+
+
+@pytest.mark.parametrize(
+    "command",
+    [["--to", "csv", "no/out.csv", "--every", "1s"], ["--to", "pydronecan", "no/out.log"]],
+)
+def test_convert_into_a_missing_directory_is_refused_before_reading(
+    command: list[str], tmp_path: Path
+) -> None:
+    """Before any frame is read (the capture does not even exist): the file is written last,
+    and its temporary file's name was all the error said."""
+    result = _run("convert", *command, "missing.log", cwd=tmp_path)
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == (
+        f"veronte4x: --to {command[1]} {command[2]}: no directory no; create it first\n"
+    )
+    assert list(tmp_path.iterdir()) == []

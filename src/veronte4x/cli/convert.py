@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 from typing import Any
 
 from veronte4x import capture
@@ -12,6 +13,7 @@ from veronte4x.cli import aligned, pydronecan_out
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
 from veronte4x.cli.notices import tell
 from veronte4x.cli.options import add_capture_options, add_renamed_option
+from veronte4x.errors import SourceError
 from veronte4x.extras import require
 from veronte4x.times import TIME_FORMS
 
@@ -72,6 +74,10 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
             file=sys.stderr,
         )
         return EXIT_USAGE
+    if format_ in ("csv", "pydronecan") and not Path(out_dir).resolve().parent.is_dir():
+        # before any capture is read: the file is written last (a temporary file beside it)
+        parent = Path(out_dir).parent
+        raise SourceError(f"--to {format_} {out_dir}: no directory {parent}; create it first")
     if format_ == "csv":
         return aligned.run_csv(args, bus_map, out_dir)
     if format_ == "pydronecan":
