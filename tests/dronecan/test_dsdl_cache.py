@@ -341,3 +341,27 @@ def test_the_command_line_says_in_one_line_that_the_cache_cannot_be_written(
     assert done.returncode == 0, done.stderr
     [line] = [line for line in done.stderr.splitlines() if "warning" in line.lower()]
     assert line.startswith(f"veronte4x: warning: cannot write the DSDL cache in {blocked}")
+
+
+def test_a_load_read_from_the_cache_warns_of_its_overrides_as_the_first(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    heading = root / "gnss" / "20002.Heading.uavcan"
+    heading.write_text(heading.read_text().replace("heading_rad", "heading_raX"))
+    found = []
+    for _ in range(2):
+        with pytest.warns(typeset.DsdlOverrideWarning) as caught:
+            types = TypeSet.shipped().with_dsdl(root)
+        found.append([str(w.message) for w in caught])
+        assert "heading_raX" in {
+            f.name for f in dataclasses.fields(types["ardupilot.gnss.Heading"])
+        }
+        _no_compiling(monkeypatch)
+    assert (
+        found[0]
+        == found[1]
+        == [
+            f"ardupilot.gnss.Heading: {heading} replaces "
+            f"{DSDL_ROOT / 'ardupilot' / 'gnss' / '20002.Heading.uavcan'}"
+        ]
+    )
