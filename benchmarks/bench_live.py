@@ -292,8 +292,8 @@ def stages(capture: Path, count: int, work: Path) -> list[tuple[str, float]]:
         for record in records:
             counts.add(record)
             write(record)
-            out.flush()
-        per_frame("decode: count, write text, flush", started)
+        out.flush()
+        per_frame("decode: count, write text", started)
     state = MonitorState()
     started = time.process_time()
     for record in records:
@@ -307,12 +307,12 @@ def stages(capture: Path, count: int, work: Path) -> list[tuple[str, float]]:
         write, _ = decode._text_writer(out, decode._Clock("timestamp"), decode._Ids(BusMap()))
         counts = Stats()
         started = time.process_time()
-        stream = read_bus(bus, duration=600.0)
+        stream = read_bus(bus, duration=600.0, idle=out.flush)  # as decode writes out
         taken = itertools.islice(stream, count)
         for record in CaptureDecoder().decode(taken):
             counts.add(record)
             write(record)
-            out.flush()
+        out.flush()
         stream.close()
         per_frame("decode's stages in one pipeline, frame by frame (tables built)", started)
     return rows
@@ -330,7 +330,10 @@ def main() -> None:
     )
     args = parser.parse_args()
     frames = int(args.seconds * args.rate)
-    print(f"Python {platform.python_version()}, {os.cpu_count()} CPUs, load {load()}")
+    print(
+        f"{time.strftime('%Y-%m-%d %H:%M', time.gmtime())} UTC, Python "
+        f"{platform.python_version()}, {os.cpu_count()} CPUs, {args.busy} busy, load {load()}"
+    )
     with tempfile.TemporaryDirectory(prefix="bench-live-") as tmp:
         work = Path(tmp)
         capture = args.capture or work / "full_bus.log"
@@ -353,9 +356,10 @@ def main() -> None:
         for reader in args.readers:
             run = run_reader(reader, capture, args.seconds, work, args.busy)
             per_read = run.cpu / max(1, frames - run.lost_proc) * 1e6
+            said = "not said" if run.lost_said is None else f"{run.lost_said:,}"
             print(
                 f"| {reader} | {run.loads[0]}; {run.loads[1]} | {run.raw:,} | {run.records:,} "
-                f"| {run.lost_said} | {run.lost_proc} | {per_read:.1f} µs "
+                f"| {said} ({run.lost_proc / frames:.1%}) | {run.lost_proc:,} | {per_read:.1f} µs "
                 f"| {run.play_said.removeprefix('veronte4x: ')} |",
                 flush=True,
             )
