@@ -26,6 +26,7 @@ from tests.plain_data import same
 
 from veronte4x import dronecan as v4
 from veronte4x.dronecan import TypeSet, dsdl_cache, generate
+from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.dronecan.vendor_roots import DSDL_ROOT
 from veronte4x.errors import DecodeError
 
@@ -350,7 +351,7 @@ def test_a_load_read_from_the_cache_warns_of_its_overrides_as_the_first(
     heading.write_text(heading.read_text().replace("heading_rad", "heading_raX"))
     found = []
     for _ in range(2):
-        with pytest.warns(typeset.DsdlOverrideWarning) as caught:
+        with pytest.warns(DsdlOverrideWarning) as caught:
             types = TypeSet.shipped().with_dsdl(root)
         found.append([str(w.message) for w in caught])
         assert "heading_raX" in {
