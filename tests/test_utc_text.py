@@ -14,7 +14,7 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 
 from veronte4x.capture.frames import Seconds
-from veronte4x.times import END_MICROS, FIRST_MICROS, utc_text, whole_micros
+from veronte4x.times import END_MICROS, FIRST_MICROS, format_time, utc_text, whole_micros
 
 EPOCH = datetime(1970, 1, 1, tzinfo=timezone.utc)
 FIRST, END = FIRST_MICROS / 1e6, END_MICROS / 1e6
@@ -86,3 +86,12 @@ def test_examples() -> None:
     assert utc_text(Seconds(END, END_MICROS - 1)) == "9999-12-31T23:59:59.999999Z"
     with pytest.raises(OverflowError):
         utc_text(END)
+
+
+def test_a_time_with_no_iso_form_is_seconds() -> None:
+    """Past the year 9999 (or not finite) text gives the seconds, as JSON lines and CSV do:
+    ``decode`` and ``stats`` of such a log gave a traceback."""
+    assert format_time(3e11) == "300000000000.000000"
+    assert format_time(math.inf) == "inf"
+    assert format_time(math.nan) == "nan"
+    assert format_time(Seconds(END, END_MICROS - 1)) == "9999-12-31T23:59:59.999999Z"

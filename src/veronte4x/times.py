@@ -35,7 +35,8 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
 
     Returns:
         ``-`` without a time; seconds since `start` with microseconds when given; else
-        ISO 8601 in UTC for Unix time (see `EPOCH_THRESHOLD`) and seconds otherwise.
+        ISO 8601 in UTC for Unix time (see `EPOCH_THRESHOLD`) and seconds otherwise (a
+        capture's own clock, a time past the year 9999).
 
     Examples:
         >>> format_time(1763737200.01)
@@ -49,7 +50,10 @@ def format_time(seconds: float | None, start: float | None = None) -> str:
         return f"{relative_seconds(seconds, start):.6f}"
     if seconds < EPOCH_THRESHOLD:
         return f"{seconds:.6f}"
-    return utc_text(seconds)
+    try:
+        return utc_text(seconds)
+    except (OverflowError, ValueError):  # past the year 9999, or not finite: no ISO 8601
+        return f"{seconds:.6f}"
 
 
 def relative_seconds(seconds: float, start: float) -> float:
