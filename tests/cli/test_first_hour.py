@@ -372,3 +372,19 @@ def test_convert_into_a_missing_directory_is_refused_before_reading(
         f"veronte4x: --to {command[1]} {command[2]}: no directory no; create it first\n"
     )
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_broken_toml_file_is_named_by_every_command_that_reads_one(tmp_path: Path) -> None:
+    broken = tmp_path / "broken.toml"
+    broken.write_text("x = [\n")
+    result = _run("stats", str(CAPTURE), "--bus-map", str(broken))
+    assert (result.returncode, result.stdout, result.stderr) == (
+        2,
+        "",
+        f"veronte4x: {broken}: not a TOML file: Invalid value (at end of document); fix the "
+        "bus map (see 'The bus map' in the captures docs)\n",
+    )
+    result = _run("replay", str(CAPTURE), "--config", str(broken))
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr.startswith(f"veronte4x: {broken}: not TOML: Invalid value"), result.stderr
+    assert result.stderr.count("\n") == 1

@@ -237,7 +237,10 @@ class BusMap:
             try:
                 document = tomllib.load(file)
             except tomllib.TOMLDecodeError as error:
-                raise BusMapError(f"{os.fspath(path)}: {error}") from None
+                raise BusMapError(
+                    f"{os.fspath(path)}: not a TOML file: {error}; fix the bus map (see 'The "
+                    "bus map' in the captures docs)"
+                ) from None
             except UnicodeDecodeError as error:
                 raise BusMapError(
                     f"{os.fspath(path)}: not UTF-8 text (byte {error.start}): save the bus "
