@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib
 import os
 import sys
 import warnings
@@ -24,20 +25,6 @@ from typing import Any, TextIO, cast
 
 from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
-from veronte4x.cli import (
-    convert,
-    decode,
-    esc,
-    export,
-    monitor,
-    play,
-    plot,
-    record,
-    replay,
-    simulate,
-    stats,
-)
-from veronte4x.cli import list as list_command
 from veronte4x.cli.buses import require_bus_packages
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from veronte4x.cli.options import (
@@ -54,20 +41,22 @@ from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.errors import SourceError
 
 COMMANDS = (
-    decode,
-    stats,
-    replay,
-    monitor,
-    plot,
-    list_command,
-    esc,
-    simulate,
-    convert,
-    export,
-    play,
-    record,
+    "decode",
+    "stats",
+    "replay",
+    "monitor",
+    "plot",
+    "list",
+    "esc",
+    "simulate",
+    "convert",
+    "export",
+    "play",
+    "record",
 )
-"""The command modules, in the order ``--help`` lists them."""
+"""The commands, in the order ``--help`` lists them: each the module of its name in this
+package, with an ``add_parser`` function. A command line that names one imports that one
+only (``esc`` alone loads the ESC client), any other all of them."""
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -101,7 +90,7 @@ def _notes(shown: Callable[..., None]) -> Callable[..., None]:
 
 def _run(argv: Sequence[str] | None) -> int:
     try:
-        parser = _parser()
+        parser = _parser(sys.argv[1:] if argv is None else argv)
         args = parser.parse_args(argv)
         check_bus_spelling(args)
         if hasattr(args, "interface") and live(args):
@@ -166,15 +155,17 @@ class _StandardOutput:
             raise type(error)(error.errno, error.strerror, "standard output") from None
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
+    """The parser of a command line: every command's, or the one ``argv`` starts with."""
     parser = argparse.ArgumentParser(
         prog="veronte4x",
         description="Decode Veronte 4x and Vertiq DroneCAN traffic from CAN captures.",
     )
     parser.add_argument("--version", action=_Version, help="show the version and exit")
     commands = parser.add_subparsers(required=True, metavar="COMMAND")
-    for command in COMMANDS:
-        command.add_parser(commands)
+    named = [argv[0]] if argv and argv[0] in COMMANDS else COMMANDS
+    for command in named:
+        importlib.import_module(f"veronte4x.cli.{command}").add_parser(commands)
     return parser
 
 
