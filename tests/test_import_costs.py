@@ -154,3 +154,29 @@ def test_the_dsdl_compiler_loads_for_user_dsdl_only(tmp_path: Path) -> None:
         "veronte4x decode": set(),
         "load_dsdl": DSDL_COMPILER,
     }
+
+
+def test_a_command_imports_its_own_module_only() -> None:
+    others = frozenset({"veronte4x.cli.esc", "veronte4x.cli.simulate", "veronte4x.client"})
+    decode = (
+        "import contextlib, io; from veronte4x.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    main(['decode', {str(CAPTURE)!r}])"
+    )
+    found = heavy_after([("veronte4x decode", decode)], others | {"veronte4x.cli.decode"})
+    assert found == {"veronte4x decode": {"veronte4x.cli.decode"}}
+
+
+def test_the_capture_package_loads_the_arbiter_for_a_replay_only() -> None:
+    config = str(ROOT / "examples" / "arbiter.toml")
+    found = heavy_after(
+        [
+            ("import", "import veronte4x.capture"),
+            (
+                "replay",
+                f"from veronte4x import capture; capture.replay({str(CAPTURE)!r}, {config!r})",
+            ),
+        ],
+        frozenset({"veronte4x.arbiter"}),
+    )
+    assert found == {"import": set(), "replay": {"veronte4x.arbiter"}}

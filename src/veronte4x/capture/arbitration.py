@@ -10,13 +10,14 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING
 
-from veronte4x.arbiter.config import ArbiterConfig
-from veronte4x.arbiter.config_file import load_config
-from veronte4x.arbiter.replay import CapturedFrame, ReplayResult
-from veronte4x.arbiter.replay import replay as replay_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.source import open_frames
+
+if TYPE_CHECKING:  # the arbiter loads when a replay runs, not with veronte4x.capture
+    from veronte4x.arbiter.config import ArbiterConfig
+    from veronte4x.arbiter.replay import CapturedFrame, ReplayResult
 
 __all__ = ["captured_frames", "replay"]
 
@@ -56,6 +57,10 @@ def replay(
         >>> switch.utc.isoformat()
         '2025-11-21T15:00:00.028000+00:00'
     """
+    from veronte4x.arbiter.config import ArbiterConfig
+    from veronte4x.arbiter.config_file import load_config
+    from veronte4x.arbiter.replay import replay as replay_frames
+
     if not isinstance(config, ArbiterConfig):
         config = load_config(config)
     if isinstance(source, (str, os.PathLike)):
