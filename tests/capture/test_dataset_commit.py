@@ -127,21 +127,34 @@ def leftovers(out: Path) -> list[Path]:
     return [p for p in out.rglob("*") if p.name.startswith((".", "_"))]
 
 
-@pytest.fixture
-def flights(tmp_path: Path) -> tuple[Path, Path, Path]:
-    """Two captures (the example flight under two names) and a dataset holding one."""
-    flight, other, out = tmp_path / "flight.log", tmp_path / "other.log", tmp_path / "data"
-    shutil.copy(FLIGHT, flight)
+@pytest.fixture(scope="module")
+def datasets(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path, Path, Path]:
+    """Made once a module (each test copies what it starts from): two captures (the example
+    flight under two names, never written after), a dataset holding ``other``, and one
+    holding ``other`` and the flight's first lines under the flight's name (the version a
+    run replaces), each made by ``veronte4x convert`` as the tests' own runs are."""
+    base = tmp_path_factory.mktemp("commit")
+    flight, other, new, replace = (
+        base / "flight.log", base / "other.log", base / "new", base / "replace"
+    )  # fmt: skip
     shutil.copy(FLIGHT, other)
-    assert convert(str(other), "--to", "parquet", str(out)).returncode == 0
-    return flight, other, out
-
-
-def _earlier(flight: Path, out: Path) -> None:
-    """Convert the flight's first lines under its name: the version a run replaces."""
+    assert convert(str(other), "--to", "parquet", str(new)).returncode == 0
+    shutil.copytree(new, replace)
     flight.write_text("".join(LINES[:12]))
-    assert convert(str(flight), "--to", "parquet", str(out)).returncode == 0
+    assert convert(str(flight), "--to", "parquet", str(replace)).returncode == 0
     shutil.copy(FLIGHT, flight)
+    return flight, other, new, replace
+
+
+def _start(
+    datasets: tuple[Path, Path, Path, Path], tmp_path: Path, replace: bool = False
+) -> tuple[Path, Path, Path]:
+    """The flight, the other capture and this test's own copy of a dataset holding the
+    other capture, and the flight's earlier version when ``replace``."""
+    flight, other, new, earlier = datasets
+    out = tmp_path / "data"
+    shutil.copytree(earlier if replace else new, out)
+    return flight, other, out
 
 
 def test_the_versions_differ_in_tables_and_rows() -> None:
@@ -153,11 +166,10 @@ def test_the_versions_differ_in_tables_and_rows() -> None:
 
 @pytest.mark.parametrize(("rename", "replace", "stage"), CASES, ids=IDS)
 def test_a_kill_at_any_stage_leaves_readers_all_or_none(
-    flights: tuple[Path, Path, Path], rename: str, replace: bool, stage: str
+    datasets: tuple[Path, Path, Path, Path], tmp_path: Path, rename: str, replace: bool, stage: str
 ) -> None:
-    flight, other, out = flights
+    flight, other, out = _start(datasets, tmp_path, replace)
     if replace:
-        _earlier(flight, out)
         assert visible(out, flight) == OLD
     before = OLD if replace else {}
     stop = stages(rename, replace).index(stage) + 1
@@ -182,11 +194,9 @@ def test_a_kill_at_any_stage_leaves_readers_all_or_none(
 
 @pytest.mark.parametrize(("rename", "replace", "stage"), CASES, ids=IDS)
 def test_a_file_system_error_at_any_stage_is_one_line_and_leaves_no_temporary_file(
-    flights: tuple[Path, Path, Path], rename: str, replace: bool, stage: str
+    datasets: tuple[Path, Path, Path, Path], tmp_path: Path, rename: str, replace: bool, stage: str
 ) -> None:
-    flight, other, out = flights
-    if replace:
-        _earlier(flight, out)
+    flight, other, out = _start(datasets, tmp_path, replace)
     stop = stages(rename, replace).index(stage) + 1
     failed = convert(
         str(flight), "--to", "parquet", str(out), stop=stop, action="error", rename=rename
@@ -248,9 +258,11 @@ def test_which_names_each_reader_skips(tmp_path: Path, prefix: str) -> None:
     assert pl.scan_parquet(glob).select(pl.len()).collect().item() == 2 * rows
 
 
-def test_a_real_file_system_error_is_one_line(flights: tuple[Path, Path, Path]) -> None:
+def test_a_real_file_system_error_is_one_line(
+    datasets: tuple[Path, Path, Path, Path], tmp_path: Path
+) -> None:
     """No hook: the dataset's directory is a file."""
-    flight, _, out = flights
+    flight, _, out = _start(datasets, tmp_path)
     shutil.rmtree(out)
     out.write_bytes(b"not a directory")
     failed = convert(str(flight), "--to", "parquet", str(out))
