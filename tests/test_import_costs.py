@@ -180,3 +180,11 @@ def test_the_capture_package_loads_the_arbiter_for_a_replay_only() -> None:
         frozenset({"veronte4x.arbiter"}),
     )
     assert found == {"import": set(), "replay": {"veronte4x.arbiter"}}
+
+
+def test_a_file_a_built_in_format_recognises_scans_no_installed_package() -> None:
+    """The readers of other packages (entry points) come after the built-in ones: a file
+    that one of these claims and recognises is read without importlib.metadata."""
+    read = f"from veronte4x import capture; list(capture.read({str(CAPTURE)!r}))"
+    found = heavy_after([("capture.read", read)], frozenset({"importlib.metadata"}))
+    assert found == {"capture.read": set()}
