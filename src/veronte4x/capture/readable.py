@@ -89,6 +89,8 @@ def _format(message: Any, top: str, prefix: str) -> str:
         kind = type(value)
         if kind is int or kind is bool:  # most fields: as `_scalar` shows them, sooner
             text = f"{value}{symbol}"
+        elif kind is float:
+            text = f"{shown(owner, attr, value)}{symbol}"
         elif kind is tuple:
             text = "(" + ", ".join(_item(owner, attr, item, top, prefix) for item in value) + ")"
         elif is_message(value):
@@ -117,6 +119,8 @@ def _item(owner: type, attr: str, item: Any, top: str, prefix: str) -> str:
     kind = type(item)
     if kind is int or kind is bool:
         return str(item)
+    if kind is float:
+        return str(shown(owner, attr, item))
     if is_message(item):  # an array of structs or unions
         return _format(item, top, f"{prefix}{attr}.")
     return _scalar(owner, attr, item)
