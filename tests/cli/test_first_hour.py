@@ -388,3 +388,20 @@ def test_a_broken_toml_file_is_named_by_every_command_that_reads_one(tmp_path: P
     assert (result.returncode, result.stdout) == (2, "")
     assert result.stderr.startswith(f"veronte4x: {broken}: not TOML: Invalid value"), result.stderr
     assert result.stderr.count("\n") == 1
+
+
+def test_stats_and_plot_with_a_channel_the_capture_does_not_have_say_which_it_has(
+    tmp_path: Path,
+) -> None:
+    hint = (
+        f"veronte4x: no frame of {CAPTURE} is on channel can9: its channels are can0; give one "
+        "of them to --only-channel, or leave it out"
+    )
+    result = _run("stats", str(CAPTURE), "--only-channel", "can9")
+    assert (result.returncode, result.stderr) == (0, hint + "\n")
+    assert result.stdout.startswith("records: 0, undecoded: 0, errors: 0\n")
+    assert _run("stats", str(CAPTURE), "--only-channel", "can0").stderr == ""
+    result = _run("plot", str(CAPTURE), "--only-channel", "can9", "--output", "p.png", cwd=tmp_path)
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == hint.replace("veronte4x: ", "veronte4x: nothing to plot: ") + "\n"
+    assert list(tmp_path.iterdir()) == []

@@ -9,7 +9,7 @@ from typing import Any
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.cli.exit_codes import EXIT_OK, EXIT_USAGE
-from veronte4x.cli.notices import InputWatch
+from veronte4x.cli.notices import InputWatch, channel_hint
 from veronte4x.cli.options import add_capture_options, add_renamed_option, open_records
 from veronte4x.errors import SourceError
 from veronte4x.extras import require
@@ -52,14 +52,18 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
 
         nodes = esc_series(records)
         if not nodes:
-            return _nothing(watch, name, "no ESC status or temperature of a DroneCAN node")
+            return _nothing(
+                watch, name, "no ESC status or temperature of a DroneCAN node", args.only_channel
+            )
         figure = draw_esc_telemetry(nodes)
     else:
         from veronte4x.capture.plot import draw_timeline, timeline
 
         data = timeline(records)
         if data.empty:
-            return _nothing(watch, name, "no Score or Status frame of the arbiter")
+            return _nothing(
+                watch, name, "no Score or Status frame of the arbiter", args.only_channel
+            )
         figure = draw_timeline(data)
     if output:
         figure.savefig(output)
@@ -100,9 +104,12 @@ def _output_path(name: str, matplotlib: Any) -> str:
     return str(path)
 
 
-def _nothing(watch: InputWatch, name: str, what: str) -> int:
+def _nothing(watch: InputWatch, name: str, what: str, channel: str | None) -> int:
     """Say there is nothing to plot, and why; return the exit code."""
-    if not watch.frames:
+    hint = channel_hint(watch.path, channel, watch.frames)
+    if hint is not None:
+        reason = hint
+    elif not watch.frames:
         reason = f"{name} holds no CAN frame"
     else:
         other = "arbitration" if what.startswith("no ESC") else "esc"

@@ -10,7 +10,7 @@ from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.readers.live import BusLoss
 from veronte4x.cli import rates
 from veronte4x.cli.exit_codes import EXIT_OK
-from veronte4x.cli.notices import InputWatch, tell
+from veronte4x.cli.notices import InputWatch, channel_hint, tell
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 
 
@@ -36,7 +36,8 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     print(capture.stats(watch.records(records)).report())
     if tracker is not None:
         print(rates.report(tracker))
-    for note in (loss.text(), watch.note()):
+    hint = channel_hint(watch.path, args.only_channel, watch.frames)
+    for note in (loss.text(), watch.note(), hint):
         if note:
             tell(note)
     return EXIT_OK
