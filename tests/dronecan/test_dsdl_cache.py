@@ -25,9 +25,10 @@ import pytest
 from tests.plain_data import same
 
 from veronte4x import dronecan as v4
-from veronte4x.dronecan import TypeSet, dsdl_cache, generate
+from veronte4x.dronecan import TypeSet, compiled_load, dsdl_cache, generate, typeset
+from veronte4x.dronecan.parser import parse_namespaces
 from veronte4x.dronecan.typeset import DsdlOverrideWarning
-from veronte4x.dronecan.vendor_roots import DSDL_ROOT
+from veronte4x.dronecan.vendor_roots import DSDL_ROOT, SHIPPED
 from veronte4x.errors import DecodeError
 
 
@@ -54,7 +55,7 @@ def _no_compiling(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def _manifests(cache: Path) -> list[Path]:
-    return sorted(cache.glob("*.manifest"))
+    return sorted(cache.glob("load-*.manifest"))
 
 
 def _entry(cache: Path) -> Path:
@@ -156,11 +157,11 @@ def test_the_key_covers_every_file_the_roots_and_veronte4x(root: Path) -> None:
     key = dsdl_cache.load_key((), [root])
     assert key is not None and key == dsdl_cache.load_key((), [root])
     other = dsdl_cache.load_key(((root,),), [root.parent])
-    assert other is not None and other.partition("-")[0] != key.partition("-")[0]
+    assert other is not None and other.rpartition("-")[0] != key.rpartition("-")[0]
     (root / "gnss" / "20099.New.uavcan").write_text("uint8 x\n")
     changed = dsdl_cache.load_key((), [root])
     assert changed is not None and changed != key
-    assert changed.partition("-")[0] == key.partition("-")[0]  # the same roots
+    assert changed.rpartition("-")[0] == key.rpartition("-")[0]  # the same roots
     assert len(dsdl_cache.source_digest()) == 32
 
 
@@ -366,3 +367,18 @@ def test_a_load_read_from_the_cache_warns_of_its_overrides_as_the_first(
             f"{DSDL_ROOT / 'ardupilot' / 'gnss' / '20002.Heading.uavcan'}"
         ]
     )
+
+
+def test_the_shipped_definitions_are_parsed_once_and_read_back_equal(
+    cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    roots = [DSDL_ROOT / "uavcan", *(DSDL_ROOT / name for name in SHIPPED)]
+    parsed = parse_namespaces(roots)
+    assert compiled_load.definitions_of(compiled_load.definitions_data(parsed)) == parsed
+    assert typeset._parse_shipped(roots)() == parsed  # parsed, and written
+
+    def refuse(*args: Any, **kwargs: Any) -> None:
+        raise AssertionError("parsed the shipped DSDL instead of reading the cache")
+
+    monkeypatch.setattr(typeset, "parse_namespaces", refuse)
+    assert typeset._parse_shipped(roots)() == parsed

@@ -38,6 +38,15 @@ from veronte4x.dronecan.fast_base import (
     tail_table,
 )
 from veronte4x.dronecan.frame import TransferFrame
+from veronte4x.dronecan.parser import (
+    ArrayType,
+    Attribute,
+    Constant,
+    Definition,
+    FieldType,
+    PrimitiveType,
+    Section,
+)
 from veronte4x.dronecan.schema import Array, DataType, Member, Scalar, Struct, StructField, Union
 from veronte4x.dronecan.serializer import enum_table
 
@@ -273,3 +282,78 @@ class _EntryCodec(TypeCodec):
         exec(code, namespace)  # code of an entry this package wrote (`dsdl_cache.read`)
         frame = namespace["decode_frame"] if single else None
         return FastPaths(namespace["frames"], namespace["payload"], namespace["decode"], frame)
+
+
+def definitions_data(definitions: Mapping[str, Definition]) -> tuple[Any, ...]:
+    """Parsed definitions as entry data (`definitions_of` makes them again): the shipped
+    ones, which every first load of a user's root is checked and named against."""
+
+    def field_type(t: FieldType) -> Any:
+        if isinstance(t, str):
+            return t
+        if isinstance(t, ArrayType):
+            return ("array", field_type(t.item), t.max_size, t.dynamic)
+        return ("primitive", t.kind, t.bits, t.cast)
+
+    return tuple(
+        (
+            d.full_name,
+            d.default_id,
+            d.service,
+            tuple(
+                (
+                    tuple((a.name, field_type(a.type), a.line, a.comment) for a in s.fields),
+                    tuple(
+                        (c.name, field_type(c.type), c.value, c.line, c.comment)
+                        for c in s.constants
+                    ),
+                    s.union,
+                    s.doc,
+                )
+                for s in d.sections
+            ),
+            d.path,
+            d.doc,
+            d.override_signature,
+        )
+        for d in definitions.values()
+    )
+
+
+def definitions_of(data: tuple[Any, ...]) -> dict[str, Definition]:
+    """The definitions of `definitions_data`, equal to those it was given."""
+
+    def field_type(t: Any) -> FieldType:
+        if isinstance(t, str):
+            return t
+        if t[0] == "array":
+            item = field_type(t[1])
+            assert not isinstance(item, ArrayType)
+            return ArrayType(item, t[2], t[3])
+        return PrimitiveType(t[1], t[2], t[3])
+
+    def primitive(t: Any) -> PrimitiveType:
+        found = field_type(t)
+        assert isinstance(found, PrimitiveType)
+        return found
+
+    return {
+        full_name: Definition(
+            full_name,
+            default_id,
+            service,
+            [
+                Section(
+                    [Attribute(n, field_type(t), line, note) for n, t, line, note in fields],
+                    [Constant(n, primitive(t), v, line, note) for n, t, v, line, note in constants],
+                    union,
+                    doc,
+                )
+                for fields, constants, union, doc in sections
+            ],
+            path,
+            doc_text,
+            override,
+        )
+        for full_name, default_id, service, sections, path, doc_text, override in data
+    }

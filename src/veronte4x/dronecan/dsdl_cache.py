@@ -103,11 +103,15 @@ def source_digest() -> bytes:
     return digest.digest()
 
 
-def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[str | Path, bytes]]) -> str:
+def key(
+    loads: Iterable[Iterable[Path]], files: Iterable[tuple[str | Path, bytes]], what: str = "load"
+) -> str:
     """The key of a load: ``loads`` the root namespace directories of the set and then the
-    new ones, ``files`` the path and bytes of every DSDL file under them. It starts with a
-    hash of the roots alone, shared by every key of the same roots (`write` keeps one)."""
-    roots = b"".join(
+    new ones, ``files`` the path and bytes of every DSDL file under them; ``what`` the kind
+    of entry (``load``, or ``definitions``: the parsed definitions of the roots alone). It
+    is ``what``, a hash of the roots alone (shared by every key of the same roots and kind:
+    `write` keeps one) and the hash of everything, joined by ``-``."""
+    roots = what.encode() + b"".join(
         b"\1" + "\0".join(str(root) for root in load).encode("utf-8", "surrogateescape")
         for load in loads
     )
@@ -120,12 +124,14 @@ def key(loads: Iterable[Iterable[Path]], files: Iterable[tuple[str | Path, bytes
         name = str(path).encode("utf-8", "surrogateescape")
         digest.update(b"\2%d\0%s%d\0" % (len(name), name, len(data)))
         digest.update(data)
-    return f"{hashlib.sha256(roots).hexdigest()[:16]}-{digest.hexdigest()}"
+    return f"{what}-{hashlib.sha256(roots).hexdigest()[:16]}-{digest.hexdigest()}"
 
 
-def load_key(loads: Iterable[Iterable[Path]], new: Iterable[Path]) -> str | None:
-    """The `key` of loading the roots ``new`` into a set of ``loads``, or None where a file
-    cannot be read (the load itself then says what is wrong)."""
+def load_key(
+    loads: Iterable[Iterable[Path]], new: Iterable[Path], what: str = "load"
+) -> str | None:
+    """The `key` of loading the roots ``new`` into a set of ``loads`` (of ``what``), or None
+    where a file cannot be read (the load itself then says what is wrong)."""
     everything = (*(tuple(load) for load in loads), tuple(new))
     files = []
     try:
@@ -134,7 +140,7 @@ def load_key(loads: Iterable[Iterable[Path]], new: Iterable[Path]) -> str | None
                 files.append((path, file.read()))
     except OSError:
         return None
-    return key(everything, files)
+    return key(everything, files, what)
 
 
 def _files(roots: Iterable[Path]) -> list[str]:
@@ -226,7 +232,7 @@ def write(folder: Path, entry_key: str, entry: dict[str, Any]) -> None:
 def _prune(folder: Path, entry_key: str, digest: str) -> None:
     """Remove the entries of the same roots under other keys (a file changed since, another
     veronte4x): one entry per set of roots."""
-    roots = entry_key.partition("-")[0]
+    roots = entry_key.rpartition("-")[0]
     for other in folder.glob(f"{roots}-*.manifest"):
         if other.stem == entry_key:
             continue

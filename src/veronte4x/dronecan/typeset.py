@@ -422,12 +422,22 @@ def _load(loads: tuple[tuple[str, ...], ...]) -> TypeSet:
     return types
 
 
-def _parse_shipped(roots: Iterable[Path]) -> Callable[[], dict[str, Definition]]:
-    """What parses the definitions of a set generated ahead of time, when asked for."""
+def _parse_shipped(roots: list[Path]) -> Callable[[], dict[str, Definition]]:
+    """What parses the definitions of a set generated ahead of time, when asked for (kept
+    in the disk cache, `veronte4x.dronecan.dsdl_cache`: every first load of a user's root
+    is checked and named against them)."""
 
     def parse() -> dict[str, Definition]:
+        folder = dsdl_cache.directory()
+        found = None if folder is None else dsdl_cache.load_key((), roots, "definitions")
+        data = None if folder is None or found is None else dsdl_cache.read(folder, found)
+        if data is not None:
+            return compiled_load.definitions_of(data["definitions"])
         definitions = parse_namespaces(roots)
         check_references(definitions)
+        if folder is not None and found is not None:
+            entry = {"definitions": compiled_load.definitions_data(definitions)}
+            dsdl_cache.write(folder, found, entry)
         return definitions
 
     return parse
