@@ -21,8 +21,9 @@ average (1 minute) before and after it. The sections:
   package's own ``ardupilot`` tree as a user's namespace, against ``import dronecan``;
 - ``user DSDL``: a copy of the shipped ``ardupilot`` tree (14 types) as a user's root,
   loaded into the standard set by ``TypeSet.with_dsdl`` and each type's fast paths used
-  once: the first run (an empty cache directory each time), the next (read from the disk
-  cache, `veronte4x.dronecan.dsdl_cache`) and without the cache (``VERONTE4X_CACHE_DIR=off``),
+  once: the first run (an empty cache directory each time; then one that has seen another
+  tree, so holds the parsed shipped definitions), the next (read from the disk cache,
+  `veronte4x.dronecan.dsdl_cache`) and without the cache (``VERONTE4X_CACHE_DIR=off``),
   against the `dronecan` package parsing the same tree; the time in the process after the
   import (what the cache saves) and the whole process;
 - ``first transfer``: in a fresh process, one transfer of each type of the default set
@@ -364,9 +365,18 @@ def user_dsdl(folder: Path, runs: int) -> None:
     load_it = child("user_dsdl", root)
     environ = {**os.environ, "VERONTE4X_CACHE_DIR": warm}
     subprocess.run(load_it, env=environ, check=True, capture_output=True)
+    seeded = folder / "seeded"  # a cache that has only seen another tree
+    other = child("user_dsdl", str(ROOT / "examples" / "dsdl" / "com"))
+    environ = {**os.environ, "VERONTE4X_CACHE_DIR": str(seeded)}
+    subprocess.run(other, env=environ, check=True, capture_output=True)
+
+    def seeded_copy(n: int) -> str:
+        return str(shutil.copytree(seeded, folder / f"seeded-{n}"))
+
     # Each run: the command, and its VERONTE4X_CACHE_DIR (a new empty one for a first run).
     runs_of: dict[str, tuple[Command, Callable[[int], str]]] = {
         "veronte4x, first run (empty cache)": (load_it, lambda n: str(folder / f"cold-{n}")),
+        "veronte4x, first run of this tree (the cache has seen another)": (load_it, seeded_copy),
         "veronte4x, from the cache": (load_it, lambda n: warm),
         "veronte4x, no cache (VERONTE4X_CACHE_DIR=off)": (load_it, lambda n: "off"),
         "dronecan package: parse the tree (after import dronecan)": (
