@@ -382,3 +382,13 @@ def test_the_shipped_definitions_are_parsed_once_and_read_back_equal(
 
     monkeypatch.setattr(typeset, "parse_namespaces", refuse)
     assert typeset._parse_shipped(roots)() == parsed
+
+
+def test_without_veronte4x_source_files_nothing_is_cached(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A package with no source to hash (run from a zip) would reuse another version's."""
+    monkeypatch.setattr(dsdl_cache, "source_digest", lambda: b"")
+    assert dsdl_cache.load_key((), [root]) is None
+    assert "ardupilot.gnss.Heading" in TypeSet.standard().with_dsdl(root)
+    assert not cache.exists()

@@ -19,6 +19,9 @@ parsing and compiling again.
   A key starts with a hash of the roots alone: writing an entry removes those of the same
   roots under other keys, so the cache holds one entry per set of roots (delete the
   directory to clear it).
+- Kinds: ``load``, what `with_dsdl` made of some roots added to a set; ``definitions``,
+  the parsed shipped definitions every first load of a user's root is named and checked
+  against. A key reads ``<kind>-<hash of the roots>-<hash of everything>``.
 - Files: ``<key>.manifest`` names the SHA-256 of the entry's bytes;
   ``<sha256>.entry`` holds them. Both are written to a temporary file and moved in place
   (`os.replace`), so two processes filling the cache at once each leave a whole file, and
@@ -94,13 +97,15 @@ def directory(environ: Mapping[str, str] | None = None, platform: str | None = N
 def source_digest() -> bytes:
     """The SHA-256 of the modules of ``veronte4x`` and ``veronte4x.dronecan`` (those that
     generate and run the code of an entry, and the generated standard and vendor modules
-    it builds on): any change to veronte4x that could change an entry changes it."""
+    it builds on): any change to veronte4x that could change an entry changes it. Empty
+    where the package is no directory of source files (a zip): no key then."""
+    paths = sorted([*_PACKAGE.glob("*.py"), *_PACKAGE.glob("dronecan/*.py")])
     digest = hashlib.sha256()
-    for path in sorted([*_PACKAGE.glob("*.py"), *_PACKAGE.glob("dronecan/*.py")]):
+    for path in paths:
         data = path.read_bytes()
         digest.update(f"{path.relative_to(_PACKAGE).as_posix()}\0{len(data)}\0".encode())
         digest.update(data)
-    return digest.digest()
+    return digest.digest() if paths else b""
 
 
 def key(
@@ -133,6 +138,8 @@ def load_key(
     """The `key` of loading the roots ``new`` into a set of ``loads`` (of ``what``), or None
     where a file cannot be read (the load itself then says what is wrong)."""
     everything = (*(tuple(load) for load in loads), tuple(new))
+    if not source_digest():
+        return None
     files = []
     try:
         for path in _files(root for load in everything for root in load):
