@@ -57,9 +57,12 @@ CALLS: dict[str, set[str]] = {
     },
     "from veronte4x import capture; from veronte4x.capture.plot import arbitration_timeline; "
     "arbitration_timeline(capture.read('capture.log'))": {"matplotlib"},
+    "from veronte4x import capture; from veronte4x.capture.esc_plot import esc_telemetry; "
+    "esc_telemetry(capture.read('capture.log'))": {"matplotlib"},
     "from veronte4x import capture; list(capture.read('capture.log', dbc=['one.dbc']))": {
         "cantools"
     },
+    "from veronte4x import capture; list(capture.read('one.mf4'))": {"can", "asammdf"},
     "from veronte4x import canbus; canbus.open_bus(interface='virtual').shutdown()": {"can"},
     "from veronte4x.client.bus import BusClient": {"can"},
     "from veronte4x.cli.buses import open_bus; open_bus(interface='udp_multicast', "
@@ -135,10 +138,14 @@ def _results(environment: str, directory: str) -> dict[str, dict[str, list[str]]
 
 @pytest.fixture(scope="module")
 def workdir(tmp_path_factory: pytest.TempPathFactory) -> str:
-    """A directory with a capture and a DBC file, where each probe runs."""
+    """A directory with a capture, an MF4 file and a DBC file, where each probe runs."""
     directory = tmp_path_factory.mktemp("extras")
     shutil.copy(ROOT / "examples" / "capture.log", directory)
     (directory / "one.dbc").write_text(DBC)
+    import can
+
+    with can.Logger(str(directory / "one.mf4")) as logger:  # python-can writes it with asammdf
+        logger(can.Message(timestamp=1.0, arbitration_id=8, is_extended_id=False, data=b"\0"))
     return str(directory)
 
 

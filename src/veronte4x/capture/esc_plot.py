@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from veronte4x.capture.records import Record
 from veronte4x.dronecan.messages import EscStatus, Temperature
+from veronte4x.extras import require
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -53,17 +54,25 @@ def esc_series(records: Iterable[Record]) -> dict[int, _Series]:
 
 
 def esc_telemetry(records: Iterable[Record]) -> Figure:
-    """Draw speed, current, voltage and temperatures of every ESC; return the figure."""
+    """Draw speed, current, voltage and temperatures of every ESC; return the figure.
+
+    Raises:
+        MissingExtraError: matplotlib (the ``plot`` extra) is not installed.
+    """
     return draw_esc_telemetry(esc_series(records))
 
 
 def draw_esc_telemetry(nodes: dict[int, _Series]) -> Figure:
-    """Draw the series `esc_series` gathers; return the figure."""
-    from matplotlib.figure import Figure
+    """Draw the series `esc_series` gathers; return the figure.
+
+    Raises:
+        MissingExtraError: matplotlib (the ``plot`` extra) is not installed.
+    """
+    figure_module = require("matplotlib.figure", "plot", "plotting")
 
     from veronte4x.capture.plot import legend_outside, time_axis
 
-    figure = Figure(figsize=(10, 8), layout="constrained")
+    figure: Figure = figure_module.Figure(figsize=(10, 8), layout="constrained")
     speed, current, voltage, heat = figure.subplots(4, 1, sharex=True)
     starts = [t[0] for s in nodes.values() for t in (s.times, s.mcu_times) if t]
     origin, label = time_axis(min(starts, default=None))

@@ -60,13 +60,18 @@ def read_with_python_can(
     with a `Truncation`, as does a BLF file shorter than its header says.
 
     Raises:
-        MissingExtraError: python-can is not installed (raised by the call).
+        MissingExtraError: python-can is not installed, or for an MF4 file asammdf (the
+            ``mf4`` extra brings both; raised by the call).
         SourceError: The file is damaged or not in the format of its suffix (raised by the
             call, or by the stream before its first frame).
         FileNotFoundError: The file does not exist.
     """
     name = os.fspath(path)
-    can = require("can", "can", f"reading {name}")
+    if os.path.splitext(name.lower())[1] == ".mf4":  # python-can reads MF4 with asammdf
+        can = require("can", "mf4", f"reading {name}")
+        require("asammdf", "mf4", f"reading {name}")
+    else:
+        can = require("can", "can", f"reading {name}")
     with quiet_parsers():
         try:
             # ASC: times from the file's date (and triggerblock) line, as ASCReader gives
