@@ -172,6 +172,7 @@ def test_readme_python_gives_what_its_comments_say(
     """The first block decodes ``Ready(ready=True)``; the second gives the demo flight's
     Status frames as a DataFrame, row for row those that `capture.read` decodes."""
     from veronte4x import capture, codec
+    from veronte4x.codec.layouts import AUTOPILOTS
 
     monkeypatch.chdir(demo)
     first, second = _blocks("python")
@@ -189,6 +190,7 @@ def test_readme_python_gives_what_its_comments_say(
     ]
     assert len(expected) > 100
     assert status["selected"].tolist() == expected
+    assert status["selected_name"].astype(str).tolist() == [AUTOPILOTS[i] for i in expected]
 
 
 def test_make_demo_installs_the_bench_and_the_notebook() -> None:
