@@ -157,3 +157,24 @@ def test_a_29_bit_id_below_0x800_keeps_its_8_digits_in_every_output(tmp_path: Pa
     wide, narrow = capture.read(log, capture.BusMap(dronecan=False))
     assert "<td>0000007F</td>" in wide._repr_html_()
     assert "<td>07F</td>" in narrow._repr_html_()
+
+
+def test_json_lines_and_csv_give_the_autopilots_name_beside_its_index(tmp_path: Path) -> None:
+    """As the tables do (``selected_name`` beside ``selected``): 1 is AP2, not AP1."""
+    log = tmp_path / "arbiter.log"
+    log.write_text(
+        "(1763737200.002115) can0 0FF#00FF8177FFFF\n(1763737200.002345) can0 0FF#0001224FB13C\n",
+        encoding="ascii",
+    )
+    result = _run("decode", str(log), "--output", "jsonl")
+    assert result.returncode == 0, result.stderr
+    rows = [json.loads(line) for line in result.stdout.splitlines()]
+    assert [(r["message"], r.get("selected"), r.get("selected_name")) for r in rows] == [
+        ("Status", 1, "AP2"),
+        ("Score", None, None),
+    ]
+    assert (rows[1]["autopilot"], rows[1]["autopilot_name"]) == (1, "AP2")
+    result = _run("decode", str(log), "--output", "csv")
+    assert result.returncode == 0, result.stderr
+    [row, *_] = csv.DictReader(io.StringIO(result.stdout))
+    assert (row["selected"], row["selected_name"]) == ("1", "AP2")

@@ -52,6 +52,7 @@ from veronte4x.times import (
     relative_seconds,
     utc_text,
 )
+from veronte4x.values import name_of
 from veronte4x.words import counted
 
 HEAD_COLUMNS = ("timestamp", "channel", "can_id", "sender", "message", "error", "detail", "data")
@@ -239,9 +240,13 @@ def _row(record: Record, clock: _Clock) -> dict[str, Any]:
         "sender": record.sender,
     }
     if record.message is not None:
-        row["message"] = type(record.message).__name__
+        owner = type(record.message)
+        named = getattr(owner, "_NAMED_FIELDS_", None)  # selected_name beside selected
+        row["message"] = owner.__name__
         for name, value in readable_fields(record.message).items():
             row[f"message.{name}" if name in HEAD_COLUMNS else name] = value
+            if named and name in named and (text := name_of(owner, name, value)) is not None:
+                row[f"{name}_name"] = text
     else:
         row["message"] = None
         if record.error is not None:
