@@ -168,8 +168,11 @@ class _Clock:
             if self.start is None:
                 self.start = stamp
             return relative_seconds(stamp, self.start)
-        if EPOCH_THRESHOLD <= stamp < _LAST_ISO:
-            return utc_text(stamp)
+        if stamp >= EPOCH_THRESHOLD:
+            try:
+                return utc_text(stamp)
+            except OverflowError:  # past the year 9999: no ISO 8601 form, so seconds
+                pass
         return exact(stamp)
 
     def text(self, stamp: float | None) -> str:
@@ -181,11 +184,6 @@ class _Clock:
         if self.form == "relative" and self.start is None:
             self.start = stamp
         return format_time(stamp, self.start if self.form == "relative" else None)
-
-
-_LAST_ISO = 253_402_300_800.0
-"""10000-01-01 UTC in seconds: from here on a time has no ISO 8601 form, and is written as
-seconds (and the tables have no value for it)."""
 
 
 class _Ids:
