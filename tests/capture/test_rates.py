@@ -230,5 +230,5 @@ def test_monitor_rates_after_its_table(tmp_path: Path) -> None:
     )
     assert done.returncode == 0
     lines = done.stdout.splitlines()
-    assert "  can0 AP1 008 Ready: 1 at -, jitter -, longest gap 0 ms" in lines
+    assert "  can0 AP1 008 Ready: 1 at -, jitter -, longest gap -" in lines
     assert lines[-1] == "  can0: 39 frames, 6.51 % of 125 kbit/s (detected: the lowest that fits)"

@@ -150,8 +150,8 @@ def test_a_29_bit_id_below_0x800_keeps_its_8_digits_in_every_output(tmp_path: Pa
     assert (result.returncode, result.stderr) == (0, "")
     rates = result.stdout.split("rates:\n")[1].splitlines()[:2]
     assert rates == [
-        "  can0 0000007F: 1 at -, jitter -, longest gap 0 ms",
-        "  can0 07F: 1 at -, jitter -, longest gap 0 ms",
+        "  can0 0000007F: 1 at -, jitter -, longest gap -",
+        "  can0 07F: 1 at -, jitter -, longest gap -",
     ]
 
     wide, narrow = capture.read(log, capture.BusMap(dronecan=False))

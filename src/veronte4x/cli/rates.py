@@ -81,9 +81,10 @@ def report(rates: RateTracker, now: float | None = None) -> str:
     for s in rates.streams(now):
         flags = f"  {', '.join(s.flags)}" if s.flags else ""
         gaps = f", {counted(s.gaps, 'gap')}" if s.gaps else ""
+        longest = _duration(s.longest_gap) if s.count > 1 else "-"  # one frame: no period
         lines.append(
             f"  {s.channel or '-'} {s.label}: {s.count} at {_hz(s.rate)}, jitter "
-            f"{_duration(s.jitter)}, longest gap {_duration(s.longest_gap)}{gaps}{flags}"
+            f"{_duration(s.jitter)}, longest gap {longest}{gaps}{flags}"
         )
     lines.append("bus load (worst-case bit stuffing):")
     for load in rates.load():
