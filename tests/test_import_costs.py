@@ -157,7 +157,9 @@ def test_the_dsdl_compiler_loads_for_user_dsdl_only(tmp_path: Path) -> None:
 
 
 def test_a_command_imports_its_own_module_only() -> None:
-    others = frozenset({"veronte4x.cli.esc", "veronte4x.cli.simulate", "veronte4x.client"})
+    others = frozenset(
+        {"veronte4x.cli.esc", "veronte4x.cli.simulate", "veronte4x.client", "veronte4x.arbiter"}
+    )
     decode = (
         "import contextlib, io; from veronte4x.cli import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"

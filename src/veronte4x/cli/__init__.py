@@ -23,7 +23,6 @@ import warnings
 from collections.abc import Callable, Sequence
 from typing import Any, TextIO, cast
 
-from veronte4x.arbiter.errors import ConfigError
 from veronte4x.capture.busmap import BusMap, BusMapError
 from veronte4x.cli.buses import require_bus_packages
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
@@ -112,8 +111,17 @@ def _run(argv: Sequence[str] | None) -> int:
         return EXIT_OK
     except OSError as error:
         return _fail(_os_error(error), EXIT_USAGE)
-    except (SourceError, UsageError, BusMapError, ConfigError, DsdlError, ImportError) as error:
+    except _usage_errors() as error:
         return _fail(str(error), EXIT_USAGE)
+
+
+def _usage_errors() -> tuple[type[Exception], ...]:
+    """The errors a command line's user fixes (exit 2, one line), with the arbiter's
+    `ConfigError` where a command loaded the arbiter (none is raised before): a command
+    without it does not import it to name the error."""
+    found = (SourceError, UsageError, BusMapError, DsdlError, ImportError)
+    arbiter = sys.modules.get("veronte4x.arbiter.errors")
+    return found if arbiter is None else (*found, arbiter.ConfigError)
 
 
 def _fail(message: str, code: int) -> int:
