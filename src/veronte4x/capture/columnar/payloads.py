@@ -68,6 +68,9 @@ def integer_dtype(t: Scalar) -> np.dtype[Any]:
 _WHOLE: dict[int, np.dtype[Any]] = {16: np.dtype("<u2"), 32: np.dtype("<u4"), 64: np.dtype("<u8")}
 """Scalars of whole bytes, which the stream holds as little-endian bytes."""
 
+_WORD_BITS = 49
+"""The widest run of stream bits one read of `_Reader.words` holds wherever it starts."""
+
 
 class _Reader:
     """The payloads of one type's transfers, one after the other in ``payload``.
@@ -77,9 +80,16 @@ class _Reader:
     """
 
     def __init__(self, payload: npt.NDArray[np.uint8], starts: Ints, sizes: Ints) -> None:
-        self.octets = np.concatenate([payload, np.zeros(8, np.uint8)])
-        self.buffer = self.octets.astype(np.int64)
-        self.limit = len(self.buffer) - 8
+        self.octets = np.concatenate([payload, np.zeros(16, np.uint8)])
+        self.limit = len(payload)
+        # The 7 bytes from each byte on as one big-endian integer (read as the 8 from
+        # there, every eighth at once): any run of up to `_WORD_BITS` stream bits is one
+        # gather, a shift and a mask.
+        words = np.empty(self.limit + 1, np.uint64)
+        for k in range(8):
+            count = len(words[k::8])
+            words[k::8] = self.octets[k : k + 8 * count].view(">u8")
+        self.words: Ints = (words >> np.uint64(8)).view(np.int64)
         self.end = 8 * (starts + sizes)
         self.bad = np.zeros(len(starts), np.bool_)
 
@@ -90,10 +100,10 @@ class _Reader:
             self.bad[row[over]] = True
 
     def bits(self, pos: Ints, width: int) -> Ints:
-        """``width`` (at most 8) stream bits at each ``pos``, unchecked."""
-        byte = np.minimum(pos >> 3, self.limit)
-        word = self.buffer[byte] << 8 | self.buffer[byte + 1]
-        value: Ints = (word >> (16 - width - (pos & 7))) & ((1 << width) - 1)
+        """``width`` (at most `_WORD_BITS`) stream bits at each ``pos`` as one integer, the
+        first bit the highest, unchecked."""
+        word = self.words[np.minimum(pos >> 3, self.limit)]
+        value: Ints = (word >> (56 - width - (pos & 7))) & ((1 << width) - 1)
         return value
 
     def raw(self, row: Ints, pos: Ints, width: int) -> npt.NDArray[np.uint64]:
@@ -107,6 +117,12 @@ class _Reader:
             octets = self.octets[byte[:, None] + np.arange(full)]
             whole: npt.NDArray[np.uint64] = octets.view(_WHOLE[width])[:, 0].astype(np.uint64)
             return whole
+        if width <= _WORD_BITS:  # one read, its bytes then put in v0 order
+            stream = self.bits(pos, width)
+            ordered = (stream & ((1 << rest) - 1)) << (8 * full)
+            for k in range(full):
+                ordered |= ((stream >> (width - 8 * k - 8)) & 0xFF) << (8 * k)
+            return ordered.astype(np.uint64)
         value = np.zeros(len(pos), np.uint64)
         for k in range(full):
             value |= self.bits(pos + 8 * k, 8).astype(np.uint64) << np.uint64(8 * k)
