@@ -495,9 +495,20 @@ def scalar_type(t: Scalar) -> pa.DataType:
     return integer_type(t.low, t.high)
 
 
+_ENUM_NAMES: weakref.WeakKeyDictionary[type, dict[int, tuple[str, ...]]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
 def enum_names(enum: type, bits: int) -> tuple[str, ...]:
-    """The name of every wire value of an enum field: the member's, or the number."""
-    return tuple(str(getattr(v, "name", None) or int(v)) for v in enum_table(enum, bits))
+    """The name of every wire value of an enum field: the member's, or the number (made
+    once per enum and width: the column-wise decoders ask for them per batch)."""
+    known = _ENUM_NAMES.setdefault(enum, {})
+    found = known.get(bits)
+    if found is None:
+        table = enum_table(enum, bits)
+        found = known[bits] = tuple(str(getattr(v, "name", None) or int(v)) for v in table)
+    return found
 
 
 def enum_type(names: tuple[str, ...]) -> pa.DataType:
