@@ -194,13 +194,18 @@ class _Reader:
     def array(self, t: Array, row: Ints, pos: Ints, tao: bool) -> tuple[pa.Array, Ints]:
         """An array's values (an Arrow list, or binary for uint8 items) over a group."""
         item = t.item
-        if not isinstance(item, Scalar) and tao and uses_tao(t):
+        size = item.bits if isinstance(item, Scalar) else min_bits(item)
+        tail = tao and uses_tao(t)
+        one_size = isinstance(item, Scalar) or (
+            size and size == max_bits(item) and not _tail_array(item)
+        )
+        if tail and not one_size:
+            assert not isinstance(item, Scalar)
             return self.tail_structs(t, item, row, pos)
-        if tao and uses_tao(t):
-            assert isinstance(item, Scalar)
+        if tail:  # items of one size: as many as begin a whole byte or more before the end
             remaining = self.end[row] - pos
-            count = np.where(remaining >= 8, (remaining - 8) // item.bits + 1, 0)
-            self.check(row, pos + count * item.bits)
+            count = np.where(remaining >= 8, (remaining - 8) // size + 1, 0)
+            self.check(row, pos + count * size)
         elif t.dynamic:
             count = self.raw(row, pos, t.prefix_bits).astype(np.int64)
             pos = pos + t.prefix_bits
@@ -258,8 +263,8 @@ class _Reader:
     def tail_structs(
         self, t: Array, item: Struct | Union, row: Ints, pos: Ints
     ) -> tuple[pa.Array, Ints]:
-        """An array of structs or unions under the tail array optimisation: items while a
-        whole byte remains, one item index at a time."""
+        """An array of structs or unions of more than one size under the tail array
+        optimisation: items while a whole byte remains, one item index at a time."""
         pos = pos.copy()
         count = np.zeros(len(row), np.int64)
         going = np.ones(len(row), np.bool_)
@@ -341,11 +346,13 @@ def _members(t: Union, value: UnionValue, size: int) -> list[pa.Array]:
 def _ordered(
     item: Struct | Union, pieces: list[pa.Array], places: list[Ints], size: int
 ) -> pa.Array:
-    """Items decoded in pieces, put at their places."""
+    """Items decoded in pieces, put at their places (the places of all ``size`` items)."""
     if not pieces:
         return pa.array([], value_type(item))
     joined = pa.concat_arrays(pieces)
     where = np.concatenate(places)
+    if (where[1:] > where[:-1]).all():  # in order already (one piece, say): no take
+        return joined
     order = np.empty(size, np.int64)
     order[where] = np.arange(size)
     return joined.take(pa.array(order))
