@@ -153,3 +153,16 @@ def test_generated_captures_with_the_shapes_agree(data: st.DataObject) -> None:
         expected = capture.tables_from_records(capture.read(path, BUS_MAP), BUS_MAP)
         got = capture.read_tables(path, BUS_MAP)
     assert_same_tables(got, expected)
+
+
+def test_an_enum_inside_an_empty_array_of_structs_keeps_its_names(tmp_path: Path) -> None:
+    """Transfers whose array of structs is empty in every row still give the enum field
+    its whole dictionary (the wire value is the index), so that a batch of them and a
+    batch with items combine (Arrow refused to unify an empty dictionary with 256 names)."""
+    empty = dronecan.encode(dronecan.ArrayCommand(()), source_node_id=10, transfer_id=0)
+    lines = [f"(1.{i:06d}) can0 {f.can_id:08X}#{f.data.hex().upper()}" for i, f in enumerate(empty)]
+    got = capture.read_tables(write(tmp_path / "empty.log", lines))
+    column = got["ArrayCommand"].column("commands")
+    command_type = column.combine_chunks().flatten().field("command_type")
+    assert len(command_type.dictionary) == 256
+    assert command_type.dictionary[:2].to_pylist() == ["UNITLESS", "POSITION"]

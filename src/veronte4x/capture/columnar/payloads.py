@@ -27,6 +27,7 @@ import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.columnar.schema import (
+    arrow_values,
     enum_array,
     field_enum_names,
     scalar_type,
@@ -347,8 +348,8 @@ def _ordered(
     item: Struct | Union, pieces: list[pa.Array], places: list[Ints], size: int
 ) -> pa.Array:
     """Items decoded in pieces, put at their places (the places of all ``size`` items)."""
-    if not pieces:
-        return pa.array([], value_type(item))
+    if not pieces:  # with the enums' whole dictionaries, as every other piece has them
+        return arrow_values(item, [])
     joined = pa.concat_arrays(pieces)
     where = np.concatenate(places)
     if (where[1:] > where[:-1]).all():  # in order already (one piece, say): no take
