@@ -1,10 +1,17 @@
-"""The reassembler against an oracle that knows which transfers arrived intact.
+"""The strict reassembler (``strict=True``) against an oracle that knows which transfers
+arrived intact.
 
-The rule: every transfer whose frames all arrive, once, in order and uncorrupted, with no
-other frame of its session in between and within the transfer-ID timeout, is delivered,
-unless it repeats the transfer id delivered last in its session within the timeout.
+The strict rule: every transfer whose frames all arrive, once, in order and uncorrupted,
+with no other frame of its session in between and within the transfer-ID timeout, is
+delivered, unless it repeats the transfer id delivered last in its session within the
+timeout.
 Streams interleave messages and service transfers of many sessions, with drops,
 duplicates, swaps and bit flips per frame, and gaps in time that time sessions out.
+
+The default acceptance is libcanard's, which can splice a repeated start frame's transfer
+onto the continuation of an earlier one with the same transfer ID (its toggle check drops
+the second start frame); it is checked against libcanard's own output in
+test_dronecan_libcanard_acceptance.py, not against this rule.
 """
 
 from __future__ import annotations
@@ -176,7 +183,7 @@ def test_every_intact_transfer_is_delivered(
     scenario: tuple[list[Sent], list[OnWire], list[float]],
 ) -> None:
     sent, wire, times = scenario
-    r = dronecan.Reassembler()
+    r = dronecan.Reassembler(strict=True)
     results = [r.feed(f.can_id, f.data, t) for f, t in zip(wire, times, strict=True)]
     intact = _intact(sent, wire, times)
     first: dict[int, int] = {}
