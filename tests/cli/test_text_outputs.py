@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from veronte4x import capture
+from veronte4x.capture.monitor import MonitorState, render_text
 
 # (1763737200.0000005) has seven decimals: the reader keeps its microseconds beside the
 # float (capture.frames.Seconds), rounded half to even to ...200.000000.
@@ -157,6 +158,12 @@ def test_a_29_bit_id_below_0x800_keeps_its_8_digits_in_every_output(tmp_path: Pa
     wide, narrow = capture.read(log, capture.BusMap(dronecan=False))
     assert "<td>0000007F</td>" in wide._repr_html_()
     assert "<td>07F</td>" in narrow._repr_html_()
+
+    state = MonitorState()
+    for record in (wide, narrow):
+        state.add(record)
+    table = render_text(state, "", None).splitlines()[3:]
+    assert [line.split()[-5] for line in table] == ["07F", "0000007F"]
 
 
 def test_json_lines_and_csv_give_the_autopilots_name_beside_its_index(tmp_path: Path) -> None:

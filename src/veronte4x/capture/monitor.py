@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.rates import STOP_PERIODS, Stream
 from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, shown
-from veronte4x.capture.records import Record
+from veronte4x.capture.records import Record, extended_id
 from veronte4x.codec import Score, Status
 from veronte4x.words import counted
 
@@ -103,6 +103,8 @@ class Row:
         longest_gap: Longest period, in seconds.
         flags: ``stopped`` (silent for more than 3 periods), ``slow`` (its recent rate
             under half its usual one); see `veronte4x.capture.rates`.
+        extended: Whether ``can_id`` is a 29-bit ID (`veronte4x.capture.records.extended_id`),
+            shown with 8 hex digits as candump shows it.
     """
 
     sender: str
@@ -118,11 +120,13 @@ class Row:
     jitter: float = math.nan
     longest_gap: float = 0.0
     flags: tuple[str, ...] = ()
+    extended: bool = False
 
 
 @dataclass
 class _Entry:
     can_id: int
+    extended: bool
     count: int = 0
     errors: int = 0
     latest: object = None  # the latest message, or undecoded traffic's bytes; None: none yet
@@ -176,6 +180,8 @@ class MonitorState:
         rates: Show each row's timing (period, jitter, longest gap, flags) in the table.
         loss: What the bus layer of a live bus dropped, for the summary (kept up to date
             by its reader, `veronte4x.capture.readers.live.read_bus`).
+        veronte_extended: Whether the bus map's Veronte IDs are 29-bit
+            (`veronte4x.capture.BusMap.extended`), for the rows' CAN IDs.
 
     Examples:
         >>> from veronte4x import capture
@@ -187,9 +193,14 @@ class MonitorState:
     """
 
     def __init__(
-        self, rate_window: float = RATE_WINDOW, rates: bool = False, loss: BusLoss | None = None
+        self,
+        rate_window: float = RATE_WINDOW,
+        rates: bool = False,
+        loss: BusLoss | None = None,
+        veronte_extended: bool = False,
     ) -> None:
         self.rate_window = rate_window
+        self.veronte_extended = veronte_extended
         self.rates = rates
         self.loss = loss
         self.records = 0
@@ -216,7 +227,7 @@ class MonitorState:
             key = self._by_id.get(
                 (sender, channel, record.can_id), (sender, f"error: {record.error}", channel)
             )
-            entry = self._rows.setdefault(key, _Entry(record.can_id))
+            entry = self._entry(key, record)
             entry.errors += 1
             return
         message = record.message
@@ -224,9 +235,11 @@ class MonitorState:
             key = (sender, record.detail or "undecoded", channel)
         else:
             key = (sender, type(message).__name__, channel)
-        entry = self._rows.setdefault(key, _Entry(record.can_id))
+        entry = self._entry(key, record)
         self._by_id[(sender, channel, record.can_id)] = key
-        entry.can_id = record.can_id
+        if entry.can_id != record.can_id:
+            entry.can_id = record.can_id
+            entry.extended = extended_id(record, self.veronte_extended)
         entry.count += 1
         entry.latest = record.data if message is None else message  # shown by `rows`
         entry.last_seen = stamp
@@ -241,6 +254,14 @@ class MonitorState:
             self._status = message
         elif isinstance(message, Score):
             self._scores[message.autopilot] = message.score
+
+    def _entry(self, key: tuple[str, str, str], record: Record) -> _Entry:
+        """The row of ``key``, made for ``record`` if it is the first."""
+        entry = self._rows.get(key)
+        if entry is None:
+            extended = extended_id(record, self.veronte_extended)
+            entry = self._rows[key] = _Entry(record.can_id, extended)
+        return entry
 
     @property
     def arbiter(self) -> ArbiterView:
@@ -275,6 +296,7 @@ class MonitorState:
                     e.timing.jitter(),
                     e.timing.longest,
                     () if now is None else e.timing.flags(now),
+                    e.extended,
                 )
             )
         return rows
@@ -340,8 +362,9 @@ def render_text(state: MonitorState, text_filter: str = "", now: float | None = 
     )
     for r, texts in zip(rows, timing, strict=True):
         columns = _cells(texts, widths)
+        can_id = can_id_text(r.can_id, r.extended)
         line = (
-            f"{r.sender:<{sender_width}}  {r.kind:<{kind_width}}  {can_id_text(r.can_id):>8}  "
+            f"{r.sender:<{sender_width}}  {r.kind:<{kind_width}}  {can_id:>8}  "
             f"{r.count:>7}  {rate_text(r.rate):>7}  {columns}{r.errors:>6}  {r.fields}"
         )
         lines.append(line.rstrip())

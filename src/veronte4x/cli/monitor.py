@@ -169,7 +169,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
     if sys.stdout.isatty():
         require("rich", "monitor", "veronte4x monitor on a terminal")
-    state = MonitorState(rates=args.rates, loss=BusLoss())
+    state = MonitorState(rates=args.rates, loss=BusLoss(), veronte_extended=bus_map.extended)
     reader = _Reader(args, bus_map, state)
     reader.start()
     status = EXIT_OK
@@ -297,7 +297,7 @@ def _wide_table(rows: list[Row], timing: bool, several: bool, one_line: bool) ->
         table.add_row(
             f"{r.sender} {r.channel}" if several else r.sender,
             r.kind,
-            can_id_text(r.can_id),
+            can_id_text(r.can_id, r.extended),
             str(r.count),
             rate_text(r.rate),
             *(_timing_cells(r) if timing else ()),
@@ -321,7 +321,7 @@ def _narrow_table(
         return (
             f"{r.sender} {r.channel}" if several else r.sender,
             r.kind if len(r.kind) <= TYPE_WIDTH else r.kind[: TYPE_WIDTH - 1] + "…",
-            can_id_text(r.can_id),
+            can_id_text(r.can_id, r.extended),
             str(r.count),
             rate_text(r.rate),
             str(r.errors),
