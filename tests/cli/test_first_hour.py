@@ -390,7 +390,7 @@ def test_a_broken_toml_file_is_named_by_every_command_that_reads_one(tmp_path: P
     assert result.stderr.count("\n") == 1
 
 
-def test_stats_and_plot_with_a_channel_the_capture_does_not_have_say_which_it_has(
+def test_stats_plot_and_monitor_with_a_channel_the_capture_lacks_say_which_it_has(
     tmp_path: Path,
 ) -> None:
     hint = (
@@ -405,3 +405,5 @@ def test_stats_and_plot_with_a_channel_the_capture_does_not_have_say_which_it_ha
     assert (result.returncode, result.stdout) == (2, "")
     assert result.stderr == hint.replace("veronte4x: ", "veronte4x: nothing to plot: ") + "\n"
     assert list(tmp_path.iterdir()) == []
+    result = _run("monitor", str(CAPTURE), "--only-channel", "can9")
+    assert (result.returncode, result.stderr) == (0, "veronte4x: 0 records, 0 bad\n" + hint + "\n")

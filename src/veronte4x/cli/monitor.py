@@ -48,7 +48,7 @@ from veronte4x.capture.readers.live import BusLoss
 from veronte4x.capture.records import Record
 from veronte4x.cli import play, rates
 from veronte4x.cli.exit_codes import EXIT_INTERRUPTED, EXIT_OK
-from veronte4x.cli.notices import InputWatch
+from veronte4x.cli.notices import InputWatch, channel_hint
 from veronte4x.cli.options import add_capture_options, add_live_options, live, open_records
 from veronte4x.extras import require
 
@@ -196,6 +196,9 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
         f"veronte4x: {interrupted}{state.summary()}" + (f"; {note}" if note else ""),
         file=sys.stderr,
     )
+    hint = channel_hint(reader.watch.path, args.only_channel, reader.watch.frames)
+    if hint is not None:
+        print(f"veronte4x: {hint}", file=sys.stderr)
     return status
 
 
