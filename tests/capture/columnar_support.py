@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from pathlib import Path
 from typing import Any
@@ -149,9 +150,12 @@ SERVICES = st.one_of(
 )
 
 
+@functools.cache
 def schema_values(t: Struct | Union | Array | Scalar) -> st.SearchStrategy[Any]:
     """Plain data (as `veronte4x.dronecan.from_builtin` takes it) of any DSDL type: arrays
-    empty, full or between, every union member, integers at their ends."""
+    empty, full or between, every union member, integers at their ends. Made once a type
+    (a strategy is drawn from again and again; building it each time cost more than the
+    tests that draw it)."""
     if isinstance(t, Struct):
         return st.fixed_dictionaries({f.name: schema_values(f.type) for f in t.fields if f.name})
     if isinstance(t, Union):
@@ -218,8 +222,10 @@ character, DEL, white space to ``str.split``, non-ASCII), one character longer t
 LINE_ENDINGS = st.sampled_from(["\n", "\r\n"])
 
 
+@functools.cache
 def veronte_payloads(sender: codec.Sender) -> st.SearchStrategy[bytes]:
-    """Valid frames of every type the sender sends, and arbitrary bytes."""
+    """Valid frames of every type the sender sends, and arbitrary bytes. Made once a sender:
+    its MSB-first codec, compiled on each call, cost more than the tests that draw it."""
     from tests.codec.strategies import MESSAGES
 
     arbiter_only = {"Status", "Score"}
