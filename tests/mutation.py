@@ -70,13 +70,7 @@ COMMON_TESTS += ("tests/test_frozen_records.py", "tests/test_mutation_survivors.
 run at import, so its mutants run their package's tests)."""
 _SLOW = ("differential", "oracle", "faults", "dataset", "fleet", "notebook", "examples")
 """Test files that compare against a reference or start a cluster: run last."""
-_CLI_TESTS: tuple[str, ...] = (
-    "tests/cli",
-    "tests/capture/test_cli.py",
-    "tests/capture/test_convert_cli.py",
-)
-_CLI_TESTS += ("tests/client/test_cli_esc.py", "tests/client/test_cli_monitor.py")
-_CLI_TESTS += ("tests/client/test_cli_plot_list.py",)
+_CLI_TESTS: tuple[str, ...] = ("tests/cli",)
 COVERAGE = ROOT / ".venv" / "coverage"
 """Coverage's data (``data_file`` in ``[tool.coverage.run]``) and the tests' times."""
 MAPS = ROOT / ".venv" / "mutation-map"

@@ -19,7 +19,15 @@ from pathlib import Path
 import can
 import pytest
 
-from .cli_support import ANSWER, GROUP, HANG_GUARD, bus_args, free_port, simulator, veronte4x
+from tests.client.cli_support import (
+    ANSWER,
+    GROUP,
+    HANG_GUARD,
+    bus_args,
+    free_port,
+    simulator,
+    veronte4x,
+)
 
 PARAMS_21 = [
     "index  name                  value     default  range",

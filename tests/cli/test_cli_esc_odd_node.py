@@ -17,9 +17,8 @@ from typing import Any
 import can
 import pytest
 
+from tests.client.cli_support import GROUP, bus_args, free_port, veronte4x
 from veronte4x import dronecan
-
-from .cli_support import GROUP, bus_args, free_port, veronte4x
 
 ODD = 30
 STUBBORN = 31

@@ -17,11 +17,17 @@ from typing import Any
 
 import pytest
 
+from tests.client.cli_support import (
+    HANG_GUARD,
+    bus_args,
+    free_port,
+    listening,
+    simulator,
+    veronte4x,
+)
 from veronte4x import dronecan
 from veronte4x.cli import main
 from veronte4x.simulator.esc import UNIQUE_ID_PREFIX
-
-from .cli_support import HANG_GUARD, bus_args, free_port, listening, simulator, veronte4x
 
 
 def _uid(node: int) -> str:

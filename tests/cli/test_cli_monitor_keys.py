@@ -12,9 +12,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from tests.client.cli_support import bus_args, free_port, simulator
 from tests.tmux_support import keys, needs_tmux, terminal, wait_for
-
-from .cli_support import bus_args, free_port, simulator
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 

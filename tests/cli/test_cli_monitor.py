@@ -5,10 +5,9 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from tests.client.cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 from tests.tmux_support import keys, needs_tmux, terminal, wait_for
 from tests.tmux_support import screen as shown_now
-
-from .cli_support import bus_args, free_port, simulator, veronte4x, veronte4x_all
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 

@@ -17,10 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from veronte4x.dronecan.image_crc import crc64we
-from veronte4x.simulator.motor import MotorModel
-
-from .cli_support import (
+from tests.client.cli_support import (
     HANG_GUARD,
     bus_args,
     free_port,
@@ -31,6 +28,8 @@ from .cli_support import (
     veronte4x_all,
     wait_for_status,
 )
+from veronte4x.dronecan.image_crc import crc64we
+from veronte4x.simulator.motor import MotorModel
 
 
 @pytest.fixture(scope="module")

@@ -11,9 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.client.cli_support import ANSWER, bus_args, free_port, simulator, veronte4x
 from veronte4x.dronecan.image_crc import crc64we
-
-from .cli_support import ANSWER, bus_args, free_port, simulator, veronte4x
 
 if sys.version_info >= (3, 11):
     import tomllib

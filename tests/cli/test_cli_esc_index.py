@@ -13,10 +13,9 @@ from pathlib import Path
 
 import can
 
+from tests.client.cli_support import GROUP, HANG_GUARD, bus_args, free_port, simulator, veronte4x
 from veronte4x import dronecan
 from veronte4x.dronecan import EscStatus, RawCommand
-
-from .cli_support import GROUP, HANG_GUARD, bus_args, free_port, simulator, veronte4x
 
 
 class Recorder:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from .cli_support import (
+from tests.client.cli_support import (
     bus_args,
     free_port,
     listening,

@@ -5,11 +5,10 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from tests.client.cli_support import veronte4x
 from veronte4x import dronecan
 from veronte4x.dronecan import vertiq
 from veronte4x.simulator import SimulatedEsc
-
-from .cli_support import veronte4x
 
 CAPTURE = Path(__file__).resolve().parents[2] / "examples" / "capture.log"
 PNG = b"\x89PNG\r\n\x1a\n"
