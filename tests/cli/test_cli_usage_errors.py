@@ -214,3 +214,22 @@ def test_record_a_count_of_no_frames() -> None:
     assert result.stderr.endswith(
         "veronte4x record: error: argument --count: '0' is not a number of frames (1 or more)\n"
     )
+
+
+def test_record_onto_a_bus_that_cannot_be_opened_leaves_the_file_as_it_was(
+    tmp_path: Path,
+) -> None:
+    """An existing file keeps its bytes (the bus failed before any frame); a new one is not
+    left behind empty."""
+    kept = tmp_path / "flight.can"
+    kept.write_bytes(b"an earlier recording")
+    for out in (kept, tmp_path / "new.can"):
+        result = subprocess.run(
+            [sys.executable, "-m", "veronte4x", "record", "-i", "socketcan", "-c", "nosuch0",
+             "--to", "pydronecan", str(out)],
+            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
+        )  # fmt: skip
+        assert (result.returncode, result.stdout) == (2, "")
+        assert result.stderr.startswith("veronte4x: cannot open the CAN bus"), result.stderr
+    assert kept.read_bytes() == b"an earlier recording"
+    assert list(tmp_path.iterdir()) == [kept]

@@ -85,29 +85,39 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     loss = BusLoss()
     stop = threading.Event()
     written = left_out = 0
-    try:
-        with open(out, "wb") as file, Interrupts() as interrupts:
-            for frame in open_frame_source(args, stop, loss):
-                if type(frame) is not Frame:
-                    left_out += 1
-                    continue
-                with interrupts.whole:  # a record is in the file whole, or not at all
-                    try:
-                        file.write(write(frame))
-                    except SourceError:
+    existed = os.path.exists(out)
+    # Appending until the bus is read: a file given by mistake keeps its bytes if the bus
+    # cannot be opened; from the first frame (or a normal end) it holds this recording only.
+    with open(out, "ab") as file:
+        try:
+            with Interrupts() as interrupts:
+                for frame in open_frame_source(args, stop, loss):
+                    if type(frame) is not Frame:
                         left_out += 1
                         continue
-                    file.flush()
-                    written += 1
-                if written == args.count:
-                    stop.set()  # the bus is closed as the reading ends
-    except KeyboardInterrupt:  # the way to stop a recording: as the bus reader takes it
-        pass
-    except Exception:
-        if not written:  # the bus could not be opened, or failed at once: no empty file
-            with contextlib.suppress(OSError):
-                os.remove(out)
-        raise
+                    with interrupts.whole:  # a record is in the file whole, or not at all
+                        try:
+                            data = write(frame)
+                        except SourceError:
+                            left_out += 1
+                            continue
+                        if not written:
+                            file.truncate(0)
+                        file.write(data)
+                        file.flush()
+                        written += 1
+                    if written == args.count:
+                        stop.set()  # the bus is closed as the reading ends
+        except KeyboardInterrupt:  # the way to stop a recording: as the bus reader takes it
+            pass
+        except Exception:
+            if not written and not existed:  # the bus failed at once: no empty file
+                file.close()
+                with contextlib.suppress(OSError):
+                    os.remove(out)
+            raise
+        if not written:
+            file.truncate(0)
     summary = f"{counted(written, 'frame')} in {out}"
     if left_out:
         summary += f", {left_out} left out that {format_} cannot hold"
