@@ -84,9 +84,31 @@ def _peer(*args: str) -> Iterator[subprocess.Popen[str]]:
         process.communicate(timeout=HANG_GUARD)
 
 
-def test_decode_reads_a_pydronecan_node() -> None:
-    with _peer("101", "publish") as node:
+@contextmanager
+def _publishing_node(bus: str) -> Iterator[None]:
+    """pydronecan's node 42 on mcast bus ``bus``, ready and sending NodeStatus every second."""
+    with _peer(bus, "publish") as node:
         assert node.stdout is not None and node.stdout.readline() == "ready\n"
+        yield
+
+
+def _record(bus: str, to: str, out: Path) -> None:
+    """``veronte4x record`` of two frames of the publishing node on mcast bus ``bus`` into
+    ``out`` in the format ``to``; it succeeds with its one-line summary."""
+    with _publishing_node(bus):
+        recorded = subprocess.run(
+            [sys.executable, "-m", "veronte4x", "record", "-i", "mcast", "-c", bus,
+             "--count", "2", "--to", to, str(out)],
+            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
+        )  # fmt: skip
+    assert (recorded.returncode, recorded.stderr) == (
+        0,
+        f"veronte4x: 2 frames in {out}, 0 frames lost by the bus layer\n",
+    )
+
+
+def test_decode_reads_a_pydronecan_node() -> None:
+    with _publishing_node("101"):
         decode = subprocess.Popen(
             [sys.executable, "-m", "veronte4x", "decode", "-i", "mcast", "-c", "101"],
             env={**os.environ, "PYTHONUNBUFFERED": "1"},  # each record as it comes
@@ -132,17 +154,7 @@ def test_a_pydronecan_node_sees_and_asks_the_simulated_esc() -> None:
 
 def test_record_writes_what_pydronecan_plays_from_a_pydronecan_node(tmp_path: Path) -> None:
     out = tmp_path / "bus.can"
-    with _peer("103", "publish") as node:
-        assert node.stdout is not None and node.stdout.readline() == "ready\n"
-        recorded = subprocess.run(
-            [sys.executable, "-m", "veronte4x", "record", "-i", "mcast", "-c", "103",
-             "--count", "2", "--to", "pydronecan", str(out)],
-            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
-        )  # fmt: skip
-    assert (recorded.returncode, recorded.stderr) == (
-        0,
-        f"veronte4x: 2 frames in {out}, 0 frames lost by the bus layer\n",
-    )
+    _record("103", "pydronecan", out)
     from dronecan.driver.file import file as pydronecan_file
 
     player = pydronecan_file(os.fspath(out), readonly=True)
@@ -166,17 +178,7 @@ def test_record_writes_what_pydronecan_plays_from_a_pydronecan_node(tmp_path: Pa
 
 def test_record_writes_candump_text_that_python_can_reads(tmp_path: Path) -> None:
     out = tmp_path / "bus.log"
-    with _peer("104", "publish") as node:
-        assert node.stdout is not None and node.stdout.readline() == "ready\n"
-        recorded = subprocess.run(
-            [sys.executable, "-m", "veronte4x", "record", "-i", "mcast", "-c", "104",
-             "--count", "2", "--to", "candump", str(out)],
-            capture_output=True, text=True, timeout=HANG_GUARD, check=False,
-        )  # fmt: skip
-    assert (recorded.returncode, recorded.stderr) == (
-        0,
-        f"veronte4x: 2 frames in {out}, 0 frames lost by the bus layer\n",
-    )
+    _record("104", "candump", out)
     read = [(m.timestamp, m.channel, m.arbitration_id, bytes(m.data)) for m in can.LogReader(out)]
     records = list(capture.read(out))
     assert [(r.timestamp, r.channel, r.can_id, r.data) for r in records] == read

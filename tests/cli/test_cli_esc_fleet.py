@@ -27,6 +27,22 @@ def bus() -> Iterator[list[str]]:
         yield bus_args(port)
 
 
+def _saved(bus: list[str], path: Path, nodes: str) -> Path:
+    """``path``, where ``esc params --save`` wrote the parameters of ``nodes``."""
+    assert veronte4x("esc", "params", nodes, "--save", str(path), *bus).returncode == 0
+    return path
+
+
+def _set(bus: list[str], node: str, name: str, value: str) -> None:
+    """Set one parameter of one node with ``esc set``."""
+    assert veronte4x("esc", "set", node, name, value, *bus).returncode == 0
+
+
+def _get(bus: list[str], node: str, name: str) -> str:
+    """What ``esc get`` prints of one parameter of one node."""
+    return veronte4x("esc", "get", node, name, *bus).stdout
+
+
 def test_a_range_read_at_once(bus: list[str]) -> None:
     result = veronte4x("esc", "get", "21-28", "esc_index", *bus)
     assert result.returncode == 0, result.stderr
@@ -90,13 +106,13 @@ def test_parameters_saved_reviewed_and_restored(bus: list[str], tmp_path: Path) 
     assert node["parameters"]["esc_index"] == {
         "type": "integer", "value": 1, "default": 1, "min": 0, "max": 19,
     }  # fmt: skip
-    assert veronte4x("esc", "set", "22", "telem_frequency", "25", *bus).returncode == 0
+    _set(bus, "22", "telem_frequency", "25")
     dry = veronte4x("esc", "apply", str(saved), "21-24", "--dry-run", *bus)
     assert (dry.returncode, dry.stdout) == (
         0,
         "node 22: telem_frequency 25 -> 10\ndry run: 1 parameter would change; none set\n",
     )
-    assert "25 (default" in veronte4x("esc", "get", "22", "telem_frequency", *bus).stdout
+    assert "25 (default" in _get(bus, "22", "telem_frequency")
     applied = veronte4x("esc", "apply", str(saved), "21-24", *bus)
     assert applied.returncode == 0, applied.stderr
     assert applied.stdout.splitlines() == [
@@ -107,18 +123,17 @@ def test_parameters_saved_reviewed_and_restored(bus: list[str], tmp_path: Path) 
         "node 24: as in the file, nothing set",
         "4 nodes: all succeeded",
     ]
-    assert "= 10 (default" in veronte4x("esc", "get", "22", "telem_frequency", *bus).stdout
+    assert "= 10 (default" in _get(bus, "22", "telem_frequency")
 
 
 def test_an_entry_that_names_no_parameter_is_never_applied(bus: list[str], tmp_path: Path) -> None:
     """A GetSet answer with an empty value names no parameter: such an entry (``type =
     "empty"``, as files written before could hold) loads, and apply leaves it alone."""
-    saved = tmp_path / "esc24.toml"
-    assert veronte4x("esc", "params", "24", "--save", str(saved), *bus).returncode == 0
+    saved = _saved(bus, tmp_path / "esc24.toml", "24")
     assert "empty" not in saved.read_text()
     with saved.open("a", encoding="utf-8") as file:
         file.write('ghost = { type = "empty", value = "" }\n')
-    assert veronte4x("esc", "set", "24", "telem_frequency", "25", *bus).returncode == 0
+    _set(bus, "24", "telem_frequency", "25")
     applied = veronte4x("esc", "apply", str(saved), "24", *bus)
     assert (applied.returncode, applied.stderr) == (0, "")
     assert applied.stdout.splitlines() == [
@@ -126,14 +141,13 @@ def test_an_entry_that_names_no_parameter_is_never_applied(bus: list[str], tmp_p
         "node 24: 1 set, read back and saved",
         "1 node: succeeded",
     ]
-    assert "= 10 (default" in veronte4x("esc", "get", "24", "telem_frequency", *bus).stdout
+    assert "= 10 (default" in _get(bus, "24", "telem_frequency")
 
 
 def test_a_value_out_of_range_is_refused_before_anything_is_set(
     bus: list[str], tmp_path: Path
 ) -> None:
-    saved = tmp_path / "vehicle.toml"
-    assert veronte4x("esc", "params", "25,26", "--save", str(saved), *bus).returncode == 0
+    saved = _saved(bus, tmp_path / "vehicle.toml", "25,26")
     text = saved.read_text()
     text = text.replace("zero_behavior = { type = \"integer\", value = 0,", "zero_behavior = "
                         "{ type = \"integer\", value = 1,", 1)  # fmt: skip
@@ -143,8 +157,8 @@ def test_a_value_out_of_range_is_refused_before_anything_is_set(
     result = veronte4x("esc", "apply", str(saved), "25,26", *bus)
     assert result.returncode == 2
     assert result.stderr == "veronte4x: node 26: 99 is out of range for esc_index: 0..19\n"
-    after = veronte4x("esc", "get", "25", "zero_behavior", *bus)
-    assert after.stdout == "zero_behavior = 0 (default 0, range 0..2)\n"  # 25 was not set either
+    after = _get(bus, "25", "zero_behavior")
+    assert after == "zero_behavior = 0 (default 0, range 0..2)\n"  # 25 was not set either
     result = veronte4x("esc", "apply", str(saved), "25,99", *bus, "--timeout", "2",
                        "--retries", "0")  # fmt: skip
     assert result.returncode == 3
@@ -154,9 +168,8 @@ def test_a_value_out_of_range_is_refused_before_anything_is_set(
 
 
 def test_a_saved_node_applied_to_a_replacement(bus: list[str], tmp_path: Path) -> None:
-    saved = tmp_path / "esc27.toml"
-    assert veronte4x("esc", "params", "27", "--save", str(saved), *bus).returncode == 0
-    assert veronte4x("esc", "set", "27", "zero_behavior", "2", *bus).returncode == 0
+    saved = _saved(bus, tmp_path / "esc27.toml", "27")
+    _set(bus, "27", "zero_behavior", "2")
     saved.write_text(saved.read_text().replace("value = 6,", "value = 7,"))  # esc_index 7
     result = veronte4x("esc", "apply", str(saved), "28", *bus, "--dry-run")
     assert result.stdout.splitlines() == [
@@ -205,9 +218,7 @@ def test_the_dronecan_gui_tools_parm_file_applied_to_one_node(
         "node 23: 2 set, read back and saved",
         "1 node: succeeded",
     ]
-    assert veronte4x("esc", "get", "23", "telem_frequency", *bus).stdout.startswith(
-        "telem_frequency = 50 "
-    )
+    assert _get(bus, "23", "telem_frequency").startswith("telem_frequency = 50 ")
     bad = tmp_path / "esc23-bad.parm"
     bad.write_text("zero_behavior 0\nesc_index 20\n")
     refused = veronte4x("esc", "apply", str(bad), "23", *bus)
@@ -219,9 +230,7 @@ def test_the_dronecan_gui_tools_parm_file_applied_to_one_node(
     restore.write_text("# Mission Planner style\nzero_behavior,0\ntelem_frequency,10\n")
     back = veronte4x("esc", "apply", str(restore), "23", *bus)
     assert back.returncode == 0, back.stderr
-    assert veronte4x("esc", "get", "23", "zero_behavior", *bus).stdout == (
-        "zero_behavior = 0 (default 0, range 0..2)\n"
-    )
+    assert _get(bus, "23", "zero_behavior") == "zero_behavior = 0 (default 0, range 0..2)\n"
 
 
 def test_a_fleet_firmware_update_skips_nodes_that_run_the_image(
