@@ -120,9 +120,12 @@ def test_arrow_calls_import_only_what_they_need(call: str, tmp_path: Path) -> No
     assert found[call] - {"pandas"} == {"numpy", "pyarrow"}
 
 
-DSDL_COMPILER = frozenset({"veronte4x.dronecan.generate", "veronte4x.dronecan.types"})
-"""What turns DSDL into classes and schemas: needed for the user's DSDL only (every shipped
-type was generated ahead of time)."""
+DSDL_COMPILER = frozenset(
+    {"veronte4x.dronecan.generate", "veronte4x.dronecan.parser", "veronte4x.dronecan.types"}
+)
+"""What parses DSDL and turns it into classes and schemas: needed for the user's DSDL only,
+the first time it is loaded (every shipped type was generated ahead of time; a load from
+the disk cache runs what it stored)."""
 
 
 def test_the_dsdl_compiler_loads_for_user_dsdl_only(tmp_path: Path) -> None:
@@ -154,6 +157,20 @@ def test_the_dsdl_compiler_loads_for_user_dsdl_only(tmp_path: Path) -> None:
         "veronte4x decode": set(),
         "load_dsdl": DSDL_COMPILER,
     }
+
+
+def test_a_load_from_the_cache_parses_and_generates_nothing(tmp_path: Path) -> None:
+    root = write_namespace(tmp_path, "com", {"20990.Ping": "uint8[<4] counts\n"})
+    environ = {**os.environ, "HOME": str(tmp_path), "VERONTE4X_CACHE_DIR": str(tmp_path)}
+    environ.pop("VERONTE4X_DSDL_PATH", None)
+    load_and_use = (
+        "from veronte4x import dronecan\n"
+        f"types = dronecan.TypeSet.standard().with_dsdl({str(root)!r})\n"
+        "assert types.by_class[types['com.Ping']].decode(b'\\x07').counts == b'\\x07'"
+    )
+    steps = [("load and use", load_and_use)]
+    assert heavy_after(steps, DSDL_COMPILER, environ) == {"load and use": DSDL_COMPILER}
+    assert heavy_after(steps, DSDL_COMPILER, environ) == {"load and use": set()}  # cached
 
 
 def test_a_command_imports_its_own_module_only() -> None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numbers
 import operator
+import os
 from typing import Union
 
 BytesLike = Union[bytes, bytearray, memoryview]  # noqa: UP007  (a run-time alias on 3.10)
@@ -82,6 +83,39 @@ class EncodeError(Veronte4xError, ValueError):
         self.value = value
         self.allowed = allowed
         super().__init__(f"{message_type}.{field} = {value!r}: expected {allowed}")
+
+
+class DsdlError(Veronte4xError, ValueError):
+    """A DSDL definition that cannot be used (`veronte4x.dronecan.TypeSet.with_dsdl`):
+    ``<file>:<line>: <problem>``.
+
+    Attributes:
+        path: The file of the definition.
+        line: The line (1-based), or None for a problem of the whole file.
+        problem: What is wrong, in words.
+    """
+
+    def __init__(self, path: str | os.PathLike[str], line: int | None, problem: str) -> None:
+        self.path = str(path)
+        self.line = line
+        self.problem = problem
+        where = self.path if line is None else f"{self.path}:{line}"
+        super().__init__(_printable(f"{where}: {problem}"))
+
+
+def _printable(text: str) -> str:
+    """``text`` with each unprintable character escaped (``\\n``, ``\\x00``; a byte of a
+    name that is not UTF-8, kept by Python as a lone surrogate, as ``\\xff``): one line."""
+    if text.isprintable():
+        return text
+    return "".join(
+        char
+        if char.isprintable()
+        else f"\\x{ord(char) - 0xDC00:02x}"
+        if 0xDC80 <= ord(char) <= 0xDCFF
+        else repr(char)[1:-1]
+        for char in text
+    )
 
 
 class LayoutError(Veronte4xError, ValueError):

@@ -18,13 +18,13 @@ from veronte4x import dronecan
 from veronte4x.dronecan import shipped_source
 from veronte4x.dronecan.definitions import DATA_TYPES, NESTED_SIGNATURES
 from veronte4x.dronecan.parser import (
-    DsdlError,
     check_references,
     parse_namespaces,
     signature,
 )
 from veronte4x.dronecan.types import standard_definitions
 from veronte4x.dronecan.vendor_roots import DSDL_ROOT
+from veronte4x.errors import DsdlError
 
 
 def test_the_standard_set_is_package_data_with_its_licence() -> None:

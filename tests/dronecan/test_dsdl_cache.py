@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import linecache
 import marshal
 import os
 import random
@@ -22,10 +23,23 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from test_dronecan_compiled import messages
 from tests.plain_data import same
 
 from veronte4x import dronecan as v4
-from veronte4x.dronecan import TypeSet, compiled_load, dsdl_cache, generate, typeset
+from veronte4x.codegen import compile_source
+from veronte4x.dronecan import (
+    TypeSet,
+    compiled_load,
+    dsdl_cache,
+    generate,
+    parsed_data,
+    parser,
+    typeset,
+)
+from veronte4x.dronecan.compiled import DECODE_FALLBACK, ENCODE_FALLBACK, compile_fast, transport_of
 from veronte4x.dronecan.parser import parse_namespaces
 from veronte4x.dronecan.typeset import DsdlOverrideWarning
 from veronte4x.dronecan.vendor_roots import DSDL_ROOT, SHIPPED
@@ -227,10 +241,7 @@ def _tampered(cache: Path, marker: Path) -> dict[str, Any]:
     attack = f"\nopen({str(marker)!r}, 'w').close()\n"
     filename, source, _ = entry["classes"]
     entry["classes"] = (filename, source + attack, compile(source + attack, filename, "exec"))
-    entry["fast"] = tuple(
-        (f[0], f[1] + attack, compile(f[1] + attack, f[0], "exec"), f[3]) if f else f
-        for f in entry["fast"]
-    )
+    entry["fast"] = tuple((f[0] + attack, f[1]) if f else f for f in entry["fast"])
     return entry
 
 
@@ -374,13 +385,13 @@ def test_the_shipped_definitions_are_parsed_once_and_read_back_equal(
 ) -> None:
     roots = [DSDL_ROOT / "uavcan", *(DSDL_ROOT / name for name in SHIPPED)]
     parsed = parse_namespaces(roots)
-    assert compiled_load.definitions_of(compiled_load.definitions_data(parsed)) == parsed
+    assert parsed_data.definitions_of(parsed_data.definitions_data(parsed)) == parsed
     assert typeset._parse_shipped(roots)() == parsed  # parsed, and written
 
     def refuse(*args: Any, **kwargs: Any) -> None:
         raise AssertionError("parsed the shipped DSDL instead of reading the cache")
 
-    monkeypatch.setattr(typeset, "parse_namespaces", refuse)
+    monkeypatch.setattr(parser, "parse_namespaces", refuse)
     assert typeset._parse_shipped(roots)() == parsed
 
 
@@ -392,3 +403,89 @@ def test_without_veronte4x_source_files_nothing_is_cached(
     assert dsdl_cache.load_key((), [root]) is None
     assert "ardupilot.gnss.Heading" in TypeSet.standard().with_dsdl(root)
     assert not cache.exists()
+
+
+def _mine(types: TypeSet) -> list[v4.TypeCodec]:
+    """The codecs of the user's ``ardupilot`` types."""
+    return [c for c in types.codecs if c.data_type.full_name.startswith("ardupilot.")]
+
+
+def test_a_load_compiles_no_fast_path_and_a_first_use_only_its_types(
+    root: Path, cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    compiled: list[str] = []
+
+    def counting(source: str, namespace: dict[str, Any], title: str) -> dict[str, Any]:
+        compiled.append(title)
+        return compile_source(source, namespace, title)
+
+    monkeypatch.setattr(compiled_load, "compile_source", counting)
+    first = TypeSet.standard().with_dsdl(root)  # compiled, and written
+    second = TypeSet.standard().with_dsdl(root)  # read from the cache
+    assert compiled == []
+    for types in (first, second):
+        mine = _mine(types)
+        assert len(mine) == 14 and not any("fast" in vars(c) for c in mine)  # not yet made
+        empty = types["ardupilot.gnss.Heading"]()
+        heading = types.by_class[type(empty)]
+        assert heading.decode(heading.generic.encode(empty)) == empty
+        assert [c for c in mine if "fast" in vars(c)] == [heading]
+    assert compiled == ["dsdl fast paths ardupilot.gnss.Heading message"] * 2
+    code = heading.fast.decode.__code__
+    assert code.co_filename.startswith("<veronte4x generated dsdl fast paths ardupilot.gnss")
+    assert "def decode(buf):" in "".join(linecache.getlines(code.co_filename))
+
+
+@pytest.fixture(scope="module")
+def loaded_lazily(tmp_path_factory: pytest.TempPathFactory) -> tuple[TypeSet, TypeSet]:
+    """A user's copy of ``ardupilot`` loaded into the standard set with an empty cache, then
+    again from the cache: no fast path of either compiled yet."""
+    folder = tmp_path_factory.mktemp("lazy")
+    user = shutil.copytree(DSDL_ROOT / "ardupilot", folder / "user" / "ardupilot")
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv(dsdl_cache.ENVIRONMENT_VARIABLE, str(folder / "cache"))
+        return TypeSet.standard().with_dsdl(user), TypeSet.standard().with_dsdl(user)
+
+
+def _outcome(function: Any, *args: Any) -> Any:
+    """What a fast path gives: its result, or the fallback it raised (by type)."""
+    try:
+        return repr(function(*args))
+    except (*ENCODE_FALLBACK, *DECODE_FALLBACK) as error:
+        return type(error)
+
+
+_ARDUPILOT = [
+    (c.data_type.full_name, c.data_type.kind)
+    for c in TypeSet.shipped().codecs
+    if c.data_type.full_name.startswith("ardupilot.")
+]
+
+
+@pytest.mark.parametrize("loaded", ["first load", "from the cache"])
+@pytest.mark.parametrize("key", _ARDUPILOT, ids=[name for name, _ in _ARDUPILOT])
+@settings(max_examples=8, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_a_first_use_gives_what_the_fast_paths_compiled_at_once_give(
+    loaded_lazily: tuple[TypeSet, TypeSet],
+    loaded: str,
+    key: tuple[str, v4.TransferKind],
+    data: st.DataObject,
+) -> None:
+    types = loaded_lazily[loaded == "from the cache"]
+    [codec] = [c for c in types.codecs if (c.data_type.full_name, c.data_type.kind) == key]
+    lazy, eager = codec.fast, compile_fast(codec.data_type.schema, transport_of(codec.data_type))
+    assert (lazy.decode_frame is None) == (eager.decode_frame is None)
+    message = data.draw(messages(codec.data_type.schema, faults=True), label="message")
+    transport = (42, 17, 9, None if key[1] is v4.TransferKind.MESSAGE else 7)
+    assert _outcome(lazy.payload, message) == _outcome(eager.payload, message)
+    assert _outcome(lazy.frames, message, *transport) == _outcome(eager.frames, message, *transport)
+    payload = data.draw(
+        st.binary(max_size=codec.max_payload + 3)
+        | st.builds(codec.generic.encode, messages(codec.data_type.schema, faults=False)),
+        label="payload",
+    )
+    assert _outcome(lazy.decode, payload) == _outcome(eager.decode, payload)
+    if lazy.decode_frame is not None and eager.decode_frame is not None and len(payload) <= 7:
+        frame = payload + b"\xc5"
+        assert _outcome(lazy.decode_frame, frame) == _outcome(eager.decode_frame, frame)

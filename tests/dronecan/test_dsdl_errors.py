@@ -9,12 +9,12 @@ from pathlib import Path
 import pytest
 
 from veronte4x.dronecan.parser import (
-    DsdlError,
     PrimitiveType,
     check_references,
     parse_namespaces,
     signature,
 )
+from veronte4x.errors import DsdlError
 
 THING = "vendor/20000.Thing.uavcan"
 D = "veronte4x reads @union and OVERRIDE_SIGNATURE 0x<16 hex digits>"

@@ -12,8 +12,8 @@ import pytest
 
 from veronte4x import capture, dronecan
 from veronte4x.dronecan import TypeSet
-from veronte4x.dronecan.parser import DsdlError
 from veronte4x.dronecan.vendor_roots import DSDL_ROOT, SHIPPED
+from veronte4x.errors import DsdlError
 
 ORDERS = [SHIPPED[i:] + SHIPPED[:i] for i in range(len(SHIPPED))] + [SHIPPED[::-1]]
 """Every root first once, and the reverse order (all 120 orders take seconds)."""

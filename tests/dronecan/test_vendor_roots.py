@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from veronte4x.dronecan import TypeSet
-from veronte4x.dronecan.parser import DsdlError, definition_files, parse_namespaces
+from veronte4x.dronecan.parser import definition_files, parse_namespaces
 from veronte4x.dronecan.typeset import DsdlOverrideWarning, default_set
 from veronte4x.dronecan.vendor_roots import (
     DSDL_ROOT,
@@ -26,6 +26,7 @@ from veronte4x.dronecan.vendor_roots import (
     shipped_roots,
     user_roots,
 )
+from veronte4x.errors import DsdlError
 
 STATUS = "com/hobbywing/esc/20050.StatusMsg1.uavcan"
 """A shipped definition a user's root replaces below."""

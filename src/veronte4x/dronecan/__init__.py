@@ -148,7 +148,6 @@ if TYPE_CHECKING:  # what the names below are, for type checkers
     from veronte4x.dronecan.messages import (
         Value as Value,
     )
-    from veronte4x.dronecan.parser import DsdlError as DsdlError
     from veronte4x.dronecan.reassembler import (
         TRANSFER_ID_TIMEOUT as TRANSFER_ID_TIMEOUT,
     )
@@ -196,6 +195,9 @@ if TYPE_CHECKING:  # what the names below are, for type checkers
         DecodeError as DecodeError,
     )
     from veronte4x.errors import (
+        DsdlError as DsdlError,
+    )
+    from veronte4x.errors import (
         EncodeError as EncodeError,
     )
     from veronte4x.errors import (
@@ -209,7 +211,7 @@ _HOMES: dict[str, str] = {
     "CanId": "veronte4x.dronecan.can_id",
     "DEFAULT_PRIORITY": "veronte4x.dronecan.transfer",
     "DecodeError": "veronte4x.errors",
-    "DsdlError": "veronte4x.dronecan.parser",
+    "DsdlError": "veronte4x.errors",
     "Empty": "veronte4x.dronecan.messages",
     "EncodeError": "veronte4x.errors",
     "EntryType": "veronte4x.dronecan.messages",

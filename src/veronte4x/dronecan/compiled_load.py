@@ -10,8 +10,9 @@ of the package, so that reading one runs nothing before it is checked:
   ``again``: the full names of the set's types replaced (compiled again with the load);
 - ``schemas``: the schema of every key the new top-level types reach, by key (classes,
   enums and union members are named by their key: the set's tables give them back);
-  ``types``: each top-level type (name, kind, id, signature, key, file) and ``fast``, its
-  fast paths as `veronte4x.dronecan.compiled` writes them, with their code;
+  ``types``: each top-level type (name, kind, id, signature, key, file) and ``fast``, the
+  source of its fast paths as `veronte4x.dronecan.compiled` writes them, compiled on the
+  type's first use (a load compiles none: a type that never sees a frame costs no compile);
 - ``units``: the unit of each attribute with one, by class key.
 
 A load builds the set from its entry on every path, the first (which compiles and writes
@@ -21,12 +22,11 @@ it) as the next (which reads it), so both give the same classes, schemas and cod
 from __future__ import annotations
 
 import functools
-import linecache
 import struct
 from collections.abc import Mapping
 from typing import Any
 
-from veronte4x.codegen import slot_builder
+from veronte4x.codegen import compile_source, slot_builder
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.compiled import FastPaths, fast_source, slow, transport_of
@@ -38,21 +38,12 @@ from veronte4x.dronecan.fast_base import (
     tail_table,
 )
 from veronte4x.dronecan.frame import TransferFrame
-from veronte4x.dronecan.parser import (
-    ArrayType,
-    Attribute,
-    Constant,
-    Definition,
-    FieldType,
-    PrimitiveType,
-    Section,
-)
 from veronte4x.dronecan.schema import Array, DataType, Member, Scalar, Struct, StructField, Union
 from veronte4x.dronecan.serializer import enum_table
 
 EAGER_LEAVES = 4096
 """Most scalar fields (an array's item counted once) a type may have for its fast paths to
-be written with the entry; a larger one compiles them on first use, as without the cache."""
+be written with the entry; a larger one generates them on first use, as without the cache."""
 
 Tables = tuple[Mapping[str, type], Mapping[tuple[str, str], type], Mapping[str, tuple[type, ...]]]
 """A set's classes, enums and union members, by key (see `veronte4x.dronecan.TypeSet`)."""
@@ -70,7 +61,7 @@ def entry(
 ) -> dict[str, Any]:
     """The entry of a load: ``classes_module`` its file name, source and code; ``found``
     its top-level types, ``units`` theirs, ``tables`` the set's with the new classes;
-    without ``fast``, no fast paths (each compiled on first use: the entry is not kept)."""
+    without ``fast``, no fast paths (each generated on first use: the entry is not kept)."""
     classes, enums, members = tables
     refs: dict[int, str] = {id(TransferFrame): "TransferFrame"}
     for k, cls in classes.items():
@@ -166,16 +157,14 @@ def _leaves(t: Scalar | Array | Struct | Union, memo: dict[int, int]) -> int:
 
 
 def _fast(t: DataType, refs: Mapping[int, str]) -> tuple[Any, ...] | None:
-    """The fast paths of a type as entry data: (file name, source, code, single frame), or
-    ``()`` for a type nested too deep for generated code; None past `EAGER_LEAVES`."""
+    """The fast paths of a type as entry data: (source, single frame), or ``()`` for a type
+    nested too deep for generated code; None past `EAGER_LEAVES`."""
     if _leaves(t.schema, {}) > EAGER_LEAVES:
         return None
     src = fast_source(t.schema, transport_of(t))
     if src.slow:
         return ()
-    source = "\n".join(src.module_lines(lambda cls: refs[id(cls)])) + "\n"
-    filename = f"<dsdl fast paths {t.full_name} {t.kind.name.lower()}>"
-    return (filename, source, compile(source, filename, "exec"), src.single)
+    return ("\n".join(src.module_lines(lambda cls: refs[id(cls)])) + "\n", src.single)
 
 
 def data_types(data: Mapping[str, Any], tables: Tables) -> list[DataType]:
@@ -250,7 +239,7 @@ def codecs(data: Mapping[str, Any], found: list[DataType], tables: Tables) -> tu
 
 
 class _EntryCodec(TypeCodec):
-    """A `TypeCodec` whose fast paths are code of an entry, run on first use."""
+    """A `TypeCodec` whose fast paths are source of an entry, compiled on first use."""
 
     def __init__(self, data_type: DataType, fast: tuple[Any, ...], tables: Tables) -> None:
         super().__init__(data_type)
@@ -259,10 +248,11 @@ class _EntryCodec(TypeCodec):
 
     @functools.cached_property
     def fast(self) -> FastPaths:
-        """The fast paths of the entry (the code `veronte4x.dronecan.compiled` wrote)."""
+        """The fast paths of the entry (the source `veronte4x.dronecan.compiled` wrote),
+        compiled now (`veronte4x.codegen.compile_source`: a traceback shows their lines)."""
         if not self._entry:
             return FastPaths(slow, slow, slow, None)
-        filename, source, code, single = self._entry
+        source, single = self._entry
         classes, enums, members = self._tables
         namespace: dict[str, Any] = {
             **NAMES,
@@ -278,82 +268,8 @@ class _EntryCodec(TypeCodec):
             "ENUMS": enums,
             "MEMBERS": members,
         }
-        linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
-        exec(code, namespace)  # code of an entry this package wrote (`dsdl_cache.read`)
+        t = self.data_type
+        title = f"dsdl fast paths {t.full_name} {t.kind.name.lower()}"
+        compile_source(source, namespace, title)  # an entry this package wrote (`dsdl_cache.read`)
         frame = namespace["decode_frame"] if single else None
         return FastPaths(namespace["frames"], namespace["payload"], namespace["decode"], frame)
-
-
-def definitions_data(definitions: Mapping[str, Definition]) -> tuple[Any, ...]:
-    """Parsed definitions as entry data (`definitions_of` makes them again): the shipped
-    ones, which every first load of a user's root is checked and named against."""
-
-    def field_type(t: FieldType) -> Any:
-        if isinstance(t, str):
-            return t
-        if isinstance(t, ArrayType):
-            return ("array", field_type(t.item), t.max_size, t.dynamic)
-        return ("primitive", t.kind, t.bits, t.cast)
-
-    return tuple(
-        (
-            d.full_name,
-            d.default_id,
-            d.service,
-            tuple(
-                (
-                    tuple((a.name, field_type(a.type), a.line, a.comment) for a in s.fields),
-                    tuple(
-                        (c.name, field_type(c.type), c.value, c.line, c.comment)
-                        for c in s.constants
-                    ),
-                    s.union,
-                    s.doc,
-                )
-                for s in d.sections
-            ),
-            d.path,
-            d.doc,
-            d.override_signature,
-        )
-        for d in definitions.values()
-    )
-
-
-def definitions_of(data: tuple[Any, ...]) -> dict[str, Definition]:
-    """The definitions of `definitions_data`, equal to those it was given."""
-
-    def field_type(t: Any) -> FieldType:
-        if isinstance(t, str):
-            return t
-        if t[0] == "array":
-            item = field_type(t[1])
-            assert not isinstance(item, ArrayType)
-            return ArrayType(item, t[2], t[3])
-        return PrimitiveType(t[1], t[2], t[3])
-
-    def primitive(t: Any) -> PrimitiveType:
-        found = field_type(t)
-        assert isinstance(found, PrimitiveType)
-        return found
-
-    return {
-        full_name: Definition(
-            full_name,
-            default_id,
-            service,
-            [
-                Section(
-                    [Attribute(n, field_type(t), line, note) for n, t, line, note in fields],
-                    [Constant(n, primitive(t), v, line, note) for n, t, v, line, note in constants],
-                    union,
-                    doc,
-                )
-                for fields, constants, union, doc in sections
-            ],
-            path,
-            doc_text,
-            override,
-        )
-        for full_name, default_id, service, sections, path, doc_text, override in data
-    }

@@ -53,7 +53,7 @@ with the value `OFF`."""
 OFF = "off"
 """The value of `ENVIRONMENT_VARIABLE` that turns the cache off."""
 
-FORMAT = 1
+FORMAT = 2
 """The layout of an entry (`veronte4x.dronecan.compiled_load`); part of every key."""
 
 _MANIFEST = f"veronte4x DSDL cache manifest {FORMAT}"

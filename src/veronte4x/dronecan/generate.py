@@ -64,12 +64,12 @@ from veronte4x.dronecan.parser import (
     Attribute,
     Constant,
     Definition,
-    DsdlError,
     FieldType,
     PrimitiveType,
     Section,
     nested_name,
 )
+from veronte4x.errors import DsdlError
 
 HAND_NAMES: dict[str, str] = {
     "uavcan.protocol.NodeStatus": "NodeStatus",

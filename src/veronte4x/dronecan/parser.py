@@ -31,40 +31,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from veronte4x.dronecan.crc import crc64we
-from veronte4x.errors import Veronte4xError
-
-
-class DsdlError(Veronte4xError, ValueError):
-    """A DSDL definition that cannot be used: ``<file>:<line>: <problem>``.
-
-    Attributes:
-        path: The file of the definition.
-        line: The line (1-based), or None for a problem of the whole file.
-        problem: What is wrong, in words.
-    """
-
-    def __init__(self, path: str | os.PathLike[str], line: int | None, problem: str) -> None:
-        self.path = str(path)
-        self.line = line
-        self.problem = problem
-        where = self.path if line is None else f"{self.path}:{line}"
-        super().__init__(_printable(f"{where}: {problem}"))
-
-
-def _printable(text: str) -> str:
-    """``text`` with each unprintable character escaped (``\\n``, ``\\x00``; a byte of a
-    name that is not UTF-8, kept by Python as a lone surrogate, as ``\\xff``): one line."""
-    if text.isprintable():
-        return text
-    return "".join(
-        char
-        if char.isprintable()
-        else f"\\x{ord(char) - 0xDC00:02x}"
-        if 0xDC80 <= ord(char) <= 0xDCFF
-        else repr(char)[1:-1]
-        for char in text
-    )
-
+from veronte4x.errors import DsdlError
 
 CAST_MODES = ("saturated", "truncated")
 

@@ -9,7 +9,8 @@ The standard set and the vendor namespaces shipped with the package were generat
 of time (`veronte4x.dronecan.shipped_source`): building them parses no DSDL. The classes of
 a namespace the user loads are generated from its DSDL by the same code (naming rules in
 `veronte4x.dronecan.generate`), into a module of their own, with the source in
-``linecache`` for tracebacks, and kept with their fast paths in the disk cache
+``linecache`` for tracebacks, and kept with the source of their fast paths (each type's
+compiled on its first use, not by the load) in the disk cache
 (`veronte4x.dronecan.dsdl_cache`, `veronte4x.dronecan.compiled_load`) for the next process.
 """
 
@@ -25,22 +26,17 @@ import types as _types
 import warnings
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from veronte4x.dronecan import compiled_load, dsdl_cache, messages, standard, standard_data
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import CODECS, TypeCodec
 from veronte4x.dronecan.definitions import DataType
-from veronte4x.dronecan.parser import (
-    Definition,
-    DsdlError,
-    check_references,
-    definition_files,
-    nested_name,
-    parse_namespaces,
-)
 from veronte4x.dronecan.vendor_roots import DSDL_ROOT, Override, find_roots, overrides
-from veronte4x.errors import argument_type_error
+from veronte4x.errors import DsdlError, argument_type_error
+
+if TYPE_CHECKING:
+    from veronte4x.dronecan.parser import Definition
 
 _serial = itertools.count(1)
 
@@ -272,6 +268,8 @@ def _full_name(key: str) -> str:
 
 def _users(definitions: Mapping[str, Definition], names: set[str]) -> set[str]:
     """``names`` and every definition that nests one of them, however deep."""
+    from veronte4x.dronecan.parser import nested_name  # for what a load parses only
+
     found = set(names)
     while True:
         more = {
@@ -315,6 +313,8 @@ def _planned(
     """What loading ``new_roots`` into ``base`` parses (`TypeSet.with_dsdl`): the
     definitions of the new set, those to compile, the overrides (warned of with ``warn``,
     before the references are checked) and the full names of ``base`` compiled again."""
+    from veronte4x.dronecan.parser import check_references, definition_files, parse_namespaces
+
     parsed = parse_namespaces(new_roots, override=True)
     notes = list(overrides(definition_files(new_roots)))
     new: dict[str, Definition] = {}
@@ -428,15 +428,18 @@ def _parse_shipped(roots: list[Path]) -> Callable[[], dict[str, Definition]]:
     is checked and named against them)."""
 
     def parse() -> dict[str, Definition]:
+        from veronte4x.dronecan import parsed_data
+        from veronte4x.dronecan.parser import check_references, parse_namespaces
+
         folder = dsdl_cache.directory()
         found = None if folder is None else dsdl_cache.load_key((), roots, "definitions")
         data = None if folder is None or found is None else dsdl_cache.read(folder, found)
         if data is not None:
-            return compiled_load.definitions_of(data["definitions"])
+            return parsed_data.definitions_of(data["definitions"])
         definitions = parse_namespaces(roots)
         check_references(definitions)
         if folder is not None and found is not None:
-            entry = {"definitions": compiled_load.definitions_data(definitions)}
+            entry = {"definitions": parsed_data.definitions_data(definitions)}
             dsdl_cache.write(folder, found, entry)
         return definitions
 
