@@ -1,6 +1,7 @@
 """Cold start: whole processes, from the command to the answer, as a user in a shell sees it.
 
 Run: python benchmarks/bench_cold.py [--runs 5] [--lines 100 5000] [--quick]
+[--sections user-dsdl ...] [--against OTHER/src]
 
 Every figure is one fresh Python process, timed from its start to its exit by the parent
 (wall time), the median of ``--runs`` runs; the commands of a section take turns (one run
@@ -69,6 +70,8 @@ PUBLIC_MODULES = (
 )
 OTHERS = ("dronecan", "can", "cantools")
 VERONTE_IDS = (8, 9, 10, 11, 255)  # the arbiter's and the autopilots' 11-bit IDs
+SECTIONS = ("import", "decode", "dsdl", "user-dsdl", "first-transfer", "monitor")
+"""The sections, in the order they run (``--sections`` picks some)."""
 
 Command = list[str]
 
@@ -359,41 +362,61 @@ def dsdl(runs: int) -> None:
         print(f"| {name} | {types[name]} | {seconds:.2f} | {reference / seconds:.2f}x |")
 
 
-def user_dsdl(folder: Path, runs: int) -> None:
+def user_dsdl(folder: Path, runs: int, against: str | None = None) -> None:
     """A user's root loaded the first time, from the cache and without it, against the
-    `dronecan` package's parser on the same tree, in fresh processes taking turns."""
+    `dronecan` package's parser on the same tree, in fresh processes taking turns; with
+    ``against`` (another veronte4x's ``src`` directory), each veronte4x run of that tree too."""
     import shutil
 
     root = str(shutil.copytree(SHIPPED_DSDL / "ardupilot", folder / "user" / "ardupilot"))
-    warm = str(folder / "cache-warm")
     load_it = child("user_dsdl", root)
-    environ = {**os.environ, "VERONTE4X_CACHE_DIR": warm}
-    subprocess.run(load_it, env=environ, check=True, capture_output=True)
-    seeded = folder / "seeded"  # a cache that has only seen another tree
     other = child("user_dsdl", str(ROOT / "examples" / "dsdl" / "com"))
-    environ = {**os.environ, "VERONTE4X_CACHE_DIR": str(seeded)}
-    subprocess.run(other, env=environ, check=True, capture_output=True)
+    # Each tree: the suffix of its rows and its environment (this one's, or PYTHONPATH=against).
+    trees = {"": dict(os.environ)}
+    if against is not None:
+        trees[f" [{against}]"] = {**os.environ, "PYTHONPATH": against}
+    # Each run: the command, its environment and its VERONTE4X_CACHE_DIR (a new empty one
+    # for a first run).
+    runs_of: dict[str, tuple[Command, dict[str, str], Callable[[int], str]]] = {}
+    for number, (suffix, environ) in enumerate(trees.items()):
+        warm = str(folder / f"cache-warm-{number}")
+        warmed = {**environ, "VERONTE4X_CACHE_DIR": warm}
+        subprocess.run(load_it, env=warmed, check=True, capture_output=True)
+        seeded = folder / f"seeded-{number}"  # a cache that has only seen another tree
+        seeding = {**environ, "VERONTE4X_CACHE_DIR": str(seeded)}
+        subprocess.run(other, env=seeding, check=True, capture_output=True)
 
-    def seeded_copy(n: int) -> str:
-        return str(shutil.copytree(seeded, folder / f"seeded-{n}"))
+        def cold(n: int, number: int = number) -> str:
+            return str(folder / f"cold-{number}-{n}")
 
-    # Each run: the command, and its VERONTE4X_CACHE_DIR (a new empty one for a first run).
-    runs_of: dict[str, tuple[Command, Callable[[int], str]]] = {
-        "veronte4x, first run (empty cache)": (load_it, lambda n: str(folder / f"cold-{n}")),
-        "veronte4x, first run of this tree (the cache has seen another)": (load_it, seeded_copy),
-        "veronte4x, from the cache": (load_it, lambda n: warm),
-        "veronte4x, no cache (VERONTE4X_CACHE_DIR=off)": (load_it, lambda n: "off"),
-        "dronecan package: parse the tree (after import dronecan)": (
-            child("dronecan_parse", root),
-            lambda n: "off",
-        ),
-    }
+        def seeded_copy(n: int, seeded: Path = seeded) -> str:
+            return str(shutil.copytree(seeded, seeded.with_name(f"{seeded.name}-{n}")))
+
+        runs_of |= {
+            f"veronte4x, first run (empty cache){suffix}": (load_it, environ, cold),
+            f"veronte4x, first run of this tree (the cache has seen another){suffix}": (
+                load_it,
+                environ,
+                seeded_copy,
+            ),
+            f"veronte4x, from the cache{suffix}": (load_it, environ, lambda n, w=warm: w),
+            f"veronte4x, no cache (VERONTE4X_CACHE_DIR=off){suffix}": (
+                load_it,
+                environ,
+                lambda n: "off",
+            ),
+        }
+    runs_of["dronecan package: parse the tree (after import dronecan)"] = (
+        child("dronecan_parse", root),
+        dict(os.environ),
+        lambda n: "off",
+    )
     rows: dict[str, list[tuple[float, float, float]]] = {name: [] for name in runs_of}
     types: dict[str, str] = {}
     before = load()
     for run in range(runs):
-        for name, (command, cache) in runs_of.items():
-            env = {**os.environ, "VERONTE4X_CACHE_DIR": cache(run)}
+        for name, (command, environ, cache) in runs_of.items():
+            env = {**environ, "VERONTE4X_CACHE_DIR": cache(run)}
             start = time.perf_counter()
             done = subprocess.run(command, env=env, check=True, capture_output=True, text=True)
             whole = time.perf_counter() - start
@@ -494,16 +517,30 @@ def main() -> None:
         "--lines", type=int, nargs="+", default=[100, 5000], help="lines of each decoded file"
     )
     parser.add_argument("--quick", action="store_true", help="one run of each on 100 lines")
+    parser.add_argument(
+        "--sections", nargs="+", choices=SECTIONS, default=SECTIONS, help="the sections to run"
+    )
+    parser.add_argument(
+        "--against",
+        metavar="SRC",
+        help="another veronte4x's src directory (a checkout of main, say): the user-dsdl"
+        " section times its runs too, taking turns with this tree's",
+    )
     args = parser.parse_args()
     runs, sizes = (1, [100]) if args.quick else (args.runs, args.lines)
     print(f"Python {platform.python_version()}, {os.cpu_count()} CPUs, wall time per process")
     with tempfile.TemporaryDirectory() as folder:
-        imports(runs)
-        decoding(Path(folder), sizes, runs)
-        dsdl(runs)
-        user_dsdl(Path(folder), runs)
-        first_transfers(runs)
-        monitoring(Path(folder), max(sizes), runs)
+        sections: dict[str, Callable[[], None]] = {
+            "import": lambda: imports(runs),
+            "decode": lambda: decoding(Path(folder), sizes, runs),
+            "dsdl": lambda: dsdl(runs),
+            "user-dsdl": lambda: user_dsdl(Path(folder), runs, args.against),
+            "first-transfer": lambda: first_transfers(runs),
+            "monitor": lambda: monitoring(Path(folder), max(sizes), runs),
+        }
+        for name in SECTIONS:
+            if name in args.sections:
+                sections[name]()
 
 
 if __name__ == "__main__":
