@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import contextlib
 import functools
+import io
 import math
+import sys
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import pytest
 from hypothesis import strategies as st
 
-from veronte4x import codec, dronecan
+from veronte4x import capture, codec, dronecan
 from veronte4x.capture import BusMap
 from veronte4x.capture.busmap import TEXT_FORMS
 from veronte4x.capture.columnar import engine
@@ -353,6 +357,24 @@ def captures(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
 def write(path: Path, lines: list[str], ending: str = "\n") -> Path:
     path.write_bytes("".join(line + ending for line in lines).encode())
     return path
+
+
+@contextlib.contextmanager
+def piped(path: Path) -> Iterator[None]:
+    """Standard input holding the bytes of ``path`` (peekable, as a pipe is), for ``-``."""
+    stdin = sys.stdin
+    sys.stdin = io.TextIOWrapper(io.BufferedReader(io.BytesIO(path.read_bytes())))
+    try:
+        yield
+    finally:
+        sys.stdin = stdin
+
+
+def read_piped(path: Path, *args: Any, **kwargs: Any) -> dict[str, Any]:
+    """`capture.read_tables` of ``path`` given on standard input."""
+    with piped(path):
+        tables: dict[str, Any] = capture.read_tables("-", *args, **kwargs)
+    return tables
 
 
 def rows(table: Any) -> list[dict[str, Any]]:

@@ -1,8 +1,7 @@
 """The columnar engine on captures of many DroneCAN sessions (issue 19, "no cliff"): the
 column-wise path takes every regular session whatever their number, and the tables stay
 those of the per-frame decoder, sessions concurrent or not, faults included; both for a
-file decoded in batches (`read_tables`) and for whole columns (`engine.decode_into`,
-what standard input takes)."""
+file and for the same bytes on standard input (`read_tables` of ``-``), in batches."""
 
 from __future__ import annotations
 
@@ -13,10 +12,10 @@ import numpy as np
 import pytest
 
 import veronte4x.dronecan
-from tests.capture.columnar_support import assert_same_tables, many_sessions, write
+from tests.capture.columnar_support import assert_same_tables, many_sessions, read_piped, write
 from veronte4x import capture
 from veronte4x.capture.columnar import dronecan, engine
-from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.capture.columnar.stream import StreamDecoder
 
 pytest.importorskip("pyarrow")
 
@@ -45,7 +44,7 @@ def test_one_session_after_another_stays_column_wise(
     assert per_frame == 0
     expected = capture.tables_from_records(capture.read(path))
     assert_same_tables(got, expected)
-    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)
+    assert_same_tables(read_piped(path), expected)
 
 
 @pytest.mark.parametrize(
@@ -65,7 +64,7 @@ def test_many_sessions_agree(count: int, concurrent: bool, faults: float, tmp_pa
     path = write(tmp_path / "capture.log", many_sessions(count, concurrent, faults, seed=count))
     expected = capture.tables_from_records(capture.read(path))
     assert_same_tables(capture.read_tables(path), expected)
-    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)
+    assert_same_tables(read_piped(path), expected)
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -83,14 +82,16 @@ def test_a_session_left_open_before_a_thousand_others_agrees(
     others = many_sessions(dronecan.MAX_SESSIONS + seed, concurrent=False, transfers=1, seed=seed)
     path = write(tmp_path / "capture.log", lines + cut[: 1 + seed % 2] + others)
     expected = capture.tables_from_records(capture.read(path))
-    passes = []
-    original = engine._decode
+    passes: list[frozenset[str]] = []
 
     def counting(*args: Any) -> Any:
-        passes.append(args[2].copy())
-        return original(*args)
+        decoder = StreamDecoder(*args)
+        passes.append(decoder.per_frame_channels)
+        return decoder
 
-    monkeypatch.setattr(engine, "_decode", counting)
-    assert_same_tables(engine.decode_into(read_frames(path)).finish(), expected)  # whole
-    assert [whole.any() for whole in passes] == [False, True]  # decoded again, by frame
-    assert_same_tables(capture.read_tables(path), expected)  # in batches
+    monkeypatch.setattr("veronte4x.capture.columnar.StreamDecoder", counting)
+    assert_same_tables(capture.read_tables(path), expected)
+    assert passes == [frozenset(), {"can0"}]  # decoded again, can0 frame by frame
+    passes.clear()
+    assert_same_tables(read_piped(path), expected)  # the same, read once from a pipe
+    assert passes == [frozenset(), {"can0"}]

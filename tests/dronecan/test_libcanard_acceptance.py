@@ -23,12 +23,9 @@ from typing import Any
 
 import pytest
 from libcanard_streams import VECTORS
-from tests.capture.columnar_support import assert_same_tables, write
+from tests.capture.columnar_support import assert_same_tables, read_piped, write
 
 from veronte4x import capture, dronecan
-from veronte4x.capture import BusMap
-from veronte4x.capture.columnar import engine
-from veronte4x.capture.columnar.sources import read_frames
 from veronte4x.dronecan import Problem, Problems, TypeSet
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID
@@ -37,7 +34,6 @@ from veronte4x.errors import DecodeError
 DOCUMENT = json.loads(VECTORS.read_text())
 STANDARD = TypeSet.standard()
 """The types libcanard was told to accept when it made the vectors (the standard set)."""
-STANDARD_MAP = BusMap().with_types(STANDARD)
 STREAMS: dict[str, Any] = DOCUMENT["streams"]
 
 # libcanard's return codes (canard.h) and the problems that name them.
@@ -174,7 +170,7 @@ def test_read_tables_accepts_what_libcanard_does(name: str, tmp_path: Path) -> N
     assert [(r.channel, r.node_id, r.message) for r in records if r.message is not None] == want
     tables = capture.tables_from_records(records, types=STANDARD)
     assert_same_tables(capture.read_tables(path, types=STANDARD), tables)
-    assert_same_tables(engine.decode_into(read_frames(path), STANDARD_MAP).finish(), tables)
+    assert_same_tables(read_piped(path, types=STANDARD), tables)
 
 
 def _pydronecan(stream: dict[str, Any]) -> int:

@@ -26,12 +26,10 @@ except ModuleNotFoundError as missing:  # pragma: no cover - the arrow extra is 
 
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.columnar import batches
-from veronte4x.capture.columnar.batches import ahead, read_batches
-from veronte4x.capture.columnar.engine import decode_into, tables_from_records
-from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.capture.columnar.batches import Reread, ahead, rereadable
+from veronte4x.capture.columnar.engine import tables_from_records
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import Clock
-from veronte4x.capture.source import STDIN
 from veronte4x.progress import Bar
 
 __all__ = ["keyed_tables", "read_tables", "tables_from_records"]
@@ -103,24 +101,19 @@ def keyed_tables(
 ) -> dict[str, tuple[pa.Table, npt.NDArray[np.int64]]]:
     """The tables of one capture, each with the capture-order keys of its rows.
 
-    A file is decoded batch by batch (as `veronte4x.capture.to_parquet` decodes it), so
-    that memory holds the tables and one batch, not the whole capture's frames; standard
-    input, which cannot be read twice, is decoded whole. ``reached``, if given, is called
-    with the bytes of the file read so far after each batch (for a progress bar).
+    The capture is decoded batch by batch (as `veronte4x.capture.to_parquet` decodes
+    it), so that memory holds the tables and one batch, not the whole capture's frames;
+    standard input and a pipe, which cannot be read twice, keep their batches as they come
+    (to decode again a channel that must go frame by frame). ``reached``, if given, is
+    called with the bytes of the file read so far after each batch (for a progress bar).
     ``time``: the form of the ``timestamp`` column (`veronte4x.times.TimeForm`).
     """
     clock = Clock(time, channel)
-    if os.fspath(path) == STDIN:
-        frames = read_frames(path)
-        clock.see(frames)
-        tables = decode_into(frames, bus_map, channel).finish_with_keys()
-    else:
-        tables = _batched(path, bus_map, channel, reached, clock)
-    return clock(tables)
+    return clock(_batched(rereadable(path, batches.BATCH_BYTES), bus_map, channel, reached, clock))
 
 
 def _batched(
-    path: CapturePath,
+    read: Reread,
     bus_map: BusMap | None,
     channel: str | None,
     reached: Callable[[int], None] | None,
@@ -131,7 +124,7 @@ def _batched(
         decoder = StreamDecoder(bus_map, channel, per_frame)
         parts: dict[str, list[tuple[pa.Table, npt.NDArray[np.int64]]]] = {}
         try:
-            for batch in ahead(read_batches(path, batches.BATCH_BYTES), decoder.prepare):
+            for batch in ahead(read(), decoder.prepare):
                 clock.see(batch.frames)
                 for kind, part in decoder.feed_with_keys(batch.frames, batch.prepared).items():
                     parts.setdefault(kind, []).append(part)

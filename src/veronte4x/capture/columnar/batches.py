@@ -29,7 +29,7 @@ from veronte4x.capture.columnar.frames import FrameColumns, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
 from veronte4x.capture.readers.registry import load
-from veronte4x.capture.source import Source, Truncated, open_lines, resolve
+from veronte4x.capture.source import STDIN, Source, Truncated, open_lines, resolve
 
 BATCH_BYTES = 1 << 22
 """Bytes of candump text decoded at once."""
@@ -53,6 +53,10 @@ class Batch:
     prepared: Any = None
 
 
+Reread = Callable[[], Iterator[Batch]]
+"""Reads a capture's batches from its start (see `rereadable`)."""
+
+
 def read_batches(
     path: str | os.PathLike[str],
     batch_bytes: int = BATCH_BYTES,
@@ -68,6 +72,29 @@ def read_batches(
         batches: Iterator[Batch] = load(source.reader.batches)(source, batch_bytes, batch_frames)
         return batches
     return _frames(source, batch_frames)
+
+
+def rereadable(path: str | os.PathLike[str], batch_bytes: int = BATCH_BYTES) -> Reread:
+    """What reads a capture's batches from its start each time it is called: `read_batches`
+    of a file; of standard input or a pipe, which can be read once, the batches read so far
+    (kept, so memory holds the whole capture) and then the rest.
+
+    Raises:
+        ImportError: The format needs python-can (or asammdf) and it is not installed.
+    """
+    name = os.fspath(path)
+    if name != STDIN and os.path.isfile(name):
+        return lambda: read_batches(name, batch_bytes)
+    kept: list[Batch] = []
+    rest = read_batches(name, batch_bytes)
+
+    def again() -> Iterator[Batch]:
+        yield from kept
+        for batch in rest:
+            kept.append(batch)  # before it is handed out: a pass stopped there reads it again
+            yield batch
+
+    return again
 
 
 def _frames(source: Source, batch_frames: int) -> Iterator[Batch]:

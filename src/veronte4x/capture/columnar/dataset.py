@@ -47,7 +47,7 @@ import pyarrow.compute as pc
 import pyarrow.parquet as pq
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, read_batches
+from veronte4x.capture.columnar.batches import BATCH_BYTES, ahead, rereadable
 from veronte4x.capture.columnar.stream import StreamDecoder, TooManySessions
 from veronte4x.capture.columnar.tables import Clock
 from veronte4x.capture.datasets import CAPTURE, capture_directory, resolved, table_file
@@ -171,6 +171,7 @@ def convert_file(
     if name == STDIN:
         raise SourceError("a dataset is written from files: give a capture file, not -")
     started = time.perf_counter()
+    read = rereadable(name, batch_bytes)  # a pipe is read once
     per_frame: list[str] = []
     truncated: list[str] = []
     while True:  # once more per channel with more DroneCAN sessions than a table holds
@@ -180,7 +181,7 @@ def convert_file(
         frames = bad = 0
         truncated.clear()
         try:
-            for batch in ahead(read_batches(name, batch_bytes), decoder.prepare):
+            for batch in ahead(read(), decoder.prepare):
                 frames += len(batch.frames)
                 clock.see(batch.frames)
                 tables = decoder.feed_with_keys(batch.frames, batch.prepared)

@@ -18,7 +18,7 @@ id on) makes the session irregular. Every frame of any other session, and every 
 reassembler refuses on its own (no tail byte, anonymous, unknown type, node id 0), goes to
 the reassembler itself. Sessions interact only through the reassembler's table of
 `MAX_SESSIONS` sessions per channel, which drops the session whose latest transfer began
-first when a new one comes (see `table_safe`): dropping a regular session between two of
+first when a new one comes (see `Spans`): dropping a regular session between two of
 its transfers changes nothing, so any number of sessions stays column-wise as long as no
 drop can reach a transfer in progress or an irregular session; a channel where one might
 goes to the reassembler whole.
@@ -176,7 +176,6 @@ def regular_sessions(
     types: npt.NDArray[np.int16],
     known: TypeIndex,
     timeout: float = TRANSFER_ID_TIMEOUT,
-    table: bool = True,
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
     """Sort frames by session and find the regular sessions.
 
@@ -186,9 +185,6 @@ def regular_sessions(
             and type index (all >= 0).
         known: The types the indexes number.
         timeout: The transfer-ID timeout.
-        table: Make the sessions of a channel the session table could reach irregular
-            (`table_safe`, the frames given in capture order); False where the caller
-            checks that itself.
 
     Returns:
         The frames' order by session (capture order within one), and for each frame in
@@ -236,78 +232,26 @@ def regular_sessions(
     sessions = session[-1] + 1 if n else 0
     broken = np.bincount(session[bad], minlength=sessions) > 0 if n else np.zeros(0, np.bool_)
     regular = ~broken[session] if n else np.zeros(0, np.bool_)
-    if n and table:
-        channels = channel[order]
-        crowded = ~table_safe(channels[opens], order, opens, start, ~broken)
-        regular &= ~crowded[channels]
     return order, regular
 
 
-def table_safe(
-    session_channel: npt.NDArray[np.int32],
-    position: npt.NDArray[np.int64],
-    opens: npt.NDArray[np.bool_],
-    start: npt.NDArray[np.bool_],
-    session_regular: npt.NDArray[np.bool_],
-) -> npt.NDArray[np.bool_]:
-    """Which channels the reassembler's session table cannot make differ from the columns.
+class Spans:
+    """The first and last frame positions of sessions, to bound how many sessions used the
+    table between two frames.
 
     The table holds `MAX_SESSIONS` sessions; a new session drops the one whose latest
     transfer began (or that entered the table) first. So a session is dropped only after
     ``MAX_SESSIONS`` other sessions used the table since its latest transfer began, and
     only sessions with a frame between two frames can have used it in between: at most the
     sessions whose first frame comes before the later frame and whose last frame after the
-    earlier one. A channel is safe when, so counted, no drop can fall within a multi-frame
-    transfer of a regular session nor between the first and last frames of an irregular
-    one, and it has at most ``MAX_SESSIONS`` irregular sessions (so that the reassembler
-    fed those alone never drops one either). A regular session dropped between transfers
-    comes back as it was (its next transfer neither repeats nor continues anything). What a
-    drop after an irregular session's last frame reports is checked afterwards
-    (`dropped_after`).
-
-    Args:
-        session_channel: Channel code of each session.
-        position: Capture position (any increasing numbering of the frames that use the
-            table) of each frame, in session order.
-        opens: Each frame opens its session.
-        start: Each frame opens a transfer.
-        session_regular: Each session is regular.
-
-    Returns:
-        Per channel code (up to the largest), whether it is safe.
+    earlier one (`reach`). A channel is safe when, so counted, no drop can fall within a
+    multi-frame transfer of a regular session nor between the first and last frames of an
+    irregular one, it has at most ``MAX_SESSIONS`` irregular sessions (so that the
+    reassembler fed those alone never drops one either), and no session left holding a
+    transfer at the end has ``MAX_SESSIONS`` others after its last frame (`later`). A
+    regular session dropped between transfers comes back as it was (its next transfer
+    neither repeats nor continues anything).
     """
-    size = int(session_channel.max(initial=0)) + 1
-    counts = np.bincount(session_channel, minlength=size)
-    safe = counts <= MAX_SESSIONS
-    if safe.all():
-        return safe
-    heads = np.flatnonzero(opens)
-    tails = np.append(heads[1:] - 1, len(position) - 1)
-    first, last = position[heads], position[tails]
-    spans = Spans(session_channel, first, last)
-    overlapping = spans.reach
-    irregular = np.flatnonzero(~session_regular)
-    too_many = np.bincount(session_channel[irregular], minlength=size) > MAX_SESSIONS
-    reach = overlapping(session_channel[irregular], first[irregular], last[irregular])
-    reach[first[irregular] == last[irregular]] = 0  # one frame: none between
-    unsafe = np.bincount(session_channel[irregular], weights=reach >= MAX_SESSIONS, minlength=size)
-    # Multi-frame transfers of regular sessions.
-    session = np.cumsum(opens) - 1
-    begins = np.flatnonzero(start & session_regular[session])
-    ends = np.append(begins[1:] - 1, len(position) - 1)
-    ends = np.minimum(ends, tails[session[begins]])
-    multi = ends > begins
-    begins, ends = begins[multi], ends[multi]
-    owner = session_channel[session[begins]]
-    reach = overlapping(owner, position[begins], position[ends])
-    unsafe = unsafe + np.bincount(owner, weights=reach >= MAX_SESSIONS, minlength=size)
-    result: npt.NDArray[np.bool_] = safe | ((unsafe == 0) & ~too_many)
-    return result
-
-
-class Spans:
-    """The first and last frame positions of sessions, to bound how many sessions used the
-    table between two frames (see `table_safe`)."""
 
     def __init__(
         self,
@@ -336,26 +280,6 @@ class Spans:
             np.searchsorted(self.lasts, offset + last, "right")
         )
         return after
-
-
-def dropped_after(
-    channel: npt.NDArray[np.int32],
-    can_id: npt.NDArray[np.uint32],
-    asked_channel: int,
-    asked: list[int],
-) -> bool:
-    """Whether the table may drop any of the ``asked`` sessions (CAN IDs without priority)
-    of ``asked_channel`` after its last frame: at least `MAX_SESSIONS` other sessions of
-    the channel have a frame later (``channel`` and ``can_id``: the frames that use the
-    table, in capture order)."""
-    mine = np.flatnonzero(channel == asked_channel)
-    keys = can_id[mine].astype(np.int64) & 0xFFFFFF
-    unique, back = np.unique(keys[::-1], return_index=True)
-    last = len(keys) - 1 - back
-    ordered = np.sort(last)
-    wanted = np.isin(unique, np.array(asked, np.int64))
-    later = len(ordered) - np.searchsorted(ordered, last[wanted], "right")
-    return bool((later >= MAX_SESSIONS).any())
 
 
 def transfers(

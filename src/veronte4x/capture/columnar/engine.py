@@ -10,16 +10,14 @@ gives, whichever path decoded them.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Iterator
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import numpy.typing as npt
 import pyarrow as pa
 
 from veronte4x.capture.busmap import BusMap
-from veronte4x.capture.columnar import dbc, dronecan, payloads, veronte
+from veronte4x.capture.columnar import dronecan, payloads, veronte
 from veronte4x.capture.columnar.frames import FrameColumns
 from veronte4x.capture.columnar.schema import NODE_SENDER, SENDER_INDEX, all_specs, field_column
 from veronte4x.capture.columnar.tables import SUB, Tables
@@ -31,67 +29,6 @@ from veronte4x.codec.messages import Sender
 from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import Problem, ProblemReport
 from veronte4x.errors import DecodeError
-
-
-def decode_into(
-    frames: FrameColumns, bus_map: BusMap | None = None, channel: str | None = None
-) -> Tables:
-    """Decode a capture's frames into tables still being built (their rows keyed)."""
-    bus_map = bus_map or BusMap()
-    if channel is not None:
-        frames = only_channel(frames, channel)
-    whole = np.zeros(len(frames.channels) + 1, np.bool_)
-    while True:
-        tables, decoder, rows = _decode(frames, bus_map, whole)
-        dropped = _dropped_channels(frames, rows, decoder, whole)
-        if not dropped:
-            return tables
-        whole[dropped] = True  # rare: decode those channels again, frame by frame
-
-
-def _decode(
-    frames: FrameColumns, bus_map: BusMap, whole: npt.NDArray[np.bool_]
-) -> tuple[Tables, CaptureDecoder, npt.NDArray[np.int64]]:
-    """Decode, the DroneCAN frames of ``whole`` channels all frame by frame; also return
-    the per-frame decoder and the DroneCAN frames that use the reassembler's table."""
-    tables = Tables(
-        all_specs(bus_map.codec(), bus_map.dronecan_types, bus_map.dronecan_text),
-        list(frames.channels),
-    )
-    plain, sender_code = _routes(frames, bus_map)
-    dronecan_rows = np.flatnonzero(plain & frames.extended & (sender_code < 0))
-    if not bus_map.dronecan:
-        dronecan_rows = dronecan_rows[:0]
-    known = dronecan.type_index_of(bus_map.dronecan_types)
-    with ThreadPoolExecutor(1) as pool:  # DroneCAN beside Veronte: NumPy frees the GIL
-        taken = pool.submit(_decode_dronecan, frames, dronecan_rows, known, tables, whole)
-        done = _decode_senders(frames, bus_map, sender_code, tables)
-        done[taken.result()] = True
-    dbc.decode_dbc_frames(frames, bus_map, done, tables)
-    decoder = CaptureDecoder(bus_map)
-    tables.add_records(per_frame(frames, np.flatnonzero(~done), decoder))
-    return tables, decoder, dronecan_inputs(frames, dronecan_rows, known)[0]
-
-
-def _dropped_channels(
-    frames: FrameColumns,
-    rows: npt.NDArray[np.int64],
-    decoder: CaptureDecoder,
-    whole: npt.NDArray[np.bool_],
-) -> list[int]:
-    """Channels (codes) where the full reassembler's table could have dropped an irregular
-    session after its last frame while it held a transfer, which would have reported it:
-    see `dronecan.table_safe`. The per-frame decoder's reassemblers hold just those
-    sessions; expiring them all tells which still hold a transfer."""
-    found = []
-    for name, reassembler in decoder.reassemblers.items():
-        code = frames.channels.index(name)
-        if whole[code] or reassembler.session_count == 0:
-            continue
-        keys = [report.can_id for report in reassembler.expire_reports(math.inf)]
-        if keys and dronecan.dropped_after(frames.channel[rows], frames.can_id[rows], code, keys):
-            found.append(code)
-    return found
 
 
 def decode_veronte(
@@ -188,29 +125,6 @@ def _decode_veronte(
         tables.add_columns(layout.name, frames.order[taken] * SUB, head, fields)
         decoded.append(taken)
     return np.concatenate(decoded) if decoded else np.zeros(0, np.int64)
-
-
-def _decode_dronecan(
-    frames: FrameColumns,
-    rows: npt.NDArray[np.int64],
-    known: dronecan.TypeIndex,
-    tables: Tables,
-    whole: npt.NDArray[np.bool_],
-) -> npt.NDArray[np.int64]:
-    """Reassemble and decode the regular sessions of the ``known`` types column-wise, but
-    for the ``whole`` channels; return the rows taken."""
-    rows, types, stamp = dronecan_inputs(frames, rows, known)
-    rows = rows[~whole[frames.channel[rows]]]
-    if not len(rows):
-        return rows
-    tail = frames.data[rows, frames.length[rows] - 1]
-    order, regular = dronecan.regular_sessions(
-        frames.channel[rows], frames.can_id[rows], stamp[rows], frames.length[rows], tail,
-        types[rows], known,
-    )  # fmt: skip
-    taken = rows[order[regular]]
-    decode_transfers(frames, taken, types, stamp, known, tables)
-    return taken
 
 
 def dronecan_inputs(

@@ -1,5 +1,6 @@
 """Decode a capture batch by batch, in memory that does not grow with it.
 
+The one driver of the columnar engine, for files, pipes and standard input alike.
 `StreamDecoder` takes the frames of a capture in consecutive batches and gives, for each,
 the rows of `veronte4x.capture.read_tables` that batch completes, in capture order: the
 batches' tables, one after the other, are those of the whole capture.
@@ -24,7 +25,7 @@ frame or column by column with no state between batches, except the DroneCAN rea
   the reassembler takes the session's frames from there on.
 - A channel with more sessions than the reassembler's table stays column-wise while the
   table cannot reach a transfer in progress or an irregular session (the rule of
-  `veronte4x.capture.columnar.dronecan.table_safe`, checked with every session's first
+  `veronte4x.capture.columnar.dronecan.Spans`, checked with every session's first
   and last frame so far, and at `finish` for sessions left holding a transfer). Where it
   could, the channel goes to the per-frame decoder whole; the batches seen so far are
   then wrong, and `TooManySessions` says to start over with that channel in
@@ -199,7 +200,6 @@ class StreamDecoder:
             checked,
             types[rows],
             self._known,
-            table=False,
         )
         regular = np.empty(len(rows), np.bool_)
         regular[order] = in_order
