@@ -68,6 +68,7 @@ bench: $(VENV)/.installed-dev
 	$(BIN)/python benchmarks/bench_columnar.py
 	$(BIN)/python benchmarks/bench_fleet.py
 	$(BIN)/python benchmarks/bench_dbc.py
+	$(BIN)/python benchmarks/bench_dronecan_types.py
 	$(BIN)/python benchmarks/bench_mf4_memory.py
 
 # Not part of check: a sampled mutation run (docs/mutation.md), each mutant against the

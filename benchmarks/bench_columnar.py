@@ -52,8 +52,9 @@ import numpy as np
 from asammdf import MDF
 from bench_capture import ROOT, flight_lines, make_file
 
-from veronte4x import capture
+from veronte4x import capture, dronecan
 from veronte4x.capture.columnar.sources import read_frames
+from veronte4x.dronecan.definitions import DATA_TYPES
 
 VERONTE_IDS = ((255, "Arbiter"), (8, "AP1"), (9, "AP2"), (10, "AP3"), (11, "External"))
 PWM_COMMANDS = (2, 3, 11, 12, 13)
@@ -354,6 +355,40 @@ def vehicle_lines(frames: int) -> list[str]:
     make = runpy.run_path(str(ROOT / "examples" / "make_vehicle_bus.py"))
     lines: list[str] = make["vehicle_lines"](frames)
     return lines
+
+
+EVERY_TYPE_NODE = 90
+"""The node of `every_type_lines`' extra streams (the vehicle bus's autopilot is 10)."""
+
+
+def every_type_lines(frames: int) -> list[str]:
+    """The first ``frames`` lines of the vehicle bus (`vehicle_lines`) with every other
+    standard DroneCAN type beside it: each message type the bus lacks once a second from
+    node 90, each service's request once a second from the autopilot to node 90 and its
+    response back, values zero and arrays empty (``_plain_defaults`` of the example)."""
+    make = runpy.run_path(str(ROOT / "examples" / "make_vehicle_bus.py"))
+    vehicle = make["vehicle_lines"](frames)
+    seconds = frames / make["frames_per_second"]() + 1.0
+    on_bus = {name for _, _, name, _ in make["_traffic"]()}
+    timed = [(float(line[1 : line.index(")")]), line) for line in vehicle]
+    for stream, data_type in enumerate(DATA_TYPES):
+        if data_type.full_name in on_bus:
+            continue
+        service = data_type.kind is not dronecan.TransferKind.MESSAGE
+        request = data_type.kind is dronecan.TransferKind.REQUEST
+        source = make["AUTOPILOT"] if request else EVERY_TYPE_NODE
+        target = (EVERY_TYPE_NODE if request else make["AUTOPILOT"]) if service else None
+        message = make["_message"](data_type, {})
+        for k in range(int(seconds)):
+            t = make["START"] + k + stream * 1e-3 + (0.5e-3 if service and not request else 0)
+            made = dronecan.encode(
+                message, source_node_id=source, transfer_id=k % 32, destination_node_id=target
+            )
+            for index, f in enumerate(made):
+                stamp = t + index * 1.3e-4
+                timed.append((stamp, f"({stamp:.6f}) can0 {f.can_id:08X}#{f.data.hex().upper()}"))
+    timed.sort(key=lambda item: item[0])
+    return [line for _, line in timed[:frames]]
 
 
 STAGES = (

@@ -77,6 +77,11 @@ RUNS = [
             "veronte4x monitor --speed 1",
         ],
     ),
+    (
+        "bench_dronecan_types.py",
+        ["--frames", "3000", "--repeat", "1", "--shape", "every"],
+        ["uavcan.protocol.param.GetSet", "DroneCAN stages, ns a frame"],
+    ),
     ("bench_mf4_memory.py", ["--frames", "20000"], ["MF4 file: 20000 frames", "peak RSS", "bound"]),
     (
         "bench_fleet.py",

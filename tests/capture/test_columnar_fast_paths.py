@@ -71,6 +71,28 @@ def test_whole_byte_scalars_read_as_the_bit_runs(bits: int, offset: int) -> None
         assert int(got[row]) == _by_runs(matrix[row].tobytes(), t, offset)
 
 
+@settings(max_examples=300)
+@given(st.integers(1, 64), st.integers(0, 40), st.sampled_from(["uint", "int"]))
+def test_scalars_of_any_width_at_any_offset_read_as_the_bit_runs(
+    bits: int, offset: int, kind: str
+) -> None:
+    """Fields within one 8-byte window read from it, the others bit run by bit run;
+    windows shared by the fields of one matrix."""
+    rng = np.random.default_rng(bits * 100 + offset)
+    size = (offset + bits + 7) // 8
+    matrix = np.zeros((16, size + 8), np.uint8)
+    matrix[:, :size] = rng.integers(0, 256, (16, size), dtype=np.uint8)
+    matrix[0, :size] = 0xFF
+    windows: dict[int, np.ndarray] = {}
+    dronecan.scalar(matrix, Scalar("uint", 8), offset // 8 * 8, windows)
+    got = dronecan.scalar(matrix, Scalar(kind, bits), offset, windows)
+    for row in range(len(matrix)):
+        raw = _by_runs(matrix[row].tobytes(), Scalar(kind, bits), offset)
+        if kind == "int" and raw >> (bits - 1):
+            raw -= 1 << bits
+        assert int(got[row]) == raw
+
+
 @settings(max_examples=100)
 @given(
     st.integers(0, 40),

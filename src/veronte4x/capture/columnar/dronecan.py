@@ -38,7 +38,7 @@ from veronte4x.capture.columnar.payloads import integer_dtype
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
-from veronte4x.dronecan.scalar_code import bit_runs
+from veronte4x.dronecan.scalar_code import be_runs, bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 
@@ -385,20 +385,41 @@ _WHOLE: dict[int, np.dtype[Any]] = {
 _bit_runs = functools.cache(bit_runs)
 
 
-def scalar(matrix: np.ndarray, t: Scalar, offset: int) -> np.ndarray:
+_be_runs = functools.cache(be_runs)
+
+
+def _window(matrix: np.ndarray, first: int, windows: dict[int, np.ndarray]) -> np.ndarray:
+    """The 8 bytes of each row from byte ``first`` on as one big-endian integer (the rows
+    hold 8 bytes of padding), made once per byte for all the fields it holds."""
+    word = windows.get(first)
+    if word is None:
+        octets = np.ascontiguousarray(matrix[:, first : first + 8])
+        word = windows[first] = octets.view(">u8")[:, 0].astype(np.uint64)
+    return word
+
+
+def scalar(
+    matrix: np.ndarray, t: Scalar, offset: int, windows: dict[int, np.ndarray] | None = None
+) -> np.ndarray:
     """A DSDL scalar at bit ``offset`` of the stream, for every row, as the codec decodes it
-    (integers sign-extended, floats widened exactly, bools)."""
-    if offset % 8 == 0 and t.bits in _WHOLE:  # whole bytes, little-endian: one view
-        at = offset // 8
-        whole = np.ascontiguousarray(matrix[:, at : at + t.bits // 8])
+    (integers sign-extended, floats widened exactly, bools). ``windows``: the rows' 8-byte
+    windows already read (`_window`), shared by the fields of one matrix."""
+    first, shift = divmod(offset, 8)
+    if not shift and t.bits in _WHOLE:  # whole bytes, little-endian: one view
+        whole = np.ascontiguousarray(matrix[:, first : first + t.bits // 8])
         raw = whole.view(_WHOLE[t.bits])[:, 0].astype(np.uint64)
+    elif shift + t.bits <= 64:  # within one 8-byte window: its bit runs from one read
+        word = _window(matrix, first, {} if windows is None else windows)
+        raw = np.zeros(len(matrix), np.uint64)
+        for source, width, at in _be_runs(shift, t.bits, 64):
+            raw |= ((word >> np.uint64(at)) & np.uint64((1 << width) - 1)) << np.uint64(source)
     else:
         raw = np.zeros(len(matrix), np.uint64)
         for source, width, dest in _bit_runs(offset, t.bits):
             raw |= _bits(matrix, dest, width) << np.uint64(source)
     if t.kind == "int":
-        signed: np.ndarray = raw.astype(np.int64)
-        signed -= ((signed >> (t.bits - 1)) & 1) * (1 << t.bits)
+        spare = np.uint64(64 - t.bits)  # sign-extended by shifts: any width up to 64
+        signed: np.ndarray = (raw << spare).view(np.int64) >> spare.astype(np.int64)
         return signed
     if t.kind == "float":
         if t.bits == 16:
@@ -424,10 +445,11 @@ def decode_fixed(struct: Struct, matrix: np.ndarray) -> dict[str, Any]:
     """Every field of a struct of scalars, by name (enum fields as their wire value)."""
     out: dict[str, Any] = {}
     offset = 0
+    windows: dict[int, np.ndarray] = {}
     for f in struct.fields:
         assert isinstance(f.type, Scalar)
         if f.name:
-            value = scalar(matrix, f.type, offset)
+            value = scalar(matrix, f.type, offset, windows)
             if f.type.kind in ("int", "uint"):  # as the column holds it
                 value = value.astype(integer_dtype(f.type))
             out[f.name] = value

@@ -348,8 +348,8 @@ def _ordered(
     item: Struct | Union, pieces: list[pa.Array], places: list[Ints], size: int
 ) -> pa.Array:
     """Items decoded in pieces, put at their places (the places of all ``size`` items)."""
-    if not pieces:  # with the enums' whole dictionaries, as every other piece has them
-        return arrow_values(item, [])
+    if not pieces:
+        return _no_items(item)
     joined = pa.concat_arrays(pieces)
     where = np.concatenate(places)
     if (where[1:] > where[:-1]).all():  # in order already (one piece, say): no take
@@ -357,6 +357,14 @@ def _ordered(
     order = np.empty(size, np.int64)
     order[where] = np.arange(size)
     return joined.take(pa.array(order))
+
+
+@functools.cache
+def _no_items(item: Struct | Union) -> pa.Array:
+    """No items of an array, with the enums' whole dictionaries as every other piece has
+    them: made once an item type (an array empty in every transfer of a batch is common:
+    Fix2's ``ecef_position_velocity``)."""
+    return arrow_values(item, [])
 
 
 def decode(

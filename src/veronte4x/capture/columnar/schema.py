@@ -47,7 +47,7 @@ import weakref
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from operator import attrgetter
-from typing import Any, cast
+from typing import Any, TypeAlias, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -143,6 +143,11 @@ class Column:
         return values if self.dsdl is None else arrow_values(self.dsdl, values)
 
 
+Making: TypeAlias = tuple[str, pa.DataType, str, str, tuple[str, ...] | None]
+"""How `veronte4x.capture.columnar.tables.Tables.add_columns` makes one column
+(`TableSpec.plan`)."""
+
+
 @dataclass(frozen=True)
 class TableSpec:
     """The schema of one message type's table.
@@ -165,9 +170,23 @@ class TableSpec:
         return pa.schema([*self.head, *fields])
 
     @functools.cached_property
-    def texts(self) -> frozenset[str]:
-        """The columns of text fields made strings (`Column.text`)."""
-        return frozenset(c.name for c in self.columns if c.text)
+    def plan(self) -> tuple[Making, ...]:
+        """How each column of `schema` is made, in order: (name, Arrow type, where from,
+        the key there, enum names). Where from: ``text`` (a text field's bytes), ``head``
+        (a head column) or ``field`` (a field's values; a dictionary column's key is its
+        `Column.source`, if any). Made once per spec."""
+        columns = {c.name: c for c in self.columns}
+        plan: list[Making] = []
+        for field in self.schema:
+            column = columns.get(field.name)
+            if column is None:
+                plan.append((field.name, field.type, "head", field.name, None))
+            elif column.text:
+                plan.append((field.name, field.type, "text", field.name, None))
+            else:
+                key = column.source or column.name
+                plan.append((field.name, field.type, "field", key, column.names))
+        return tuple(plan)
 
 
 def _unit(kind: str, name: str) -> dict[str, str] | None:

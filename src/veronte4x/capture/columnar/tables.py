@@ -68,35 +68,30 @@ class Tables:
 
         ``head`` holds ``time`` (`FrameColumns.time`), ``has_time``, ``channel`` (codes),
         ``can_id``, ``sender`` (codes into `SENDERS`), and for DroneCAN ``node_id`` and
-        ``destination_node_id``. Text columns (`TableSpec.texts`) take bytes: a value that
+        ``destination_node_id``. Text columns (`Column.text`) take bytes: a value that
         is not UTF-8 adds a row to ``errors`` (`veronte4x.capture.columnar.text`).
         """
         if not len(keys):
             return
-        spec = self.specs[kind]
-        names = {c.name: c.names for c in spec.columns}
-        sources = {c.name: c.source for c in spec.columns if c.source is not None}
         arrays: dict[str, pa.Array] = {}
-        for field in spec.schema:
-            if field.name in spec.texts:
-                arrays[field.name], bad = text.strings(fields[field.name])
+        for name, type_, where, key, names in self.specs[kind].plan:
+            if where == "text":
+                arrays[name], bad = text.strings(fields[name])
                 if bad.any():
-                    rows = text.bad_text_rows(kind, field.name, head, fields[field.name], bad)
+                    rows = text.bad_text_rows(kind, name, head, fields[name], bad)
                     self.add_columns("errors", keys[bad], rows, {})
-                continue
-            if field.name == "timestamp":
+            elif where == "field":
+                arrays[name] = _arrow(fields[key], type_, len(keys), names)
+            elif name == "timestamp":
                 time = np.asarray(head["time"], np.int64)
                 missing = ~np.asarray(head["has_time"], np.bool_) | (time == NO_TIME)
                 arrays["timestamp"] = pa.array(time, TIME, mask=missing)
-            elif field.name == "channel":
+            elif name == "channel":
                 arrays["channel"] = np.asarray(head["channel"], np.int32)
-            elif field.name == "sender":
+            elif name == "sender":
                 arrays["sender"] = np.asarray(head["sender"], np.int16)
-            elif field.name in head and field.name not in names:
-                arrays[field.name] = _arrow(head[field.name], field.type, len(keys))
             else:
-                values = fields[sources.get(field.name, field.name)]
-                arrays[field.name] = _arrow(values, field.type, len(keys), names.get(field.name))
+                arrays[name] = _arrow(head[name], type_, len(keys))
         with self._lock:
             self._parts.setdefault(kind, []).append((keys, arrays))
 
