@@ -4,7 +4,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: demo check lint types test docs bench mutation coverage clean
+.PHONY: demo check lint types test docs bench mutation coverage soak clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -83,6 +83,12 @@ mutation: $(VENV)/.installed-dev
 # with the tests that ran it: the mutation run's test map (docs/mutation.md).
 coverage: $(VENV)/.installed-dev
 	$(BIN)/python tests/mutation.py --coverage
+
+# Not part of check: the long runs (tests/soak.py), the tests marked soak, which the suite
+# deselects, and the differential tests with more examples (FACTOR times, hypothesis profile soak).
+soak: $(VENV)/.installed-dev
+	tests/on_loopback $(BIN)/python -m pytest --numprocesses auto --maxprocesses 4 \
+		-m "soak or differential" --hypothesis-profile=soak --timeout 3600
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info

@@ -19,6 +19,8 @@ import tempfile
 
 from hypothesis import settings
 
+from tests.soak import FACTOR
+
 os.environ.pop("VERONTE4X_DSDL_PATH", None)
 os.environ["HOME"] = tempfile.mkdtemp(prefix="veronte4x-tests-home-")
 atexit.register(shutil.rmtree, os.environ["HOME"], True)
@@ -29,4 +31,12 @@ settings.register_profile(
     "derandomized", parent=settings.get_profile("veronte4x"), derandomize=True, database=None
 )
 """For runs that must be repeatable (the mutation run): ``--hypothesis-profile=derandomized``."""
+settings.register_profile(
+    "soak",
+    parent=settings.get_profile("veronte4x"),
+    max_examples=settings.get_profile("default").max_examples * FACTOR,
+    derandomize=False,
+)
+"""For ``make soak`` (``tests/soak.py``): new random examples each run, `FACTOR` times the
+default count (each differential test `FACTOR` times its own)."""
 settings.load_profile("veronte4x")

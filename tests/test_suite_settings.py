@@ -1,13 +1,18 @@
 """The suite's shared settings hold for every test: no hypothesis deadline anywhere, no
-shared DuckDB connection."""
+shared DuckDB connection, and the soak run's long tests left out of it (``tests/soak.py``)."""
 
 import re
+import shlex
 from pathlib import Path
 
+import tomli
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from tests.soak import FACTOR, differential
+
 TESTS = Path(__file__).resolve().parent
+ROOT = TESTS.parent
 
 
 def test_the_loaded_profile_has_no_deadline() -> None:
@@ -45,3 +50,45 @@ def test_no_test_file_queries_duckdbs_shared_connection() -> None:
         if pattern.search(line)
     ]
     assert offenders == []
+
+
+def _recipe(target: str) -> str:
+    """The commands of one target of the Makefile."""
+    found = re.search(rf"^{target}:.*\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M)
+    assert found is not None, target
+    return found.group(1)
+
+
+def test_the_suite_deselects_the_soak_tests_and_make_soak_selects_them() -> None:
+    options = tomli.loads((ROOT / "pyproject.toml").read_text())["tool"]["pytest"]
+    assert shlex.split(options["ini_options"]["addopts"])[-2:] == ["-m", "not soak"]
+    assert " -m " not in _recipe("test").partition(" pytest ")[2]
+    assert '-m "soak or differential" --hypothesis-profile=soak --timeout 3600' in _recipe("soak")
+
+
+def test_the_soak_profile_draws_anew_with_no_deadline() -> None:
+    soak = settings.get_profile("soak")
+    assert (soak.deadline, soak.derandomize) == (None, False)
+    assert soak.max_examples == settings.get_profile("default").max_examples * FACTOR
+
+
+def _calls(count: int) -> int:
+    """How many examples a test of ``differential(count)`` runs under the loaded profile."""
+    calls = []
+
+    @differential(count)
+    @given(st.integers())
+    def test(value: int) -> None:
+        calls.append(value)
+
+    test()
+    return len(calls)
+
+
+def test_a_differential_test_runs_factor_times_its_examples_in_the_soak_run_only() -> None:
+    assert _calls(3) == 3
+    settings.load_profile("soak")
+    try:
+        assert _calls(3) == 3 * FACTOR
+    finally:
+        settings.load_profile("veronte4x")

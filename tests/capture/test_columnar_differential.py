@@ -6,7 +6,7 @@ import tempfile
 from pathlib import Path
 from unittest import mock
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, given
 from hypothesis import strategies as st
 
 from tests.capture.columnar_support import (
@@ -17,6 +17,7 @@ from tests.capture.columnar_support import (
     captures,
     write,
 )
+from tests.soak import differential
 from veronte4x import capture
 from veronte4x.capture import BusMap
 from veronte4x.capture.columnar import batches
@@ -25,7 +26,7 @@ from veronte4x.capture.frames import Frame, micros
 from veronte4x.capture.readers.candump import parse_line
 
 
-@settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
+@differential(150, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0", "can1"]), LINE_ENDINGS)
 def test_generated_captures_agree(
     data: st.DataObject, bus_map: BusMap, channel: str | None, ending: str
@@ -38,7 +39,7 @@ def test_generated_captures_agree(
     assert_same_tables(got, expected)
 
 
-@settings(max_examples=100, suppress_health_check=[HealthCheck.too_slow])
+@differential(100, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), VENDOR_BUS_MAPS, st.sampled_from([None, "can0"]), st.integers(1, 400))
 def test_generated_captures_with_vendor_types_agree(
     data: st.DataObject, bus_map: BusMap, channel: str | None, batch_bytes: int
@@ -53,7 +54,7 @@ def test_generated_captures_with_vendor_types_agree(
     assert_same_tables(got, expected)
 
 
-@settings(max_examples=150)
+@differential(150)
 @given(st.lists(st.text(max_size=60), max_size=20))
 def test_arbitrary_text_agrees(lines: list[str]) -> None:
     with tempfile.TemporaryDirectory() as folder:
@@ -70,7 +71,7 @@ stamps = st.one_of(
 )
 
 
-@settings(max_examples=200)
+@differential(200)
 @given(
     st.lists(
         st.tuples(stamps, st.sampled_from(["0FF#00FF01", "1004060A#00000000000000C0"])),
@@ -95,7 +96,7 @@ human_stamps = st.one_of(
 )
 
 
-@settings(max_examples=200)
+@differential(200)
 @given(st.lists(st.tuples(human_stamps, st.booleans()), min_size=1, max_size=12))
 def test_human_view_times_agree(lines: list[tuple[str, bool]]) -> None:
     frame = ["0FF   [3]  00 FF 01", "1004060A   [8]  00 00 00 00 00 00 00 C0"]
@@ -118,7 +119,7 @@ def test_an_odd_channel_does_not_name_the_next_line_crlf(tmp_path: Path) -> None
     assert_same_tables(capture.read_tables(path), capture.tables_from_records(capture.read(path)))
 
 
-@settings(max_examples=60, suppress_health_check=[HealthCheck.too_slow])
+@differential(60, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.integers(1, 400), LINE_ENDINGS)
 def test_batch_boundaries_anywhere_agree(
     data: st.DataObject, bus_map: BusMap, batch_bytes: int, ending: str
@@ -141,7 +142,7 @@ extreme_stamps = st.one_of(
 )
 
 
-@settings(max_examples=200)
+@differential(200)
 @given(st.lists(extreme_stamps, min_size=1, max_size=6))
 def test_the_column_path_gives_each_frame_the_readers_time(texts: list[str]) -> None:
     """Per frame, as the per-frame fallback rows and multi-frame transfers are fed: the

@@ -9,10 +9,11 @@ from collections.abc import Callable
 from typing import Any
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from tests.codec.strategies import MESSAGES
+from tests.soak import differential
 from veronte4x import codec
 from veronte4x.codec import layouts
 from veronte4x.codegen import slot_builder
@@ -44,7 +45,7 @@ _FRAMES = st.one_of(
 
 
 @pytest.mark.parametrize("name", CODECS)
-@settings(max_examples=400)
+@differential(400)
 @given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
 def test_fast_decode_agrees_with_the_checked_decode(
     name: str, data: bytes, sender: codec.Sender, excess: bool
@@ -67,7 +68,7 @@ def _views(data: bytes) -> list[object]:
 
 
 @pytest.mark.parametrize("name", CODECS)
-@settings(max_examples=400)
+@differential(400)
 @given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
 def test_a_memoryview_of_any_format_or_shape_decodes_its_bytes(
     name: str, data: bytes, sender: codec.Sender, excess: bool
@@ -81,7 +82,7 @@ def test_a_memoryview_of_any_format_or_shape_decodes_its_bytes(
 
 
 @pytest.mark.parametrize("name", CODECS)
-@settings(max_examples=400)
+@differential(400)
 @given(data=_FRAMES, sender=st.sampled_from(codec.Sender), excess=st.booleans())
 def test_a_senders_decoder_agrees_with_decode(
     name: str, data: bytes, sender: codec.Sender, excess: bool
@@ -100,7 +101,7 @@ def _refuse(*args: Any, **kwargs: Any) -> Any:
 
 
 @pytest.mark.parametrize("name", ["Status", "Score", "Ready", "ArbitrationVariable", "PwmSet"])
-@settings(max_examples=100)
+@differential(100)
 @given(data=st.data())
 def test_ordinary_frames_take_the_fast_path(name: str, data: st.DataObject) -> None:
     message = data.draw(MESSAGES[name])

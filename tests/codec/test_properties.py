@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.codec.strategies import MESSAGES, VALID_FRAMES
+from tests.soak import differential
 from veronte4x import codec
 
 PACKINGS = [codec.Codec(pwm_packing=p) for p in codec.PwmPacking]
@@ -16,7 +17,7 @@ PACKINGS = [codec.Codec(pwm_packing=p) for p in codec.PwmPacking]
 
 @pytest.mark.parametrize("name", sorted(MESSAGES))
 @pytest.mark.parametrize("packing_codec", PACKINGS, ids=lambda c: c.pwm_packing.value)
-@settings(max_examples=150)
+@differential(150)
 @given(data=st.data())
 def test_decode_encode_message(name: str, packing_codec: codec.Codec, data: st.DataObject) -> None:
     message = data.draw(MESSAGES[name])
@@ -33,7 +34,7 @@ def test_decode_encode_message(name: str, packing_codec: codec.Codec, data: st.D
 
 @pytest.mark.parametrize("name", sorted(VALID_FRAMES))
 @pytest.mark.parametrize("packing_codec", PACKINGS, ids=lambda c: c.pwm_packing.value)
-@settings(max_examples=150)
+@differential(150)
 @given(data=st.data())
 def test_encode_decode_frame(name: str, packing_codec: codec.Codec, data: st.DataObject) -> None:
     sender, frames = VALID_FRAMES[name]

@@ -17,9 +17,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 from tests.dsdl_support import write_namespace
+from tests.soak import differential
 
 from veronte4x import dronecan
 from veronte4x.dronecan import transfer as transfer_module
@@ -186,7 +187,7 @@ def _transport(codec: TypeCodec) -> tuple[int, int, int, int | None]:
 
 
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
-@settings(max_examples=30)
+@differential(30)
 @given(data=st.data())
 def test_valid_values_take_the_generated_code_both_ways(
     codec: TypeCodec, data: st.DataObject
@@ -209,7 +210,7 @@ def test_valid_values_take_the_generated_code_both_ways(
 
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
 @pytest.mark.filterwarnings("ignore:overflow encountered:RuntimeWarning")  # NumPy float16
-@settings(max_examples=30)
+@differential(30)
 @given(data=st.data())
 def test_any_values_encode_as_the_generic_serializer(codec: TypeCodec, data: st.DataObject) -> None:
     message = data.draw(messages(codec.data_type.schema, faults=True), label="message")
@@ -258,7 +259,7 @@ def _flip(payload: bytes, index: int, mask: int) -> bytes:
 
 
 @pytest.mark.parametrize("codec", CODECS, ids=_IDS)
-@settings(max_examples=50)
+@differential(50)
 @given(data=st.data())
 def test_any_bytes_decode_as_the_generic_serializer(codec: TypeCodec, data: st.DataObject) -> None:
     payload = data.draw(_payloads(codec), label="payload")

@@ -18,9 +18,10 @@ from dronecan_oracle import (
     reference_frames,
     reference_object,
 )
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 from tests.plain_data import same
+from tests.soak import differential
 
 from veronte4x import dronecan
 from veronte4x.dronecan.codec import BY_CLASS
@@ -207,7 +208,7 @@ def test_every_type_has_a_strategy() -> None:
 
 
 @pytest.mark.parametrize("key", list(STRATEGIES), ids=[f"{n}-{k.name}" for n, k in STRATEGIES])
-@settings(max_examples=150)
+@differential(150)
 @given(data=st.data())
 def test_frames_identical_and_cross_decoded(
     key: tuple[str, dronecan.TransferKind], data: st.DataObject

@@ -20,8 +20,9 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
+from tests.soak import differential
 
 from veronte4x import dronecan
 from veronte4x.dronecan import Problem, TransferKind
@@ -177,7 +178,7 @@ def _intact(sent: list[Sent], wire: list[OnWire], times: list[float]) -> dict[in
     return intact
 
 
-@settings(max_examples=300)
+@differential(300)
 @given(scenario=_scenario())
 def test_every_intact_transfer_is_delivered(
     scenario: tuple[list[Sent], list[OnWire], list[float]],
@@ -218,7 +219,7 @@ def test_every_intact_transfer_is_delivered(
     assert r.session_count <= r.max_sessions
 
 
-@settings(max_examples=200)
+@differential(200)
 @given(scenario=_scenario(), limit=st.integers(1, 4))
 def test_a_small_session_table_stays_bounded(
     scenario: tuple[list[Sent], list[OnWire], list[float]], limit: int
