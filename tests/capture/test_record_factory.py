@@ -22,13 +22,13 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "veronte4x"
 
 
 def test_the_factories_build_what_the_constructor_builds() -> None:
-    assert veronte_record(1.5, "can0", 8, Role.AUTOPILOT, 1, "m", b"\1") == Record(
-        1.5, "can0", 8, Role.AUTOPILOT, 1, None, "m", None, "", b"\1", None
+    assert veronte_record(1.5, "can0", 8, Role.AUTOPILOT, 1, "m", b"\1", False) == Record(
+        1.5, "can0", 8, Role.AUTOPILOT, 1, None, "m", None, "", b"\1", None, False
     )
     assert transfer_record(2.0, "can1", 0x1234, 5, "m", b"\2", 7) == Record(
-        2.0, "can1", 0x1234, Role.DRONECAN, None, 5, "m", None, "", b"\2", 7
+        2.0, "can1", 0x1234, Role.DRONECAN, None, 5, "m", None, "", b"\2", 7, True
     )
-    made = error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", "line 1", b"")
+    made = error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", "line 1", b"", False)
     assert made == Record(None, "", 0, Role.UNKNOWN, None, None, None, "bad line", "line 1", b"")
     for record in (made, transfer_record(0.0, "", 0, 1, None, b"", None)):
         assert type(record) is Record and len(record) == len(Record._fields)

@@ -154,14 +154,15 @@ class DbcDecoder:
         """``record`` decoded if it is unknown traffic on a CAN ID a DBC knows, else as is."""
         if record.role is not _UNKNOWN or record.error is not None or record.message is not None:
             return record
-        extended = _EXTENDED.get(record.detail[:_PREFIX])
-        if extended is None or (record.can_id, extended) not in self._entries:
+        extended = record.extended
+        if (record.can_id, extended) not in self._entries:
             return record
         try:
             message = self.decode(record.can_id, extended, record.data)
         except ValueError as error:
             return record._replace(error="decode error", detail=str(error))
-        return dbc_record(record.timestamp, record.channel, record.can_id, message, record.data)
+        return dbc_record(record.timestamp, record.channel, record.can_id, message, record.data,
+                          extended)  # fmt: skip
 
     def records(self, records: Iterable[Record]) -> Iterator[Record]:
         """`record` applied to each record."""
@@ -171,9 +172,6 @@ class DbcDecoder:
 
 
 _UNKNOWN = Role.UNKNOWN
-_EXTENDED = {"11-bit CAN ID ": False, "29-bit CAN ID ": True}
-"""Whether an unknown record's frame is extended, by the start of its detail."""
-_PREFIX = len("11-bit CAN ID ")
 
 
 def _load(cantools: Any, path: str, lax: bool, notes: list[str]) -> Any:

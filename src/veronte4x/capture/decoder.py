@@ -72,9 +72,11 @@ class CaptureDecoder:
                         try:
                             message = decode(data, excess)
                         except DecodeError as failure:
-                            yield _failed(timestamp, channel, can_id, role, index, data, failure)
+                            yield _failed(timestamp, channel, can_id, role, index, data,
+                                          extended, failure)  # fmt: skip
                         else:
-                            yield decoded(timestamp, channel, can_id, role, index, message, data)
+                            yield decoded(timestamp, channel, can_id, role, index, message, data,
+                                          extended)  # fmt: skip
                         continue
                     if extended and dronecan and can_id not in dbc_ids:
                         # _dronecan, inlined: no generator per frame.
@@ -178,10 +180,10 @@ class CaptureDecoder:
                                     message = decode(data, excess)
                                 except DecodeError as failure:
                                     yield _failed(seconds, interface, can_id, role, index, data,
-                                                  failure)  # fmt: skip
+                                                  False, failure)  # fmt: skip
                                 else:
                                     yield decoded(seconds, interface, can_id, role, index,
-                                                  message, data)  # fmt: skip
+                                                  message, data, False)  # fmt: skip
                                 continue
                         elif dronecan and len(ident) == 8:
                             try:
@@ -231,13 +233,15 @@ class CaptureDecoder:
         an error or remote frame, CAN FD, or a foreign ID."""
         role, index = self.bus_map.role(frame.can_id, frame.extended)
         base = (frame.timestamp, frame.channel, frame.can_id, role, index, None)
+        data, extended = frame.data, frame.extended
         if frame.error:
-            return error_record(*base, "error frame", "error frame", frame.data)
+            return error_record(*base, "error frame", "error frame", data, extended)
         if frame.remote:
-            return error_record(*base, "remote frame", "remote frame", frame.data)
+            return error_record(*base, "remote frame", "remote frame", data, extended)
         if role is Role.ARBITER or role is Role.AUTOPILOT:
-            return error_record(*base, "decode error", "a CAN FD frame on a Veronte ID", frame.data)
-        return error_record(*base, None, foreign_id(frame.can_id, frame.extended), frame.data)
+            detail = "a CAN FD frame on a Veronte ID"
+            return error_record(*base, "decode error", detail, data, extended)
+        return error_record(*base, None, foreign_id(frame.can_id, extended), data, extended)
 
     def _reassembler(self, channel: str) -> Reassembler:
         """The reassembler of a channel, made on its first DroneCAN frame."""
@@ -252,9 +256,9 @@ class CaptureDecoder:
     def _bad_line(item: BadLine) -> Record:
         if isinstance(item, Truncation):
             return error_record(None, "", 0, Role.UNKNOWN, None, None, "truncated", item.reason,
-                                b"")  # fmt: skip
+                                b"", False)  # fmt: skip
         detail = f"line {item.line_number}: {item.reason}: {item.text!r}"
-        return error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", detail, b"")
+        return error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", detail, b"", False)
 
 
 def _problems(problems: Problems, channel: str) -> Iterator[Record]:
@@ -335,11 +339,13 @@ def _failed(
     role: Role,
     index: int | None,
     data: bytes,
+    extended: bool,
     failure: DecodeError,
 ) -> Record:
     """The record of a Veronte frame its codec refused."""
     kind = "unknown command" if isinstance(failure, UnknownCommandError) else "decode error"
-    return error_record(timestamp, channel, can_id, role, index, None, kind, str(failure), data)
+    return error_record(timestamp, channel, can_id, role, index, None, kind, str(failure), data,
+                        extended)  # fmt: skip
 
 
 def problem_record(report: ProblemReport, channel: str) -> Record:
@@ -348,11 +354,11 @@ def problem_record(report: ProblemReport, channel: str) -> Record:
     if report.problem is Problem.UNKNOWN_TYPE:
         return error_record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
                             report.can_id & 0x7F or None, None, foreign_data_type(report.can_id),
-                            report.data)  # fmt: skip
+                            report.data, True)  # fmt: skip
     kind = report.problem.name.lower().replace("_", " ")
     detail = f"{report.problem.value} {report.detail}"
     return error_record(report.timestamp, channel, report.can_id, Role.DRONECAN, None,
-                        report.can_id & 0x7F or None, kind, detail, report.data)  # fmt: skip
+                        report.can_id & 0x7F or None, kind, detail, report.data, True)  # fmt: skip
 
 
 def foreign_id(can_id: int, extended: bool) -> str:

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 from veronte4x.capture.busmap import AUTOPILOT_NAMES
 from veronte4x.capture.rates import STOP_PERIODS, Stream
 from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, shown
-from veronte4x.capture.records import Record, extended_id
+from veronte4x.capture.records import Record
 from veronte4x.codec import Score, Status
 from veronte4x.words import counted
 
@@ -103,7 +103,7 @@ class Row:
         longest_gap: Longest period, in seconds.
         flags: ``stopped`` (silent for more than 3 periods), ``slow`` (its recent rate
             under half its usual one); see `veronte4x.capture.rates`.
-        extended: Whether ``can_id`` is a 29-bit ID (`veronte4x.capture.records.extended_id`),
+        extended: Whether ``can_id`` is a 29-bit ID (`veronte4x.capture.Record.extended`),
             shown with 8 hex digits as candump shows it.
     """
 
@@ -180,8 +180,6 @@ class MonitorState:
         rates: Show each row's timing (period, jitter, longest gap, flags) in the table.
         loss: What the bus layer of a live bus dropped, for the summary (kept up to date
             by its reader, `veronte4x.capture.readers.live.read_bus`).
-        veronte_extended: Whether the bus map's Veronte IDs are 29-bit
-            (`veronte4x.capture.BusMap.extended`), for the rows' CAN IDs.
 
     Examples:
         >>> from veronte4x import capture
@@ -197,10 +195,8 @@ class MonitorState:
         rate_window: float = RATE_WINDOW,
         rates: bool = False,
         loss: BusLoss | None = None,
-        veronte_extended: bool = False,
     ) -> None:
         self.rate_window = rate_window
-        self.veronte_extended = veronte_extended
         self.rates = rates
         self.loss = loss
         self.records = 0
@@ -239,7 +235,7 @@ class MonitorState:
         self._by_id[(sender, channel, record.can_id)] = key
         if entry.can_id != record.can_id:
             entry.can_id = record.can_id
-            entry.extended = extended_id(record, self.veronte_extended)
+            entry.extended = record.extended
         entry.count += 1
         entry.latest = record.data if message is None else message  # shown by `rows`
         entry.last_seen = stamp
@@ -259,8 +255,7 @@ class MonitorState:
         """The row of ``key``, made for ``record`` if it is the first."""
         entry = self._rows.get(key)
         if entry is None:
-            extended = extended_id(record, self.veronte_extended)
-            entry = self._rows[key] = _Entry(record.can_id, extended)
+            entry = self._rows[key] = _Entry(record.can_id, record.extended)
         return entry
 
     @property

@@ -39,6 +39,9 @@ class Record(NamedTuple):
         data: The raw bytes of the frame (for a DroneCAN transfer, of its last frame, tail
             byte included; the payload is in `message`).
         destination_node_id: DroneCAN destination node id of a service transfer.
+        extended: Whether the frame came on a 29-bit (extended) CAN ID, its IDE bit (for a
+            transfer, its frames', always; for a bad line, False), so that an extended
+            frame with a small ID prints with 8 digits, as candump prints it.
     """
 
     timestamp: float | None
@@ -52,6 +55,7 @@ class Record(NamedTuple):
     detail: str
     data: bytes
     destination_node_id: int | None = None
+    extended: bool = False
 
     @property
     def sender(self) -> str:
@@ -76,32 +80,12 @@ class Record(NamedTuple):
         return record_html(self)
 
 
-def extended_id(record: Record, veronte_extended: bool = False) -> bool:
-    """Whether the record came on a 29-bit CAN ID, which a record does not hold as a flag:
-    every DroneCAN record, a Veronte one where the bus map's IDs are 29-bit
-    (``veronte_extended``, `veronte4x.capture.BusMap.extended`), any ID above 0x7FF, and
-    traffic outside the bus map whose detail says so (``29-bit CAN ID 0x7f``), so that an
-    extended frame with a small ID prints with 8 digits as candump prints it.
-
-    Examples:
-        >>> from veronte4x import capture
-        >>> records = list(capture.read("examples/capture.log"))
-        >>> extended_id(records[0]), extended_id(records[0], veronte_extended=True)
-        (False, True)
-    """
-    if record.role is Role.DRONECAN:
-        return True
-    if record.role is Role.ARBITER or record.role is Role.AUTOPILOT:
-        return veronte_extended
-    return record.can_id > 0x7FF or record.detail.startswith("29-bit")
-
-
 def record_html(record: Record) -> str:
     """A record as HTML: where and when it came from, then its message's fields."""
     head: list[Cells] = [
         ("time", format_time(record.timestamp)),
         ("channel", record.channel),
-        ("CAN ID", can_id_text(record.can_id, extended_id(record))),
+        ("CAN ID", can_id_text(record.can_id, record.extended)),
         ("sender", record.sender),
     ]
     if record.destination_node_id is not None:
@@ -125,6 +109,7 @@ DEFAULTS: dict[str, Any] = {
     "detail": "",
     "data": b"",
     "destination_node_id": None,
+    "extended": False,
 }
 """The value of each `Record` field a factory is not given (the fields without one,
 ``timestamp``, ``channel``, ``can_id`` and ``role``, must be given)."""
@@ -163,27 +148,32 @@ def factory(name: str, given: tuple[str, ...], **fixed: Any) -> Callable[..., Re
 
 
 veronte_record = factory(
-    "veronte_record", ("timestamp", "channel", "can_id", "role", "autopilot", "message", "data")
+    "veronte_record",
+    ("timestamp", "channel", "can_id", "role", "autopilot", "message", "data", "extended"),
 )
-"""A decoded Veronte frame: ``(timestamp, channel, can_id, role, autopilot, message, data)``."""
+"""A decoded Veronte frame: ``(timestamp, channel, can_id, role, autopilot, message, data,
+extended)``."""
 
 transfer_record = factory(
     "transfer_record",
     ("timestamp", "channel", "can_id", "node_id", "message", "data", "destination_node_id"),
     role=Role.DRONECAN,
+    extended=True,
 )
 """A decoded DroneCAN transfer: ``(timestamp, channel, can_id, node_id, message, data,
 destination_node_id)``."""
 
 error_record = factory(
     "error_record",
-    ("timestamp", "channel", "can_id", "role", "autopilot", "node_id", "error", "detail", "data"),
-)
+    ("timestamp", "channel", "can_id", "role", "autopilot", "node_id", "error", "detail", "data",
+     "extended"),
+)  # fmt: skip
 """An error, or undecoded traffic (``error`` None): ``(timestamp, channel, can_id, role,
-autopilot, node_id, error, detail, data)``."""
+autopilot, node_id, error, detail, data, extended)``."""
 
 dbc_record = factory(
-    "dbc_record", ("timestamp", "channel", "can_id", "message", "data"), role=Role.UNKNOWN
-)
+    "dbc_record", ("timestamp", "channel", "can_id", "message", "data", "extended"),
+    role=Role.UNKNOWN,
+)  # fmt: skip
 """A frame outside the bus map that a DBC decoded: ``(timestamp, channel, can_id, message,
-data)``; its role stays ``unknown``."""
+data, extended)``; its role stays ``unknown``."""

@@ -31,7 +31,7 @@ from veronte4x import capture
 from veronte4x.capture.busmap import BusMap
 from veronte4x.capture.readable import can_id_text, format_message, hex_bytes, readable_fields
 from veronte4x.capture.readers.live import BusLoss
-from veronte4x.capture.records import Record, extended_id
+from veronte4x.capture.records import Record
 from veronte4x.capture.stats import Stats
 from veronte4x.cli.exit_codes import EXIT_BAD_FRAME, EXIT_INTERRUPTED, EXIT_OK
 from veronte4x.cli.interrupts import Interrupts
@@ -102,7 +102,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     elif args.output == "jsonl":
         write, close = _jsonl_writer(out, clock)
     else:
-        write, close = _text_writer(out, clock, _Ids(bus_map))
+        write, close = _text_writer(out, clock, _Ids())
     piped = args.file == "-" and not bus  # standard input: each record at once
     status = EXIT_OK
     try:
@@ -116,9 +116,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
                         if args.on_error == "raise":
                             close()
                             out.flush()
-                            can_id = can_id_text(
-                                record.can_id, extended_id(record, bus_map.extended)
-                            )
+                            can_id = can_id_text(record.can_id, record.extended)
                             print(f"veronte4x: {_describe(record, clock, can_id)}", file=sys.stderr)
                             status = EXIT_BAD_FRAME
                             break
@@ -189,13 +187,12 @@ class _Clock:
 class _Ids:
     """CAN IDs for the text output, as candump prints them (the module docstring)."""
 
-    def __init__(self, bus_map: BusMap) -> None:
-        self.extended = bus_map.extended
+    def __init__(self) -> None:
         self.width = 3
 
     def text(self, record: Record) -> str:
         """The record's CAN ID, right-aligned in the column."""
-        wide = extended_id(record, self.extended)
+        wide = record.extended
         if wide:
             self.width = 8
         return f"{can_id_text(record.can_id, wide):>{self.width}}"

@@ -169,7 +169,7 @@ def run(args: argparse.Namespace, bus_map: BusMap) -> int:
     """Show the table until the source ends, the duration passes or the user quits."""
     if sys.stdout.isatty():
         require("rich", "monitor", "veronte4x monitor on a terminal")
-    state = MonitorState(rates=args.rates, loss=BusLoss(), veronte_extended=bus_map.extended)
+    state = MonitorState(rates=args.rates, loss=BusLoss())
     reader = _Reader(args, bus_map, state)
     reader.start()
     status = EXIT_OK

@@ -177,7 +177,7 @@ def _vectorised(message: Any, cls: type[Any], data: npt.NDArray[np.uint8]) -> di
 def _error(frames: FrameColumns, row: int, detail: str) -> Record:
     (frame,) = frames.frames_of(np.array([row], np.int64))
     return error_record(frame.timestamp, frame.channel, frame.can_id, Role.UNKNOWN, None, None,
-                        "decode error", detail, frame.data)  # fmt: skip
+                        "decode error", detail, frame.data, frame.extended)  # fmt: skip
 
 
 def _name(value: Any) -> str | None:
