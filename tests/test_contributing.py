@@ -4,6 +4,7 @@ the package exactly as the page writes it, works (docs/contributing/index.md).""
 from __future__ import annotations
 
 import json
+import os
 import re
 import shutil
 import subprocess
@@ -12,10 +13,14 @@ import textwrap
 from pathlib import Path
 
 import pytest
+import tomli
+
+from tests.plugin_support import install
+from veronte4x.capture.frames import Frame
 
 ROOT = Path(__file__).resolve().parent.parent
 PAGE = ROOT / "docs" / "contributing" / "index.md"
-_BLOCK = re.compile(r"^( *)```python\n(.*?)^\1```", re.MULTILINE | re.DOTALL)
+_BLOCK = re.compile(r"^( *)```(?:python|toml)\n(.*?)^\1```", re.MULTILINE | re.DOTALL)
 _WHERE = re.compile(r"# (\S+): (append|import|in \w+)\n")
 _TIMEOUT = 600  # a hang guard, not a timed assertion
 
@@ -309,6 +314,79 @@ def test_adding_a_log_format(scratch: Path) -> None:
     assert "NodeStatus" in decoded.stdout and "3 bad" in decoded.stderr
 
 
+_THIRD_PARTY_CHECK = """
+from veronte4x import capture
+
+# By content: the bench log is benchlog's, the other .csv files are read as before.
+formats = {name: capture.resolve(name).format for name in ("bench.csv", "gvret.csv", "can.csv")}
+assert formats == {"bench.csv": "benchlog", "gvret.csv": "gvret", "can.csv": "python-can"}
+records = list(capture.read("bench.csv"))
+same = [r for r in capture.read("capture.log") if r.error != "bad line"]
+assert [r for r in records if r.error != "bad line"] == same
+bad = [r.detail for r in records if r.error == "bad line"]
+assert bad == ["line 3: not time,bus,id,data: '1763737200.0,can0,08,00'"], bad
+tables = capture.read_tables("bench.csv")
+candump = capture.read_tables("capture.log")
+assert set(tables) == set(candump) | {"errors"}, (sorted(tables), sorted(candump))
+for name, table in candump.items():
+    if name != "errors":
+        assert table.equals(tables[name]), name
+print("ok")
+"""
+
+
+def test_adding_a_log_format_from_another_package(tmp_path: Path) -> None:
+    """The package of the page, installed as pip installs it (its module and a dist-info
+    with the entry points of its pyproject.toml), reads its files by content among the
+    other ``.csv`` formats, through the library and the command line."""
+    from veronte4x import capture
+
+    section = "Adding a log format from another package"
+    for path, where, code in _blocks(section):
+        _apply(tmp_path, path, where, code)
+    text = PAGE.read_text()
+    assert "    pip install ./benchlog\n" in text[text.index(f"## {section}\n") :]
+    package = tmp_path / "benchlog"
+    pyproject = tomli.loads((package / "pyproject.toml").read_text())
+    project, modules = pyproject["project"], pyproject["tool"]["setuptools"]["py-modules"]
+    sources = {f"{module}.py": (package / f"{module}.py").read_text() for module in modules}
+    install(tmp_path / "site", project["name"], project["version"], sources,
+            project["entry-points"])  # fmt: skip
+
+    work = tmp_path / "work"
+    work.mkdir()
+    example = ROOT / "examples" / "capture.log"
+    (work / "capture.log").write_text(example.read_text())
+    lines = [_bench_line(f) for f in capture.open_frames(example) if type(f) is Frame]
+    lines[1:1] = ["1763737200.0,can0,08,00\n", "\n"]
+    (work / "bench.csv").write_text("time,bus,id,data\n" + "".join(lines))
+    (work / "gvret.csv").write_text(
+        "Time Stamp,ID,Extended,Dir,Bus,LEN,D1,D2\n1,0FF,false,Rx,0,1,01,\n"
+    )
+    (work / "can.csv").write_text("timestamp,arbitration_id,extended,remote,error,dlc,data\n")
+    (work / "check.py").write_text(_THIRD_PARTY_CHECK)
+    path = os.pathsep.join([str(tmp_path / "site"), str(ROOT / "src")])
+    env = {"PYTHONPATH": path, "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
+
+    def run(*args: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, *args], cwd=work, env=env, capture_output=True,
+                              text=True, timeout=_TIMEOUT, check=False)  # fmt: skip
+
+    checked = run("check.py")
+    assert (checked.returncode, checked.stdout, checked.stderr) == (0, "ok\n", "")
+    decoded = run("-m", "veronte4x", "decode", "bench.csv")
+    same = run("-m", "veronte4x", "decode", "capture.log")
+    assert decoded.returncode == 0, decoded.stderr
+    assert decoded.stdout == same.stdout and "Ready" in decoded.stdout
+
+
+def _bench_line(frame: Frame) -> str:
+    """One frame as a line of the page's bench log."""
+    assert frame.timestamp is not None
+    can_id = f"{frame.can_id:08X}" if frame.extended else f"{frame.can_id:03X}"
+    return f"{frame.timestamp:.6f},{frame.channel},{can_id},{frame.data.hex().upper()}\n"
+
+
 _DSDL_BLOCK = re.compile(r"^( *)```text\n *# (\S+): new file\n(.*?)^\1```", re.M | re.S)
 
 _DRONECAN_TYPE_CHECK = """
@@ -352,5 +430,10 @@ def test_adding_a_dronecan_type(scratch: Path) -> None:
 
 
 def test_every_block_says_where_it_goes() -> None:
-    sections = ["Adding a frame type", "Adding a command", "Adding a log format"]
+    sections = [
+        "Adding a frame type",
+        "Adding a command",
+        "Adding a log format",
+        "Adding a log format from another package",
+    ]
     assert all(_blocks(section) for section in sections)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.plugin_support import install
 from veronte4x import capture
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers import registry
@@ -98,95 +99,54 @@ def test_a_suffix_shared_needs_a_sniff_and_the_sniffless_claimant_reads_the_rest
         registry.unregister("sniffed")
 
 
-PLUGIN = '''\
-"""A third party's log format, ``id,data,time`` lines (hex CAN ID, hex data, seconds)."""
+BROKEN = '''\
+"""A third party's module whose entry points name no Reader of theirs."""
 
-from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.registry import Reader
 
-
-def frames(source):
-    with open(source.path, encoding="utf-8") as file:
-        for number, line in enumerate(file, 1):
-            try:
-                ident, data, time = line.strip().split(",")
-                yield Frame(float(time), "can0", int(ident, 16), bytes.fromhex(data),
-                            len(ident) == 8)
-            except ValueError as error:
-                yield BadLine(number, line.rstrip("\\n"), f"not id,data,time: {error}")
-
-
-def sniff(head):
-    return head.startswith(b"#toy")
-
-
-READER = Reader("toy", (".toy", ".csv"), "toy_plugin:frames", sniff="toy_plugin:sniff")
+CANDUMP = Reader("candump", (".mine",), "broken_plugin:frames")
 NOT_A_READER = "a string"
 '''
 
-ENTRY_POINTS = """\
-[veronte4x.readers]
-toy = toy_plugin:READER
-wrong = toy_plugin:NOT_A_READER
-"""
-
-CHECK = """\
+CHECK = """
 import warnings
 from veronte4x import capture
 from veronte4x.capture.readers import registry
 
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
-    assert capture.source.resolve("capture.toy").format == "toy"
-assert capture.source.resolve("shared.csv").format == "toy"  # by its first bytes
-assert [str(w.message) for w in caught] == [
+    assert [r.name for r in registry.claimants("capture.log")] == ["candump"]
+assert sorted(str(w.message) for w in caught) == [
+    "veronte4x: the reader 'missing' of the entry point group veronte4x.readers is left out: "
+    "No module named 'no_such_module'; fix or uninstall its package",
     "veronte4x: the reader 'wrong' of the entry point group veronte4x.readers is left out: "
-    "toy_plugin:NOT_A_READER is no Reader named 'wrong'; fix or uninstall its package"
+    "broken_plugin:NOT_A_READER is no Reader named 'wrong'; fix or uninstall its package",
 ], caught
-records = list(capture.read("capture.toy"))
-same = list(capture.read("same.log"))
-assert [r for r in records if r.error is None] == [r for r in same if r.error is None]
-assert capture.read_tables("capture.toy")["Ready"].equals(capture.read_tables("same.log")["Ready"])
+assert registry.READERS["candump"].suffixes == (".log", ".txt", ".candump")
+assert "wrong" not in registry.READERS and "missing" not in registry.READERS
+assert sum(r.error is None for r in capture.read("capture.log")) == 38  # all but one
 print("ok")
 """
 
 
-def _lines(frames: list[Frame]) -> str:
-    text = ""
-    for frame in frames:
-        width = 8 if frame.extended else 3
-        text += f"{frame.can_id:0{width}X},{frame.data.hex()},{frame.timestamp!r}\n"
-    return text
-
-
-def test_a_reader_installed_from_another_package(tmp_path: Path) -> None:
-    """A distribution on the path (its module and a dist-info with entry_points.txt, as pip
-    installs it) adds its format to the library and the command line; an entry point that
-    names no Reader is left out with a warning that names it."""
+def test_entry_points_that_name_no_reader_are_left_out_with_a_warning(tmp_path: Path) -> None:
+    """An entry point that fails to load or names no `Reader` is left out with a warning
+    that names it, and the other formats are read; one named as a registered format is
+    not loaded (the registered format is kept). Installing a reader that works is the
+    contributors' page's recipe (tests/test_contributing.py)."""
     site = tmp_path / "site"
-    info = site / "toy_plugin-1.0.dist-info"
-    info.mkdir(parents=True)
-    (site / "toy_plugin.py").write_text(PLUGIN)
-    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: toy-plugin\nVersion: 1.0\n")
-    (info / "entry_points.txt").write_text(ENTRY_POINTS)
-    work = tmp_path / "work"
-    work.mkdir()
-    frames = _frames(EXAMPLE)
-    (work / "capture.toy").write_text(_lines(frames))
-    (work / "shared.csv").write_text("#toy\n" + _lines(frames))
-    (work / "same.log").write_text(EXAMPLE.read_text())
-    (work / "check.py").write_text(CHECK)
+    points = {
+        "candump": "broken_plugin:CANDUMP",
+        "wrong": "broken_plugin:NOT_A_READER",
+        "missing": "no_such_module:READER",
+    }
+    install(site, "broken-plugin", "1.0", {"broken_plugin.py": BROKEN},
+            {registry.ENTRY_POINT_GROUP: points})  # fmt: skip
+    (tmp_path / "capture.log").write_text(EXAMPLE.read_text())
+    (tmp_path / "check.py").write_text(CHECK)
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(site), str(ROOT / "src")])}
-
-    def run(*args: str) -> subprocess.CompletedProcess[str]:
-        return subprocess.run(
-            [sys.executable, *args], cwd=work, env=env, capture_output=True, text=True,
-            timeout=_TIMEOUT, check=False,
-        )  # fmt: skip
-
-    done = run("check.py")
+    done = subprocess.run(
+        [sys.executable, "check.py"], cwd=tmp_path, env=env, capture_output=True, text=True,
+        timeout=_TIMEOUT, check=False,
+    )  # fmt: skip
     assert (done.returncode, done.stdout.strip()) == (0, "ok"), done.stderr
-    decoded = run("-W", "ignore::RuntimeWarning", "-m", "veronte4x", "decode", "capture.toy")
-    same = run("-m", "veronte4x", "decode", "same.log")
-    assert decoded.returncode == 0, decoded.stderr
-    assert decoded.stdout == same.stdout and "Ready" in decoded.stdout
