@@ -61,7 +61,7 @@ def sessions_between(draw: st.DrawFn, bus_map: BusMap) -> list[str]:
     return lines[:at] + run + lines[at:]
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data(), BUS_MAPS, st.sampled_from([None, "can0"]), st.integers(1, 3_000))
 def test_a_capture_from_its_path_and_piped_in_gives_the_same_tables(
     data: st.DataObject, bus_map: BusMap, channel: str | None, size: int

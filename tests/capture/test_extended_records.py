@@ -66,7 +66,9 @@ def test_veronte_and_dronecan_records_carry_their_bit(tmp_path: Path) -> None:
     extended = list(capture.read(write(tmp_path / "wide.log", wide), BusMap(extended=True)))
     assert all(r.error is None and r.message is not None for r in [*narrow, *extended])
     assert [r.kind for r in extended] == [r.kind for r in narrow]
-    assert [(r.extended, s.extended) for r, s in zip(narrow, extended)] == [(False, True)] * 3
+    assert [(r.extended, s.extended) for r, s in zip(narrow, extended, strict=True)] == [
+        (False, True)
+    ] * 3
     dronecan = list(capture.read(write(tmp_path / "node.log", ["(1.000000) can0 0000007F#02"])))
     assert [(r.detail, r.extended) for r in dronecan] == [("DroneCAN data type 0", True)]
 
