@@ -6,7 +6,8 @@ same positions. Each format is read by the ``batches`` of its reader in
 `veronte4x.capture.readers.registry`, or its frames cut into batches: candump text is cut
 at line breaks into blocks parsed column-wise here (lines numbered as the per-frame reader
 numbers them, lone carriage returns included), and a gzip file that ends early is read on
-line by line from where the blocks stopped, as `read_frames` reads it; MF4 is read in chunks
+line by line from where the blocks stopped, as `read_frames` reads it (gzip on standard
+input or a pipe, which cannot be read twice, is kept compressed in memory for that); MF4 is read in chunks
 of records (`veronte4x.capture.columnar.mf4`); other formats go frame by frame.
 """
 
@@ -29,7 +30,14 @@ from veronte4x.capture.columnar.frames import FrameColumns, from_frames
 from veronte4x.capture.frames import BadLine, Frame
 from veronte4x.capture.readers.candump import parse_candump
 from veronte4x.capture.readers.registry import load
-from veronte4x.capture.source import STDIN, Source, Truncated, open_lines, resolve
+from veronte4x.capture.source import (
+    STDIN,
+    Source,
+    Truncated,
+    open_lines,
+    resolve,
+    until_truncated,
+)
 
 BATCH_BYTES = 1 << 22
 """Bytes of candump text decoded at once."""
@@ -107,7 +115,10 @@ def _frames(source: Source, batch_frames: int) -> Iterator[Batch]:
 def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iterator[Batch]:
     """candump text in blocks parsed column-wise, the reader registry's ``batches``."""
     line = 1
-    with _open_raw(source) as raw:
+    with _open_raw(source) as opened:
+        raw = opened
+        if source.gzipped and (source.is_stdin or not os.path.isfile(source.path)):
+            raw = io.BytesIO(opened.read())  # read once: where it ends early, read again below
         stream: BinaryIO = gzip.GzipFile(fileobj=raw) if source.gzipped else raw  # type: ignore[assignment]
         try:
             for block, size in read_blocks(stream, batch_bytes):
@@ -115,11 +126,17 @@ def candump_batches(source: Source, batch_bytes: int, batch_frames: int) -> Iter
                 if frames is None:  # lone carriage returns: the per-frame reader's lines
                     frames, count = _universal_lines(block[:size].tobytes(), line)
                 line += count
-                yield Batch(frames, _position(raw))
+                yield Batch(frames, _position(opened))
             return
         except (EOFError, gzip.BadGzipFile, zlib.error):
             pass  # a truncated gzip file: its last lines are the per-frame reader's call
-    yield from _lines_from(source, line, batch_frames)
+    if isinstance(raw, io.BytesIO):
+        raw.seek(0)
+        unpacked = io.TextIOWrapper(gzip.GzipFile(fileobj=raw), encoding="utf-8", errors="replace")
+        lines = contextlib.nullcontext(until_truncated(unpacked, source.path))
+        yield from _lines_from(lines, line, batch_frames)
+    else:
+        yield from _lines_from(open_lines(source), line, batch_frames)
 
 
 def _open_raw(source: Source) -> contextlib.AbstractContextManager[BinaryIO]:
@@ -146,10 +163,12 @@ def _universal_lines(block: bytes, first_line: int) -> tuple[FrameColumns, int]:
     return from_frames(items), count
 
 
-def _lines_from(source: Source, first_line: int, batch_frames: int) -> Iterator[Batch]:
+def _lines_from(
+    opened: contextlib.AbstractContextManager[Iterator[str]], first_line: int, batch_frames: int
+) -> Iterator[Batch]:
     """The lines from ``first_line`` on, through the per-frame reader, to where it stops."""
     items: list[tuple[int, Frame | BadLine]] = []
-    with open_lines(source) as lines:
+    with opened as lines:
         try:
             for number, text in enumerate(lines, 1):
                 if number < first_line:
