@@ -7,8 +7,9 @@ same positions. Each format is read by the ``batches`` of its reader in
 at line breaks into blocks parsed column-wise here (lines numbered as the per-frame reader
 numbers them, lone carriage returns included), and a gzip file that ends early is read on
 line by line from where the blocks stopped, as `read_frames` reads it (gzip on standard
-input or a pipe, which cannot be read twice, is kept compressed in memory for that); MF4 is read in chunks
-of records (`veronte4x.capture.columnar.mf4`); other formats go frame by frame.
+input or a pipe, which cannot be read twice, is kept compressed in memory for that); MF4 is
+read in chunks of records (`veronte4x.capture.columnar.mf4`); other formats go frame by
+frame.
 """
 
 from __future__ import annotations
