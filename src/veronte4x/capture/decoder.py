@@ -10,6 +10,7 @@ import binascii
 import itertools
 import math
 from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
 
 from veronte4x.capture.busmap import BusMap, Role
 from veronte4x.capture.frames import BadLine, Frame, Truncation, text_seconds
@@ -124,18 +125,27 @@ class CaptureDecoder:
         """
         if channel is not None and not isinstance(channel, str):
             raise argument_type_error("decode_chunks", "channel", "a str or None", channel)
-        # Veronte routes by identifier text, in every case spelling: one dict lookup
-        # replaces int() and the error-flag check (3 hex digits cannot hold the flag).
-        veronte = {} if self.bus_map.extended else _routes_by_text(self._routes)
-        dronecan = self.bus_map.dronecan and not self.bus_map.extended
-        dbc_ids = self.bus_map.dbc_ids
-        excess = self.bus_map.allow_excess
-        unhexlify = binascii.unhexlify
-        identifiers = Identifiers()
-        decoded, delivered = veronte_record, transfer_record
-        # The interface of the latest frame and its DroneCAN reassembler (or None, made on
-        # the first DroneCAN frame): looked up again only when the interface changes.
-        name_before, interface, reassembler = b"", "", None
+        fast = _FastPath(
+            veronte={} if self.bus_map.extended else _routes_by_text(self._routes),
+            dronecan=self.bus_map.dronecan and not self.bus_map.extended,
+            dbc_ids=self.bus_map.dbc_ids,
+            excess=self.bus_map.allow_excess,
+            channel=channel,
+            identifiers=Identifiers(),
+        )
+        return self._chunk_records(chunks, fast)
+
+    def _chunk_records(self, chunks: Iterable[BytesLike], fast: _FastPath) -> Iterator[Record]:
+        """`decode_chunks`'s records. A plain block's log-form frame is parsed as bytes: on a
+        Veronte ID it is decoded inline, on a 29-bit ID it goes straight to its channel's
+        DroneCAN reassembler; any other line goes to `parse_line`, the exact parser. One
+        generator for blocks and lines: a generator per block costs 2-3 % a line."""
+        veronte, dronecan, dbc_ids = fast.veronte, fast.dronecan, fast.dbc_ids
+        excess, channel, identifiers = fast.excess, fast.channel, fast.identifiers
+        unhexlify, exact = binascii.unhexlify, self._parsed_line
+        # The interface of the latest frame and its reassembler's push (None until its
+        # first DroneCAN frame): looked up again only when the interface changes.
+        name_before, interface, push = b"", "", None
         number = 0  # lines read
         try:
             for block in _blocks_of_lines(chunks):
@@ -150,74 +160,59 @@ class CaptureDecoder:
                     number += 1
                     try:
                         stamp, name, body = line.split()
-                    except ValueError:  # not three tokens
+                        ident, separator, text = body.partition(b"#")
+                        if not separator or stamp[0] != 40 or stamp[-1] != 41:  # ( and )
+                            raise ValueError  # no log-form frame: parse_line tells what
+                        # _seconds, inlined for candump's own (%010lu.%06lu).
+                        seconds = float(stamp[1:-1])
+                        if not (len(stamp) == 19 and stamp[11] == 46
+                                and seconds < 8_589_934_592.0
+                                and stamp[12:18].isdigit()):  # fmt: skip
+                            seconds = _seconds(stamp)
+                        data = unhexlify(text)
+                    except ValueError:  # not three tokens, or a bad time or data
+                        seconds = math.nan
+                    # seconds - seconds is 0.0 for a finite time only.
+                    if seconds - seconds != 0.0:
                         if line.strip():
-                            yield from self._parsed_line(line.decode("ascii"), number, channel)
+                            yield from exact(line.decode("ascii"), number, channel)
                         continue
-                    ident, separator, text = body.partition(b"#")
-                    if separator and stamp[0] == 40 and stamp[-1] == 41:  # ( and )
-                        if name != name_before:
-                            name_before, reassembler = name, None
-                            interface = name.decode("ascii")
-                        route = veronte.get(ident)
-                        if route is not None:
+                    if name != name_before:
+                        name_before, interface, push = name, name.decode("ascii"), None
+                    route = veronte.get(ident)
+                    if route is not None:
+                        if channel is None or interface == channel:
+                            can_id, role, index, decode = route
                             try:
-                                # _seconds, inlined for candump's own (%010lu.%06lu).
-                                seconds = float(stamp[1:-1])
-                                if not (len(stamp) == 19 and stamp[11] == 46
-                                        and seconds < 8_589_934_592.0
-                                        and stamp[12:18].isdigit()):  # fmt: skip
-                                    seconds = _seconds(stamp)
-                                data = unhexlify(text)
-                            except ValueError:
-                                seconds = math.nan
-                            # seconds - seconds is 0.0 for a finite time only.
-                            if seconds - seconds == 0.0:
-                                if channel is not None and interface != channel:
-                                    continue
-                                can_id, role, index, decode = route
-                                try:
-                                    message = decode(data, excess)
-                                except DecodeError as failure:
-                                    yield _failed(seconds, interface, can_id, role, index, data,
-                                                  False, failure)  # fmt: skip
-                                else:
-                                    yield decoded(seconds, interface, can_id, role, index,
-                                                  message, data, False)  # fmt: skip
-                                continue
-                        elif dronecan and len(ident) == 8:
-                            try:
-                                seconds = float(stamp[1:-1])  # as above
-                                if not (len(stamp) == 19 and stamp[11] == 46
-                                        and seconds < 8_589_934_592.0
-                                        and stamp[12:18].isdigit()):  # fmt: skip
-                                    seconds = _seconds(stamp)
-                                can_id = identifiers[ident]
-                                data = unhexlify(text)
-                            except ValueError:
-                                seconds = math.nan
-                            if (
-                                seconds - seconds == 0.0
-                                and not can_id & CAN_ERR_FLAG
-                                and can_id not in dbc_ids
-                            ):
-                                if channel is not None and interface != channel:
-                                    continue
-                                # _dronecan, inlined: no Frame, no generator per frame.
-                                if reassembler is None:
-                                    reassembler = self._reassembler(interface)
-                                    push = reassembler.push
-                                transfer = push(can_id, data, seconds)
-                                if isinstance(transfer, Problems):
-                                    yield from _problems(transfer, interface)
-                                    transfer = transfer.transfer
-                                if transfer is not None:
-                                    yield delivered(seconds, interface, can_id,
-                                                    transfer.source_node_id, transfer.message,
-                                                    data, transfer.destination_node_id)  # fmt: skip
-                                continue
-                    yield from self._parsed_line(line.decode("ascii"), number, channel)
-        except Truncated as cut:
+                                message = decode(data, excess)
+                            except DecodeError as failure:
+                                yield _failed(seconds, interface, can_id, role, index, data,
+                                              False, failure)  # fmt: skip
+                            else:
+                                yield veronte_record(seconds, interface, can_id, role, index,
+                                                     message, data, False)  # fmt: skip
+                        continue
+                    try:  # a DroneCAN frame's ID; CAN_ERR_FLAG stands for any other
+                        can_id = (
+                            identifiers[ident] if dronecan and len(ident) == 8 else CAN_ERR_FLAG
+                        )
+                    except ValueError:
+                        can_id = CAN_ERR_FLAG
+                    if can_id & CAN_ERR_FLAG or can_id in dbc_ids:
+                        yield from exact(line.decode("ascii"), number, channel)
+                    elif channel is None or interface == channel:
+                        # _dronecan, inlined: no Frame, no generator per frame.
+                        if push is None:
+                            push = self._reassembler(interface).push
+                        transfer = push(can_id, data, seconds)
+                        if isinstance(transfer, Problems):
+                            yield from _problems(transfer, interface)
+                            transfer = transfer.transfer
+                        if transfer is not None:
+                            yield transfer_record(seconds, interface, can_id,
+                                                  transfer.source_node_id, transfer.message, data,
+                                                  transfer.destination_node_id)  # fmt: skip
+        except Truncated as cut:  # raised by ``chunks``, so between two blocks
             yield self._bad_line(Truncated(cut.path, number + 1).bad_line())
 
     def _parsed_line(self, line: str, number: int, channel: str | None) -> Iterator[Record]:
@@ -261,15 +256,40 @@ class CaptureDecoder:
         return error_record(None, "", 0, Role.UNKNOWN, None, None, "bad line", detail, b"", False)
 
 
+TextRoute = tuple[int, Role, int | None, FrameDecoder]
+"""A Veronte route by identifier text: the CAN ID and its `IdRoute`."""
+
+
+@dataclass(frozen=True, slots=True)
+class _FastPath:
+    """What `CaptureDecoder._plain_lines` needs of one `decode_chunks` call.
+
+    Attributes:
+        veronte: The 11-bit Veronte routes by identifier text, in every case spelling: one
+            dict lookup replaces int() and the error-flag check (3 hex digits cannot hold
+            the flag). Empty when the bus map puts the Veronte IDs on 29 bits.
+        dronecan: Whether 29-bit frames go to DroneCAN.
+        dbc_ids: The 29-bit IDs DroneCAN leaves to a DBC.
+        excess: The bus map's ``allow_excess``.
+        channel: The interface whose frames are kept, or None for all.
+        identifiers: The CAN IDs of identifier texts, parsed once each.
+    """
+
+    veronte: dict[bytes, TextRoute]
+    dronecan: bool
+    dbc_ids: frozenset[int]
+    excess: bool
+    channel: str | None
+    identifiers: Identifiers
+
+
 def _problems(problems: Problems, channel: str) -> Iterator[Record]:
     """The records of the problems one frame caused on ``channel``."""
     for report in problems.reports:
         yield problem_record(report, channel)
 
 
-def _routes_by_text(
-    routes: dict[int, IdRoute],
-) -> dict[bytes, tuple[int, Role, int | None, FrameDecoder]]:
+def _routes_by_text(routes: dict[int, IdRoute]) -> dict[bytes, TextRoute]:
     """The 11-bit Veronte routes keyed by identifier text, each in every case spelling."""
     by_text = {}
     for can_id, (role, index, decode) in routes.items():
