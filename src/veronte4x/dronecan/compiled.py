@@ -43,6 +43,7 @@ from veronte4x.dronecan.fast_base import NAMES, SlowPath, int_array_tables, tail
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.scalar_code import pack_scalars, unpack_scalars
 from veronte4x.dronecan.schema import Array, DataType, Scalar, Struct, StructField
+from veronte4x.dronecan.tail import SINGLE_FRAME
 
 FramesFunction = Callable[[Any, int, int, int, Any], list[Any]]
 PayloadEncoder = Callable[[Any], bytes]
@@ -182,7 +183,7 @@ def _emit_stream_frames(src: _Source, size: int, stream: str, transport: Transpo
     frame = src.cls(transport.frame_class)
     can_id = f"prio << 24 | {transport.can_id_base:#x} | src"
     if size <= 7:
-        data = f"(({stream}) << 8 | 0xC0 | tid).to_bytes({size + 1}, 'big')"
+        data = f"(({stream}) << 8 | 0x{SINGLE_FRAME:X} | tid).to_bytes({size + 1}, 'big')"
         src.lines.append(f"    return [tnew({frame}, ({can_id}, {data}))]")
         return
     src.lines.append(f"    p = ({stream}).to_bytes({size}, 'big')")
@@ -206,7 +207,7 @@ def _emit_struct_frames(
         can_id += " | dst << 8"
     if size <= 7:
         packer = src.name("S", struct.Struct(layout + "B"))
-        data = f"{packer}.pack({''.join(v + ', ' for v in values)}0xC0 | tid)"
+        data = f"{packer}.pack({''.join(v + ', ' for v in values)}0x{SINGLE_FRAME:X} | tid)"
         src.lines.append(f"    return [tnew({frame}, ({can_id}, {data}))]")
         return
     packer = src.name("S", struct.Struct(layout))

@@ -62,6 +62,7 @@ from veronte4x.dronecan.schema import (
     tao_min_bits,
     uses_tao,
 )
+from veronte4x.dronecan.tail import SINGLE_FRAME
 
 
 def _from_piece(t: Scalar, var: str, name: Namer) -> str:
@@ -668,7 +669,7 @@ def _tree_source(schema: Struct, transport: Transport) -> _Source:
         "        raise SlowPath",
         "    p = payload(m)",
         "    if len(p) < 8:",
-        f"        return [tnew({frame}, ({can_id}, p + TB[0xC0 | tid]))]",
+        f"        return [tnew({frame}, ({can_id}, p + TB[0x{SINGLE_FRAME:X} | tid]))]",
         f"    b = crc_hqx(p, {transport.crc_seed:#x}).to_bytes(2, 'little') + p",
         f"    c = {can_id}",
         "    t = MFT[tid][(len(b) + 6) // 7]",

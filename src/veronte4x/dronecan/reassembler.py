@@ -48,6 +48,14 @@ from typing import Any, NamedTuple, cast
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import BY_ID, TypeCodec
 from veronte4x.dronecan.compiled import DECODE_FALLBACK
+from veronte4x.dronecan.tail import (
+    END_OF_TRANSFER,
+    FRAME_FLAGS,
+    SINGLE_FRAME,
+    START_OF_TRANSFER,
+    TOGGLE,
+    TRANSFER_ID_MASK,
+)
 from veronte4x.dronecan.transfer import Transfer, received
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 from veronte4x.errors import BytesLike, DecodeError, argument_type_error
@@ -204,7 +212,7 @@ class _Session:
         # The transfer id the fast path of `feed` takes: the one in progress, or the one
         # after the transfer delivered last; -1 sends every frame through the full update.
         self.tid = -1
-        self.toggle = 0  # expected toggle bit (0 or 0x20)
+        self.toggle = 0  # expected toggle bit (0 or TOGGLE)
         self.start = _NEVER  # timestamp of the first frame of the latest transfer
         self.buffer: bytearray | None = None  # payload so far (CRC first), None when idle
         self.last = b""  # the frame accepted last
@@ -266,6 +274,8 @@ class _SessionTypes:
 _STANDARD_TYPES = _SessionTypes(BY_ID)
 _SESSION_TYPES: weakref.WeakKeyDictionary[TypeSet, _SessionTypes] = weakref.WeakKeyDictionary()
 _BYTES_LIKE = (bytes, bytearray, memoryview)
+_START_AND_TOGGLE = START_OF_TRANSFER | TOGGLE
+"""The tail bits a transfer's next frame has as expected: no start, the session's toggle."""
 _FRAME_ERRORS = DECODE_FALLBACK  # what a generated single-frame decoder raises
 
 
@@ -412,7 +422,7 @@ class Reassembler:
             if session is None:
                 return self._open(can_id, data, timestamp)
             tail = data[-1]
-            tid = tail & 0x1F
+            tid = tail & TRANSFER_ID_MASK
             if (
                 data.__class__ is not bytes
                 or can_id >> 29
@@ -424,34 +434,35 @@ class Reassembler:
             return self._feed(can_id, data, timestamp)
         buffer = session.buffer
         if buffer is None:
-            if tail & 0xE0 == 0xC0 and session.decode_frame is not None:  # single frame
+            # a single frame
+            if tail & FRAME_FLAGS == SINGLE_FRAME and session.decode_frame is not None:
                 try:
                     message = session.decode_frame(data)
                 except _FRAME_ERRORS:  # wrong length: the checked path reports it
                     return self._feed(can_id, data, timestamp)
-                session.tid = (tid + 1) & 0x1F
+                session.tid = (tid + 1) & TRANSFER_ID_MASK
                 session.closed = tid
                 session.start = timestamp
                 session.last = data
                 self._touch(key)
                 self.transfers += 1
                 return received(message, can_id, tid, timestamp, session.kind, session.data_type_id)
-            if tail & 0xE0 == 0x80 and len(data) == 8:  # first frame of several
+            if tail & FRAME_FLAGS == START_OF_TRANSFER and len(data) == 8:  # first frame of several
                 session.buffer = bytearray(data[:-1])
-                session.toggle = 0x20
+                session.toggle = TOGGLE
                 session.start = timestamp
                 session.last = data
                 self._touch(key)
                 return None
         elif (
-            tail & 0xA0 == session.toggle
-            and (len(data) == 8 or (tail & 0x40 and len(data) <= 8))
+            tail & _START_AND_TOGGLE == session.toggle
+            and (len(data) == 8 or (tail & END_OF_TRANSFER and len(data) <= 8))
             and len(buffer) + len(data) <= session.limit
         ):
             buffer += data[:-1]
             session.last = data
-            if not tail & 0x40:
-                session.toggle ^= 0x20
+            if not tail & END_OF_TRANSFER:
+                session.toggle ^= TOGGLE
                 return None
             return self._complete(session, can_id, data, tid)
         return self._feed(can_id, data, timestamp)
@@ -503,7 +514,7 @@ class Reassembler:
         elif can_id & 0x7F:
             dtid = (can_id >> 8) & 0xFFFF
             shared = self._messages.get(dtid) or self._session_types.message(dtid)
-        elif tail & 0xC0 != 0xC0:
+        elif tail & SINGLE_FRAME != SINGLE_FRAME:
             return self._problem(
                 Problem.MALFORMED_FRAME, can_id, data, timestamp, "multi-frame anonymous"
             )
@@ -515,14 +526,14 @@ class Reassembler:
         session = self._sessions.get(can_id & 0xFFFFFF)
         evicted = None
         if session is None:
-            if not tail & 0x80 and not self.strict:  # libcanard makes states at first frames
-                return self._problem(
-                    Problem.MISSED_START, can_id, data, timestamp, f"transfer id {tail & 0x1F}"
-                )
+            # libcanard makes states at first frames
+            if not tail & START_OF_TRANSFER and not self.strict:
+                detail = f"transfer id {tail & TRANSFER_ID_MASK}"
+                return self._problem(Problem.MISSED_START, can_id, data, timestamp, detail)
             session, evicted = self._new_session(shared, can_id, timestamp)
         if not self.strict:
             return _join(evicted, self._receive(session, can_id, data, tail, timestamp))
-        if tail & 0x80:
+        if tail & START_OF_TRANSFER:
             return _join(evicted, self._start(session, can_id, data, tail, timestamp))
         return _join(evicted, self._continue(session, can_id, data, tail, timestamp))
 
@@ -547,15 +558,15 @@ class Reassembler:
             shared = self._messages.get(dtid) or self._session_types.message(dtid)
         else:
             return self._feed(can_id, data, timestamp)
-        if shared is None or tail & 0xE0 != 0xC0 or shared[3] is None:
+        if shared is None or tail & FRAME_FLAGS != SINGLE_FRAME or shared[3] is None:
             return self._feed(can_id, data, timestamp)
         try:
             message = shared[3](data)
         except _FRAME_ERRORS:  # wrong length: the checked path reports it
             return self._feed(can_id, data, timestamp)
         session, evicted = self._new_session(shared, can_id, timestamp)
-        tid = tail & 0x1F
-        session.tid = (tid + 1) & 0x1F
+        tid = tail & TRANSFER_ID_MASK
+        session.tid = (tid + 1) & TRANSFER_ID_MASK
         session.closed = tid
         session.start = timestamp
         session.last = data
@@ -599,7 +610,7 @@ class Reassembler:
         session.counted = session.orphan = False
         session.closed = tid + _LOST
         session.closed_at = timestamp
-        session.tid = (tid + 1) & 0x1F if not self.strict else -1
+        session.tid = (tid + 1) & TRANSFER_ID_MASK if not self.strict else -1
         self._touch(can_id & 0xFFFFFF)
 
     def _abandon(
@@ -645,8 +656,8 @@ class Reassembler:
         orphan, or one past the type's largest, reported once as `PAYLOAD_TOO_LONG` and
         no longer stored: libcanard stores it and its decoder refuses it).
         """
-        tid = tail & 0x1F
-        first = tail & 0x80
+        tid = tail & TRANSFER_ID_MASK
+        first = tail & START_OF_TRANSFER
         key = can_id & 0xFFFFFF
         since = ts - session.start
         buffer = session.buffer
@@ -654,8 +665,8 @@ class Reassembler:
         ended = None
         if (
             since > self.timeout
-            or (first and ((session.tid - tid) & 0x1F > 1 or stored > _HEAD))
-            or (first and since > _SWITCH_DELAY and (tid - session.tid) & 0x1F < 16)
+            or (first and ((session.tid - tid) & TRANSFER_ID_MASK > 1 or stored > _HEAD))
+            or (first and since > _SWITCH_DELAY and (tid - session.tid) & TRANSFER_ID_MASK < 16)
         ):
             if buffer is not None and not session.counted:
                 problem = Problem.TIMEOUT if since > self.timeout else Problem.INTERRUPTED
@@ -667,10 +678,10 @@ class Reassembler:
             session.closed_at = ts
             self._touch(key)
             if not first:
-                session.tid = (tid + 1) & 0x1F
+                session.tid = (tid + 1) & TRANSFER_ID_MASK
                 missed = self._report(Problem.MISSED_START, can_id, data, ts, f"transfer id {tid}")
                 return _join(ended, Problems((missed,), None))
-        if first and tail & 0x40:  # a single frame: delivered whatever its toggle
+        if first and tail & END_OF_TRANSFER:  # a single frame: delivered whatever its toggle
             if buffer is not None and not session.counted:
                 ended = self._report(
                     Problem.INTERRUPTED, can_id, data, ts, f"transfer id {session.tid}"
@@ -682,9 +693,10 @@ class Reassembler:
             self._touch(key)
             transfer_id, session.tid = session.tid, tid  # `_deliver` moves on from ``tid``
             outcome = self._deliver(session, can_id, data[:-1], tid, ts, False)
-            session.tid = (transfer_id + 1) & 0x1F  # libcanard: the expected id, plus one
+            # libcanard: the expected id, plus one
+            session.tid = (transfer_id + 1) & TRANSFER_ID_MASK
             return _join(ended, outcome)
-        if tail & 0x20 != session.toggle:
+        if tail & TOGGLE != session.toggle:
             problem = Problem.DUPLICATE_FRAME if data == session.last else Problem.TOGGLE_ERROR
             detail = f"toggle {tail >> 5 & 1}, expected {session.toggle >> 5}"
             return _join(ended, self._problem(problem, can_id, data, ts, detail))
@@ -705,7 +717,7 @@ class Reassembler:
             session.counted = session.orphan = False
             session.start = ts
             session.last = data
-            session.toggle ^= 0x20  # 0 unless it restarts a transfer at an odd frame
+            session.toggle ^= TOGGLE  # 0 unless it restarts a transfer at an odd frame
             self._touch(key)
             return _join(ended, None)
         if buffer is None:
@@ -722,8 +734,8 @@ class Reassembler:
                 )
                 ended = ended or report  # a restart leaves no payload: never both
         session.last = data
-        if not tail & 0x40:
-            session.toggle ^= 0x20
+        if not tail & END_OF_TRANSFER:
+            session.toggle ^= TOGGLE
             return _join(ended, None)
         return _join(ended, self._complete(session, can_id, data, tid))
 
@@ -738,12 +750,16 @@ class Reassembler:
 
     def _begin(self, session: _Session, can_id: int, data: bytes, tail: int, ts: float) -> Outcome:
         """A first frame, no transfer of its session in progress past the timeout."""
-        tid = tail & 0x1F
+        tid = tail & TRANSFER_ID_MASK
         again = session.closed == tid and ts - session.start <= self.timeout
         if again:
             if data == session.last:
                 return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
-            if tail & 0x40 or session.buffer is not None or session.last[-1] & 0xC0 != 0xC0:
+            if (
+                tail & END_OF_TRANSFER
+                or session.buffer is not None
+                or session.last[-1] & SINGLE_FRAME != SINGLE_FRAME
+            ):
                 return self._problem(
                     Problem.UNEXPECTED_TRANSFER_ID, can_id, data, ts, f"transfer id {tid} again"
                 )
@@ -770,15 +786,15 @@ class Reassembler:
         self, session: _Session, can_id: int, data: bytes, tail: int, ts: float, counted: bool
     ) -> Outcome:
         """A first frame, its session idle: deliver it, begin a transfer or drop it."""
-        tid = tail & 0x1F
-        if tail & 0x20:
+        tid = tail & TRANSFER_ID_MASK
+        if tail & TOGGLE:
             self._lost(session, can_id, tid, ts)
             if counted:
                 return None
             return self._problem(
                 Problem.TOGGLE_ERROR, can_id, data, ts, "toggle set on first frame"
             )
-        if not tail & 0x40 and len(data) != 8:
+        if not tail & END_OF_TRANSFER and len(data) != 8:
             self._lost(session, can_id, tid, ts)
             if counted:
                 return None
@@ -786,28 +802,28 @@ class Reassembler:
         session.start = ts
         session.last = data
         self._touch(can_id & 0xFFFFFF)
-        if tail & 0x40:  # single-frame transfer
+        if tail & END_OF_TRANSFER:  # single-frame transfer
             return self._deliver(session, can_id, data[:-1], tid, ts, counted)
         session.tid = tid
         session.counted = counted
         session.buffer = bytearray(data[:-1])
-        session.toggle = 0x20
+        session.toggle = TOGGLE
         return None
 
     def _continue(
         self, session: _Session, can_id: int, data: bytes, tail: int, ts: float
     ) -> Outcome:
         """A frame other than the first: the next of the transfer in progress, or a stray."""
-        tid = tail & 0x1F
+        tid = tail & TRANSFER_ID_MASK
         buffer = session.buffer
         if buffer is not None and tid == session.tid:
             if ts - session.start > self.timeout:
                 return _join(self._abandon(session, Problem.TIMEOUT, can_id, data, ts), None)
-            if tail & 0x20 != session.toggle:
+            if tail & TOGGLE != session.toggle:
                 if data == session.last:
                     return self._problem(Problem.DUPLICATE_FRAME, can_id, data, ts, "frame again")
                 return _join(self._abandon(session, Problem.TOGGLE_ERROR, can_id, data, ts), None)
-            if not tail & 0x40 and len(data) != 8:
+            if not tail & END_OF_TRANSFER and len(data) != 8:
                 return _join(
                     self._abandon(session, Problem.MALFORMED_FRAME, can_id, data, ts), None
                 )
@@ -817,8 +833,8 @@ class Reassembler:
                 )
             buffer += data[:-1]
             session.last = data
-            if not tail & 0x40:
-                session.toggle ^= 0x20
+            if not tail & END_OF_TRANSFER:
+                session.toggle ^= TOGGLE
                 return None
             return self._complete(session, can_id, data, tid)
         if data == session.last:
@@ -862,7 +878,7 @@ class Reassembler:
         except (*DECODE_FALLBACK, DecodeError):  # bad length or content: the checked path decides
             return self._deliver(session, can_id, payload, tid, session.start, session.counted)
         session.closed = tid
-        session.tid = (tid + 1) & 0x1F
+        session.tid = (tid + 1) & TRANSFER_ID_MASK
         session.counted = session.orphan = False
         self.transfers += 1
         return received(message, can_id, tid, session.start, session.kind, session.data_type_id)
@@ -900,7 +916,7 @@ class Reassembler:
         session.toggle = 0
         session.counted = session.orphan = False
         session.closed = tid
-        session.tid = (tid + 1) & 0x1F
+        session.tid = (tid + 1) & TRANSFER_ID_MASK
         self.transfers += 1
         return received(message, can_id, tid, ts, session.kind, session.data_type_id)
 

@@ -12,6 +12,10 @@ START_OF_TRANSFER = 0x80
 END_OF_TRANSFER = 0x40
 TOGGLE = 0x20
 TRANSFER_ID_MASK = 0x1F
+FRAME_FLAGS = START_OF_TRANSFER | END_OF_TRANSFER | TOGGLE
+"""The tail bits above the transfer id."""
+SINGLE_FRAME = START_OF_TRANSFER | END_OF_TRANSFER
+"""The tail bits of a transfer in one frame (its toggle is 0)."""
 
 SINGLE_FRAME_MAX = 7
 """Largest payload that fits in one classic CAN frame next to the tail byte."""

@@ -26,7 +26,9 @@ from veronte4x.dronecan.compiled import (
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame
 from veronte4x.dronecan.tail import (
+    FRAME_FLAGS,
     MULTI_FRAME_TAILS,
+    SINGLE_FRAME,
     SINGLE_FRAME_MAX,
     TRANSFER_ID_MASK,
     frame_count,
@@ -211,7 +213,7 @@ def _encode_checked(
         )
     payload = codec.encode(message, saturate)
     if len(payload) <= SINGLE_FRAME_MAX:
-        return [TransferFrame(can_id, payload + bytes((0xC0 | transfer_id,)))]
+        return [TransferFrame(can_id, payload + bytes((SINGLE_FRAME | transfer_id,)))]
     crc = crc16(payload, codec.crc_seed)
     return [TransferFrame(can_id, data) for data in split_payload(payload, crc, transfer_id)]
 
@@ -425,7 +427,7 @@ def decode_frames(
                     route = routes.single.get(can_id) or routes.add_single(can_id)
                     if route is not None:
                         tail = data[-1]
-                        if tail & 0xE0 == 0xC0:
+                        if tail & FRAME_FLAGS == SINGLE_FRAME:
                             decode, kind, data_type_id = route
                             try:  # the frame decoder checks the frame's length
                                 message = decode(data)

@@ -21,6 +21,7 @@ from veronte4x.dronecan.can_id import anonymous_can_id
 from veronte4x.dronecan.codec import BY_CLASS
 from veronte4x.dronecan.crc import crc16
 from veronte4x.dronecan.frame import TransferFrame
+from veronte4x.dronecan.tail import SINGLE_FRAME
 from veronte4x.dronecan.transfer import Transfer
 from veronte4x.errors import EncodeError, check_seconds
 from veronte4x.node.transfer_ids import TRANSFER_ID_MODULO
@@ -65,7 +66,7 @@ def anonymous_frame(message: Allocation, transfer_id: int, priority: int) -> Tra
         raise EncodeError(
             "anonymous_frame", "unique_id", message.unique_id, f"at most {STAGE_SIZE} bytes"
         )
-    data = payload + bytes((0xC0 | transfer_id,))
+    data = payload + bytes((SINGLE_FRAME | transfer_id,))
     can_id = anonymous_can_id(priority, _ALLOCATION.data_type.data_type_id, crc16(data) & 0x3FFF)
     return TransferFrame(can_id, data)
 

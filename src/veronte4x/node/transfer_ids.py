@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from veronte4x.dronecan.can_id import TransferKind
+from veronte4x.dronecan.tail import TRANSFER_ID_MASK
 
-TRANSFER_ID_MODULO = 32
+TRANSFER_ID_MODULO = TRANSFER_ID_MASK + 1
 """Transfer ids are 5 bits: they count 0..31 and wrap."""
 
 

@@ -69,6 +69,7 @@ from veronte4x.dronecan.messages import (
     TemperatureErrorFlag,
 )
 from veronte4x.dronecan.reassembler import Reassembler
+from veronte4x.dronecan.tail import TRANSFER_ID_MASK
 from veronte4x.dronecan.transfer import DEFAULT_PRIORITY, Transfer, encode
 from veronte4x.dronecan.vertiq import (
     BOOTLOADER_MAGIC,
@@ -621,7 +622,7 @@ class SimulatedEsc:
     def _publish(self, message: Any) -> list[TransferFrame]:
         kind = type(message)
         transfer_id = self._transfer_ids[kind]
-        self._transfer_ids[kind] = (transfer_id + 1) & 0x1F
+        self._transfer_ids[kind] = (transfer_id + 1) & TRANSFER_ID_MASK
         return encode(
             message, source_node_id=self._node_id, transfer_id=transfer_id, priority=self._priority
         )

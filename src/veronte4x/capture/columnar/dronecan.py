@@ -40,6 +40,7 @@ from veronte4x.dronecan.codec import TypeCodec
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
 from veronte4x.dronecan.scalar_code import be_runs, bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
+from veronte4x.dronecan.tail import END_OF_TRANSFER, START_OF_TRANSFER, TOGGLE, TRANSFER_ID_MASK
 from veronte4x.dronecan.typeset import TypeSet, types_or_default
 
 MAX_SESSIONS = 1024
@@ -200,10 +201,10 @@ def regular_sessions(
     opens = np.ones(n, np.bool_)
     opens[1:] = key[1:] != key[:-1]
     session = np.cumsum(opens) - 1
-    start = (tail & 0x80) != 0
-    end = (tail & 0x40) != 0
-    toggle = (tail & 0x20) != 0
-    tid = tail & 0x1F
+    start = (tail & START_OF_TRANSFER) != 0
+    end = (tail & END_OF_TRANSFER) != 0
+    toggle = (tail & TOGGLE) != 0
+    tid = tail & TRANSFER_ID_MASK
     bad = opens & ~start
     transfer = np.cumsum(start) - 1
     first = np.flatnonzero(start)
@@ -295,7 +296,7 @@ def transfers(
         data, length, types: Per frame (indexed by ``rows``).
     """
     used = length[rows] - 1
-    start = (data[rows, np.maximum(used, 0)] & 0x80) != 0
+    start = (data[rows, np.maximum(used, 0)] & START_OF_TRANSFER) != 0
     first = np.flatnonzero(start)
     last = np.empty(len(first), np.int64)
     last[:-1] = first[1:] - 1
