@@ -28,6 +28,12 @@ def crc16(data: bytes, crc: int = INITIAL) -> int:
     return crc_hqx(data, crc)
 
 
+def crc16_table() -> tuple[int, ...]:
+    """The transfer CRC's byte table, for engines that feed a byte at a time: from register
+    ``c`` and byte ``b``, the next is ``(c << 8 & 0xFFFF) ^ table[(c >> 8) ^ b]``."""
+    return tuple(crc16(bytes((byte,)), 0) for byte in range(256))
+
+
 def signature_seed(signature: int) -> int:
     """CRC after the 64-bit data type signature, fed little-endian: the per-type seed."""
     return crc_hqx(signature.to_bytes(8, "little"), INITIAL)

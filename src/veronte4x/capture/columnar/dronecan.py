@@ -37,6 +37,7 @@ import numpy.typing as npt
 from veronte4x.capture.columnar.payloads import integer_dtype
 from veronte4x.dronecan.can_id import TransferKind
 from veronte4x.dronecan.codec import TypeCodec
+from veronte4x.dronecan.crc import crc16_table
 from veronte4x.dronecan.reassembler import TRANSFER_ID_TIMEOUT
 from veronte4x.dronecan.scalar_code import be_runs, bit_runs
 from veronte4x.dronecan.schema import Scalar, Struct
@@ -98,17 +99,7 @@ def _build_index(codecs: tuple[TypeCodec, ...]) -> TypeIndex:
     return TypeIndex(codecs, message_types, service_types, limits, seeds)
 
 
-def _crc_table() -> npt.NDArray[np.uint32]:
-    table = np.zeros(256, np.uint32)
-    for byte in range(256):
-        crc = byte << 8
-        for _ in range(8):
-            crc = (crc << 1) ^ 0x1021 if crc & 0x8000 else crc << 1
-        table[byte] = crc & 0xFFFF
-    return table
-
-
-_CRC_TABLE = _crc_table()
+_CRC_TABLE = np.array(crc16_table(), np.uint32)
 
 
 def _crc_pairs() -> npt.NDArray[np.uint32]:
